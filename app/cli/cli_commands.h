@@ -1,0 +1,24 @@
+#pragma once
+// The sub-commands of cutcell-cli. Exit codes: 0 ok, 1 I/O or internal error, 2 invalid job,
+// 3 path not reachable, 64 usage.
+#include <string>
+#include <vector>
+
+namespace cutcell::cli {
+
+enum ExitCode { kOk = 0, kFailure = 1, kInvalidJob = 2, kUnreachable = 3, kUsage = 64 };
+
+using Args = std::vector<std::string>;
+
+int runValidate(const Args& args);
+int runPlan(const Args& args);
+int runSimulate(const Args& args);
+int runBench(const Args& args);
+
+// Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
+std::string option(const Args& args, const std::string& name);
+bool flag(const Args& args, const std::string& name);
+// Positional arguments (not options or their values).
+std::vector<std::string> positionals(const Args& args, const std::vector<std::string>& valueOptions);
+
+} // namespace cutcell::cli

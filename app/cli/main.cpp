@@ -1,0 +1,37 @@
+// cutcell-cli: headless planning, simulation and benchmarks over the CutCell core.
+#include "cli_commands.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+const char* kUsageText = R"(cutcell-cli - headless CutCell
+
+usage:
+  cutcell-cli validate JOB                  check a job file
+  cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
+  cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
+  cutcell-cli bench [--json] [--quick]      measure speed figures
+
+exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
+)";
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace cutcell::cli;
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
+        !std::strcmp(argv[1], "help")) {
+        std::fputs(kUsageText, argc < 2 ? stderr : stdout);
+        return argc < 2 ? kUsage : kOk;
+    }
+    const std::string cmd = argv[1];
+    const Args args(argv + 2, argv + argc);
+    if (cmd == "validate") return runValidate(args);
+    if (cmd == "plan") return runPlan(args);
+    if (cmd == "simulate") return runSimulate(args);
+    if (cmd == "bench") return runBench(args);
+    std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
+    return ExitCode::kUsage;
+}

@@ -1,0 +1,76 @@
+#pragma once
+// Value types that cross the engine's thread boundary: commands in, events and telemetry out.
+// All are trivially copyable with fixed-size text so the cycle never allocates.
+#include "core/common/types.h"
+#include "core/devices/device_interfaces.h"
+
+#include <array>
+#include <cstdint>
+
+namespace cutcell {
+
+enum class EngineState : std::uint8_t {
+    Idle,          // no job loaded or devices not enabled
+    Ready,         // job loaded, drives enabled (homed or not: see TelemetrySample::homed)
+    Homing,        // moving every axis to its reference position
+    Jogging,       // one axis moving on operator request (from Ready)
+    Running,       // cutting
+    Paused,        // feed hold: stopped on the path, resumable
+    Completed,     // the cut reached its end
+    EmergencyStop, // latched until the request is released and Reset is given
+    Fault,         // a device or tracking fault; reason in the event log; Reset clears
+};
+const char* toString(EngineState s);
+
+enum class CommandType : std::uint8_t {
+    Load, Enable, Disable, Home, Jog, Start, FeedHold, Resume, SetOverride, Abort,
+    EmergencyStop, ReleaseEmergencyStop, Reset,
+};
+const char* toString(CommandType c);
+
+enum class ClockMode : std::uint8_t { RealTime, AsFastAsPossible };
+
+enum class Severity : std::uint8_t { Info, Warning, Error };
+
+struct EngineEvent {
+    double time_s = 0;        // engine clock
+    std::int64_t wall_ms = 0; // wall clock, ms since epoch
+    Severity severity = Severity::Info;
+    EngineState from = EngineState::Idle;
+    EngineState to = EngineState::Idle;
+    std::array<char, 240> text{}; // NUL-terminated, e.g. "Start refused: drives not enabled"
+};
+
+struct TelemetrySample {
+    double time_s = 0;
+    EngineState state = EngineState::Idle;
+    JointVector setpoint = JointVector::Zero();
+    JointVector actual = JointVector::Zero();
+    JointVector error = JointVector::Zero();   // setpoint - actual
+    Vec3 cartesian_error_mm = Vec3::Zero();    // FK(actual) - FK(setpoint)
+    double progress = 0;                        // 0..1 of the cut's length
+    std::uint32_t point_index = 0;
+    std::uint32_t point_count = 0;
+    double elapsed_s = 0;
+    double remaining_s = 0;
+    double override_fraction = 1;
+    std::array<DriveState, kAxisCount> drive_states{};
+    bool torch_on = false;
+    bool arc_ok = false;
+    bool homed = false;
+};
+
+// Cycle timing measured by the engine thread itself.
+struct CycleStats {
+    double period_s = 0;
+    std::uint64_t cycles = 0;
+    std::uint64_t overruns = 0;
+    double jitter_us_p50 = 0;
+    double jitter_us_p99 = 0;
+    double jitter_us_max = 0;
+    std::uint64_t telemetry_dropped = 0;
+    std::uint64_t events_dropped = 0;
+    double last_estop_latency_us = 0;
+};
+
+} // namespace cutcell

@@ -1,0 +1,122 @@
+#pragma once
+// The cutting job: everything an engineer sets up for one cut. Values carry SI-ish units
+// named in their JSON keys (mm, deg, s, mm/s); see resources/jobs/default_job.json.
+#include "core/common/types.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cutcell {
+
+enum class CutTarget { Branch, Main };
+enum class CutMethod { StaticPipe, RotatingPipe };
+enum class StopCategory { Cat0, Cat1 };
+enum class DeviceKind { Simulated, CanOpen };
+
+struct PipeSpec {
+    double radius_mm = 0;
+    double wall_mm = 0;
+    double length_mm = 0;
+};
+
+// One standard Denavit-Hartenberg row with its operating range. Row 0 is the pipe chuck:
+// its d is the seed's d0 (distance from the robot base to the pipe's cut centre along X0).
+struct DhRow {
+    double alpha_deg = 0;
+    double a_mm = 0;
+    double d_mm = 0;
+    double theta_offset_deg = 0;
+    double min_deg = -180;
+    double max_deg = 180;
+};
+
+// PID with first-order filter (seed Eq. 69): C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1).
+// Output is a joint torque (N m) from a joint error (rad).
+struct PidGains {
+    double kp = 0;    // N m / rad
+    double ki = 0;    // N m / (rad s)
+    double kd = 0;    // N m s / rad
+    double tau_f = 0; // s
+};
+
+// Joint plant seen from the joint side of the gearbox: J q'' + b q' = clamp(u, +-u_max).
+struct JointPlantParams {
+    double inertia_kg_m2 = 0;
+    double viscous_nm_s_per_rad = 0;
+    double torque_limit_nm = 0;
+};
+
+struct CutSpec {
+    CutTarget target = CutTarget::Main;
+    double bevel_deg = 0;
+    double speed_mm_s = 0;
+    // Time to accelerate from rest to the cutting speed (and to stop at the end).
+    double ramp_s = 0.5;
+    // A 5-DOF arm can only point its torch within the plane of joint 1; the planner tilts the
+    // torch into that plane and refuses the path when the tilt exceeds this limit.
+    double max_direction_deviation_deg = 25;
+    // Knot spacing of the joint-space spline along the cut.
+    double knot_spacing_mm = 1.0;
+    // Chuck angle held during the static-pipe method.
+    double static_chuck_deg = 0;
+    // Where the closed cut starts (the curve parameter phi). Absent in the file = automatic:
+    // -90 deg for the hole (the chuck stands still there, so the start ramp disturbs nothing)
+    // and -180 deg for the branch end (its full turn of the chuck then stays within +-180 deg).
+    bool start_phi_auto = true;
+    double start_phi_deg = 0;
+};
+
+struct SimSpec {
+    double period_s = 0.001;
+    double duration_s = 30;
+};
+
+struct EngineSpec {
+    StopCategory estop_category = StopCategory::Cat0;
+    double feed_hold_decel_s = 0.5;      // time to stop along the path on feed hold
+    bool torch_on_during_feed_hold = false;
+    double following_error_limit_deg = 2.0;
+    double home_speed_deg_s = 20.0;
+    std::string runs_dir = "runs";
+};
+
+struct DeviceSpec {
+    DeviceKind kind = DeviceKind::Simulated;
+    std::string can_plugin = "virtualcan";
+    std::string can_interface = "can0";
+    int bitrate_bps = 1000000;
+    std::array<int, kAxisCount> node_ids{1, 2, 3, 4, 5, 6};
+    // Counts per degree (or per mm for linear axes) of each drive's position encoder.
+    std::array<double, kAxisCount> counts_per_unit{1000, 1000, 1000, 1000, 1000, 1000};
+    double heartbeat_timeout_ms = 300;
+};
+
+struct Job {
+    int schema = 1;
+    std::string machine = "pipe_robot_6axis";
+    std::string name;
+    std::string description;
+    PipeSpec main_pipe;
+    PipeSpec branch_pipe;
+    double angle_deg = 90;
+    double eccentricity_mm = 0;
+    CutSpec cut;
+    CutMethod method = CutMethod::RotatingPipe;
+    std::array<DhRow, kAxisCount> dh{};
+    std::array<PidGains, kAxisCount> controller{};
+    std::array<JointPlantParams, kAxisCount> plant{};
+    SimSpec sim;
+    EngineSpec engine;
+    DeviceSpec devices;
+};
+
+const char* toString(CutTarget t);
+const char* toString(CutMethod m);
+const char* toString(DeviceKind k);
+const char* toString(StopCategory c);
+
+// The seed's Table 1 (row 0 = chuck with d0, rows 1..5 = the arm).
+std::array<DhRow, kAxisCount> seedDhTable();
+
+} // namespace cutcell

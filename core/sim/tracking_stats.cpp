@@ -1,0 +1,96 @@
+#include "core/sim/tracking_stats.h"
+
+#include <cmath>
+
+namespace cutcell {
+
+void TrackingStats::reset() {
+    n_ = 0;
+    maxAbs_.setZero();
+    sumSq_.setZero();
+    cartMin_.setZero();
+    cartMax_.setZero();
+    workMaxAbs_.setZero();
+    lastCart_.setZero();
+    maxTorqueFraction_ = 0;
+}
+
+void TrackingStats::add(const JointVector& commanded, const JointVector& actual) {
+    const JointVector e = commanded - actual;
+    maxAbs_ = maxAbs_.cwiseMax(e.cwiseAbs());
+    sumSq_ += e.cwiseProduct(e);
+    const Vec3 tipCmd = robot_->forward(commanded.tail<kArmJointCount>()).translation();
+    const Vec3 tipAct = robot_->forward(actual.tail<kArmJointCount>()).translation();
+    lastCart_ = tipAct - tipCmd;
+    cartMin_ = cartMin_.cwiseMin(lastCart_);
+    cartMax_ = cartMax_.cwiseMax(lastCart_);
+    // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
+    const Vec3 onPipeCmd = robot_->baseFromWork(commanded[0]).inverse() * tipCmd;
+    const Vec3 onPipeAct = robot_->baseFromWork(actual[0]).inverse() * tipAct;
+    workMaxAbs_ = workMaxAbs_.cwiseMax((onPipeAct - onPipeCmd).cwiseAbs());
+    ++n_;
+}
+
+void TrackingStats::fill(TrackingReport& r) const {
+    for (int i = 0; i < kAxisCount; ++i) {
+        r.joints[static_cast<size_t>(i)].max_abs_deg = rad2deg(maxAbs_[i]);
+        r.joints[static_cast<size_t>(i)].rms_deg = n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
+    }
+    r.cartesian_min_mm = cartMin_;
+    r.cartesian_max_mm = cartMax_;
+    r.cartesian_max_abs_mm = cartMin_.cwiseAbs().cwiseMax(cartMax_.cwiseAbs());
+    r.on_pipe_max_abs_mm = workMaxAbs_;
+    r.max_torque_fraction = maxTorqueFraction_;
+    r.steps = n_;
+}
+
+void TrackingStats::fillCruise(TrackingReport& r) const {
+    TrackingReport tmp;
+    fill(tmp);
+    r.cruise_joints = tmp.joints;
+    r.cruise_cartesian_max_abs_mm = tmp.cartesian_max_abs_mm;
+    r.cruise_on_pipe_max_abs_mm = tmp.on_pipe_max_abs_mm;
+}
+
+namespace {
+json::Value xyz(const Vec3& v) { return json::Object{{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; }
+} // namespace
+
+json::Value reportToJson(const TrackingReport& r) {
+    json::Array joints, cruise;
+    for (int i = 0; i < kAxisCount; ++i) {
+        const auto& j = r.joints[static_cast<size_t>(i)];
+        joints.emplace_back(json::Object{{"axis", i},
+                                         {"name", i == 0 ? "chuck (theta0)" : "theta" + std::to_string(i)},
+                                         {"max_abs_error_deg", j.max_abs_deg},
+                                         {"rms_error_deg", j.rms_deg}});
+        const auto& c = r.cruise_joints[static_cast<size_t>(i)];
+        cruise.emplace_back(json::Object{{"axis", i},
+                                         {"max_abs_error_deg", c.max_abs_deg},
+                                         {"rms_error_deg", c.rms_deg}});
+    }
+    return json::Object{
+        {"method", r.method},
+        {"reachable", r.reachable},
+        {"problem", r.problem},
+        {"length_mm", r.length_mm},
+        {"cut_time_s", r.cut_time_s},
+        {"simulated_s", r.simulated_s},
+        {"steps", static_cast<double>(r.steps)},
+        {"max_direction_deviation_deg", r.max_direction_deviation_deg},
+        {"max_torque_fraction", r.max_torque_fraction},
+        {"joints", joints},
+        {"cartesian",
+         json::Object{{"frame", "robot base {0}, torch tip, FK(actual) - FK(commanded)"},
+                      {"max_abs_error_mm", xyz(r.cartesian_max_abs_mm)},
+                      {"min_error_mm", xyz(r.cartesian_min_mm)},
+                      {"max_error_mm", xyz(r.cartesian_max_mm)},
+                      {"on_pipe_max_abs_error_mm", xyz(r.on_pipe_max_abs_mm)}}},
+        {"cruise", json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
+                                {"joints", cruise},
+                                {"cartesian_max_abs_error_mm", xyz(r.cruise_cartesian_max_abs_mm)},
+                                {"on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm)}}},
+    };
+}
+
+} // namespace cutcell

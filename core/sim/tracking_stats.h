@@ -1,0 +1,69 @@
+#pragma once
+// Running tracking-error figures of a cut: per axis max |e| and RMS, and the torch tip's
+// position error (FK of actual vs commanded joints) per axis, both in the robot base frame
+// and relative to the turning work pipe. Used by the offline simulation and by the engine,
+// so both report the same figures. add() is allocation-free.
+#include "core/common/types.h"
+#include "core/job/job.h"
+#include "core/json/json.h"
+#include "core/kinematics/pipe_robot.h"
+
+#include <array>
+#include <string>
+
+namespace cutcell {
+
+struct AxisErrorStats {
+    double max_abs_deg = 0;
+    double rms_deg = 0;
+};
+
+struct TrackingReport {
+    std::string method;
+    bool reachable = true;
+    std::string problem;
+    double length_mm = 0;
+    double cut_time_s = 0;
+    double simulated_s = 0;
+    long steps = 0;
+    double max_direction_deviation_deg = 0;
+    std::array<AxisErrorStats, kAxisCount> joints{};
+    Vec3 cartesian_max_abs_mm = Vec3::Zero(); // tip, base frame
+    Vec3 cartesian_min_mm = Vec3::Zero();
+    Vec3 cartesian_max_mm = Vec3::Zero();
+    Vec3 on_pipe_max_abs_mm = Vec3::Zero();   // tip relative to the work pipe (chuck error included)
+    double max_torque_fraction = 0;           // peak |u| / torque limit over all axes
+    // The same figures over the constant-speed part of the cut only (ramps excluded).
+    std::array<AxisErrorStats, kAxisCount> cruise_joints{};
+    Vec3 cruise_cartesian_max_abs_mm = Vec3::Zero();
+    Vec3 cruise_on_pipe_max_abs_mm = Vec3::Zero();
+};
+
+class TrackingStats {
+  public:
+    explicit TrackingStats(const PipeRobot& robot) : robot_(&robot) {}
+    void reset();
+    void add(const JointVector& commanded, const JointVector& actual);
+    void addTorqueFraction(double f) {
+        if (f > maxTorqueFraction_) maxTorqueFraction_ = f;
+    }
+    // Fills the error fields of a report (or its cruise fields).
+    void fill(TrackingReport& r) const;
+    void fillCruise(TrackingReport& r) const;
+    long samples() const { return n_; }
+    // Last Cartesian tip error (base frame), for telemetry.
+    const Vec3& lastCartesianError() const { return lastCart_; }
+
+  private:
+    const PipeRobot* robot_;
+    long n_ = 0;
+    JointVector maxAbs_ = JointVector::Zero();
+    JointVector sumSq_ = JointVector::Zero();
+    Vec3 cartMin_ = Vec3::Zero(), cartMax_ = Vec3::Zero(), workMaxAbs_ = Vec3::Zero();
+    Vec3 lastCart_ = Vec3::Zero();
+    double maxTorqueFraction_ = 0;
+};
+
+json::Value reportToJson(const TrackingReport& r);
+
+} // namespace cutcell

@@ -1,0 +1,142 @@
+#include "core/trajectory/cut_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace cutcell {
+
+SpeedProfile::SpeedProfile(double length_mm, double speed_mm_s, double ramp_s)
+    : length_(length_mm), v_(speed_mm_s) {
+    // A ramp covers v * ramp / 2; shorten the ramps when the cut is too short for them.
+    ramp_ = std::min(ramp_s, length_mm / speed_mm_s);
+    duration_ = length_mm / speed_mm_s + ramp_;
+}
+
+double SpeedProfile::speed(double t) const {
+    if (t <= 0 || t >= duration_) return 0;
+    if (t < ramp_) return v_ * (1 - std::cos(kPi * t / ramp_)) / 2;
+    if (t > duration_ - ramp_) return speed(duration_ - t);
+    return v_;
+}
+
+double SpeedProfile::distance(double t) const {
+    if (t <= 0) return 0;
+    if (t >= duration_) return length_;
+    const auto ramp = [&](double u) { return v_ / 2 * (u - ramp_ / kPi * std::sin(kPi * u / ramp_)); };
+    if (t < ramp_) return ramp(t);
+    if (t > duration_ - ramp_) return length_ - ramp(duration_ - t);
+    return v_ * ramp_ / 2 + v_ * (t - ramp_);
+}
+
+namespace {
+
+std::string describePoint(size_t index, const PlannedPoint& p) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)", index,
+                  rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(), p.cut.p_main.z());
+    return buf;
+}
+
+} // namespace
+
+CutPlan planCut(const Job& job, const PlanOptions& options) {
+    CutPlan plan;
+    plan.method = job.method;
+    const CutGeometry geo(job);
+    const PipeRobot robot(job.dh);
+    plan.length_mm = geo.length();
+    const SpeedProfile profile(geo.length(), job.cut.speed_mm_s, job.cut.ramp_s);
+    plan.cut_time_s = profile.duration();
+    // Knots at equal time steps, about knot_spacing_mm apart at cutting speed.
+    const int intervals =
+        std::max(16, static_cast<int>(std::ceil(geo.length() / job.cut.knot_spacing_mm)));
+    plan.knot_dt_s = plan.cut_time_s / intervals;
+    plan.knots.resize(static_cast<size_t>(intervals) + 1);
+
+    const double maxDev = job.cut.max_direction_deviation_deg;
+    ArmVector previous = ArmVector::Zero();
+    bool havePrevious = false;
+    double previousChuck = deg2rad(job.cut.static_chuck_deg);
+    plan.reachable = true;
+    std::vector<JointVector> q(plan.knots.size(), JointVector::Zero());
+    for (size_t k = 0; k < plan.knots.size(); ++k) {
+        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+            plan.cancelled = true;
+            plan.reachable = false;
+            plan.problem = "planning cancelled";
+            return plan;
+        }
+        if (options.progress && k % 64 == 0) options.progress(static_cast<double>(k) / static_cast<double>(plan.knots.size()));
+        PlannedPoint& p = plan.knots[k];
+        p.t_s = plan.knot_dt_s * static_cast<double>(k);
+        p.cut = geo.atArcLength(profile.distance(p.t_s));
+
+        double chuck = deg2rad(job.cut.static_chuck_deg);
+        if (job.method == CutMethod::RotatingPipe) {
+            // Turn the pipe so the cut point comes to the top: s0 x + c0 y = r, -c0 x + s0 y = 0.
+            chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
+            chuck += 2 * kPi * std::round((previousChuck - chuck) / (2 * kPi));
+            if (k == 0) {
+                // Start on the representative inside the chuck's range nearest zero.
+                for (int turn = -1; turn <= 1 && !robot.withinLimits(0, chuck); ++turn)
+                    if (robot.withinLimits(0, chuck + 2 * kPi * turn)) chuck += 2 * kPi * turn;
+            }
+        }
+        previousChuck = chuck;
+        p.chuck_rad = chuck;
+        const Pose baseFromWork = robot.baseFromWork(chuck);
+        p.tip_base = baseFromWork * p.cut.p_work;
+        const Vec3 desired = baseFromWork.linear() * p.cut.approach_work;
+        // Nearest torch axis in the plane of joint 1 (vertical, through Z0 and the tip).
+        Vec3 planeNormal(-p.tip_base.y(), p.tip_base.x(), 0);
+        Vec3 approach = desired;
+        if (planeNormal.norm() > 1e-9) {
+            planeNormal.normalize();
+            approach = desired - desired.dot(planeNormal) * planeNormal;
+            if (approach.norm() < 1e-9) approach = Vec3(0, 0, -1);
+            approach.normalize();
+        }
+        p.approach_base = approach;
+        p.deviation_deg = rad2deg(std::acos(std::clamp(desired.dot(approach), -1.0, 1.0)));
+        plan.max_deviation_deg = std::max(plan.max_deviation_deg, p.deviation_deg);
+
+        p.ik = robot.solve(p.tip_base, approach, 0.0, havePrevious ? &previous : nullptr);
+        if (p.ik.ok()) {
+            previous = p.ik.q;
+            havePrevious = true;
+        }
+        p.q[0] = chuck;
+        p.q.tail<kArmJointCount>() = p.ik.ok() ? p.ik.q : previous;
+        q[k] = p.q;
+
+        if (plan.first_bad < 0) {
+            std::string why;
+            if (!robot.withinLimits(0, chuck)) {
+                char buf[160];
+                std::snprintf(buf, sizeof buf, "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
+                              rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
+                why = buf;
+            } else if (!p.ik.ok()) {
+                why = describe(p.ik);
+            } else if (p.deviation_deg > maxDev + 1e-9) {
+                char buf[200];
+                std::snprintf(buf, sizeof buf,
+                              "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more "
+                              "than cut.max_direction_deviation_deg = %.2f deg",
+                              p.deviation_deg, maxDev);
+                why = buf;
+            }
+            if (!why.empty()) {
+                plan.first_bad = static_cast<int>(k);
+                plan.reachable = false;
+                plan.problem = describePoint(k, p) + ": " + why;
+            }
+        }
+    }
+    plan.spline = JointSpline(std::move(q), plan.knot_dt_s);
+    if (options.progress) options.progress(1.0);
+    return plan;
+}
+
+} // namespace cutcell

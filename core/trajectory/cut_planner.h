@@ -1,0 +1,72 @@
+#pragma once
+// Plans a cut of the seed-000 cell: the cut point moves along the intersection curve at the
+// cutting speed (arc length on the pipe surface; smooth cosine ramps of cut.ramp_s at both
+// ends), each knot is turned into a torch pose and solved by the IK, and a C2 joint spline
+// runs through the knots.
+//
+//  - static_pipe:   the chuck holds cut.static_chuck_deg; the arm follows the curve.
+//  - rotating_pipe: the chuck turns so that the cut point is always at the top of the work
+//                   pipe (Y0 = 0, Z0 = work radius); the torch moves on that straight line.
+//
+// A 5-DOF arm keeps its torch in the plane of joint 1. The planner tilts the desired torch
+// axis into that plane (its nearest direction there) and records the tilt as the direction
+// deviation; above cut.max_direction_deviation_deg the point is not reachable.
+#include "core/common/types.h"
+#include "core/geometry/cut_path.h"
+#include "core/job/job.h"
+#include "core/kinematics/pipe_robot.h"
+#include "core/trajectory/joint_spline.h"
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cutcell {
+
+struct PlannedPoint {
+    double t_s = 0;
+    CutPoint cut;         // on the pipes (main and work frames)
+    double chuck_rad = 0; // axis 0
+    Vec3 tip_base;        // torch tip in the robot base frame {0}
+    Vec3 approach_base;   // torch axis actually commanded (in the plane of joint 1)
+    double deviation_deg = 0; // angle between the desired and the commanded torch axis
+    IkResult ik;
+    JointVector q = JointVector::Zero(); // axis 0 = chuck, 1..5 = arm
+};
+
+struct CutPlan {
+    CutMethod method = CutMethod::RotatingPipe;
+    double length_mm = 0;
+    double cut_time_s = 0; // from start to stop, ramps included
+    double knot_dt_s = 0;
+    std::vector<PlannedPoint> knots;
+    JointSpline spline;
+    bool reachable = false;
+    int first_bad = -1;   // index into knots of the first unreachable point
+    std::string problem;  // one sentence naming the point, the joint and the limit
+    double max_deviation_deg = 0;
+    bool cancelled = false;
+};
+
+// Arc length travelled at time t for the speed profile (cosine ramps, cruise in between).
+class SpeedProfile {
+  public:
+    SpeedProfile(double length_mm, double speed_mm_s, double ramp_s);
+    double duration() const { return duration_; }
+    double distance(double t) const;
+    double speed(double t) const;
+
+  private:
+    double length_, v_, ramp_, duration_;
+};
+
+struct PlanOptions {
+    // Called now and then with the fraction done; planning stops early when *cancel is set.
+    std::function<void(double)> progress;
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+CutPlan planCut(const Job& job, const PlanOptions& options = {});
+
+} // namespace cutcell
