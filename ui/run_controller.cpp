@@ -215,7 +215,7 @@ void RunController::updateBlocked() {
             r = tr("feed hold - press Resume or Abort");
             break;
         case EngineState::Completed:
-            r = tr("cut completed - press Reset to cut again");
+            r = tr("cut completed - press Home to cut again");
             break;
         case EngineState::EmergencyStop:
             r = tr("EMERGENCY STOP latched - press Reset");
@@ -256,7 +256,7 @@ void RunController::setOverride(double fraction) {
 void RunController::reset() {
     if (!rig_) return;
     // The operator has pulled the mushroom button back out and acknowledges.
-    rig_->engine().releaseEmergencyStop();
+    if (bridge_->state() == EngineState::EmergencyStop) rig_->engine().releaseEmergencyStop();
     rig_->engine().reset();
 }
 

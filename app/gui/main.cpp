@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
         return 2;
     }
 #ifdef CUTCELL_HAVE_VIEW3D
-    CutCell::view3d::CellView::setDefaultSurfaceFormat(); // before QApplication
+    cutcell::view3d::CellView::setDefaultSurfaceFormat(); // before QApplication
 #endif
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("CutCell"));

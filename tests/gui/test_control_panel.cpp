@@ -1,5 +1,7 @@
 // The control panel: the EMERGENCY STOP is enabled in every state and its shortcut works from
 // a focused field; buttons follow the engine state; the override slider reports fractions.
+#include "core/job/default_job.h"
+#include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"

@@ -109,13 +109,13 @@ void ControlPanel::refresh() {
     const bool paused = state_ == EngineState::Paused;
     const bool latched = state_ == EngineState::EmergencyStop || state_ == EngineState::Fault;
     enable_->setEnabled(idle);
-    home_->setEnabled(ready);
+    home_->setEnabled(ready || state_ == EngineState::Completed);
     start_->setEnabled(blocked_.isEmpty());
     hold_->setEnabled(running);
     resume_->setEnabled(paused);
     abort_->setEnabled(running || paused || state_ == EngineState::Homing ||
                        state_ == EngineState::Jogging);
-    reset_->setEnabled(latched || state_ == EngineState::Completed);
+    reset_->setEnabled(latched);
     eStop_->setEnabled(true); // always
     reason_->setVisible(!blocked_.isEmpty());
     reason_->setText(blocked_.isEmpty() ? QString() : tr("Start: %1").arg(blocked_));

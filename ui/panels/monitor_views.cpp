@@ -1,9 +1,6 @@
 #include "ui/panels/monitor_views.h"
 
-#include <QButtonGroup>
-#include <QHBoxLayout>
 #include <QLabel>
-#include <QPushButton>
 #include <QVBoxLayout>
 
 #ifdef CUTCELL_HAVE_VIEW3D
@@ -22,50 +19,30 @@ CellViewPanel::CellViewPanel(QWidget* parent) : QWidget(parent) {
     setObjectName("cellViewPanel");
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
-    v->setSpacing(2);
 #ifdef CUTCELL_HAVE_VIEW3D
-    if (view3d::CellView::openGlAvailable()) {
-        auto* bar = new QHBoxLayout;
-        bar->setContentsMargins(4, 2, 4, 0);
-        auto* title = new QLabel(tr("Cell"), this);
-        title->setObjectName("panelTitle");
-        bar->addWidget(title);
-        bar->addStretch(1);
-        view_ = new view3d::CellView(this);
-        const auto preset = [this, bar](const QString& text, view3d::ViewPreset p) {
-            auto* b = new QPushButton(text, this);
-            b->setObjectName("viewPresetButton");
-            b->setFocusPolicy(Qt::NoFocus);
-            connect(b, &QPushButton::clicked, view_, [this, p] { view_->setPreset(p); });
-            bar->addWidget(b);
-        };
-        preset(tr("Iso"), view3d::ViewPreset::Iso);
-        preset(tr("Front"), view3d::ViewPreset::Front);
-        preset(tr("Top"), view3d::ViewPreset::Top);
-        preset(tr("Follow torch"), view3d::ViewPreset::FollowTorch);
-        auto* reset = new QPushButton(tr("Reset view"), this);
-        reset->setObjectName("viewPresetButton");
-        reset->setFocusPolicy(Qt::NoFocus);
-        connect(reset, &QPushButton::clicked, view_, [this] { view_->resetView(); });
-        bar->addWidget(reset);
-        v->addLayout(bar);
-        v->addWidget(view_, 1);
-        return;
-    }
+    // The view brings its own preset toolbar and, without OpenGL, its own placeholder.
+    view_ = new cutcell::view3d::CellView(this);
+    v->addWidget(view_, 1);
+#else
+    auto* note = new QLabel(tr("3D view not built in this configuration."), this);
+    note->setObjectName("viewPlaceholder");
+    note->setAlignment(Qt::AlignCenter);
+    v->addWidget(note, 1);
 #endif
-    note_ = new QLabel(tr("3D view not available: no OpenGL 3.2 context on this display "
-                          "(offscreen platform).\nThe cut runs and is monitored as usual."),
-                       this);
-    note_->setObjectName("viewPlaceholder");
-    note_->setAlignment(Qt::AlignCenter);
-    note_->setWordWrap(true);
-    v->addWidget(note_, 1);
+}
+
+bool CellViewPanel::rendering() const {
+#ifdef CUTCELL_HAVE_VIEW3D
+    return view_ && view_->rendering();
+#else
+    return false;
+#endif
 }
 
 void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
-    if (view_ && plan) view_->setScene(view3d::buildRobotScene(job, *plan));
+    if (view_ && plan) view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
 #else
     (void)plan;
     (void)job;
@@ -85,7 +62,7 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
 #ifdef CUTCELL_HAVE_PLOTS
-    plots_ = new plots::TrackingPlotsWidget(this);
+    plots_ = new cutcell::plots::TrackingPlotsWidget(this);
     v->addWidget(plots_);
 #else
     auto* note = new QLabel(tr("Tracking plots not built in this configuration."), this);

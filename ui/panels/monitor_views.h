@@ -16,10 +16,10 @@
 
 class QLabel;
 
-namespace CutCell::view3d {
+namespace cutcell::view3d {
 class CellView;
 }
-namespace CutCell::plots {
+namespace cutcell::plots {
 class TrackingPlotsWidget;
 }
 
@@ -32,12 +32,11 @@ class CellViewPanel : public QWidget {
 
     void setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan, const cutcell::Job& job);
     void setSample(const cutcell::TelemetrySample& s);
-    bool hasView() const { return view_ != nullptr; }
-    view3d::CellView* view() const { return view_; }
+    bool rendering() const;
+    cutcell::view3d::CellView* view() const { return view_; }
 
   private:
-    view3d::CellView* view_ = nullptr;
-    QLabel* note_ = nullptr;
+    cutcell::view3d::CellView* view_ = nullptr;
 };
 
 class PlotsPanel : public QWidget {
@@ -53,10 +52,10 @@ class PlotsPanel : public QWidget {
     bool exportCsv(const QString& path, QString* error);
     // Samples handed to the plots since the last clear().
     std::uint64_t samplesAppended() const { return appended_; }
-    plots::TrackingPlotsWidget* plots() const { return plots_; }
+    cutcell::plots::TrackingPlotsWidget* plots() const { return plots_; }
 
   private:
-    plots::TrackingPlotsWidget* plots_ = nullptr;
+    cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
     std::uint64_t appended_ = 0;
 };
 
