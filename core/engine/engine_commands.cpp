@@ -159,6 +159,7 @@ void MotionEngine::Impl::endRun(const char* outcome) {
 
 void MotionEngine::Impl::enterEmergencyStop() {
     estopLatched = true;
+    latchPress = estopPresses.load(std::memory_order_acquire);
     estopRequestSeen = estopRequestNs.load(std::memory_order_relaxed);
     estopLatencyPending = true;
     const EngineState from = state;
@@ -361,7 +362,10 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         torchCommand = false;
         return note("Abort: torch off, stopping along the path");
     case CommandType::EmergencyStop:
-        return; // taken from the atomic at the top of the cycle
+        // Taken from the atomic at the top of the cycle; a press after the latch is noted.
+        if (static_cast<std::uint64_t>(c.value) > latchPress)
+            return note("Emergency stop pressed again: already latched");
+        return;
     case CommandType::ReleaseEmergencyStop:
         if (!estopPressed.load(std::memory_order_acquire))
             return refuse(c.type, "the emergency stop is not pressed");

@@ -52,6 +52,8 @@ struct MotionEngine::Impl {
     MpscQueue<EngineCommand> commands{256};
     std::atomic<bool> estopPressed{false};
     std::atomic<std::int64_t> estopRequestNs{0};
+    std::atomic<std::uint64_t> estopPresses{0};
+    std::uint64_t latchPress = 0; // engine thread: the press that latched the stop
     CycleTimer timer;
     std::mutex heldMutex; // never taken by the cycle
     struct Held {

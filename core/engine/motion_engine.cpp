@@ -92,8 +92,9 @@ bool MotionEngine::emergencyStop() {
     // The request is the atomic; the queued command only records it in order with the others.
     m.estopRequestNs.store(monotonicNowNs(), std::memory_order_relaxed);
     m.estopPressed.store(true, std::memory_order_release);
+    const auto press = m.estopPresses.fetch_add(1, std::memory_order_acq_rel) + 1;
     m.timer.wake();
-    pushCommand(CommandType::EmergencyStop);
+    pushCommand(CommandType::EmergencyStop, 0, static_cast<double>(press));
     return true;
 }
 
