@@ -70,7 +70,7 @@ struct MotionEngine::Impl {
     SpscRing<EngineEvent> logEvents{1024};
     std::atomic<EngineState> publicState{EngineState::Idle};
     std::atomic<std::uint64_t> cycles{0}, overruns{0}, telemetryDropped{0}, eventsDropped{0},
-        logDropped{0}, estopsMeasured{0};
+        logDropped{0}, estopsMeasured{0}, missedDeadlines{0};
     std::atomic<double> lastEstopLatencyUs{0}, workUsMax{0};
     JitterHistogram jitter;
     RunResult results[2];

@@ -128,6 +128,7 @@ CycleStats MotionEngine::Impl::snapshot() const {
     s.estops_measured = m.estopsMeasured.load(std::memory_order_acquire);
     s.log_events_dropped = m.logDropped.load(std::memory_order_relaxed);
     s.work_us_max = m.workUsMax.load(std::memory_order_relaxed);
+    s.missed_deadlines = m.missedDeadlines.load(std::memory_order_relaxed);
     return s;
 }
 
@@ -214,7 +215,12 @@ void MotionEngine::startThread() {
                 if (done - woke > periodNs) m.overruns.fetch_add(1, std::memory_order_relaxed);
                 next += periodNs;
                 // Behind by a period or more: skip the missed deadlines instead of bursting.
-                if (done > next) next += ((done - next) / periodNs + 1) * periodNs;
+                if (done > next) {
+                    const std::int64_t skipped = (done - next) / periodNs + 1;
+                    m.missedDeadlines.fetch_add(static_cast<std::uint64_t>(skipped),
+                                                std::memory_order_relaxed);
+                    next += skipped * periodNs;
+                }
             } else {
                 m.runCycle();
             }
