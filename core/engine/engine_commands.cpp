@@ -344,7 +344,11 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         }
         if (s == EngineState::Running && holding && stopping == StopReason::None) {
             holding = false;
-            if (phase == RunPhase::Cut && !torchCommand) torchCommand = true;
+            // A torch that went out on hold is lit again (and its arc awaited) before speed-up.
+            if (phase == RunPhase::Cut && !torchCommand) {
+                phase = RunPhase::Ignite;
+                phaseSince = now;
+            }
             return note("Resume while decelerating: back to speed");
         }
         return refuse(c.type, "not paused (state %s)", toString(s));

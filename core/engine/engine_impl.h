@@ -79,7 +79,8 @@ struct MotionEngine::Impl {
     // ---- threads
     std::thread engineThread, loggerThread;
     std::atomic<bool> stopRequested{false}, threadRunning{false};
-    std::unique_ptr<class RunLog> runLog; // logger side only
+    std::mutex logMutex;                  // logger side only: one drainer at a time
+    std::unique_ptr<class RunLog> runLog; // under logMutex
     void loggerDrain();
     CycleStats snapshot() const; // any thread
 

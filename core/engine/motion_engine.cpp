@@ -151,7 +151,7 @@ bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) cons
 }
 
 std::string MotionEngine::lastRunDirectory() const {
-    std::lock_guard<std::mutex> lock(impl_->heldMutex);
+    std::lock_guard<std::mutex> lock(impl_->logMutex);
     return impl_->runLog ? impl_->runLog->runDirectory() : std::string();
 }
 
@@ -161,18 +161,19 @@ void MotionEngine::flushRunLog() {
 
 // Logger side: events to files; opens a run on RunStarted, writes the summary on RunEnded.
 void MotionEngine::Impl::loggerDrain() {
+    // One drainer at a time (the logger thread, flushRunLog()); the ring has one consumer.
+    std::lock_guard<std::mutex> logLock(logMutex);
     EngineEvent e;
     while (logEvents.pop(e)) {
-        std::lock_guard<std::mutex> lock(heldMutex);
         if (e.kind == EventKind::RunStarted) {
             const std::uint64_t seq = runProgramSeq.load(std::memory_order_acquire);
-            std::string name, text;
-            for (const Held& h : held)
-                if (h.seq == seq && h.program) {
-                    name = h.program->name;
-                    text = h.program->source_text;
-                }
-            runLog->beginRun(e.run_id, name, text);
+            std::shared_ptr<const MotionProgram> p;
+            {
+                std::lock_guard<std::mutex> lock(heldMutex);
+                for (const Held& h : held)
+                    if (h.seq == seq) p = h.program;
+            }
+            runLog->beginRun(e.run_id, p ? p->name : std::string(), p ? p->source_text : std::string());
         }
         runLog->event(e);
         if (e.kind == EventKind::RunEnded) {
