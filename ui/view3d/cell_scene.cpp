@@ -146,7 +146,7 @@ void CellScene::Impl::build() {
     const Vec3 e1 = m.baseFromWorkAtZero * Vec3(0, 0, z1);
     const double s = e1.head<2>().norm() > e0.head<2>().norm() ? 1.0 : -1.0;
     const double zEnd = s > 0 ? z1 : z0;
-    const double chuckR = R * 1.9 + 20;
+    const double chuckR = R * 1.45 + 15;
     addWork(makeActor(makeFrustum(chuckR, chuckR, zEnd - s * 20, zEnd + s * 70, kFacets, true),
                       colours::kMachine),
             I);
@@ -154,13 +154,13 @@ void CellScene::Impl::build() {
         Pose jaw = Pose::Identity();
         jaw.rotate(Eigen::AngleAxisd(2 * kPi * j / 3 + kPi / 2, Vec3::UnitZ()));
         jaw.translate(Vec3(R + 14, 0, zEnd - s * 38));
-        addWork(makeActor(makeBox(28, 22, 36), colours::kArmJoint), jaw.matrix());
+        addWork(makeActor(makeBox(26, 22, 34), colours::kArmLink), jaw.matrix());
     }
     // Headstock behind the chuck (does not turn), down to the floor.
     const Vec3 axis = m.baseFromWorkAtZero.linear().col(2) * s;
-    const Vec3 hc = m.baseFromWorkAtZero * Vec3(0, 0, zEnd + s * 120);
+    const Vec3 hc = m.baseFromWorkAtZero * Vec3(0, 0, zEnd + s * 110);
     const double top = hc.z() + chuckR;
-    const Vec3 size = axis.cwiseAbs() * 100 + (Vec3::Ones() - axis.cwiseAbs()) * (2.2 * chuckR);
+    const Vec3 size = axis.cwiseAbs() * 80 + (Vec3::Ones() - axis.cwiseAbs()) * (1.8 * chuckR);
     auto head = makeActor(makeBox(size.x(), size.y(), top - m.floorZ_mm), colours::kMachine);
     head->SetPosition(hc.x(), hc.y(), (top + m.floorZ_mm) / 2);
     renderer->AddActor(head);
@@ -176,8 +176,10 @@ void CellScene::Impl::build() {
         addWork(ghost, m.workFromMating.matrix());
     }
 
-    // Planned path: lifted 0.8 mm off the surface so it never hides in it.
+    // Planned path lifted 0.8 mm off the surface so it never hides in it; the done part 1.6 mm,
+    // so it is drawn over the planned path.
     vtkNew<vtkPoints> pts;
+    vtkNew<vtkPoints> donePts;
     vtkNew<vtkUnsignedCharArray> rgb;
     rgb->SetNumberOfComponents(3);
     rgb->SetName("colours");
@@ -185,6 +187,7 @@ void CellScene::Impl::build() {
     vtkNew<vtkCellArray> bad;
     const vtkIdType n = static_cast<vtkIdType>(m.pathWork.size());
     pts->SetNumberOfPoints(n);
+    donePts->SetNumberOfPoints(n);
     rgb->SetNumberOfTuples(n);
     polyline->InsertNextCell(static_cast<int>(n));
     unreachable = 0;
@@ -193,6 +196,8 @@ void CellScene::Impl::build() {
         const Vec3 radial(p.x(), p.y(), 0);
         const Vec3 lifted = radial.norm() > 1e-9 ? Vec3(p + 0.8 * radial.normalized()) : p;
         pts->SetPoint(i, lifted.x(), lifted.y(), lifted.z());
+        const Vec3 above = radial.norm() > 1e-9 ? Vec3(p + 1.6 * radial.normalized()) : p;
+        donePts->SetPoint(i, above.x(), above.y(), above.z());
         polyline->InsertCellPoint(i);
         const bool ok =
             static_cast<size_t>(i) >= m.reachable.size() || m.reachable[static_cast<size_t>(i)];
@@ -216,7 +221,7 @@ void CellScene::Impl::build() {
     addWork(path, I);
 
     donePoly = vtkSmartPointer<vtkPolyData>::New();
-    donePoly->SetPoints(pts);
+    donePoly->SetPoints(donePts);
     donePoly->SetLines(vtkNew<vtkCellArray>());
     doneActor = makeActor(donePoly, colours::kDone);
     doneActor->GetProperty()->LightingOff();
@@ -237,7 +242,7 @@ void CellScene::Impl::build() {
     // being the torch itself.
     if (m.mount == ToolMount::DhArm) {
         auto pedestal =
-            makeActor(makeFrustum(85, 70, m.floorZ_mm, -30, kFacets, true), colours::kMachine);
+            makeActor(makeFrustum(58, 48, m.floorZ_mm, -40, kFacets, true), colours::kMachine);
         renderer->AddActor(pedestal);
         fixedActors.push_back(pedestal);
         vtkSmartPointer<vtkPolyData> unitJoint = makeFrustum(1, 1, -0.5, 0.5, 32, true);

@@ -71,10 +71,15 @@ SceneModel buildRobotScene(const Job& job, const CutPlan& plan) {
                         job.branch_pipe.length_mm};
         m.workFromMating = workFromMain * mainFromBranch;
     } else {
-        // The branch runs from the saddle outward along +z of its work frame.
-        m.workPipe = {job.branch_pipe.radius_mm, job.branch_pipe.wall_mm,
-                      job.branch_pipe.length_mm};
-        m.workPipeCentreZ_mm = job.branch_pipe.length_mm / 2;
+        // The branch runs from the saddle outward along +z of its work frame; the raw stock
+        // reaches a little past the cut (the scrap below the saddle).
+        double zLow = 0;
+        for (const PlannedPoint& k : plan.knots)
+            zLow = std::min(zLow, k.cut.p_work.z());
+        zLow -= 20.0;
+        const double zHigh = job.branch_pipe.length_mm;
+        m.workPipe = {job.branch_pipe.radius_mm, job.branch_pipe.wall_mm, zHigh - zLow};
+        m.workPipeCentreZ_mm = (zLow + zHigh) / 2;
         m.matingPipe = {job.main_pipe.radius_mm, job.main_pipe.wall_mm, job.main_pipe.length_mm};
         m.workFromMating = workFromMain * mainFromMainStart;
     }

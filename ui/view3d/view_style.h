@@ -26,7 +26,7 @@ inline constexpr Rgb kPath{1.00, 0.78, 0.05};
 inline constexpr Rgb kDone{0.15, 1.00, 0.25};
 inline constexpr Rgb kUnreachable{1.00, 0.08, 0.08};
 inline constexpr Rgb kTorchBody{1.00, 0.42, 0.02};
-inline constexpr Rgb kNozzle{0.80, 0.45, 0.25};
+inline constexpr Rgb kNozzle{0.92, 0.50, 0.18};
 inline constexpr Rgb kFlame{0.55, 0.80, 1.00};
 inline constexpr Rgb kArmLink{0.82, 0.82, 0.80};
 inline constexpr Rgb kArmJoint{0.22, 0.23, 0.26};
