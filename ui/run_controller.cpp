@@ -63,6 +63,7 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
     });
     connect(bridge_, &EngineBridge::stateChanged, this, &RunController::onState);
     connect(bridge_, &EngineBridge::samples, this, [this] {
+        updateBlocked(); // e.g. homed may change within one tick without a visible state change
         if (autoRun_) stepAutoRun();
     });
     updateBlocked();

@@ -114,6 +114,7 @@ struct MotionEngine::Impl {
     RunPhase phase = RunPhase::Approach;
     std::uint32_t runId = 0;
     double phaseSince = 0, cutStartTime = 0;
+    double cutElapsedAtEnd = 0; // elapsed time shown once the cut has Completed
     int settleCount = 0;
     long samples = 0, minRunSteps = 0;
     bool pathDone = false;

@@ -11,6 +11,7 @@
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
 #include "ui/panels/state_lamps.h"
@@ -18,6 +19,7 @@
 
 #include <QProgressBar>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QtTest>
 
 using CutCell::ui::MainWindow;
@@ -61,8 +63,9 @@ class TestGuiRun : public QObject {
         QCOMPARE(w.progress()->percentText(), QString("100.0 %"));
         QCOMPARE(w.progress()->bar()->value(), w.progress()->bar()->maximum());
         const auto& last = w.run()->bridge()->last();
-        QCOMPARE(last.point_index, last.point_count);
         QVERIFY(last.point_count > 0);
+        QCOMPARE(w.progress()->pointsText(),
+                 QString("%1 / %1").arg(last.point_count)); // the last point of the path
         QVERIFY(!last.torch_on);
         // Both plots got data (joint errors and Cartesian errors come in the same samples).
         QVERIFY(w.plots()->samplesAppended() > 0);
@@ -96,12 +99,11 @@ class TestGuiRun : public QObject {
         QVERIFY(w.lamps()->lamp(StateLamps::Torch)->isLit());
 
         if (byShortcut) {
-            // Parameters are locked while the cut runs; the log table can hold the focus.
-            QWidget* f = w.findChild<QWidget*>("eventLog");
-            QVERIFY(f);
-            w.centralWidget()->setFocus();
-            QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : &w,
-                            Qt::Key_F1);
+            // Parameters are locked while the cut runs; the event log can hold the focus.
+            QWidget* field = w.eventLog()->table();
+            field->setFocus();
+            QTRY_VERIFY(field->hasFocus());
+            QTest::keyClick(field, Qt::Key_F1);
         } else {
             QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
         }
@@ -167,7 +169,8 @@ class TestGuiRun : public QObject {
         QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
                                  30000);
-        QTRY_VERIFY_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(), 2000);
+        QTRY_VERIFY2_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(),
+                                  qPrintable(w.controls()->startBlockedReason()), 2000);
         QTest::mouseClick(w.controls()->startButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Running, 10000);
     }

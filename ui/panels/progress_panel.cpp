@@ -4,6 +4,7 @@
 #include <QLabel>
 #include <QProgressBar>
 
+#include <algorithm>
 #include <cmath>
 
 namespace CutCell::ui {
@@ -56,7 +57,9 @@ void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
     percent_->setText(QStringLiteral("%1 %").arg(p * 100.0, 0, 'f', 1));
     elapsed_->setText(formatDuration(s.elapsed_s));
     remaining_->setText(formatDuration(s.remaining_s));
-    points_->setText(QStringLiteral("%1 / %2").arg(s.point_index).arg(s.point_count));
+    // The engine counts knots passed from 0; the operator reads "point n of N" from 1.
+    const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
+    points_->setText(QStringLiteral("%1 / %2").arg(shown).arg(s.point_count));
     state_->setText(QString::fromLatin1(cutcell::toString(s.state)));
 }
 
