@@ -50,7 +50,7 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::buildLayout() {
     params_ = new ParameterTabs(editor_, this);
-    params_->setMinimumWidth(330);
+    params_->setMinimumWidth(400);
     cell_ = new CellViewPanel(this);
     plots_ = new PlotsPanel(this);
     plots_->setAxisNames({"q0 chuck", "q1 base", "q2 shoulder", "q3 elbow", "q4 wrist", "q5 roll"});
@@ -64,6 +64,7 @@ void MainWindow::buildLayout() {
     centre->addWidget(plots_);
     centre->setStretchFactor(0, 3);
     centre->setStretchFactor(1, 2);
+    centre->setSizes({560, 360});
 
     // The operator column: E-STOP first, always on screen.
     auto* column = new QFrame(this);
@@ -81,14 +82,14 @@ void MainWindow::buildLayout() {
     top->addWidget(centre);
     top->setStretchFactor(0, 0);
     top->setStretchFactor(1, 1);
-    top->setSizes({380, 900});
+    top->setSizes({400, 900});
 
     auto* main = new QSplitter(Qt::Vertical, this);
     main->addWidget(top);
     main->addWidget(log_);
     main->setStretchFactor(0, 4);
     main->setStretchFactor(1, 1);
-    main->setSizes({800, 170});
+    main->setSizes({800, 140});
 
     auto* central = new QWidget(this);
     auto* h = new QHBoxLayout(central);

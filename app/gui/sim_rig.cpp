@@ -28,6 +28,10 @@ class SimulatedRig : public CutCell::ui::EngineRig {
         config.clock = clock;
         config.spec = job.engine;
         config.gains = job.controller;
+        // As fast as possible the engine outruns any display: every 10th cycle keeps the
+        // telemetry ring (8192 samples) from overflowing between two 30 Hz GUI ticks, so the
+        // plots cover the whole cut. Real time keeps every cycle.
+        if (clock == ClockMode::AsFastAsPossible) config.telemetry_every_n_cycles = 10;
         engine_ = std::make_unique<MotionEngine>(devices, config);
         engine_->startThread();
     }

@@ -327,7 +327,9 @@ void MotionEngine::Impl::publishTelemetry() {
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(
             pathT / program->spline.dt(), static_cast<double>(program->point_count)));
-        t.elapsed_s = done ? cutElapsedAtEnd : runActive ? now - cutStartTime : 0;
+        // Elapsed counts from the first cut point (approach, settling and ignition come before).
+        const bool cutStarted = onPath || phase >= RunPhase::Cut;
+        t.elapsed_s = done ? cutElapsedAtEnd : runActive && cutStarted ? now - cutStartTime : 0;
         const double r = rate > 0 ? rate : overrideTarget;
         t.remaining_s = (program->cut_time_s - pathT) / r;
     }

@@ -165,6 +165,10 @@ QComboBox* JobForm::bindChoice(const std::string& key, const QStringList& items,
 }
 
 void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, const QString& unit) {
+    if (unit.isEmpty()) { // no unit (names, choices): the field takes the whole row
+        form->addRow(label, field);
+        return;
+    }
     auto* row = new QWidget(form->parentWidget());
     auto* h = new QHBoxLayout(row);
     h->setContentsMargins(0, 0, 0, 0);

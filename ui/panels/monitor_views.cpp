@@ -82,9 +82,11 @@ void PlotsPanel::setAxisNames(const QStringList& names) {
 
 void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
     for (const auto& s : batch) {
-        // Only the cut itself is plotted (homing and rest are not tracking errors of the cut).
-        if (s.state != cutcell::EngineState::Running && s.state != cutcell::EngineState::Paused)
-            continue;
+        // Only the cut itself is plotted, from its first point (approach, settling, homing
+        // and rest are not tracking errors of the cut).
+        const bool cutting =
+            s.state == cutcell::EngineState::Running || s.state == cutcell::EngineState::Paused;
+        if (!cutting || (s.elapsed_s <= 0 && s.progress <= 0)) continue;
 #ifdef CUTCELL_HAVE_PLOTS
         double err[cutcell::kAxisCount];
         for (int i = 0; i < cutcell::kAxisCount; ++i)
