@@ -1,5 +1,8 @@
 #include "ui/engine_bridge.h"
 
+#include <QElapsedTimer>
+
+#include <algorithm>
 #include <QTimer>
 
 namespace CutCell::ui {
@@ -35,6 +38,8 @@ void EngineBridge::setIntervalMs(int ms) {
 
 void EngineBridge::poll() {
     if (!engine_) return;
+    QElapsedTimer work;
+    work.start();
     cutcell::EngineEvent e;
     while (engine_->popEvent(e))
         emit event(e);
@@ -53,6 +58,8 @@ void EngineBridge::poll() {
         state_ = st;
         emit stateChanged(state_);
     }
+    lastTickMs_ = static_cast<double>(work.nsecsElapsed()) / 1e6;
+    maxTickMs_ = std::max(maxTickMs_, lastTickMs_);
 }
 
 } // namespace CutCell::ui

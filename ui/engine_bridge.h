@@ -29,6 +29,10 @@ class EngineBridge : public QObject {
     bool hasSample() const { return hasSample_; }
     cutcell::EngineState state() const { return state_; }
     std::uint64_t samplesDrained() const { return drained_; }
+    // Time the GUI thread spent in the last tick / the longest tick (drain + every slot).
+    double lastTickMs() const { return lastTickMs_; }
+    double maxTickMs() const { return maxTickMs_; }
+    void resetTickStats() { maxTickMs_ = 0; }
 
     // Drains now (also called by the timer).
     void poll();
@@ -47,6 +51,7 @@ class EngineBridge : public QObject {
     bool hasSample_ = false;
     cutcell::EngineState state_ = cutcell::EngineState::Idle;
     std::uint64_t drained_ = 0;
+    double lastTickMs_ = 0, maxTickMs_ = 0;
 };
 
 } // namespace CutCell::ui

@@ -100,10 +100,12 @@ void startStallBench(MainWindow& window, double seconds) {
             return gaps.empty() ? 0.0 : gaps[static_cast<size_t>(p * double(gaps.size() - 1))];
         };
         std::printf("{\"gui_max_stall_ms\": %.3f, \"gui_heartbeat_p50_ms\": %.3f, "
-                    "\"gui_heartbeat_p99_ms\": %.3f, \"heartbeat_interval_ms\": 5, "
+                    "\"gui_heartbeat_p99_ms\": %.3f, \"gui_tick_work_max_ms\": %.3f, "
+                    "\"heartbeat_interval_ms\": 5, "
                     "\"heartbeats\": %zu, \"telemetry_samples\": %llu, \"plotted_samples\": %llu, "
                     "\"window_s\": %.1f, \"end\": \"%s\", \"state\": \"%s\"}\n",
-                    gaps.empty() ? 0.0 : gaps.back(), pct(0.5), pct(0.99), gaps.size(),
+                    gaps.empty() ? 0.0 : gaps.back(), pct(0.5), pct(0.99),
+                    window.run()->bridge()->maxTickMs(), gaps.size(),
                     static_cast<unsigned long long>(window.run()->bridge()->samplesDrained()),
                     static_cast<unsigned long long>(window.plots()->samplesAppended()), seconds,
                     end, toString(window.run()->bridge()->state()));
@@ -114,9 +116,10 @@ void startStallBench(MainWindow& window, double seconds) {
     window_timer->setSingleShot(true);
     QObject::connect(window_timer, &QTimer::timeout, &window, [finish] { finish("window"); });
     QObject::connect(window.run()->bridge(), &CutCell::ui::EngineBridge::stateChanged, &window,
-                     [probe, window_timer, seconds](EngineState s) {
+                     [probe, window_timer, seconds, &window](EngineState s) {
                          if (s == EngineState::Running && !probe->measuring) {
                              probe->measuring = true;
+                             window.run()->bridge()->resetTickStats();
                              probe->lastNs = -1;
                              window_timer->start(static_cast<int>(seconds * 1000));
                          }
