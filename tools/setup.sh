@@ -61,7 +61,7 @@ ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 
 echo "== test suite under AddressSanitizer + UndefinedBehaviorSanitizer"
 san=build-asan
-cmake -S . -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCUTCELL_SANITIZE=ON -DCUTCELL_BUILD_GUI=OFF >/dev/null
+cmake -S . -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUTCELL_SANITIZE=ON -DCUTCELL_BUILD_GUI=OFF >/dev/null
 cmake --build "$san" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$san" --output-on-failure -j "$jobs" --timeout 900
