@@ -124,6 +124,7 @@ QLineEdit* JobForm::bindString(const std::string& key, StringRef ref) {
     bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
                              auto copy = job;
                              w->setText(QString::fromStdString(ref(copy)));
+                             w->setCursorPosition(0); // show the start of long names
                          }});
     connect(w, &QLineEdit::textEdited, this, [this, ref](const QString& v) {
         if (loading_) return;
