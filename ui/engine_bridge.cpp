@@ -2,8 +2,8 @@
 
 #include <QElapsedTimer>
 
-#include <algorithm>
 #include <QTimer>
+#include <algorithm>
 
 namespace CutCell::ui {
 
@@ -13,7 +13,13 @@ namespace {
 constexpr size_t kMaxPerTick = 4096;
 } // namespace
 
-EngineBridge::EngineBridge(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+EngineBridge::EngineBridge(QObject* parent)
+    : QObject(parent), timer_(new QTimer(this)), statsTimer_(new QTimer(this)) {
+    statsTimer_->setInterval(500);
+    connect(statsTimer_, &QTimer::timeout, this, [this] {
+        if (engine_) emit cycleStats(engine_->cycleStats()); // atomics only: never blocks
+    });
+    statsTimer_->start();
     timer_->setTimerType(Qt::PreciseTimer);
     timer_->setInterval(33);
     connect(timer_, &QTimer::timeout, this, &EngineBridge::poll);

@@ -42,9 +42,12 @@ class EngineBridge : public QObject {
     void samples(const std::vector<cutcell::TelemetrySample>& batch);
     void event(const cutcell::EngineEvent& e);
     void stateChanged(cutcell::EngineState state);
+    // The engine thread's own timing, twice a second.
+    void cycleStats(const cutcell::CycleStats& stats);
 
   private:
     QTimer* timer_;
+    QTimer* statsTimer_;
     cutcell::MotionEngine* engine_ = nullptr;
     std::vector<cutcell::TelemetrySample> batch_;
     cutcell::TelemetrySample last_{};

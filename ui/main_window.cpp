@@ -111,6 +111,9 @@ void MainWindow::buildLayout() {
     planCancel_->hide();
     statusBar()->addWidget(stateLabel_);
     statusBar()->addWidget(rigLabel_, 1);
+    cycleLabel_ = new QLabel(this);
+    cycleLabel_->setObjectName("cycleStats");
+    statusBar()->addPermanentWidget(cycleLabel_);
     statusBar()->addPermanentWidget(planBar_);
     statusBar()->addPermanentWidget(planCancel_);
     statusBar()->addPermanentWidget(
@@ -198,6 +201,15 @@ void MainWindow::connectRun() {
     connect(bridge, &EngineBridge::samples, this, &MainWindow::onSamples);
     connect(bridge, &EngineBridge::event, log_, &EventLogPanel::addEngineEvent);
     connect(bridge, &EngineBridge::stateChanged, this, &MainWindow::onState);
+    connect(bridge, &EngineBridge::cycleStats, this, [this](const cutcell::CycleStats& c) {
+        QString text = tr("cycle %1 ms, jitter p99 %2 us, overruns %3")
+                           .arg(c.period_s * 1000.0, 0, 'g', 3)
+                           .arg(c.jitter_us_p99, 0, 'f', 0)
+                           .arg(c.overruns);
+        if (c.estops_measured > 0)
+            text += tr(", E-STOP latency %1 us").arg(c.last_estop_latency_us, 0, 'f', 0);
+        cycleLabel_->setText(text);
+    });
 }
 
 void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {

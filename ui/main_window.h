@@ -81,6 +81,7 @@ class MainWindow : public QMainWindow {
     QMenu* recentMenu_ = nullptr;
     QLabel* stateLabel_ = nullptr;
     QLabel* rigLabel_ = nullptr;
+    QLabel* cycleLabel_ = nullptr;
     QProgressBar* planBar_ = nullptr;
     QPushButton* planCancel_ = nullptr;
     std::function<int()> savePrompt_;

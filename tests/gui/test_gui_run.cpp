@@ -22,9 +22,9 @@
 #include <QTableWidget>
 #include <QtTest>
 
+using cutcell::EngineState;
 using CutCell::ui::MainWindow;
 using CutCell::ui::StateLamps;
-using cutcell::EngineState;
 
 namespace {
 
@@ -38,7 +38,9 @@ cutcell::Job shortJob() {
     return job;
 }
 
-EngineState state(const MainWindow& w) { return w.run()->bridge()->state(); }
+EngineState state(const MainWindow& w) {
+    return w.run()->bridge()->state();
+}
 
 } // namespace
 
