@@ -311,6 +311,19 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+    const auto s = run_->bridge()->state();
+    if (s == EngineState::Running || s == EngineState::Paused || s == EngineState::Homing) {
+        const auto answer = QMessageBox::warning(
+            this, tr("Machine in motion"),
+            tr("The machine is %1. Quitting stops it at once (emergency stop). Quit?")
+                .arg(QString::fromLatin1(cutcell::toString(s))),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            e->ignore();
+            return;
+        }
+        run_->emergencyStop();
+    }
     if (maybeSave())
         e->accept();
     else

@@ -9,6 +9,7 @@
 #include "ui/panels/progress_panel.h"
 #include "ui/panels/state_lamps.h"
 
+#include <QDialog>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QPushButton>
@@ -51,6 +52,24 @@ class TestControlPanel : public QObject {
         // And the button.
         QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
         QCOMPARE(spy.count(), 3);
+    }
+
+    void eStopShortcutInsideAModalDialog() {
+        CutCell::ui::MainWindow w(nullptr);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QSignalSpy spy(w.controls(), &ControlPanel::emergencyStopRequested);
+        QDialog dialog(&w);
+        auto* edit = new QLineEdit(&dialog);
+        dialog.setModal(true);
+        dialog.open(); // modal, as a file dialog or a question would be
+        QVERIFY(QTest::qWaitForWindowActive(&dialog));
+        edit->setFocus();
+        QTRY_VERIFY(edit->hasFocus());
+        QTest::keyClick(edit, Qt::Key_F1);
+        QCOMPARE(spy.count(), 1);
+        QVERIFY(edit->text().isEmpty());
+        dialog.close();
     }
 
     void buttonsFollowState() {

@@ -1,6 +1,8 @@
 #include "ui/panels/control_panel.h"
 
+#include <QApplication>
 #include <QGridLayout>
+#include <QKeyEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -33,6 +35,7 @@ ControlPanel::ControlPanel(QWidget* parent)
     eStopShortcut_->setContext(Qt::ApplicationShortcut);
     eStopShortcut_->setAutoRepeat(false);
     connect(eStopShortcut_, &QShortcut::activated, this, &ControlPanel::emergencyStopRequested);
+    qApp->installEventFilter(this);
 
     const auto button = [this](const QString& text, const char* name, auto signal) {
         auto* b = new QPushButton(text, this);
@@ -85,6 +88,21 @@ ControlPanel::ControlPanel(QWidget* parent)
     });
     v->addWidget(override_);
     refresh();
+}
+
+bool ControlPanel::eventFilter(QObject* watched, QEvent* event) {
+    // Shortcuts of the main window are blocked while a modal dialog is open: the key is taken
+    // here instead (only then, so it is not handled twice).
+    if (event->type() == QEvent::KeyPress && QApplication::activeModalWidget() &&
+        watched->isWidgetType()) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (!key->isAutoRepeat() &&
+            QKeySequence(key->keyCombination()) == eStopShortcut_->key()) {
+            emit emergencyStopRequested();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void ControlPanel::setState(EngineState state, bool homed) {

@@ -1,7 +1,8 @@
 #pragma once
 // The operator's controls: Enable, Home, Start, Feed hold / Resume, Abort, Reset, the speed
 // override slider and the EMERGENCY STOP. The E-STOP button is never disabled and its shortcut
-// (F1, Qt::ApplicationShortcut) works whatever widget has the focus. The panel only emits
+// (F1, Qt::ApplicationShortcut) works whatever widget has the focus, also inside a modal
+// dialog (an application event filter takes the key there). The panel only emits
 // requests; RunController decides what is allowed and says why Start is not.
 //
 // Threading contract: GUI thread only.
@@ -49,6 +50,10 @@ class ControlPanel : public QWidget {
     void resetRequested();
     void emergencyStopRequested();
     void overrideChanged(double fraction);
+
+  protected:
+    // Catches the E-STOP key while a modal dialog (file dialog, question) blocks shortcuts.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void refresh();
