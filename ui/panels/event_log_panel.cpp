@@ -17,8 +17,12 @@ EventLogPanel::EventLogPanel(QWidget* parent)
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     table_->setHorizontalHeaderLabels({tr("Time"), tr("Severity"), tr("Message")});
-    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    // Fixed widths: ResizeToContents would measure every row at each insert.
+    const QFontMetrics fm(table_->font());
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Fixed);
+    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Fixed);
+    table_->setColumnWidth(0, fm.horizontalAdvance(QStringLiteral("00:00:00.000")) + 24);
+    table_->setColumnWidth(1, fm.horizontalAdvance(QStringLiteral("WARNING")) + 24);
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->verticalHeader()->hide();
     table_->verticalHeader()->setDefaultSectionSize(24);
