@@ -2,6 +2,7 @@
 #include "gui_run.h"
 #include "sim_rig.h"
 
+#include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/run_controller.h"
 #include "ui/theme.h"
@@ -11,6 +12,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QTabWidget>
 
 #include <cstdio>
 #include <cstdlib>
@@ -76,7 +78,9 @@ int main(int argc, char** argv) {
         "Measure the longest GUI-thread stall during a real-time run of S "
         "seconds; prints JSON.",
         "S");
-    cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt});
+    const QCommandLineOption tabOpt(
+        "tab", "Show parameter tab N (0 = Pipes ... 5 = Cycle & devices).", "N", "0");
+    cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt});
     cli.process(app);
 
     const QStringList size = cli.value(sizeOpt).split('x');
@@ -101,6 +105,7 @@ int main(int argc, char** argv) {
             if (cli.isSet(runOpt) || bench) return 1;
         }
     }
+    window.parameters()->tabs()->setCurrentIndex(cli.value(tabOpt).toInt());
     window.show();
     if (bench) {
         bool ok = false;

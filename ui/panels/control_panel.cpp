@@ -2,8 +2,8 @@
 
 #include <QApplication>
 #include <QGridLayout>
-#include <QKeyEvent>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QPushButton>
 #include <QShortcut>
@@ -96,8 +96,7 @@ bool ControlPanel::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::KeyPress && QApplication::activeModalWidget() &&
         watched->isWidgetType()) {
         auto* key = static_cast<QKeyEvent*>(event);
-        if (!key->isAutoRepeat() &&
-            QKeySequence(key->keyCombination()) == eStopShortcut_->key()) {
+        if (!key->isAutoRepeat() && QKeySequence(key->keyCombination()) == eStopShortcut_->key()) {
             emit emergencyStopRequested();
             return true;
         }

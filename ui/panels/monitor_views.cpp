@@ -51,7 +51,15 @@ void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
 
 void CellViewPanel::setSample(const cutcell::TelemetrySample& s) {
 #ifdef CUTCELL_HAVE_VIEW3D
-    if (view_) view_->setMachineState(s.actual, s.progress, s.torch_on);
+    // Throttled, except for the moments that matter (torch switching, end of the path).
+    static_assert(kFrameIntervalMs > 0);
+    const bool due = !sinceFrame_.isValid() || sinceFrame_.elapsed() >= kFrameIntervalMs;
+    const bool torchChanged = s.torch_on != lastTorch_;
+    if (view_ && (due || torchChanged || s.progress >= 1.0)) {
+        view_->setMachineState(s.actual, s.progress, s.torch_on);
+        sinceFrame_.start();
+        lastTorch_ = s.torch_on;
+    }
 #else
     (void)s;
 #endif
@@ -87,6 +95,10 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
         const bool cutting =
             s.state == cutcell::EngineState::Running || s.state == cutcell::EngineState::Paused;
         if (!cutting || (s.elapsed_s <= 0 && s.progress <= 0)) continue;
+        if (lastPlottedS_ >= 0 && s.elapsed_s >= lastPlottedS_ &&
+            s.elapsed_s - lastPlottedS_ < kPlotIntervalS - 1e-9)
+            continue;
+        lastPlottedS_ = s.elapsed_s;
 #ifdef CUTCELL_HAVE_PLOTS
         double err[cutcell::kAxisCount];
         for (int i = 0; i < cutcell::kAxisCount; ++i)
@@ -101,6 +113,7 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
 
 void PlotsPanel::clear() {
     appended_ = 0;
+    lastPlottedS_ = -1;
 #ifdef CUTCELL_HAVE_PLOTS
     plots_->clear();
 #endif

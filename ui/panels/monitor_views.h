@@ -9,6 +9,7 @@
 #include "core/job/job.h"
 #include "core/trajectory/cut_planner.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 #include <memory>
@@ -35,8 +36,14 @@ class CellViewPanel : public QWidget {
     bool rendering() const;
     cutcell::view3d::CellView* view() const { return view_; }
 
+    // The view follows the machine at most this often: each frame costs a render and, with
+    // software OpenGL, a composition of the whole window.
+    static constexpr int kFrameIntervalMs = 66;
+
   private:
     cutcell::view3d::CellView* view_ = nullptr;
+    QElapsedTimer sinceFrame_;
+    bool lastTorch_ = false;
 };
 
 class PlotsPanel : public QWidget {
@@ -50,6 +57,9 @@ class PlotsPanel : public QWidget {
     void setPaused(bool paused);
     bool exportPng(const QString& path, QString* error);
     bool exportCsv(const QString& path, QString* error);
+    // The plots get at most one sample per kPlotIntervalS of engine time (250 Hz): a 30 s
+    // cut is then 7 500 points per trace, which the plot redraws at 30 Hz cheaply.
+    static constexpr double kPlotIntervalS = 0.004;
     // Samples handed to the plots since the last clear().
     std::uint64_t samplesAppended() const { return appended_; }
     cutcell::plots::TrackingPlotsWidget* plots() const { return plots_; }
@@ -57,6 +67,7 @@ class PlotsPanel : public QWidget {
   private:
     cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
     std::uint64_t appended_ = 0;
+    double lastPlottedS_ = -1;
 };
 
 } // namespace CutCell::ui
