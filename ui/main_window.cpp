@@ -50,7 +50,7 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::buildLayout() {
     params_ = new ParameterTabs(editor_, this);
-    params_->setMinimumWidth(400);
+    params_->setMinimumWidth(420);
     cell_ = new CellViewPanel(this);
     plots_ = new PlotsPanel(this);
     plots_->setAxisNames({"q0 chuck", "q1 base", "q2 shoulder", "q3 elbow", "q4 wrist", "q5 roll"});
@@ -82,7 +82,7 @@ void MainWindow::buildLayout() {
     top->addWidget(centre);
     top->setStretchFactor(0, 0);
     top->setStretchFactor(1, 1);
-    top->setSizes({400, 900});
+    top->setSizes({440, 900});
 
     auto* main = new QSplitter(Qt::Vertical, this);
     main->addWidget(top);

@@ -54,7 +54,10 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
     connect(planner_, &PlanWorker::progress, this, &RunController::planProgress);
     connect(planner_, &PlanWorker::planned, this, &RunController::onPlanned);
     connect(planner_, &PlanWorker::cancelled, this, [this] {
-        emit message(Severity::Warning, tr("Planning cancelled."));
+        // Superseded or invalid jobs cancel silently; only the operator's Cancel is logged.
+        if (userCancelled_)
+            emit message(Severity::Warning, tr("Planning cancelled by the operator."));
+        userCancelled_ = false;
         updateBlocked();
     });
     connect(planner_, &PlanWorker::failed, this, [this](const QString& m) {
@@ -99,6 +102,7 @@ void RunController::replanNow() {
 }
 
 void RunController::cancelPlanning() {
+    userCancelled_ = planner_->busy();
     replanTimer_->stop();
     planner_->cancel();
 }

@@ -85,6 +85,7 @@ class RunController : public QObject {
     QString programError_;
     QString blocked_;
     bool autoRun_ = false;
+    bool userCancelled_ = false;
     bool autoEnableSent_ = false, autoHomeSent_ = false, autoStartSent_ = false;
 };
 

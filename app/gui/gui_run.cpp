@@ -20,6 +20,10 @@ namespace cutcell::app {
 
 using CutCell::ui::MainWindow;
 
+namespace {
+void saveAndExit(MainWindow& window, const QString& path);
+} // namespace
+
 void startUnattendedRun(MainWindow& window, const RunOptions& options) {
     auto* run = window.run();
     auto* watchdog = new QTimer(&window);
@@ -49,21 +53,39 @@ void startUnattendedRun(MainWindow& window, const RunOptions& options) {
                 return;
             }
             // Let the last telemetry tick and the plots' 30 Hz replot land before grabbing.
-            QTimer::singleShot(400, &window, [&window, path = options.screenshot] {
-                window.run()->bridge()->poll();
-                const QPixmap shot = window.grab();
-                if (shot.isNull() || !shot.save(path)) {
-                    std::fprintf(stderr, "cutcell: cannot write the screenshot %s\n",
-                                 path.toUtf8().constData());
-                    QApplication::exit(1);
-                    return;
-                }
-                std::printf("cutcell: screenshot %s (%dx%d)\n", path.toUtf8().constData(),
-                            shot.width(), shot.height());
-                QApplication::exit(0);
-            });
+            QTimer::singleShot(400, &window,
+                               [&window, path = options.screenshot] { saveAndExit(window, path); });
         });
     run->startAutoRun();
+}
+
+namespace {
+
+void saveAndExit(MainWindow& window, const QString& path) {
+    window.run()->bridge()->poll();
+    const QPixmap shot = window.grab();
+    if (shot.isNull() || !shot.save(path)) {
+        std::fprintf(stderr, "cutcell: cannot write the screenshot %s\n",
+                     path.toUtf8().constData());
+        QApplication::exit(1);
+        return;
+    }
+    std::printf("cutcell: screenshot %s (%dx%d)\n", path.toUtf8().constData(), shot.width(),
+                shot.height());
+    QApplication::exit(0);
+}
+
+} // namespace
+
+void startScreenshotOnly(MainWindow& window, const QString& path) {
+    auto* poll = new QTimer(&window);
+    poll->setInterval(100);
+    QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, path] {
+        if (window.run()->planning()) return;
+        poll->stop();
+        QTimer::singleShot(400, &window, [&window, path] { saveAndExit(window, path); });
+    });
+    poll->start();
 }
 
 namespace {

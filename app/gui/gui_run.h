@@ -20,6 +20,9 @@ struct RunOptions {
 // written), 1 on a fault, an emergency stop or an unreachable path, 3 on timeout.
 void startUnattendedRun(CutCell::ui::MainWindow& window, const RunOptions& options);
 
+// Saves the main window to `path` once planning has settled (no run), then exits 0.
+void startScreenshotOnly(CutCell::ui::MainWindow& window, const QString& path);
+
 // Runs the current job in real time for `seconds` (or to completion) and prints
 // {"gui_max_stall_ms": ...} on stdout, then exits.
 void startStallBench(CutCell::ui::MainWindow& window, double seconds);

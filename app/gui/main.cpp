@@ -67,8 +67,9 @@ int main(int argc, char** argv) {
     const QCommandLineOption runOpt(
         "run", "Run the job on the simulated cell (as fast as possible) and quit when it ends.");
     const QCommandLineOption realTimeOpt("realtime", "With --run: pace the run to the wall clock.");
-    const QCommandLineOption shotOpt("screenshot", "With --run: save the main window to PNG.",
-                                     "PNG");
+    const QCommandLineOption shotOpt(
+        "screenshot", "Save the main window to PNG and quit (with --run: when the run completed).",
+        "PNG");
     const QCommandLineOption sizeOpt("size", "Window size WIDTHxHEIGHT (default 1440x900).", "WxH",
                                      "1440x900");
     const QCommandLineOption timeoutOpt("timeout", "With --run: give up after S seconds.", "S",
@@ -86,10 +87,6 @@ int main(int argc, char** argv) {
     const QStringList size = cli.value(sizeOpt).split('x');
     if (size.size() != 2 || size[0].toInt() < 320 || size[1].toInt() < 240) {
         std::fprintf(stderr, "cutcell: --size must be WIDTHxHEIGHT, e.g. 1440x900\n");
-        return 64;
-    }
-    if (cli.isSet(shotOpt) && !cli.isSet(runOpt)) {
-        std::fprintf(stderr, "cutcell: --screenshot needs --run\n");
         return 64;
     }
     CutCell::ui::applyDarkIndustrialTheme(app);
@@ -121,6 +118,8 @@ int main(int argc, char** argv) {
         opt.timeout_s = cli.value(timeoutOpt).toDouble();
         if (opt.timeout_s <= 0) opt.timeout_s = 300;
         cutcell::app::startUnattendedRun(window, opt);
+    } else if (cli.isSet(shotOpt)) {
+        cutcell::app::startScreenshotOnly(window, cli.value(shotOpt));
     }
     return app.exec();
 }

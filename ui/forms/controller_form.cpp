@@ -25,7 +25,10 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& headers) {
     t->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     t->setSelectionMode(QAbstractItemView::NoSelection);
     t->setFocusPolicy(Qt::NoFocus);
-    t->setMinimumHeight(260);
+    // As tall as its six rows: no empty band, no scroll bar.
+    t->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    t->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    t->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     return t;
 }
 

@@ -7,13 +7,31 @@
 #include "ui/forms/pipes_form.h"
 #include "ui/forms/robot_dh_table_form.h"
 
+#include <QIcon>
 #include <QLabel>
+#include <QPainter>
+#include <QPixmap>
 #include <QScrollArea>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
 namespace CutCell::ui {
+namespace {
+
+// A red dot for tabs holding invalid fields (icons are not overridden by the stylesheet).
+QIcon issueIcon() {
+    QPixmap pm(12, 12);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setBrush(QColor(255, 74, 61));
+    p.setPen(Qt::NoPen);
+    p.drawEllipse(1, 1, 10, 10);
+    return QIcon(pm);
+}
+
+} // namespace
 
 ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     : QWidget(parent), editor_(editor), tabs_(new QTabWidget(this)), otherIssues_(new QLabel(this)),
@@ -85,7 +103,7 @@ void ParameterTabs::refreshTitles() {
         const int idx = static_cast<int>(i);
         tabs_->setTabText(idx,
                           n ? QStringLiteral("%1 (%2)").arg(titles_[idx]).arg(n) : titles_[idx]);
-        tabs_->tabBar()->setTabTextColor(idx, n ? QColor(255, 90, 80) : QColor());
+        tabs_->setTabIcon(idx, n ? issueIcon() : QIcon());
     }
 }
 

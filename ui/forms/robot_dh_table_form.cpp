@@ -18,7 +18,7 @@ RobotDhTableForm::RobotDhTableForm(JobEditor* editor, QWidget* parent) : JobForm
     auto* table = new QTableWidget(cutcell::kAxisCount, 6, box);
     table->setObjectName("dhTable");
     table->setHorizontalHeaderLabels({tr("alpha\n[deg]"), tr("a\n[mm]"), tr("d\n[mm]"),
-                                      tr("theta off.\n[deg]"), tr("min\n[deg]"), tr("max\n[deg]")});
+                                      tr("offset\n[deg]"), tr("min\n[deg]"), tr("max\n[deg]")});
     table->setVerticalHeaderLabels({tr("0 chuck"), tr("1 base"), tr("2 shoulder"), tr("3 elbow"),
                                     tr("4 wrist"), tr("5 roll")});
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
@@ -32,8 +32,8 @@ RobotDhTableForm::RobotDhTableForm(JobEditor* editor, QWidget* parent) : JobForm
         double DhRow::*member;
     };
     const Column columns[] = {
-        {"alpha_deg", 2, &DhRow::alpha_deg}, {"a_mm", 2, &DhRow::a_mm},
-        {"d_mm", 2, &DhRow::d_mm},           {"theta_offset_deg", 2, &DhRow::theta_offset_deg},
+        {"alpha_deg", 1, &DhRow::alpha_deg}, {"a_mm", 1, &DhRow::a_mm},
+        {"d_mm", 1, &DhRow::d_mm},           {"theta_offset_deg", 1, &DhRow::theta_offset_deg},
         {"min_deg", 1, &DhRow::min_deg},     {"max_deg", 1, &DhRow::max_deg}};
     for (int r = 0; r < cutcell::kAxisCount; ++r) {
         for (int c = 0; c < 6; ++c) {
@@ -46,7 +46,10 @@ RobotDhTableForm::RobotDhTableForm(JobEditor* editor, QWidget* parent) : JobForm
             table->setCellWidget(r, c, w);
         }
     }
-    table->setMinimumHeight(280);
+    // As tall as its six rows: no empty band, no scroll bar.
+    table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    table->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     v->addWidget(table);
     auto* note = new QLabel(
         tr("Row 0 is the pipe chuck: its d is the distance from the robot base to the cut "
