@@ -14,6 +14,7 @@ int runValidate(const Args& args);
 int runPlan(const Args& args);
 int runSimulate(const Args& args);
 int runBench(const Args& args);
+int runRun(const Args& args);   // run_command.cpp (needs CutCell::devices)
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
 std::string option(const Args& args, const std::string& name);
