@@ -109,13 +109,13 @@ struct TrackingPlotsWidget::Impl {
         cartPlot->clearGraphs();
         for (int i = 0; i < axes; ++i) {
             QCPGraph* g = jointPlot->addGraph();
-            g->setPen(QPen(kTraceColours[i], 1.2));
+            g->setPen(QPen(kTraceColours[i])); // width 0/1 cosmetic: thick pens are ~50x slower
             g->setName(names.value(i, defaultAxisName(i)));
             g->setAdaptiveSampling(true);
         }
         for (int k = 0; k < kCartTraces; ++k) {
             QCPGraph* g = cartPlot->addGraph();
-            g->setPen(QPen(kCartColours[k], 1.2));
+            g->setPen(QPen(kCartColours[k]));
             g->setName(QString::fromLatin1(kCartNames[k]));
             g->setAdaptiveSampling(true);
         }

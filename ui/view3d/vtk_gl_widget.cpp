@@ -20,7 +20,6 @@ namespace cutcell::view3d {
 VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
     window_ = vtkGenericOpenGLRenderWindow::New();
     window_->SetMultiSamples(0); // 4x MSAA costs ~6x the frame time on llvmpipe (STACK.md)
-    window_->SetForceMaximumHardwareLineWidth(1);
     window_->SetReadyForRendering(false);
     for (unsigned long ev : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
                              vtkCommand::WindowFrameEvent})
