@@ -135,7 +135,8 @@ int main(int argc, char** argv) {
             const double ms = view.renderFrameMs();
             clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
             if (i >= warmup)
-                cpuMs.push_back((c1.tv_sec - c0.tv_sec) * 1e3 + (c1.tv_nsec - c0.tv_nsec) / 1e6);
+                cpuMs.push_back(static_cast<double>(c1.tv_sec - c0.tv_sec) * 1e3 +
+                                static_cast<double>(c1.tv_nsec - c0.tv_nsec) / 1e6);
             if (i >= warmup) {
                 frameMs.push_back(ms);
                 stateMs.push_back(s);
