@@ -66,6 +66,7 @@ CutPlan planWithPoints(Job& job, int points) {
 int main(int argc, char** argv) {
     int points = 30000, frames = 100, width = 800, height = 600;
     std::string screenshot;
+    bool follow = false;
     for (int i = 1; i < argc; ++i) {
         const auto next = [&] { return i + 1 < argc ? argv[++i] : ""; };
         if (!std::strcmp(argv[i], "--points"))
@@ -76,9 +77,11 @@ int main(int argc, char** argv) {
             std::sscanf(next(), "%dx%d", &width, &height);
         else if (!std::strcmp(argv[i], "--screenshot"))
             screenshot = next();
+        else if (!std::strcmp(argv[i], "--follow"))
+            follow = true;
         else {
             std::fprintf(stderr, "usage: bench_view [--points N] [--frames N] [--size WxH] "
-                                 "[--screenshot file.png]\n");
+                                 "[--screenshot file.png [--follow]]\n");
             return 2;
         }
     }
@@ -92,6 +95,7 @@ int main(int argc, char** argv) {
         view.resize(width, height);
         view.show();
         view.setScene(view3d::buildRobotScene(job, plan));
+        if (follow) view.setPreset(view3d::ViewPreset::FollowTorch);
         const double f = 0.4;
         view.setMachineState(plan.spline.evaluate(f * plan.spline.duration()).q, f, true);
         settle(300);
