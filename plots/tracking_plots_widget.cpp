@@ -173,7 +173,8 @@ struct TrackingPlotsWidget::Impl {
     }
 
     void onTick() {
-        if (!dirty || paused) return;
+        // Hidden (e.g. another tab): keep the data, draw when shown again.
+        if (!dirty || paused || !self->isVisible()) return;
         refresh();
         jointPlot->replot(QCustomPlot::rpQueuedReplot);
         cartPlot->replot(QCustomPlot::rpQueuedReplot);
@@ -304,6 +305,11 @@ void TrackingPlotsWidget::clear() {
     d->fullResync = true;
     d->dirty = true;
     if (!d->paused) d->onTick();
+}
+
+void TrackingPlotsWidget::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    d->onTick(); // catch up with what arrived while hidden
 }
 
 void TrackingPlotsWidget::setPaused(bool paused) {
