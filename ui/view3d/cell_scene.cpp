@@ -189,7 +189,8 @@ void CellScene::Impl::build() {
     pts->SetNumberOfPoints(n);
     donePts->SetNumberOfPoints(n);
     rgb->SetNumberOfTuples(n);
-    polyline->InsertNextCell(static_cast<int>(n));
+    if (n >= 2)
+        polyline->InsertNextCell(static_cast<int>(n)); // a path of 0 or 1 point draws nothing
     unreachable = 0;
     for (vtkIdType i = 0; i < n; ++i) {
         const Vec3& p = m.pathWork[static_cast<size_t>(i)];
@@ -198,7 +199,7 @@ void CellScene::Impl::build() {
         pts->SetPoint(i, lifted.x(), lifted.y(), lifted.z());
         const Vec3 above = radial.norm() > 1e-9 ? Vec3(p + 1.6 * radial.normalized()) : p;
         donePts->SetPoint(i, above.x(), above.y(), above.z());
-        polyline->InsertCellPoint(i);
+        if (n >= 2) polyline->InsertCellPoint(i);
         const bool ok =
             static_cast<size_t>(i) >= m.reachable.size() || m.reachable[static_cast<size_t>(i)];
         const Rgb c = ok ? colours::kPath : colours::kUnreachable;
