@@ -13,6 +13,9 @@ usage:
   cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
   cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
   cutcell-cli bench [--json] [--quick]      measure speed figures
+  cutcell-cli export JOB [--gcode FILE] [--template-svg FILE] [--template-pdf FILE] [--path-csv FILE]
+                                            profile cutter G-code (LinuxCNC X/A), 1:1 cutting
+                                            template, path with stepper pulses
 
 exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
 )";
@@ -32,6 +35,7 @@ int main(int argc, char** argv) {
     if (cmd == "plan") return runPlan(args);
     if (cmd == "simulate") return runSimulate(args);
     if (cmd == "bench") return runBench(args);
+    if (cmd == "export") return runExport(args);
     std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
     return ExitCode::kUsage;
 }
