@@ -16,9 +16,9 @@
 namespace cutcell {
 
 struct GcodeStats {
-    size_t moves = 0;           // G1 blocks
-    double length_mm = 0;       // developed length of the written moves
-    double time_s = 0;          // sum of the inverse-time durations
+    size_t moves = 0;     // G1 blocks
+    double length_mm = 0; // developed length of the written moves
+    double time_s = 0;    // sum of the inverse-time durations
 };
 
 std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stats = nullptr);

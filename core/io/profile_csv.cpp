@@ -17,11 +17,11 @@ std::string profilePathCsv(const ProfileCut& cut, const PulseSchedule& sch) {
         const bool closing = i == cut.points.size();
         const PulseStep step = closing || i >= sch.steps.size() ? PulseStep{} : sch.steps[i];
         std::snprintf(buf, sizeof buf,
-                      "%zu,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%.6f,%d,%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64
-                      ",%.9f,%.3f,%.3f\n",
-                      i, t, s, closing ? 360.0 : p.beta_deg, p.p_main.x(), p.p_main.y(), p.p_main.z(), p.x_mm,
-                      p.a_deg, p.pipe, px, pa, step.x_pulses, step.a_pulses, step.dt_s, step.x_rate_hz,
-                      step.a_rate_hz);
+                      "%zu,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%.6f,%d,%" PRId64 ",%" PRId64
+                      ",%" PRId64 ",%" PRId64 ",%.9f,%.3f,%.3f\n",
+                      i, t, s, closing ? 360.0 : p.beta_deg, p.p_main.x(), p.p_main.y(),
+                      p.p_main.z(), p.x_mm, p.a_deg, p.pipe, px, pa, step.x_pulses, step.a_pulses,
+                      step.dt_s, step.x_rate_hz, step.a_rate_hz);
         out += buf;
         t += step.dt_s;
         s += step.ds_mm;

@@ -27,7 +27,7 @@ struct TemplateDrawing {
     struct Text {
         Eigen::Vector2d pos; // baseline start (or centre with centred = true)
         double size_mm = 3.5;
-        std::string text;    // plain ASCII
+        std::string text; // plain ASCII
         bool centred = false;
     };
     double width_mm = 0, height_mm = 0;

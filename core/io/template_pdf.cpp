@@ -22,7 +22,8 @@ std::string pdfString(const std::string& s) {
 // letters are 556 units wide.
 double helveticaWidth(const std::string& s, double size) {
     double w = 0;
-    for (char c : s) w += c == ' ' || c == '.' ? 278 : c == '-' ? 333 : 556;
+    for (char c : s)
+        w += c == ' ' || c == '.' ? 278 : c == '-' ? 333 : 556;
     return w * size / 1000;
 }
 
@@ -33,8 +34,8 @@ std::string templatePdf(const TemplateDrawing& d) {
     if (W > kMaxPagePt || H > kMaxPagePt) {
         char msg[256];
         std::snprintf(msg, sizeof msg,
-                      "the template is %.0f x %.0f mm; a PDF page can be at most 5080 mm a side", d.width_mm,
-                      d.height_mm);
+                      "the template is %.0f x %.0f mm; a PDF page can be at most 5080 mm a side",
+                      d.width_mm, d.height_mm);
         throw std::runtime_error(msg);
     }
     auto X = [](double mm) { return mm * kPtPerMm; };
@@ -72,7 +73,8 @@ std::string templatePdf(const TemplateDrawing& d) {
                   "/Resources << /Font << /F1 5 0 R >> >> >>",
                   W, H);
     object(buf);
-    object("<< /Length " + std::to_string(content.size()) + " >>\nstream\n" + content + "endstream");
+    object("<< /Length " + std::to_string(content.size()) + " >>\nstream\n" + content +
+           "endstream");
     object("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
     object("<< /Producer (CutCell) /Title " + pdfString("Cutting template") + " >>");
 
@@ -82,8 +84,8 @@ std::string templatePdf(const TemplateDrawing& d) {
         std::snprintf(buf, sizeof buf, "%010zu 00000 n \n", off);
         out += buf;
     }
-    out += "trailer\n<< /Size " + std::to_string(offsets.size() + 1) + " /Root 1 0 R /Info 6 0 R >>\nstartxref\n" +
-           std::to_string(xref) + "\n%%EOF\n";
+    out += "trailer\n<< /Size " + std::to_string(offsets.size() + 1) +
+           " /Root 1 0 R /Info 6 0 R >>\nstartxref\n" + std::to_string(xref) + "\n%%EOF\n";
     return out;
 }
 

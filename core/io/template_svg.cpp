@@ -9,11 +9,20 @@ std::string xmlEscape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -32,11 +41,14 @@ std::string templateSvg(const TemplateDrawing& d) {
     out += buf;
     out += "<rect x=\"0\" y=\"0\" width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     for (const auto& l : d.lines) {
-        std::snprintf(buf, sizeof buf, "<path class=\"%s\"%s fill=\"none\" stroke=\"black\" stroke-width=\"%.3f\" d=\"",
-                      l.id.c_str(), l.id == "cut" ? " id=\"cut\"" : "", l.width_mm);
+        std::snprintf(
+            buf, sizeof buf,
+            "<path class=\"%s\"%s fill=\"none\" stroke=\"black\" stroke-width=\"%.3f\" d=\"",
+            l.id.c_str(), l.id == "cut" ? " id=\"cut\"" : "", l.width_mm);
         out += buf;
         for (size_t i = 0; i < l.points.size(); ++i) {
-            std::snprintf(buf, sizeof buf, "%s%.4f %.4f", i == 0 ? "M" : " L", l.points[i].x(), l.points[i].y());
+            std::snprintf(buf, sizeof buf, "%s%.4f %.4f", i == 0 ? "M" : " L", l.points[i].x(),
+                          l.points[i].y());
             out += buf;
         }
         out += l.closed ? " Z\"/>\n" : "\"/>\n";

@@ -59,8 +59,10 @@ IntersectionSpec withSide(IntersectionSpec s, int side) {
 
 } // namespace
 
-BranchCrossing::BranchCrossing(const PipeIntersection& cutBranch, const JointPipe& pipe, double mainRadius)
-    : cut_(&cutBranch), pipe_(pipe), mainRadius_(mainRadius), mainFromLocal_(localFrame(cutBranch, pipe).mainFromLocal),
+BranchCrossing::BranchCrossing(const PipeIntersection& cutBranch, const JointPipe& pipe,
+                               double mainRadius)
+    : cut_(&cutBranch), pipe_(pipe), mainRadius_(mainRadius),
+      mainFromLocal_(localFrame(cutBranch, pipe).mainFromLocal),
       localPlus_(withSide(localFrame(cutBranch, pipe).spec, +1)),
       localMinus_(withSide(localFrame(cutBranch, pipe).spec, -1)) {}
 
@@ -98,7 +100,8 @@ SetM buildSetM(const PipeIntersection& cutBranch, const std::vector<JointPipe>& 
     m.point.assign(static_cast<size_t>(n * m.cols), Vec3::Constant(nan));
     std::vector<BranchCrossing> crossings;
     crossings.reserve(others.size());
-    for (const auto& o : others) crossings.emplace_back(cutBranch, o, cutBranch.spec().main_radius_mm);
+    for (const auto& o : others)
+        crossings.emplace_back(cutBranch, o, cutBranch.spec().main_radius_mm);
     const Vec3 origin = cutBranch.branchOrigin(), axis = cutBranch.branchAxis();
     for (int i = 0; i < n; ++i) {
         const double phi = phi0 + 2 * kPi * i / n;
@@ -129,7 +132,8 @@ ColumnMinima columnMinima(const SetM& m) {
         out.N[static_cast<size_t>(i)] = m.at(i, best);
         out.c[static_cast<size_t>(i)] = best;
     }
-    for (size_t i = 0; i < n; ++i) out.N_prime[i] = out.N[(i + 1) % n] - out.N[i];
+    for (size_t i = 0; i < n; ++i)
+        out.N_prime[i] = out.N[(i + 1) % n] - out.N[i];
     return out;
 }
 

@@ -32,8 +32,8 @@ namespace cutcell {
 // An infinite cylinder of which only the half outward of axis_point (along axis_dir) is real
 // pipe: a branch welded onto the main pipe, with axis_point where its axis enters the main pipe.
 struct JointPipe {
-    Vec3 axis_point;  // main frame
-    Vec3 axis_dir;    // unit, pointing out of the main pipe
+    Vec3 axis_point; // main frame
+    Vec3 axis_dir;   // unit, pointing out of the main pipe
     double radius_mm = 0;
 };
 
@@ -62,8 +62,8 @@ class BranchCrossing {
 };
 
 struct SetM {
-    int rows = 0; // n rotation steps
-    int cols = 0; // pipes: 0 = main, k = other branch k-1
+    int rows = 0;                // n rotation steps
+    int cols = 0;                // pipes: 0 = main, k = other branch k-1
     double L_mm = 0;             // the seed's L: l = L - t
     std::vector<double> phi_rad; // per row
     std::vector<double> l;       // row-major rows x cols; NaN where the generatrix misses

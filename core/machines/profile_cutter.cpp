@@ -19,7 +19,8 @@ IntersectionSpec profileIntersectionSpec(const Job& job) {
 
 std::vector<JointPipe> jointPipes(const Job& job) {
     std::vector<JointPipe> out;
-    for (const auto& b : job.other_branches) out.push_back(jointPipeFrom(b));
+    for (const auto& b : job.other_branches)
+        out.push_back(jointPipeFrom(b));
     return out;
 }
 
@@ -72,8 +73,9 @@ ProfileCut branchEnd(const Job& job, int n) {
 
 ProfileCut mainHole(const Job& job, int n) {
     const PipeIntersection cut(profileIntersectionSpec(job));
-    const double S = job.profile_cutter.branch_position_auto ? job.main_pipe.length_mm / 2
-                                                             : job.profile_cutter.branch_position_mm;
+    const double S = job.profile_cutter.branch_position_auto
+                         ? job.main_pipe.length_mm / 2
+                         : job.profile_cutter.branch_position_mm;
     ProfileCut out;
     out.target = CutTarget::Main;
     out.work_radius_mm = job.main_pipe.radius_mm;

@@ -34,8 +34,8 @@ struct ProfilePoint {
 
 struct ProfileCut {
     CutTarget target = CutTarget::Branch;
-    double work_radius_mm = 0;   // R_w, outer radius of the pipe being cut
-    double a_per_turn_deg = 360; // A travel over the closed cut: 360 (branch end) or 0 (hole)
+    double work_radius_mm = 0;        // R_w, outer radius of the pipe being cut
+    double a_per_turn_deg = 360;      // A travel over the closed cut: 360 (branch end) or 0 (hole)
     std::vector<ProfilePoint> points; // n points, one turn, the first not repeated at the end
     std::vector<double> increments_x_mm; // the seed's N' (X increments, closing one included)
     // Developed (surface) length of the closed polyline through the points.

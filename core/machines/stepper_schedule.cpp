@@ -6,13 +6,19 @@
 
 namespace cutcell {
 
-PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec& spec, double speed_mm_s) {
+PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec& spec,
+                                 double speed_mm_s) {
     PulseSchedule s;
     s.mm_per_pulse_x = spec.mm_per_pulse_x;
-    s.deg_per_pulse_a = 360.0 / (static_cast<double>(spec.steps_per_rev_a) * spec.pulses_per_step_a);
+    s.deg_per_pulse_a =
+        360.0 / (static_cast<double>(spec.steps_per_rev_a) * spec.pulses_per_step_a);
     const double radPerPulse = deg2rad(s.deg_per_pulse_a);
-    auto xPulses = [&](double x) { return static_cast<std::int64_t>(std::llround(x / s.mm_per_pulse_x)); };
-    auto aPulses = [&](double a) { return static_cast<std::int64_t>(std::llround(a / s.deg_per_pulse_a)); };
+    auto xPulses = [&](double x) {
+        return static_cast<std::int64_t>(std::llround(x / s.mm_per_pulse_x));
+    };
+    auto aPulses = [&](double a) {
+        return static_cast<std::int64_t>(std::llround(a / s.deg_per_pulse_a));
+    };
     const size_t n = cut.points.size();
     if (n == 0) return s;
     s.x_start_pulses = xPulses(cut.points.front().x_mm);

@@ -21,9 +21,9 @@ namespace cutcell {
 struct PulseStep {
     std::int64_t x_pulses = 0; // signed: direction + count for the card
     std::int64_t a_pulses = 0;
-    double ds_mm = 0;          // surface distance of the step
-    double dt_s = 0;           // duration at the cutting speed
-    double x_rate_hz = 0;      // pulse rates over the step
+    double ds_mm = 0;     // surface distance of the step
+    double dt_s = 0;      // duration at the cutting speed
+    double x_rate_hz = 0; // pulse rates over the step
     double a_rate_hz = 0;
 };
 
@@ -32,15 +32,16 @@ struct PulseSchedule {
     double deg_per_pulse_a = 0;
     std::int64_t x_start_pulses = 0; // absolute position of the first point
     std::int64_t a_start_pulses = 0;
-    std::vector<PulseStep> steps;    // one per grid step, the closing step included
+    std::vector<PulseStep> steps; // one per grid step, the closing step included
     double total_time_s = 0;
-    double developed_length_mm = 0;  // sum of ds
+    double developed_length_mm = 0; // sum of ds
     double max_x_rate_hz = 0;
     double max_a_rate_hz = 0;
     // Empty when every rate is within max_pulse_rate_hz; else one sentence naming the step.
     std::string problem;
 };
 
-PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec& spec, double speed_mm_s);
+PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec& spec,
+                                 double speed_mm_s);
 
 } // namespace cutcell

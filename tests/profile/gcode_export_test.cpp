@@ -23,7 +23,8 @@ std::string run(const std::string& cmd, int* status) {
     if (!p) return out;
     std::array<char, 4096> buf{};
     size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
+        out.append(buf.data(), n);
     *status = ::pclose(p);
     return out;
 }
@@ -31,14 +32,16 @@ std::string run(const std::string& cmd, int* status) {
 std::string findRs274() {
     int status = 0;
     std::string path = run("command -v rs274 2>/dev/null", &status);
-    while (!path.empty() && (path.back() == '\n' || path.back() == ' ')) path.pop_back();
+    while (!path.empty() && (path.back() == '\n' || path.back() == ' '))
+        path.pop_back();
     return status == 0 ? path : std::string();
 }
 
 std::vector<Job> jobs() {
     std::vector<Job> out{test::exampleProfileJob()};
     std::mt19937 rng(1234);
-    for (int k = 0; k < 8; ++k) out.push_back(test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch));
+    for (int k = 0; k < 8; ++k)
+        out.push_back(test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch));
     Job hole = test::exampleProfileJob();
     hole.cut.target = CutTarget::Main;
     out.push_back(hole);
@@ -57,7 +60,8 @@ std::vector<Move> writtenMoves(const std::string& g) {
     const std::regex g1(R"(^G1 X(-?[0-9.]+) A(-?[0-9.]+) F([0-9.]+)$)");
     std::smatch m;
     while (std::getline(in, line))
-        if (std::regex_match(line, m, g1)) out.push_back({std::stod(m[1]), std::stod(m[2]), std::stod(m[3])});
+        if (std::regex_match(line, m, g1))
+            out.push_back({std::stod(m[1]), std::stod(m[2]), std::stod(m[3])});
     return out;
 }
 
@@ -70,7 +74,8 @@ TEST(GcodeExport, FeedKeepsTheSurfaceSpeed) {
         const auto moves = writtenMoves(g);
         ASSERT_EQ(moves.size(), st.moves);
         ASSERT_EQ(moves.size(), cut.points.size());
-        double px = std::round(cut.points[0].x_mm * 1e4) / 1e4, pa = std::round(cut.points[0].a_deg * 1e4) / 1e4;
+        double px = std::round(cut.points[0].x_mm * 1e4) / 1e4,
+               pa = std::round(cut.points[0].a_deg * 1e4) / 1e4;
         for (const Move& m : moves) {
             const double ds = std::hypot(m.x - px, cut.work_radius_mm * deg2rad(m.a - pa));
             const double minutes = 1.0 / m.f;
@@ -96,7 +101,8 @@ TEST(GcodeExport, CommentsCannotBreakTheProgram) {
 TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
     const std::string rs274 = findRs274();
     if (rs274.empty()) GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
-    const auto dir = std::filesystem::temp_directory_path() / ("cutcell_gcode_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("cutcell_gcode_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     double worstX = 0, worstA = 0;
     for (size_t k = 0; k < jobs().size(); ++k) {
@@ -107,8 +113,10 @@ TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
         int status = 0;
         const std::string canon = run(rs274 + " -g " + file.string() + " 2>&1", &status);
         ASSERT_EQ(status, 0) << canon;
-        const std::regex feed(R"(STRAIGHT_FEED\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
-        const std::regex traverse(R"(STRAIGHT_TRAVERSE\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
+        const std::regex feed(
+            R"(STRAIGHT_FEED\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
+        const std::regex traverse(
+            R"(STRAIGHT_TRAVERSE\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
         std::vector<std::pair<double, double>> feeds;
         std::istringstream in(canon);
         std::string line;
@@ -125,7 +133,8 @@ TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
                 EXPECT_TRUE(torchOn) << "cut move before torch on";
                 feeds.emplace_back(std::stod(m[1]), std::stod(m[4]));
             }
-            if (line.find("STOP_SPINDLE_TURNING") != std::string::npos && !feeds.empty()) torchOff = true;
+            if (line.find("STOP_SPINDLE_TURNING") != std::string::npos && !feeds.empty())
+                torchOff = true;
         }
         EXPECT_TRUE(sawTraverse && torchOn && torchOff);
         ASSERT_EQ(feeds.size(), cut.points.size());

@@ -120,7 +120,8 @@ TEST(MultiBranch, RandomJointsFitEveryPipe) {
             // Walk from the cut toward the fixed end: the branch wall is in no pipe.
             for (int step = 1; step <= 50; ++step) {
                 const Vec3 q = p + cut.branchAxis() * (4.0 * R * step / 50);
-                EXPECT_FALSE(insideAnyPipe(q, R, others, 1e-6)) << "job " << k << " row " << i << " step " << step;
+                EXPECT_FALSE(insideAnyPipe(q, R, others, 1e-6))
+                    << "job " << k << " row " << i << " step " << step;
             }
             sum += mins.N_prime[ui];
         }
@@ -140,7 +141,8 @@ TEST(MultiBranch, ExampleJobUsesBothColumns) {
     const Job job = test::exampleProfileJob();
     const ProfileCut cut = computeProfileCut(job);
     int onOther = 0;
-    for (const auto& p : cut.points) onOther += p.pipe == 1;
+    for (const auto& p : cut.points)
+        onOther += p.pipe == 1;
     EXPECT_GT(onOther, 0);
     EXPECT_LT(onOther, static_cast<int>(cut.points.size()));
 }

@@ -60,7 +60,8 @@ TEST(ProfileCutter, AxesPlaceTheTorchOverThePoint) {
         }
         if (job.cut.target == CutTarget::Branch) {
             EXPECT_NEAR(std::max_element(cut.points.begin(), cut.points.end(),
-                                         [](auto& a, auto& c) { return a.x_mm < c.x_mm; })->x_mm,
+                                         [](auto& a, auto& c) { return a.x_mm < c.x_mm; })
+                            ->x_mm,
                         job.branch_pipe.length_mm, 1e-9);
         }
     }
@@ -75,9 +76,12 @@ TEST(ProfileCutter, MatchesSeedEquations) {
     for (int k = 0; k < kJobs; ++k) {
         const Job job = test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch);
         const ProfileCut cut = computeProfileCut(job, 180);
-        const double R = job.main_pipe.radius_mm, r = branchSurfaceRadius(job), e = job.eccentricity_mm;
+        const double R = job.main_pipe.radius_mm, r = branchSurfaceRadius(job),
+                     e = job.eccentricity_mm;
         const double th = deg2rad(job.angle_deg);
-        auto alpha = [&](double beta) { return std::asin(std::clamp((r * std::cos(beta) + e) / R, -1.0, 1.0)); };
+        auto alpha = [&](double beta) {
+            return std::asin(std::clamp((r * std::cos(beta) + e) / R, -1.0, 1.0));
+        };
         auto l = [&](double beta) {
             return -(r * std::sin(beta) * std::cos(th) + R * std::cos(alpha(beta))) / std::sin(th);
         };
@@ -112,11 +116,13 @@ TEST(ProfileCutter, ClosedCutIncrementsSumToZero) {
         EXPECT_NEAR(sum, 0, 1e-9 * (1 + sumAbs));
         ASSERT_EQ(cut.increments_x_mm.size(), cut.points.size());
         for (size_t i = 0; i < cut.points.size(); ++i)
-            EXPECT_NEAR(cut.increments_x_mm[i], cut.closedAt(i + 1).x_mm - cut.points[i].x_mm, 1e-12);
+            EXPECT_NEAR(cut.increments_x_mm[i], cut.closedAt(i + 1).x_mm - cut.points[i].x_mm,
+                        1e-12);
     }
 }
 
-// The developed length converges as the grid gets finer (a polyline is never longer than the curve).
+// The developed length converges as the grid gets finer (a polyline is never longer than the
+// curve).
 TEST(ProfileCutter, DevelopedLengthConverges) {
     const Job job = test::exampleProfileJob();
     const double coarse = computeProfileCut(job, 200).developedLength();

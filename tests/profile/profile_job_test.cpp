@@ -52,15 +52,18 @@ TEST(ProfileJob, BadValuesNameKeyValueUnitAndLimit) {
     job.other_branches[0].radius_mm = 80;
     job.other_branches[0].eccentricity_mm = 10;
     EXPECT_EQ(firstMessageFor(job, "other_branches[0].radius_mm"),
-              "other_branches[0].radius_mm = 80 mm does not fit: |eccentricity_mm| + radius = 90 mm must be <= "
+              "other_branches[0].radius_mm = 80 mm does not fit: |eccentricity_mm| + radius = 90 "
+              "mm must be <= "
               "main_pipe.radius_mm = 84.15 mm");
     job = test::exampleProfileJob();
     job.other_branches[0].angle_deg = 180;
-    EXPECT_EQ(firstMessageFor(job, "other_branches[0].angle_deg"),
-              "other_branches[0].angle_deg = 180 deg is outside (0, 180) deg (angle to the main axis)");
+    EXPECT_EQ(
+        firstMessageFor(job, "other_branches[0].angle_deg"),
+        "other_branches[0].angle_deg = 180 deg is outside (0, 180) deg (angle to the main axis)");
     job = test::exampleProfileJob();
     job.other_branches[0].angle_deg = job.angle_deg; // parallel to the cut branch
-    EXPECT_NE(firstMessageFor(job, "other_branches[0].angle_deg").find("must differ by >= 1 deg"), std::string::npos);
+    EXPECT_NE(firstMessageFor(job, "other_branches[0].angle_deg").find("must differ by >= 1 deg"),
+              std::string::npos);
     job = test::exampleProfileJob();
     job.profile_cutter.steps_per_rev_a = 4;
     EXPECT_EQ(firstMessageFor(job, "profile_cutter.steps_per_rev_a"),
@@ -84,7 +87,8 @@ TEST(ProfileJob, NonIntegerStepsAreRejectedWhenRead) {
         jobFromJson(doc);
         FAIL() << "accepted 400.5 steps/rev";
     } catch (const JobError& e) {
-        EXPECT_STREQ(e.what(), "profile_cutter.steps_per_rev_a = 400.5 steps/rev must be a whole number");
+        EXPECT_STREQ(e.what(),
+                     "profile_cutter.steps_per_rev_a = 400.5 steps/rev must be a whole number");
     }
 }
 
@@ -92,7 +96,8 @@ int runCli(const std::string& args, std::string* out) {
     FILE* p = ::popen((std::string(CUTCELL_CLI) + " " + args + " 2>&1").c_str(), "r");
     std::array<char, 4096> buf{};
     size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out->append(buf.data(), n);
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
+        out->append(buf.data(), n);
     const int status = ::pclose(p);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -101,39 +106,49 @@ size_t lineCount(const std::filesystem::path& f) {
     std::ifstream in(f);
     size_t n = 0;
     std::string line;
-    while (std::getline(in, line)) ++n;
+    while (std::getline(in, line))
+        ++n;
     return n;
 }
 
 TEST(ProfileCli, ExportPlanAndValidate) {
-    const std::string job = std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json";
-    const auto dir = std::filesystem::temp_directory_path() / ("cutcell_cli_" + std::to_string(::getpid()));
+    const std::string job =
+        std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json";
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("cutcell_cli_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     std::string out;
     ASSERT_EQ(runCli("validate " + job, &out), 0) << out;
     EXPECT_NE(out.find("profile_cutter_2axis"), std::string::npos) << out;
     out.clear();
-    const std::string g = (dir / "cut.ngc").string(), svg = (dir / "t.svg").string(), pdf = (dir / "t.pdf").string();
-    ASSERT_EQ(runCli("export " + job + " --gcode " + g + " --template-svg " + svg + " --template-pdf " + pdf, &out), 0)
+    const std::string g = (dir / "cut.ngc").string(), svg = (dir / "t.svg").string(),
+                      pdf = (dir / "t.pdf").string();
+    ASSERT_EQ(runCli("export " + job + " --gcode " + g + " --template-svg " + svg +
+                         " --template-pdf " + pdf,
+                     &out),
+              0)
         << out;
     EXPECT_GT(std::filesystem::file_size(g), 1000u);
     EXPECT_GT(std::filesystem::file_size(svg), 1000u);
     EXPECT_GT(std::filesystem::file_size(pdf), 1000u);
     out.clear();
-    ASSERT_EQ(runCli("export " + job + " --template-svg " + (dir / "only.svg").string(), &out), 0) << out;
+    ASSERT_EQ(runCli("export " + job + " --template-svg " + (dir / "only.svg").string(), &out), 0)
+        << out;
     EXPECT_FALSE(std::filesystem::exists(dir / "cut2.ngc"));
     out.clear();
     EXPECT_EQ(runCli("export " + job, &out), 64) << out;
     out.clear();
     ASSERT_EQ(runCli("plan " + job + " --out " + (dir / "plan").string(), &out), 0) << out;
     const int n = test::exampleProfileJob().profile_cutter.steps_per_rev_a;
-    EXPECT_EQ(lineCount(dir / "plan" / "path.csv"), static_cast<size_t>(n) + 2); // header + n + closing row
+    EXPECT_EQ(lineCount(dir / "plan" / "path.csv"),
+              static_cast<size_t>(n) + 2); // header + n + closing row
     out.clear();
     EXPECT_EQ(runCli("simulate " + job, &out), 64) << out;
     // G-code needs the 2-axis machine; the robot's job gets a clear refusal.
     out.clear();
     const std::string robot = std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/default_job.json";
-    EXPECT_EQ(runCli("export " + robot + " --gcode " + (dir / "robot.ngc").string(), &out), 2) << out;
+    EXPECT_EQ(runCli("export " + robot + " --gcode " + (dir / "robot.ngc").string(), &out), 2)
+        << out;
     EXPECT_NE(out.find("profile_cutter_2axis"), std::string::npos) << out;
     std::filesystem::remove_all(dir);
 }

@@ -36,7 +36,8 @@ TEST(StepperSchedule, PulseCountsSumToTheTravel) {
             px += s.steps[i].x_pulses;
             pa += s.steps[i].a_pulses;
             const ProfilePoint target = cut.closedAt(i + 1);
-            EXPECT_LE(std::fabs(static_cast<double>(px) * s.mm_per_pulse_x - target.x_mm), s.mm_per_pulse_x / 2 + 1e-9);
+            EXPECT_LE(std::fabs(static_cast<double>(px) * s.mm_per_pulse_x - target.x_mm),
+                      s.mm_per_pulse_x / 2 + 1e-9);
             EXPECT_LE(std::fabs(static_cast<double>(pa) * s.deg_per_pulse_a - target.a_deg),
                       s.deg_per_pulse_a / 2 + 1e-9);
         }
@@ -44,9 +45,11 @@ TEST(StepperSchedule, PulseCountsSumToTheTravel) {
         const std::int64_t turn = static_cast<std::int64_t>(job.profile_cutter.steps_per_rev_a) *
                                   job.profile_cutter.pulses_per_step_a;
         EXPECT_EQ(pa - s.a_start_pulses, job.cut.target == CutTarget::Branch ? turn : 0);
-        // On the branch end every step turns the pipe by exactly pulses_per_step_a (the seed's grid).
+        // On the branch end every step turns the pipe by exactly pulses_per_step_a (the seed's
+        // grid).
         if (job.cut.target == CutTarget::Branch) {
-            for (const auto& st : s.steps) EXPECT_EQ(st.a_pulses, job.profile_cutter.pulses_per_step_a);
+            for (const auto& st : s.steps)
+                EXPECT_EQ(st.a_pulses, job.profile_cutter.pulses_per_step_a);
         }
     }
 }
@@ -73,7 +76,8 @@ TEST(StepperSchedule, SurfaceSpeedIsConstant) {
             EXPECT_NEAR(st.a_rate_hz * st.dt_s, std::fabs(static_cast<double>(st.a_pulses)), 1e-6);
         }
         EXPECT_NEAR(total, s.total_time_s, 1e-9 * total);
-        EXPECT_NEAR(s.total_time_s * job.cut.speed_mm_s, s.developed_length_mm, 1e-9 * s.developed_length_mm);
+        EXPECT_NEAR(s.total_time_s * job.cut.speed_mm_s, s.developed_length_mm,
+                    1e-9 * s.developed_length_mm);
         // The quantised path is the developed cut within the pulse resolution.
         const double ideal = cut.developedLength();
         EXPECT_NEAR(s.developed_length_mm, ideal, 0.01 * ideal) << job.name;
@@ -83,12 +87,15 @@ TEST(StepperSchedule, SurfaceSpeedIsConstant) {
 TEST(StepperSchedule, RateAboveTheCardLimitIsReported) {
     Job job = test::exampleProfileJob();
     job.profile_cutter.max_pulse_rate_hz = 500;
-    const PulseSchedule s = buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s);
+    const PulseSchedule s =
+        buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s);
     ASSERT_FALSE(s.problem.empty());
-    EXPECT_NE(s.problem.find("profile_cutter.max_pulse_rate_hz = 500 Hz"), std::string::npos) << s.problem;
+    EXPECT_NE(s.problem.find("profile_cutter.max_pulse_rate_hz = 500 Hz"), std::string::npos)
+        << s.problem;
     EXPECT_GT(std::max(s.max_x_rate_hz, s.max_a_rate_hz), 500);
     job.profile_cutter.max_pulse_rate_hz = 200000;
-    EXPECT_TRUE(buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s).problem.empty());
+    EXPECT_TRUE(buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s)
+                    .problem.empty());
 }
 
 } // namespace

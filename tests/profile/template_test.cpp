@@ -20,7 +20,8 @@ namespace {
 std::vector<Job> jobs() {
     std::vector<Job> out{test::exampleProfileJob()};
     std::mt19937 rng(77);
-    for (int k = 0; k < 6; ++k) out.push_back(test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch));
+    for (int k = 0; k < 6; ++k)
+        out.push_back(test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch));
     return out;
 }
 
@@ -30,7 +31,8 @@ std::vector<Eigen::Vector2d> svgCutPoints(const std::string& svg) {
     std::vector<Eigen::Vector2d> pts;
     const std::string d = m[1];
     const std::regex pair(R"((-?[0-9.]+) (-?[0-9.]+))");
-    for (auto it = std::sregex_iterator(d.begin(), d.end(), pair); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(d.begin(), d.end(), pair); it != std::sregex_iterator();
+         ++it)
         pts.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
     return pts;
 }
@@ -44,12 +46,14 @@ TEST(Template, DevelopedCurveIsTheCutAtFullScale) {
         const ProfileCut cut = computeProfileCut(job, 720);
         const double C = 2 * kPi * cut.work_radius_mm;
         EXPECT_NEAR(d.circumference_mm, C, 1e-12);
-        const size_t expected = job.cut.target == CutTarget::Branch ? cut.points.size() + 1 : cut.points.size();
+        const size_t expected =
+            job.cut.target == CutTarget::Branch ? cut.points.size() + 1 : cut.points.size();
         ASSERT_EQ(pts.size(), expected);
         double umin = 1e300, umax = -1e300;
         for (size_t i = 0; i < pts.size(); ++i) {
             const ProfilePoint p = cut.closedAt(i);
-            EXPECT_NEAR(pts[i].x(), d.origin_u_mm + cut.work_radius_mm * deg2rad(p.a_deg - d.a_low_deg), 1e-3);
+            EXPECT_NEAR(pts[i].x(),
+                        d.origin_u_mm + cut.work_radius_mm * deg2rad(p.a_deg - d.a_low_deg), 1e-3);
             EXPECT_NEAR(pts[i].y(), d.top_mm + d.x_top_mm - p.x_mm, 1e-3);
             umin = std::min(umin, pts[i].x());
             umax = std::max(umax, pts[i].x());
@@ -79,7 +83,8 @@ TEST(Template, SvgIsMillimetreScaled) {
     const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
     const std::string svg = templateSvg(d);
     char expect[128];
-    std::snprintf(expect, sizeof expect, "width=\"%.3fmm\" height=\"%.3fmm\" viewBox=\"0 0 %.3f %.3f\"", d.width_mm,
+    std::snprintf(expect, sizeof expect,
+                  "width=\"%.3fmm\" height=\"%.3fmm\" viewBox=\"0 0 %.3f %.3f\"", d.width_mm,
                   d.height_mm, d.width_mm, d.height_mm);
     EXPECT_NE(svg.find(expect), std::string::npos);
     EXPECT_NE(svg.find("100 mm at 1:1"), std::string::npos);
@@ -144,7 +149,8 @@ std::string run(const std::string& cmd, int* status) {
     if (!p) return out;
     std::array<char, 4096> buf{};
     size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
+        out.append(buf.data(), n);
     *status = ::pclose(p);
     return out;
 }
@@ -153,8 +159,10 @@ std::string run(const std::string& cmd, int* status) {
 TEST(Template, PopplerReadsAndRendersThePdf) {
     int status = 0;
     run("command -v pdfinfo >/dev/null 2>&1 && command -v pdftoppm >/dev/null 2>&1", &status);
-    if (status != 0) GTEST_SKIP() << "pdfinfo/pdftoppm (Debian package poppler-utils) are not installed";
-    const auto dir = std::filesystem::temp_directory_path() / ("cutcell_pdf_" + std::to_string(::getpid()));
+    if (status != 0)
+        GTEST_SKIP() << "pdfinfo/pdftoppm (Debian package poppler-utils) are not installed";
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("cutcell_pdf_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
     const std::string file = (dir / "template.pdf").string();
@@ -162,10 +170,12 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
     const std::string info = run("pdfinfo " + file + " 2>&1", &status);
     ASSERT_EQ(status, 0) << info;
     std::smatch m;
-    ASSERT_TRUE(std::regex_search(info, m, std::regex(R"(Page size:\s+([0-9.]+) x ([0-9.]+) pts)"))) << info;
+    ASSERT_TRUE(std::regex_search(info, m, std::regex(R"(Page size:\s+([0-9.]+) x ([0-9.]+) pts)")))
+        << info;
     EXPECT_NEAR(std::stod(m[1]) / kPtPerMm, d.width_mm, 0.01);
     EXPECT_NEAR(std::stod(m[2]) / kPtPerMm, d.height_mm, 0.01);
-    const std::string err = run("pdftoppm -r 20 -png " + file + " " + (dir / "page").string() + " 2>&1", &status);
+    const std::string err =
+        run("pdftoppm -r 20 -png " + file + " " + (dir / "page").string() + " 2>&1", &status);
     EXPECT_EQ(status, 0) << err;
     EXPECT_TRUE(err.empty()) << err; // poppler prints syntax warnings here
     EXPECT_GT(std::filesystem::file_size(dir / "page-1.png"), 1000u);
