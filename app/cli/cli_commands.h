@@ -22,6 +22,7 @@ int runExport(const Args& args);
 // validate / plan of a job with machine = "profile_cutter_2axis" (app/cli/export_command.cpp).
 int runProfileValidate(const Job& job);
 int runProfilePlan(const Job& job, const std::string& outDir);
+int runRun(const Args& args);   // run_command.cpp (needs CutCell::devices)
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
 std::string option(const Args& args, const std::string& name);

@@ -16,6 +16,9 @@ usage:
   cutcell-cli export JOB [--gcode FILE] [--template-svg FILE] [--template-pdf FILE] [--path-csv FILE]
                                             profile cutter G-code (LinuxCNC X/A), 1:1 cutting
                                             template, path with stepper pulses
+  cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
+                                            run the job through the motion engine on
+                                            simulated drives; writes a run log
 
 exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
 )";
@@ -36,6 +39,9 @@ int main(int argc, char** argv) {
     if (cmd == "simulate") return runSimulate(args);
     if (cmd == "bench") return runBench(args);
     if (cmd == "export") return runExport(args);
+#ifdef CUTCELL_HAVE_DEVICES
+    if (cmd == "run") return runRun(args);
+#endif
     std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
     return ExitCode::kUsage;
 }
