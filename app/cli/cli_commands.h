@@ -23,6 +23,7 @@ int runExport(const Args& args);
 int runProfileValidate(const Job& job);
 int runProfilePlan(const Job& job, const std::string& outDir);
 int runRun(const Args& args);   // run_command.cpp (needs CutCell::devices)
+int runProfileRun(const Job& job, const std::string& jobText, const Args& args); // profile_run_command.cpp
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
 std::string option(const Args& args, const std::string& name);

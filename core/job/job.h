@@ -112,6 +112,7 @@ struct ProfileCutterSpec {
     double mm_per_pulse_x = 0.005;    // X-axis travel per pulse
     double max_pulse_rate_hz = 200000; // pulse card limit per axis (PCL-839+: 1 Hz .. 200 kHz)
     double pierce_s = 1.0;            // dwell after torch on, before moving
+    double x_travel_mm = 3000;        // X carriage travel from 0 (the fixed end) to here
     // Hole cut: X of the branch axis crossing (the seed's S); absent = middle of the main pipe.
     bool branch_position_auto = true;
     double branch_position_mm = 0;

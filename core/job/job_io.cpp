@@ -145,6 +145,7 @@ ProfileCutterSpec readProfileCutter(const Reader& r) {
     p.mm_per_pulse_x = c.number("mm_per_pulse_x", "mm/pulse", p.mm_per_pulse_x);
     p.max_pulse_rate_hz = c.number("max_pulse_rate_hz", "Hz", p.max_pulse_rate_hz);
     p.pierce_s = c.number("pierce_s", "s", p.pierce_s);
+    p.x_travel_mm = c.number("x_travel_mm", "mm", p.x_travel_mm);
     p.branch_position_auto = !c.has("branch_position_mm");
     p.branch_position_mm = c.number("branch_position_mm", "mm", 0);
     return p;
@@ -154,7 +155,7 @@ bool isDefault(const ProfileCutterSpec& p) {
     const ProfileCutterSpec d;
     return p.steps_per_rev_a == d.steps_per_rev_a && p.pulses_per_step_a == d.pulses_per_step_a &&
            p.mm_per_pulse_x == d.mm_per_pulse_x && p.max_pulse_rate_hz == d.max_pulse_rate_hz &&
-           p.pierce_s == d.pierce_s && p.branch_position_auto == d.branch_position_auto;
+           p.pierce_s == d.pierce_s && p.x_travel_mm == d.x_travel_mm && p.branch_position_auto == d.branch_position_auto;
 }
 
 json::Value pipeJson(const PipeSpec& p) {
@@ -343,7 +344,8 @@ json::Value jobToJson(const Job& job) {
                        {"pulses_per_step_a", pc.pulses_per_step_a},
                        {"mm_per_pulse_x", pc.mm_per_pulse_x},
                        {"max_pulse_rate_hz", pc.max_pulse_rate_hz},
-                       {"pierce_s", pc.pierce_s}};
+                       {"pierce_s", pc.pierce_s},
+                       {"x_travel_mm", pc.x_travel_mm}};
         if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
         doc.emplace_back("profile_cutter", o);
     }

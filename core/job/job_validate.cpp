@@ -79,6 +79,7 @@ void checkProfileCutter(Checker& c, const Job& job) {
     c.range("profile_cutter.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
     c.range("profile_cutter.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
     c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
+    c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
     if (!p.branch_position_auto)
         c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0, job.main_pipe.length_mm, "mm");
     // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
