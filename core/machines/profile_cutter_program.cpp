@@ -23,7 +23,8 @@ DevelopedPath::DevelopedPath(const ProfileCut& cut) {
     double s = 0;
     for (size_t i = 0; i <= n; ++i) {
         const ProfilePoint p = cut.closedAt(i);
-        if (i > 0) s += std::hypot(p.x_mm - x_.back(), cut.work_radius_mm * deg2rad(p.a_deg - a_.back()));
+        if (i > 0)
+            s += std::hypot(p.x_mm - x_.back(), cut.work_radius_mm * deg2rad(p.a_deg - a_.back()));
         s_.push_back(s);
         a_.push_back(p.a_deg);
         x_.push_back(p.x_mm);
@@ -41,7 +42,8 @@ void DevelopedPath::at(double s, double* aDeg, double* xMm) const {
     *xMm = x_[lo] + u * (x_[i] - x_[lo]);
 }
 
-std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job, const std::string& jobText) {
+std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
+                                                               const std::string& jobText) {
     // A fine grid (the NC grid refined 8 times, at least 4096 points): the spline follows the
     // curve, not the chords of the stepper grid.
     const int fine = std::max(4096, 8 * job.profile_cutter.steps_per_rev_a);
@@ -51,16 +53,18 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job, c
     for (const auto& p : cut.points)
         if (p.x_mm < 0 || p.x_mm > pc.x_travel_mm) {
             char buf[256];
-            std::snprintf(buf, sizeof buf,
-                          "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
-                          "profile_cutter.x_travel_mm = %.3f mm",
-                          p.x_mm, p.beta_deg, pc.x_travel_mm);
+            std::snprintf(
+                buf, sizeof buf,
+                "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
+                "profile_cutter.x_travel_mm = %.3f mm",
+                p.x_mm, p.beta_deg, pc.x_travel_mm);
             throw std::invalid_argument(buf);
         }
 
     const SpeedProfile profile(path.length(), job.cut.speed_mm_s, job.cut.ramp_s);
     const double cutTime = profile.duration();
-    const int intervals = std::max(16, static_cast<int>(std::ceil(path.length() / job.cut.knot_spacing_mm)));
+    const int intervals =
+        std::max(16, static_cast<int>(std::ceil(path.length() / job.cut.knot_spacing_mm)));
     const double dt = cutTime / intervals;
     std::vector<JointVector> knots;
     knots.reserve(static_cast<size_t>(intervals) + 1);
@@ -99,11 +103,14 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job, c
 json::Value profileRunReportJson(const TrackingReport& r) {
     auto axes = [](const std::array<AxisErrorStats, kAxisCount>& j) {
         // TrackingStats converts every axis with rad2deg; X is in mm, so convert it back.
-        return json::Array{
-            json::Object{{"axis", 0}, {"name", "A (pipe turn)"}, {"max_abs_error_deg", j[0].max_abs_deg},
-                         {"rms_error_deg", j[0].rms_deg}},
-            json::Object{{"axis", 1}, {"name", "X (torch carriage)"}, {"max_abs_error_mm", deg2rad(j[1].max_abs_deg)},
-                         {"rms_error_mm", deg2rad(j[1].rms_deg)}}};
+        return json::Array{json::Object{{"axis", 0},
+                                        {"name", "A (pipe turn)"},
+                                        {"max_abs_error_deg", j[0].max_abs_deg},
+                                        {"rms_error_deg", j[0].rms_deg}},
+                           json::Object{{"axis", 1},
+                                        {"name", "X (torch carriage)"},
+                                        {"max_abs_error_mm", deg2rad(j[1].max_abs_deg)},
+                                        {"rms_error_mm", deg2rad(j[1].rms_deg)}}};
     };
     auto vec = [](const Vec3& v) { return json::Object{{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; };
     return json::Object{
@@ -114,11 +121,14 @@ json::Value profileRunReportJson(const TrackingReport& r) {
         {"steps", static_cast<double>(r.steps)},
         {"axes", axes(r.joints)},
         {"tip_on_pipe",
-         json::Object{{"about", "torch tip on the pipe surface (work frame: pipe axis z), actual - commanded"},
-                      {"max_abs_error_mm", vec(r.cartesian_max_abs_mm)}}},
-        {"cruise", json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
-                                {"axes", axes(r.cruise_joints)},
-                                {"tip_on_pipe_max_abs_error_mm", vec(r.cruise_cartesian_max_abs_mm)}}}};
+         json::Object{
+             {"about",
+              "torch tip on the pipe surface (work frame: pipe axis z), actual - commanded"},
+             {"max_abs_error_mm", vec(r.cartesian_max_abs_mm)}}},
+        {"cruise",
+         json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
+                      {"axes", axes(r.cruise_joints)},
+                      {"tip_on_pipe_max_abs_error_mm", vec(r.cruise_cartesian_max_abs_mm)}}}};
 }
 
 } // namespace cutcell

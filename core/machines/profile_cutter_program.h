@@ -44,7 +44,8 @@ class DevelopedPath {
 };
 
 // Throws std::invalid_argument naming the key, value and limit when the cut leaves the X travel.
-std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job, const std::string& jobText = {});
+std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
+                                                               const std::string& jobText = {});
 
 // The engine's tracking report in the profile cutter's own units: A in deg, X in mm (the shared
 // report names every axis as a robot joint in deg), the torch's miss on the pipe in mm.

@@ -16,7 +16,8 @@ SimulatedStepperConfig stepperConfig(const Job& job, double unitsPerPulse, doubl
 
 double radPerPulseA(const Job& job) {
     return 2 * kPi /
-           (static_cast<double>(job.profile_cutter.steps_per_rev_a) * job.profile_cutter.pulses_per_step_a);
+           (static_cast<double>(job.profile_cutter.steps_per_rev_a) *
+            job.profile_cutter.pulses_per_step_a);
 }
 
 } // namespace
@@ -37,7 +38,8 @@ EngineDevices ProfileCutterRig::devices() {
 void ProfileCutterRig::configure(EngineConfig& config) const {
     config.period_s = period_s_;
     // Half a pulse plus rounding: a stepper's count is as close as it can get.
-    config.in_position_window = 0.5 * std::max(aCfg_.units_per_pulse, xCfg_.units_per_pulse) * (1 + 1e-9);
+    config.in_position_window =
+        0.5 * std::max(aCfg_.units_per_pulse, xCfg_.units_per_pulse) * (1 + 1e-9);
     config.in_position_velocity = 1e-9;
     // The count moves in whole pulses: the set-point may travel up to 1.5 pulses before it does.
     config.frozen_feedback_travel = 3 * std::max(aCfg_.units_per_pulse, xCfg_.units_per_pulse);

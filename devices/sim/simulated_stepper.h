@@ -38,7 +38,7 @@ class SimulatedStepper : public AxisDrive {
     void write(double targetPosition) override;
 
     std::int64_t pulsePosition() const { return count_; }
-    std::uint64_t pulsesSent() const { return sent_; }         // all pulses, both directions
+    std::uint64_t pulsesSent() const { return sent_; }           // all pulses, both directions
     std::uint64_t rateLimitedCycles() const { return limited_; } // cycles the card was at its limit
 
   private:
