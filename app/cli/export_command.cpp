@@ -55,6 +55,10 @@ int runProfileValidate(const Job& job) {
         std::fprintf(stderr, "not feasible: %s\n", sch.problem.c_str());
         return kUnreachable;
     }
+    if (const std::string travel = travelProblem(job, cut); !travel.empty()) {
+        std::fprintf(stderr, "not feasible: %s\n", travel.c_str());
+        return kUnreachable;
+    }
     return kOk;
 }
 
@@ -101,6 +105,10 @@ int runExport(const Args& args) {
     try {
         if (!gcode.empty() || !csv.empty()) {
             const ProfileCut cut = computeProfileCut(job);
+            if (const std::string travel = travelProblem(job, cut); !travel.empty()) {
+                std::fprintf(stderr, "cutcell-cli export: %s\n", travel.c_str());
+                return kUnreachable;
+            }
             if (!gcode.empty()) {
                 GcodeStats st;
                 const std::string text = profileGcode(job, cut, &st);

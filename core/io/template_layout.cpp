@@ -28,9 +28,13 @@ std::string ascii(const std::string& s) {
 std::vector<std::string> captions(const Job& job, const ProfileCut& cut, double xRef) {
     std::vector<std::string> t;
     t.push_back("CutCell cutting template: " + ascii(job.name));
-    t.push_back(job.cut.target == CutTarget::Branch
-                    ? "Branch pipe end (saddle): wrap round the BRANCH pipe, cut along the curve"
-                    : "Hole in the main pipe: wrap round the MAIN pipe, cut out the closed curve");
+    t.push_back(
+        job.cut.target == CutTarget::Branch
+            ? "Branch pipe end (saddle): wrap round the BRANCH pipe, cut along the curve; keep the "
+              "reference-line side"
+            : "Hole in the main pipe: wrap round the MAIN pipe, cut out the closed curve (inside "
+              "is "
+              "scrap)");
     t.push_back(fmt("main pipe OD %.2f mm, wall %.2f mm; branch pipe OD %.2f mm, wall %.2f mm",
                     2 * job.main_pipe.radius_mm, job.main_pipe.wall_mm,
                     2 * job.branch_pipe.radius_mm, job.branch_pipe.wall_mm));

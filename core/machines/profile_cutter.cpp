@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace cutcell {
 
@@ -22,6 +23,21 @@ std::vector<JointPipe> jointPipes(const Job& job) {
     for (const auto& b : job.other_branches)
         out.push_back(jointPipeFrom(b));
     return out;
+}
+
+std::string travelProblem(const Job& job, const ProfileCut& cut) {
+    const double travel = job.profile_cutter.x_travel_mm;
+    for (const auto& p : cut.points)
+        if (p.x_mm < 0 || p.x_mm > travel) {
+            char buf[256];
+            std::snprintf(
+                buf, sizeof buf,
+                "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
+                "profile_cutter.x_travel_mm = %.3f mm",
+                p.x_mm, p.beta_deg, travel);
+            return buf;
+        }
+    return {};
 }
 
 double ProfileCut::developedLength() const {
@@ -45,13 +61,46 @@ namespace {
 // Beta = 0 at the start, so phi0 = 90 deg (see the mapping in multi_branch.h).
 constexpr double kPhi0 = kPi / 2;
 
+// The seed's N at one rotation angle (L = 0).
+double minimumAt(const PipeIntersection& cut, const std::vector<JointPipe>& pipes, double phi) {
+    return columnMinima(buildSetM(cut, pipes, 0.0, 1, phi)).N.front();
+}
+
+// max over phi of N(phi): a dense scan, then a golden-section search around the best sample.
+double longestGeneratrix(const PipeIntersection& cut, const std::vector<JointPipe>& pipes) {
+    constexpr int kScan = 4096;
+    const ColumnMinima scan = columnMinima(buildSetM(cut, pipes, 0.0, kScan, 0.0));
+    const auto best = std::max_element(scan.N.begin(), scan.N.end());
+    const double h = 2 * kPi / kScan;
+    double a = h * static_cast<double>(best - scan.N.begin()) - h, b = a + 2 * h;
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    double fc = minimumAt(cut, pipes, c), fd = minimumAt(cut, pipes, d);
+    for (int i = 0; i < 60 && b - a > 1e-12; ++i) {
+        if (fc > fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = minimumAt(cut, pipes, c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = minimumAt(cut, pipes, d);
+        }
+    }
+    return std::max({*best, fc, fd});
+}
+
 ProfileCut branchEnd(const Job& job, int n) {
     const PipeIntersection cut(profileIntersectionSpec(job));
     const SetM m = buildSetM(cut, jointPipes(job), 0.0, n, kPhi0);
     const ColumnMinima mins = columnMinima(m);
-    // With L = 0, l = -t; the longest generatrix (largest l) becomes branch_pipe.length_mm.
-    const double lMax = *std::max_element(mins.N.begin(), mins.N.end());
-    const double shift = job.branch_pipe.length_mm - lMax;
+    // With L = 0, l = -t; the longest generatrix (largest l) becomes branch_pipe.length_mm,
+    // found independently of n so every grid (NC, template, engine) gives the same X.
+    const double shift = job.branch_pipe.length_mm - longestGeneratrix(cut, jointPipes(job));
     ProfileCut out;
     out.target = CutTarget::Branch;
     out.work_radius_mm = job.branch_pipe.radius_mm;

@@ -19,6 +19,7 @@
 #include "core/job/job.h"
 #include "core/machines/multi_branch.h"
 
+#include <string>
 #include <vector>
 
 namespace cutcell {
@@ -53,6 +54,10 @@ inline ProfileCut computeProfileCut(const Job& job) {
 // The main frame intersection the cut is built on (outer surfaces for the branch end, the
 // branch's bore for the hole), side +1.
 IntersectionSpec profileIntersectionSpec(const Job& job);
+
+// Empty when every X of the cut lies on the carriage (0 .. profile_cutter.x_travel_mm); else one
+// sentence naming the point, the value and the key.
+std::string travelProblem(const Job& job, const ProfileCut& cut);
 
 // The other branches of the job as joint pipes.
 std::vector<JointPipe> jointPipes(const Job& job);

@@ -49,17 +49,8 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
     const int fine = std::max(4096, 8 * job.profile_cutter.steps_per_rev_a);
     const ProfileCut cut = computeProfileCut(job, fine);
     const DevelopedPath path(cut);
-    const ProfileCutterSpec& pc = job.profile_cutter;
-    for (const auto& p : cut.points)
-        if (p.x_mm < 0 || p.x_mm > pc.x_travel_mm) {
-            char buf[256];
-            std::snprintf(
-                buf, sizeof buf,
-                "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
-                "profile_cutter.x_travel_mm = %.3f mm",
-                p.x_mm, p.beta_deg, pc.x_travel_mm);
-            throw std::invalid_argument(buf);
-        }
+    if (const std::string problem = travelProblem(job, cut); !problem.empty())
+        throw std::invalid_argument(problem);
 
     const SpeedProfile profile(path.length(), job.cut.speed_mm_s, job.cut.ramp_s);
     const double cutTime = profile.duration();
@@ -86,7 +77,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
     p->reference = JointVector::Zero();
     p->reference[1] = knots.front()[1]; // A at 0, the torch over the start's X
     p->min_position[1] = 0;
-    p->max_position[1] = pc.x_travel_mm;
+    p->max_position[1] = job.profile_cutter.x_travel_mm;
     p->spline = JointSpline(std::move(knots), dt);
     p->cut_time_s = cutTime;
     p->length_mm = path.length();
