@@ -1,6 +1,7 @@
 // The profile cutter through the motion engine: its program (constant surface speed on the
 // cut) and a run on simulated stepper axes with progress, feed hold and emergency stop.
 #include "core/engine/motion_engine.h"
+#include "core/job/job_io.h"
 #include "core/machines/profile_cutter_program.h"
 #include "devices/sim/profile_cutter_rig.h"
 #include "profile_test_util.h"
@@ -8,6 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace cutcell {
 namespace {
@@ -179,6 +184,36 @@ TEST(ProfileEngine, EmergencyStopCutsTorchAndPulses) {
     EXPECT_EQ(run.rig.x().pulsesSent(), x) << "pulses after emergency stop";
     EXPECT_NE(run.last.drive_states[0], DriveState::Enabled);
     EXPECT_NE(run.last.drive_states[1], DriveState::Enabled);
+}
+
+// cutcell-cli run: the profile job through the engine, the report in the machine's units.
+TEST(ProfileEngine, CliRunWritesTheReportAndRunLog) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("cutcell_run_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string job =
+        std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json";
+    const std::string cmd = std::string(CUTCELL_CLI) + " run " + job + " --quiet --runs " +
+                            (dir / "runs").string() + " --report " +
+                            (dir / "report.json").string() + " 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0)
+        out.append(buf, n);
+    const int status = ::pclose(p);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+    const json::Value report = json::parse(readTextFile((dir / "report.json").string()));
+    EXPECT_EQ(report.find("machine")->asString(), "profile_cutter_2axis");
+    const Job j = test::exampleProfileJob();
+    const double turn =
+        static_cast<double>(j.profile_cutter.steps_per_rev_a) * j.profile_cutter.pulses_per_step_a;
+    EXPECT_EQ(report.find("pulses")->find("a_sent")->asNumber(), turn);
+    EXPECT_LT(report.find("axes")->asArray()[1].find("max_abs_error_mm")->asNumber(),
+              2 * j.profile_cutter.mm_per_pulse_x);
+    EXPECT_FALSE(std::filesystem::is_empty(dir / "runs"));
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace
