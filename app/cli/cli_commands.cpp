@@ -121,7 +121,7 @@ int runSimulate(const Args& args) {
     if (!loadJob(args, valueOptions, job, &code)) return code;
     if (job.machine != "pipe_robot_6axis") {
         std::fprintf(stderr, "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
-                             "runs in the engine (use plan/export for its path)\n", job.machine.c_str());
+                             "runs in the engine: cutcell-cli run JOB\n", job.machine.c_str());
         return kUsage;
     }
     const std::string method = option(args, "--method");
