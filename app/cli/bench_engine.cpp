@@ -104,6 +104,7 @@ void benchEngine(const Job& job, bool quick, json::Object& out) {
         out.emplace_back("cycle_jitter_us_p99", s.jitter_us_p99);
         out.emplace_back("cycle_jitter_us_max", s.jitter_us_max);
         out.emplace_back("cycle_overruns", static_cast<double>(s.overruns));
+        out.emplace_back("cycle_missed_deadlines", static_cast<double>(s.missed_deadlines));
         out.emplace_back("cycle_work_us_max", s.work_us_max);
         out.emplace_back("telemetry_dropped", static_cast<double>(s.telemetry_dropped));
     }

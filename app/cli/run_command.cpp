@@ -54,6 +54,7 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
         while (engine.popTelemetry(t)) {
         }
         printEvents(engine, quiet);
+        if (!realtime) engine.flushRunLog(); // the thread mode has its own logger
         const EngineState s = engine.state();
         if (s == target) return true;
         if (latched(s)) return false;

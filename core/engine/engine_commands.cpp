@@ -141,6 +141,7 @@ void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
 void MotionEngine::Impl::endRun(const char* outcome) {
     if (!runActive) return;
     runActive = false;
+    runEndTime = now;
     const std::uint64_t g = resultGeneration.load(std::memory_order_relaxed);
     RunResult& r = results[(g + 1) % 2];
     stats.fill(r.report);
@@ -159,6 +160,7 @@ void MotionEngine::Impl::endRun(const char* outcome) {
 
 void MotionEngine::Impl::enterEmergencyStop() {
     estopLatched = true;
+    latchPress = estopPresses.load(std::memory_order_acquire);
     estopRequestSeen = estopRequestNs.load(std::memory_order_relaxed);
     estopLatencyPending = true;
     const EngineState from = state;
@@ -215,6 +217,7 @@ void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveSt
 void MotionEngine::Impl::beginCut() {
     ++runId;
     runActive = true;
+    runStartTime = now;
     runProgramSeq.store(currentProgramSeq.load(std::memory_order_relaxed),
                         std::memory_order_release);
     samples = 0;
@@ -343,7 +346,11 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         }
         if (s == EngineState::Running && holding && stopping == StopReason::None) {
             holding = false;
-            if (phase == RunPhase::Cut && !torchCommand) torchCommand = true;
+            // A torch that went out on hold is lit again (and its arc awaited) before speed-up.
+            if (phase == RunPhase::Cut && !torchCommand) {
+                phase = RunPhase::Ignite;
+                phaseSince = now;
+            }
             return note("Resume while decelerating: back to speed");
         }
         return refuse(c.type, "not paused (state %s)", toString(s));
@@ -361,7 +368,10 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         torchCommand = false;
         return note("Abort: torch off, stopping along the path");
     case CommandType::EmergencyStop:
-        return; // taken from the atomic at the top of the cycle
+        // Taken from the atomic at the top of the cycle; a press after the latch is noted.
+        if (static_cast<std::uint64_t>(c.value) > latchPress)
+            return note("Emergency stop pressed again: already latched");
+        return;
     case CommandType::ReleaseEmergencyStop:
         if (!estopPressed.load(std::memory_order_acquire))
             return refuse(c.type, "the emergency stop is not pressed");

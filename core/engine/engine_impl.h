@@ -52,6 +52,8 @@ struct MotionEngine::Impl {
     MpscQueue<EngineCommand> commands{256};
     std::atomic<bool> estopPressed{false};
     std::atomic<std::int64_t> estopRequestNs{0};
+    std::atomic<std::uint64_t> estopPresses{0};
+    std::uint64_t latchPress = 0; // engine thread: the press that latched the stop
     CycleTimer timer;
     std::mutex heldMutex; // never taken by the cycle
     struct Held {
@@ -68,7 +70,7 @@ struct MotionEngine::Impl {
     SpscRing<EngineEvent> logEvents{1024};
     std::atomic<EngineState> publicState{EngineState::Idle};
     std::atomic<std::uint64_t> cycles{0}, overruns{0}, telemetryDropped{0}, eventsDropped{0},
-        logDropped{0}, estopsMeasured{0};
+        logDropped{0}, estopsMeasured{0}, missedDeadlines{0};
     std::atomic<double> lastEstopLatencyUs{0}, workUsMax{0};
     JitterHistogram jitter;
     RunResult results[2];
@@ -77,7 +79,8 @@ struct MotionEngine::Impl {
     // ---- threads
     std::thread engineThread, loggerThread;
     std::atomic<bool> stopRequested{false}, threadRunning{false};
-    std::unique_ptr<class RunLog> runLog; // logger side only
+    std::mutex logMutex;                  // logger side only: one drainer at a time
+    std::unique_ptr<class RunLog> runLog; // under logMutex
     void loggerDrain();
     CycleStats snapshot() const; // any thread
 
@@ -110,7 +113,7 @@ struct MotionEngine::Impl {
     // run
     RunPhase phase = RunPhase::Approach;
     std::uint32_t runId = 0;
-    double phaseSince = 0, cutStartTime = 0;
+    double phaseSince = 0, cutStartTime = 0, runStartTime = 0, runEndTime = 0;
     int settleCount = 0;
     long samples = 0, minRunSteps = 0;
     bool pathDone = false;

@@ -99,6 +99,7 @@ struct CycleStats {
     std::uint64_t estops_measured = 0;    // emergency stops whose latency was measured
     std::uint64_t log_events_dropped = 0; // events the run logger could not take
     double work_us_max = 0;               // longest cycle work (read -> write)
+    std::uint64_t missed_deadlines = 0;   // periods skipped because the thread woke too late
 };
 
 } // namespace cutcell

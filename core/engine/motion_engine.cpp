@@ -92,8 +92,9 @@ bool MotionEngine::emergencyStop() {
     // The request is the atomic; the queued command only records it in order with the others.
     m.estopRequestNs.store(monotonicNowNs(), std::memory_order_relaxed);
     m.estopPressed.store(true, std::memory_order_release);
+    const auto press = m.estopPresses.fetch_add(1, std::memory_order_acq_rel) + 1;
     m.timer.wake();
-    pushCommand(CommandType::EmergencyStop);
+    pushCommand(CommandType::EmergencyStop, 0, static_cast<double>(press));
     return true;
 }
 
@@ -127,6 +128,7 @@ CycleStats MotionEngine::Impl::snapshot() const {
     s.estops_measured = m.estopsMeasured.load(std::memory_order_acquire);
     s.log_events_dropped = m.logDropped.load(std::memory_order_relaxed);
     s.work_us_max = m.workUsMax.load(std::memory_order_relaxed);
+    s.missed_deadlines = m.missedDeadlines.load(std::memory_order_relaxed);
     return s;
 }
 
@@ -149,7 +151,7 @@ bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) cons
 }
 
 std::string MotionEngine::lastRunDirectory() const {
-    std::lock_guard<std::mutex> lock(impl_->heldMutex);
+    std::lock_guard<std::mutex> lock(impl_->logMutex);
     return impl_->runLog ? impl_->runLog->runDirectory() : std::string();
 }
 
@@ -159,18 +161,20 @@ void MotionEngine::flushRunLog() {
 
 // Logger side: events to files; opens a run on RunStarted, writes the summary on RunEnded.
 void MotionEngine::Impl::loggerDrain() {
+    // One drainer at a time (the logger thread, flushRunLog()); the ring has one consumer.
+    std::lock_guard<std::mutex> logLock(logMutex);
     EngineEvent e;
     while (logEvents.pop(e)) {
-        std::lock_guard<std::mutex> lock(heldMutex);
         if (e.kind == EventKind::RunStarted) {
             const std::uint64_t seq = runProgramSeq.load(std::memory_order_acquire);
-            std::string name, text;
-            for (const Held& h : held)
-                if (h.seq == seq && h.program) {
-                    name = h.program->name;
-                    text = h.program->source_text;
-                }
-            runLog->beginRun(e.run_id, name, text);
+            std::shared_ptr<const MotionProgram> p;
+            {
+                std::lock_guard<std::mutex> lock(heldMutex);
+                for (const Held& h : held)
+                    if (h.seq == seq) p = h.program;
+            }
+            runLog->beginRun(e.run_id, p ? p->name : std::string(),
+                             p ? p->source_text : std::string());
         }
         runLog->event(e);
         if (e.kind == EventKind::RunEnded) {
@@ -213,7 +217,12 @@ void MotionEngine::startThread() {
                 if (done - woke > periodNs) m.overruns.fetch_add(1, std::memory_order_relaxed);
                 next += periodNs;
                 // Behind by a period or more: skip the missed deadlines instead of bursting.
-                if (done > next) next += ((done - next) / periodNs + 1) * periodNs;
+                if (done > next) {
+                    const std::int64_t skipped = (done - next) / periodNs + 1;
+                    m.missedDeadlines.fetch_add(static_cast<std::uint64_t>(skipped),
+                                                std::memory_order_relaxed);
+                    next += skipped * periodNs;
+                }
             } else {
                 m.runCycle();
             }

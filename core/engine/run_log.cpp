@@ -79,6 +79,8 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
     json::Object cycle{{"period_s", c.period_s},
                        {"cycles", static_cast<double>(c.cycles)},
                        {"overruns", static_cast<double>(c.overruns)},
+                       {"missed_deadlines", static_cast<double>(c.missed_deadlines)},
+                       {"work_us_max", c.work_us_max},
                        {"jitter_us_p50", c.jitter_us_p50},
                        {"jitter_us_p99", c.jitter_us_p99},
                        {"jitter_us_max", c.jitter_us_max},

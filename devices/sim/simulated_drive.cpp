@@ -1,5 +1,6 @@
 #include "devices/sim/simulated_drive.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cutcell {
@@ -40,7 +41,7 @@ void SimulatedDrive::faultReset() {
 
 void SimulatedDrive::clearInjections() {
     injectedFault_.store(0);
-    jam_.store(false);
+    loadTorque_.store(0);
     frozen_.store(false);
     stale_.store(false);
 }
@@ -88,10 +89,12 @@ void SimulatedDrive::write(double targetPosition) {
         command = pid_.step(holdPosition_ - sensed_);
     else
         pid_.reset();
-    if (jam_.load(std::memory_order_relaxed)) {
-        plant_.setState(plant_.position(), 0);
-        torqueRatio_ = 0;
-        return;
+    // An external load (collision, overload) adds to the motor torque; the total stays within
+    // what the plant model allows.
+    const double load = loadTorque_.load(std::memory_order_relaxed);
+    if (load != 0) {
+        const double lim = plant_.torqueLimit();
+        command = std::clamp(command, -lim, lim) + load;
     }
     const double u = plant_.step(command);
     torqueRatio_ = plant_.torqueLimit() > 0 ? u / plant_.torqueLimit() : 0;

@@ -8,9 +8,10 @@
 // coasts); quickStop() -> QuickStop (holds the position where it was) for quick_stop_s, then
 // Disabled; a fault -> Fault (torque off) until faultReset().
 //
-// Fault injection (tests, demonstrations): a drive fault code, a jammed axis (the mechanics
-// block: following error grows), frozen feedback (the encoder value stops changing while
-// the drive keeps reporting valid data), and stale feedback (feedback_valid = false).
+// Fault injection (tests, demonstrations): a drive fault code, an external load torque (a
+// collision: the axis is pushed off its path, the following error grows), frozen feedback (the
+// encoder value stops changing while the drive keeps reporting valid data), and stale feedback
+// (feedback_valid = false).
 //
 // Threading contract: AxisDrive calls come from the engine thread only. The inject*() calls
 // may come from any thread: they set atomics that the drive picks up at its next read().
@@ -46,7 +47,9 @@ class SimulatedDrive : public AxisDrive {
 
     // Fault injection (any thread).
     void injectFault(std::uint32_t code) { injectedFault_.store(code); }
-    void injectJam(bool on) { jam_.store(on); }
+    // An external torque on the axis (N m): above what the motor can hold, the axis is pushed
+    // off its path and the following error grows.
+    void injectLoadTorque(double nm) { loadTorque_.store(nm); }
     void injectFrozenFeedback(bool on) { frozen_.store(on); }
     void injectStaleFeedback(bool on) { stale_.store(on); }
     void clearInjections();
@@ -68,7 +71,8 @@ class SimulatedDrive : public AxisDrive {
     double torqueRatio_ = 0;  // torque applied in the last write / torque limit
     bool wasFrozen_ = false;
     std::atomic<std::uint32_t> injectedFault_{0};
-    std::atomic<bool> jam_{false}, frozen_{false}, stale_{false};
+    std::atomic<bool> frozen_{false}, stale_{false};
+    std::atomic<double> loadTorque_{0};
 };
 
 } // namespace cutcell
