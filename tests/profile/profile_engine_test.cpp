@@ -125,8 +125,8 @@ TEST(ProfileEngine, CompletesTheCutOnSteppers) {
     const auto limit =
         static_cast<std::uint64_t>((run.program->cut_time_s + 30) / job.sim.period_s);
     ASSERT_EQ(run.cycles(limit, EngineState::Completed), EngineState::Completed);
-    // (The engine's Completed sample itself reports progress 0: its hold resets the path time.)
     EXPECT_NEAR(run.maxProgress, 1.0, 1e-9);
+    EXPECT_NEAR(run.last.progress, 1.0, 1e-9); // the Completed sample itself
     EXPECT_EQ(run.last.point_count, run.program->point_count);
     // One turn of the branch on A, X back where it started: the pulses sum to the travel.
     const std::int64_t turn = static_cast<std::int64_t>(job.profile_cutter.steps_per_rev_a) *
