@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -57,12 +56,19 @@ std::vector<Move> writtenMoves(const std::string& g) {
     std::vector<Move> out;
     std::istringstream in(g);
     std::string line;
-    const std::regex g1(R"(^G1 X(-?[0-9.]+) A(-?[0-9.]+) F([0-9.]+)$)");
-    std::smatch m;
+    Move m{};
     while (std::getline(in, line))
-        if (std::regex_match(line, m, g1))
-            out.push_back({std::stod(m[1]), std::stod(m[2]), std::stod(m[3])});
+        if (std::sscanf(line.c_str(), "G1 X%lf A%lf F%lf", &m.x, &m.a, &m.f) == 3) out.push_back(m);
     return out;
+}
+
+// The four first coordinates (X, Y, Z, A) of a canonical call such as
+// "   20 N..... STRAIGHT_FEED(10.5000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)".
+bool canonCall(const std::string& line, const std::string& name, double* x, double* a) {
+    const size_t at = line.find(name + "(");
+    double y = 0, z = 0;
+    return at != std::string::npos && std::sscanf(line.c_str() + at + name.size() + 1,
+                                                  "%lf, %lf, %lf, %lf", x, &y, &z, a) == 4;
 }
 
 // Inverse-time feed: every move takes ds / v on the developed surface.
@@ -113,25 +119,21 @@ TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
         int status = 0;
         const std::string canon = run(rs274 + " -g " + file.string() + " 2>&1", &status);
         ASSERT_EQ(status, 0) << canon;
-        const std::regex feed(
-            R"(STRAIGHT_FEED\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
-        const std::regex traverse(
-            R"(STRAIGHT_TRAVERSE\((-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+), (-?[0-9.]+),)");
         std::vector<std::pair<double, double>> feeds;
         std::istringstream in(canon);
         std::string line;
         bool torchOn = false, torchOff = false, sawTraverse = false;
-        std::smatch m;
+        double x = 0, a = 0;
         while (std::getline(in, line)) {
-            if (std::regex_search(line, m, traverse)) {
+            if (canonCall(line, "STRAIGHT_TRAVERSE", &x, &a)) {
                 sawTraverse = true;
-                EXPECT_NEAR(std::stod(m[1]), cut.points[0].x_mm, 0.01);
-                EXPECT_NEAR(std::stod(m[4]), cut.points[0].a_deg, 0.01);
+                EXPECT_NEAR(x, cut.points[0].x_mm, 0.01);
+                EXPECT_NEAR(a, cut.points[0].a_deg, 0.01);
             }
             if (line.find("START_SPINDLE_CLOCKWISE") != std::string::npos) torchOn = true;
-            if (std::regex_search(line, m, feed)) {
+            if (canonCall(line, "STRAIGHT_FEED", &x, &a)) {
                 EXPECT_TRUE(torchOn) << "cut move before torch on";
-                feeds.emplace_back(std::stod(m[1]), std::stod(m[4]));
+                feeds.emplace_back(x, a);
             }
             if (line.find("STOP_SPINDLE_TURNING") != std::string::npos && !feeds.empty())
                 torchOff = true;

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -25,16 +24,30 @@ std::vector<Job> jobs() {
     return out;
 }
 
+// The points of the path with id="cut" (its d attribute: "Mx y Lx y ... [Z]").
 std::vector<Eigen::Vector2d> svgCutPoints(const std::string& svg) {
-    std::smatch m;
-    EXPECT_TRUE(std::regex_search(svg, m, std::regex(R"RE(id="cut"[^>]* d="([^"]*)")RE")));
     std::vector<Eigen::Vector2d> pts;
-    const std::string d = m[1];
-    const std::regex pair(R"((-?[0-9.]+) (-?[0-9.]+))");
-    for (auto it = std::sregex_iterator(d.begin(), d.end(), pair); it != std::sregex_iterator();
-         ++it)
-        pts.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+    const size_t id = svg.find("id=\"cut\"");
+    EXPECT_NE(id, std::string::npos);
+    const size_t from = svg.find(" d=\"", id) + 4, to = svg.find('"', from);
+    std::string d = svg.substr(from, to - from);
+    for (char& c : d)
+        if (c == 'M' || c == 'L' || c == 'Z') c = ' ';
+    std::istringstream in(d);
+    double x, y;
+    while (in >> x >> y)
+        pts.emplace_back(x, y);
     return pts;
+}
+
+// The number after `key` in `text` (npos when absent).
+double numberAfter(const std::string& text, const std::string& key, size_t* end = nullptr) {
+    const size_t at = text.find(key);
+    if (at == std::string::npos) return std::nan("");
+    size_t used = 0;
+    const double v = std::stod(text.substr(at + key.size()), &used);
+    if (end) *end = at + key.size() + used;
+    return v;
 }
 
 // The branch template's curve spans exactly one circumference, and every drawn point is the
@@ -97,9 +110,11 @@ TEST(Template, PdfStructureIsExact) {
     const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
     const std::string pdf = templatePdf(d);
     ASSERT_EQ(pdf.rfind("%PDF-1.4", 0), 0u);
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(pdf, m, std::regex(R"(startxref\n([0-9]+)\n%%EOF\n$)")));
-    const size_t xref = std::stoul(m[1]);
+    const size_t tail = pdf.rfind("startxref\n");
+    ASSERT_NE(tail, std::string::npos);
+    size_t xrefEnd = 0;
+    const auto xref = static_cast<size_t>(numberAfter(pdf.substr(tail), "startxref\n", &xrefEnd));
+    EXPECT_EQ(pdf.substr(tail + xrefEnd), "\n%%EOF\n");
     ASSERT_EQ(pdf.compare(xref, 5, "xref\n"), 0);
     std::istringstream in(pdf.substr(xref + 5));
     int first = 0, count = 0;
@@ -117,14 +132,19 @@ TEST(Template, PdfStructureIsExact) {
         const std::string head = std::to_string(obj) + " 0 obj";
         EXPECT_EQ(pdf.compare(off, head.size(), head), 0) << "object " << obj;
     }
-    ASSERT_TRUE(std::regex_search(pdf, m, std::regex(R"(/Length ([0-9]+) >>\nstream\n)")));
-    const size_t len = std::stoul(m[1]);
-    const size_t start = static_cast<size_t>(m.position(0) + m.length(0));
+    ASSERT_NE(pdf.find("/Length "), std::string::npos);
+    size_t lengthEnd = 0;
+    const auto len = static_cast<size_t>(numberAfter(pdf, "/Length ", &lengthEnd));
+    ASSERT_EQ(pdf.compare(lengthEnd, 11, " >>\nstream\n"), 0);
+    const size_t start = lengthEnd + 11;
     EXPECT_EQ(pdf.compare(start + len, 9, "endstream"), 0);
     // Page size: the template at 72/25.4 pt per mm.
-    ASSERT_TRUE(std::regex_search(pdf, m, std::regex(R"(/MediaBox \[0 0 ([0-9.]+) ([0-9.]+)\])")));
-    EXPECT_NEAR(std::stod(m[1]), d.width_mm * kPtPerMm, 1e-3);
-    EXPECT_NEAR(std::stod(m[2]), d.height_mm * kPtPerMm, 1e-3);
+    double w = 0, h = 0;
+    const size_t box = pdf.find("/MediaBox [0 0 ");
+    ASSERT_NE(box, std::string::npos);
+    ASSERT_EQ(std::sscanf(pdf.c_str() + box, "/MediaBox [0 0 %lf %lf]", &w, &h), 2);
+    EXPECT_NEAR(w, d.width_mm * kPtPerMm, 1e-3);
+    EXPECT_NEAR(h, d.height_mm * kPtPerMm, 1e-3);
     // The cut path is the first path of the content: its width in pt is the circumference.
     const std::string content = pdf.substr(start, len);
     std::istringstream cs(content.substr(content.find(" w\n") + 3));
@@ -169,11 +189,12 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
     writeFileAtomically(file, templatePdf(d));
     const std::string info = run("pdfinfo " + file + " 2>&1", &status);
     ASSERT_EQ(status, 0) << info;
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(info, m, std::regex(R"(Page size:\s+([0-9.]+) x ([0-9.]+) pts)")))
-        << info;
-    EXPECT_NEAR(std::stod(m[1]) / kPtPerMm, d.width_mm, 0.01);
-    EXPECT_NEAR(std::stod(m[2]) / kPtPerMm, d.height_mm, 0.01);
+    double w = 0, h = 0;
+    const size_t size = info.find("Page size:");
+    ASSERT_NE(size, std::string::npos) << info;
+    ASSERT_EQ(std::sscanf(info.c_str() + size, "Page size: %lf x %lf pts", &w, &h), 2) << info;
+    EXPECT_NEAR(w / kPtPerMm, d.width_mm, 0.01);
+    EXPECT_NEAR(h / kPtPerMm, d.height_mm, 0.01);
     const std::string err =
         run("pdftoppm -r 20 -png " + file + " " + (dir / "page").string() + " 2>&1", &status);
     EXPECT_EQ(status, 0) << err;
