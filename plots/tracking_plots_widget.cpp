@@ -109,13 +109,13 @@ struct TrackingPlotsWidget::Impl {
         cartPlot->clearGraphs();
         for (int i = 0; i < axes; ++i) {
             QCPGraph* g = jointPlot->addGraph();
-            g->setPen(QPen(kTraceColours[i], 1.2));
+            g->setPen(QPen(kTraceColours[i])); // width 0/1 cosmetic: thick pens are ~50x slower
             g->setName(names.value(i, defaultAxisName(i)));
             g->setAdaptiveSampling(true);
         }
         for (int k = 0; k < kCartTraces; ++k) {
             QCPGraph* g = cartPlot->addGraph();
-            g->setPen(QPen(kCartColours[k], 1.2));
+            g->setPen(QPen(kCartColours[k]));
             g->setName(QString::fromLatin1(kCartNames[k]));
             g->setAdaptiveSampling(true);
         }
@@ -173,7 +173,8 @@ struct TrackingPlotsWidget::Impl {
     }
 
     void onTick() {
-        if (!dirty || paused) return;
+        // Hidden (e.g. another tab): keep the data, draw when shown again.
+        if (!dirty || paused || !self->isVisible()) return;
         refresh();
         jointPlot->replot(QCustomPlot::rpQueuedReplot);
         cartPlot->replot(QCustomPlot::rpQueuedReplot);
@@ -304,6 +305,11 @@ void TrackingPlotsWidget::clear() {
     d->fullResync = true;
     d->dirty = true;
     if (!d->paused) d->onTick();
+}
+
+void TrackingPlotsWidget::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    d->onTick(); // catch up with what arrived while hidden
 }
 
 void TrackingPlotsWidget::setPaused(bool paused) {

@@ -4,9 +4,10 @@
 //
 // Data path: append() only stores into a bounded ring (no replot, no allocation); one 30 Hz
 // QTimer moves what is new into the plots and asks for a queued replot, and only when
-// something changed. Paused: data keeps arriving into the ring, the view stays frozen.
-// Mouse: drag pans, wheel zooms (either turns autoscale off; Fit turns it back on); clicking a
-// legend entry hides or shows its trace. QCustomPlot is an implementation detail (pimpl).
+// something changed and the widget is visible. Paused: data keeps arriving into the ring, the view
+// stays frozen. Mouse: drag pans, wheel zooms (either turns autoscale off; Fit turns it back on);
+// clicking a legend entry hides or shows its trace. QCustomPlot is an implementation detail
+// (pimpl).
 //
 // Threading: GUI thread only, like every QWidget. Times must not decrease between clear()s;
 // a sample older than the last one restarts the plots from the ring's content.
@@ -62,6 +63,9 @@ class TrackingPlotsWidget : public QWidget {
 
   signals:
     void pausedChanged(bool paused);
+
+  protected:
+    void showEvent(QShowEvent* e) override;
 
   private:
     struct Impl;

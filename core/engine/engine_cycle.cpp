@@ -186,7 +186,6 @@ void MotionEngine::Impl::stepRunning() {
         for (int i = 0; i < axisCount(); ++i)
             stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
         holdAt(setpoint);
-        cutElapsedAtEnd = now - cutStartTime;
         setState(EngineState::Completed, EventKind::Transition, "Completed: %.1f mm in %.2f s",
                  program->length_mm, now - cutStartTime);
         endRun("completed");
@@ -318,18 +317,14 @@ void MotionEngine::Impl::publishTelemetry() {
                     state == EngineState::Completed)) {
         const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
                             phase == RunPhase::Close || state == EngineState::Completed;
-        // Completed holds the axes (tau restarts at 0): the finished path is reported whole.
-        const bool done = state == EngineState::Completed;
-        const double pathT = done     ? program->cut_time_s
-                             : onPath ? std::min(tau, program->cut_time_s)
-                                      : 0;
+        const double pathT = state == EngineState::Completed ? program->cut_time_s
+                             : onPath                        ? std::min(tau, program->cut_time_s)
+                                                             : 0;
         t.progress = program->cut_time_s > 0 ? pathT / program->cut_time_s : 0;
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(
             pathT / program->spline.dt(), static_cast<double>(program->point_count)));
-        // Elapsed counts from the first cut point (approach, settling and ignition come before).
-        const bool cutStarted = onPath || phase >= RunPhase::Cut;
-        t.elapsed_s = done ? cutElapsedAtEnd : runActive && cutStarted ? now - cutStartTime : 0;
+        t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime; // since Start
         const double r = rate > 0 ? rate : overrideTarget;
         t.remaining_s = (program->cut_time_s - pathT) / r;
     }

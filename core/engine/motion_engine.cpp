@@ -173,7 +173,8 @@ void MotionEngine::Impl::loggerDrain() {
                 for (const Held& h : held)
                     if (h.seq == seq) p = h.program;
             }
-            runLog->beginRun(e.run_id, p ? p->name : std::string(), p ? p->source_text : std::string());
+            runLog->beginRun(e.run_id, p ? p->name : std::string(),
+                             p ? p->source_text : std::string());
         }
         runLog->event(e);
         if (e.kind == EventKind::RunEnded) {

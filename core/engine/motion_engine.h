@@ -12,6 +12,24 @@
 //    lost because the ring was full are counted in CycleStats, never hidden.
 //  - The cycle itself does not allocate, lock or block. Loading a program happens outside the
 //    cycle: load() hands over a shared_ptr that the engine swaps in at the next cycle.
+//  - In thread mode (startThread) a logger thread writes the run log; with runCycles() the
+//    caller writes it with flushRunLog(). runCycles() must not be used while the thread runs.
+//
+// Behaviour (see tests/engine/state_machine_test.cpp for every command in every state):
+//  - Enable (Idle, job loaded) -> Ready once every drive reads back Enabled. Ready is "not
+//    homed" until Home moves every axis to the program's reference at the home speed.
+//  - Start (Ready and homed) -> Running: an approach move to the first set-point at the home
+//    speed (torch off), settling there (in_position_*), torch on, wait for the arc, then the
+//    cut from path time 0. The torch is lit only on the path. The run lasts until the path
+//    ended and at least program.min_run_s of samples were taken -> Completed; its figures
+//    (lastRunReport) are simulateCut()'s for an uninterrupted run at 100 %.
+//  - The path time tau advances by rate * period; the set-point is the program's spline at tau.
+//    Feed hold, abort, override and a category-1 stop change the rate linearly at
+//    1 / spec.feed_hold_decel_s per second (100 % to rest in feed_hold_decel_s), so neither
+//    the set-point nor its velocity jumps; resume ramps back from where the path stopped.
+//  - Emergency stop / fault: torch off at once; category 0 disables every drive at once,
+//    category 1 stops along the path first, then disables. Both latch; Reset clears a fault,
+//    and an emergency stop only after releaseEmergencyStop(). Drives are "not homed" again.
 #include "core/devices/device_interfaces.h"
 #include "core/engine/engine_types.h"
 #include "core/engine/motion_program.h"
@@ -98,10 +116,7 @@ class MotionEngine {
 
   private:
     bool pushCommand(CommandType type, int axis = 0, double value = 0);
-
-  public:
     struct Impl; // defined in engine_impl.h (private to the engine's sources)
-  private:
     std::unique_ptr<Impl> impl_;
 };
 

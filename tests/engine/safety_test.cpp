@@ -28,7 +28,9 @@ std::vector<StateSetup> everyState() {
 TEST(EmergencyStop, FromEveryStateStopsTheDevicesAndLatchesUntilReleasedAndReset) {
     for (const auto& s : everyState()) {
         SCOPED_TRACE(s.name);
-        SimCell cell;
+        CellOptions quick;
+        quick.quick = true;
+        SimCell cell(quick);
         s.go(cell);
         if (HasFatalFailure()) return;
         const std::uint64_t measured = cell.engine().cycleStats().estops_measured;
@@ -109,7 +111,9 @@ TEST(Faults, EachInjectedFaultEndsInFaultWithTheRightMessage) {
     };
     for (const auto& fc : cases) {
         SCOPED_TRACE(fc.name);
-        SimCell cell;
+        CellOptions quick;
+        quick.quick = true;
+        SimCell cell(quick);
         cell.toCutting(2.0);
         if (HasFatalFailure()) return;
         const size_t mark = cell.events.size();
@@ -132,6 +136,30 @@ TEST(Faults, EachInjectedFaultEndsInFaultWithTheRightMessage) {
         cell.cycleOnce();
         EXPECT_EQ(cell.engine().state(), EngineState::Idle);
     }
+}
+
+TEST(Faults, CategoryOneFaultReactionStopsTheHealthyAxesAlongThePath) {
+    CellOptions o;
+    o.category = StopCategory::Cat1;
+    SimCell cell(o);
+    cell.toCutting(3.0);
+    cell.keepTelemetry = true;
+    cell.drive(5).injectFault(0x3210);
+    cell.cycleOnce();
+    EXPECT_EQ(cell.engine().state(), EngineState::Fault);
+    EXPECT_FALSE(cell.torch().isOn());
+    EXPECT_EQ(cell.telemetry.back().drive_states[1], DriveState::Enabled)
+        << "healthy axes decelerate first";
+    cell.run(2000, EngineState::Idle);
+    EXPECT_TRUE(cell.drivesAllDisabled());
+    const std::string text = cell.eventText();
+    EXPECT_NE(text.find("Fault: axis 5 (theta5): drive fault 0x3210"), std::string::npos) << text;
+    EXPECT_NE(text.find("cat1 stop"), std::string::npos) << text;
+    EXPECT_NE(text.find("Controlled stop complete: drives disabled"), std::string::npos) << text;
+    cell.drive(5).clearInjections();
+    cell.engine().reset();
+    cell.cycleOnce();
+    EXPECT_EQ(cell.engine().state(), EngineState::Idle);
 }
 
 TEST(Faults, StartBeforeHomingIsRefusedWithTheReason) {

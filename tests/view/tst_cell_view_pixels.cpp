@@ -7,9 +7,15 @@
 #include "ui/view3d/view_style.h"
 
 #include <QApplication>
+#include <QMouseEvent>
+#include <QOpenGLWidget>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <cmath>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
 
 using namespace cutcell;
 using namespace cutcell::view3d;
@@ -65,6 +71,7 @@ class TstCellViewPixels : public QObject {
     void initTestCase();
     void pipeAndTorchAtTheirProjections();
     void donePartTurnsGreen();
+    void mouseOrbitsAndWheelZooms();
 
   private:
     Job job_ = defaultJob();
@@ -145,6 +152,50 @@ void TstCellViewPixels::donePartTurnsGreen() {
     QVERIFY(view.projectToImage(m.pathPointWorld(j, plan_.knots[k].q), &px));
     QVERIFY2(countNear(img, px, 3, looksLikeDone) >= 2,
              qPrintable("green expected at " + describe(img, px)));
+}
+
+void TstCellViewPixels::mouseOrbitsAndWheelZooms() {
+    CellView view;
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(buildRobotScene(job_, plan_));
+    auto* gl = view.findChild<QOpenGLWidget*>();
+    QVERIFY(gl);
+    QVERIFY(!view.grabFrame().isNull());
+    vtkCamera* cam = view.scene().renderer()->GetActiveCamera();
+    const auto position = [cam] {
+        double p[3];
+        cam->GetPosition(p);
+        return Vec3(p[0], p[1], p[2]);
+    };
+    const auto focal = [cam] {
+        double p[3];
+        cam->GetFocalPoint(p);
+        return Vec3(p[0], p[1], p[2]);
+    };
+    // Left drag orbits: the camera moves, its distance to the focal point stays.
+    const Vec3 p0 = position(), f0 = focal();
+    const QPoint c = gl->rect().center();
+    QTest::mousePress(gl, Qt::LeftButton, {}, c);
+    for (int i = 1; i <= 5; ++i) {
+        QMouseEvent move(QEvent::MouseMove, QPointF(c + QPoint(12 * i, 4 * i)),
+                         gl->mapToGlobal(QPointF(c + QPoint(12 * i, 4 * i))), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(gl, &move);
+    }
+    QTest::mouseRelease(gl, Qt::LeftButton, {}, c + QPoint(60, 20));
+    const Vec3 p1 = position();
+    QVERIFY((p1 - p0).norm() > 1.0);
+    QVERIFY(std::fabs((p1 - f0).norm() - (p0 - f0).norm()) < 1e-6 * (p0 - f0).norm());
+    // Wheel forward zooms in: closer to the focal point.
+    QWheelEvent wheel(QPointF(c), gl->mapToGlobal(QPointF(c)), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(gl, &wheel);
+    QVERIFY((position() - focal()).norm() < (p1 - focal()).norm() - 1.0);
+    // Reset view brings the iso framing back.
+    view.resetView();
+    QVERIFY((position() - p0).norm() < 1e-6);
 }
 
 int main(int argc, char** argv) {

@@ -43,6 +43,7 @@ class TstSceneModel : public QObject {
     void pipeTurnsAboutItsOwnAxis();
     void unreachablePointsAreFlagged();
     void doneCountAndFlameFollowTheState();
+    void emptyPathIsHarmless();
 };
 
 void TstSceneModel::pathLiesOnTheWorkPipe_data() {
@@ -174,6 +175,21 @@ void TstSceneModel::doneCountAndFlameFollowTheState() {
     QVERIFY(!scene.flameVisible());
     scene.setMachineState(plan.knots.back().q, 7.0, false); // clamped
     QCOMPARE(scene.doneCount(), n);
+}
+
+void TstSceneModel::emptyPathIsHarmless() {
+    const Job job = defaultJob();
+    SceneModel m = buildRobotScene(job, planCut(job));
+    m.pathWork.clear();
+    m.approachWork.clear();
+    m.reachable.clear();
+    CellScene scene;
+    scene.setScene(m);
+    scene.setMachineState(m.homeQ, 0.5, true);
+    QCOMPARE(scene.doneCount(), 0);
+    QCOMPARE(scene.unreachableShown(), 0);
+    const auto b = scene.machineBounds();
+    QVERIFY(b[0] < b[1] && b[2] < b[3] && b[4] < b[5]);
 }
 
 QTEST_GUILESS_MAIN(TstSceneModel)

@@ -35,6 +35,7 @@ class TstTrackingPlots : public QObject {
     void exportToBadPathNamesThePath();
     void traceVisibilityToggles();
     void clearEmptiesEverything();
+    void hiddenWidgetCatchesUpWhenShown();
 };
 
 void TstTrackingPlots::ringKeepsNewestAndCountsDrops() {
@@ -63,6 +64,7 @@ void TstTrackingPlots::ringPadsMissingValuesWithNaN() {
 
 void TstTrackingPlots::appendStoresWithoutReplot() {
     TrackingPlotsWidget w;
+    w.show();
     w.setCapacity(100);
     double j[6], c[3];
     for (int i = 0; i < 250; ++i) {
@@ -77,6 +79,7 @@ void TstTrackingPlots::appendStoresWithoutReplot() {
 
 void TstTrackingPlots::pausedViewStaysFrozen() {
     TrackingPlotsWidget w;
+    w.show();
     double j[6], c[3];
     for (int i = 0; i < 10; ++i) {
         sample(i, j, c);
@@ -98,6 +101,7 @@ void TstTrackingPlots::pausedViewStaysFrozen() {
 void TstTrackingPlots::csvRoundTrip() {
     QTemporaryDir dir;
     TrackingPlotsWidget w;
+    w.show();
     w.setAxisNames({"A0 chuck", "J1", "J2", "J3", "J4", "J5"});
     double j[6], c[3];
     const int n = 40;
@@ -131,6 +135,7 @@ void TstTrackingPlots::csvRoundTrip() {
 void TstTrackingPlots::csvOfTwoAxisMachine() {
     QTemporaryDir dir;
     TrackingPlotsWidget w;
+    w.show();
     w.setAxisCount(2);
     w.setAxisNames({"X", "A"});
     const double j[2] = {0.5, -0.5};
@@ -147,6 +152,7 @@ void TstTrackingPlots::csvOfTwoAxisMachine() {
 void TstTrackingPlots::pngIsAValidImage() {
     QTemporaryDir dir;
     TrackingPlotsWidget w;
+    w.show();
     w.resize(900, 600);
     double j[6], c[3];
     for (int i = 0; i < 500; ++i) {
@@ -171,6 +177,7 @@ void TstTrackingPlots::pngIsAValidImage() {
 
 void TstTrackingPlots::exportToBadPathNamesThePath() {
     TrackingPlotsWidget w;
+    w.show();
     const QString bad = QStringLiteral("/nonexistent-dir/x/errors.csv");
     QString err;
     QVERIFY(!w.exportCsv(bad, &err));
@@ -181,6 +188,7 @@ void TstTrackingPlots::exportToBadPathNamesThePath() {
 
 void TstTrackingPlots::traceVisibilityToggles() {
     TrackingPlotsWidget w;
+    w.show();
     QVERIFY(w.traceVisible(2));
     w.setTraceVisible(2, false);
     QVERIFY(!w.traceVisible(2));
@@ -193,6 +201,7 @@ void TstTrackingPlots::traceVisibilityToggles() {
 
 void TstTrackingPlots::clearEmptiesEverything() {
     TrackingPlotsWidget w;
+    w.show();
     double j[6], c[3];
     for (int i = 0; i < 20; ++i) {
         sample(i, j, c);
@@ -203,6 +212,19 @@ void TstTrackingPlots::clearEmptiesEverything() {
     QCOMPARE(w.sampleCount(), 0);
     QCOMPARE(w.droppedCount(), std::uint64_t(0));
     QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 0, 2000);
+}
+
+void TstTrackingPlots::hiddenWidgetCatchesUpWhenShown() {
+    TrackingPlotsWidget w; // never shown yet
+    double j[6], c[3];
+    for (int i = 0; i < 25; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTest::qWait(120);
+    QCOMPARE(w.plottedPointCount(), 0); // no work for a hidden widget
+    w.show();
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 25, 2000);
 }
 
 QTEST_MAIN(TstTrackingPlots)

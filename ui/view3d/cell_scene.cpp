@@ -189,7 +189,8 @@ void CellScene::Impl::build() {
     pts->SetNumberOfPoints(n);
     donePts->SetNumberOfPoints(n);
     rgb->SetNumberOfTuples(n);
-    polyline->InsertNextCell(static_cast<int>(n));
+    if (n >= 2)
+        polyline->InsertNextCell(static_cast<int>(n)); // a path of 0 or 1 point draws nothing
     unreachable = 0;
     for (vtkIdType i = 0; i < n; ++i) {
         const Vec3& p = m.pathWork[static_cast<size_t>(i)];
@@ -198,7 +199,7 @@ void CellScene::Impl::build() {
         pts->SetPoint(i, lifted.x(), lifted.y(), lifted.z());
         const Vec3 above = radial.norm() > 1e-9 ? Vec3(p + 1.6 * radial.normalized()) : p;
         donePts->SetPoint(i, above.x(), above.y(), above.z());
-        polyline->InsertCellPoint(i);
+        if (n >= 2) polyline->InsertCellPoint(i);
         const bool ok =
             static_cast<size_t>(i) >= m.reachable.size() || m.reachable[static_cast<size_t>(i)];
         const Rgb c = ok ? colours::kPath : colours::kUnreachable;
@@ -271,12 +272,15 @@ void CellScene::Impl::build() {
     torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
     nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
     nozzle->GetProperty()->SetSpecular(0.6);
-    flame = makeActor(makeFrustum(3.2, 0.3, -3, 4, 24, false), colours::kFlame, 0.95);
+    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 0.95);
     flame->GetProperty()->SetAmbient(1.0);
     flame->GetProperty()->SetDiffuse(0.0);
     flame->GetProperty()->LightingOff();
     for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
         renderer->AddActor(a);
+    direction = makeActor(makeFrustum(1, 0, 0, 1, 24, true), colours::kDirection);
+    direction->GetProperty()->SetAmbient(0.5);
+    renderer->AddActor(direction);
 
     // Floor grid and axes triad around what is drawn.
     double b[6];
@@ -339,6 +343,21 @@ void CellScene::Impl::place() {
     for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
         setPose(a, tool);
     flame->SetVisibility(torchOn);
+
+    // Cutting direction: the path's tangent at the current point, drawn just off the surface.
+    const size_t n = model.pathWork.size();
+    direction->SetVisibility(n >= 2);
+    if (n >= 2) {
+        const size_t i = std::min(
+            n - 2, static_cast<size_t>(std::lround(progress * static_cast<double>(n - 1))));
+        const Vec3 tangent = work.linear() * (model.pathWork[i + 1] - model.pathWork[i]);
+        const Vec3 axis = tool.block<3, 1>(0, 2);
+        if (tangent.norm() > 1e-12) {
+            const Vec3 start =
+                Vec3(tool.block<3, 1>(0, 3)) - axis * 6.0 + tangent.normalized() * 6.0;
+            setPose(direction, segmentMatrix(start, start + tangent.normalized() * 18.0, 3.0));
+        }
+    }
 }
 
 void CellScene::Impl::updateDone(int count) {

@@ -41,7 +41,7 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
         if (fresh) {
             // First frame of the follow mode: close to the tip, from the iso side.
             const Vec3 dir = lookFor(ViewPreset::Iso).toCamera;
-            const Vec3 c = tip + dir * (4.0 * model.toolLength_mm);
+            const Vec3 c = tip + dir * (1.8 * model.toolLength_mm);
             cam->SetFocalPoint(tip.x(), tip.y(), tip.z());
             cam->SetPosition(c.x(), c.y(), c.z());
             cam->SetViewUp(0, 0, 1);
@@ -66,7 +66,7 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
     cam->SetViewUp(look.up.x(), look.up.y(), look.up.z());
     cam->SetViewAngle(30);
     renderer->ResetCamera(b);
-    cam->Zoom(1.25); // ResetCamera leaves a wide margin
+    cam->Zoom(1.15); // ResetCamera leaves a wide margin
     renderer->ResetCameraClippingRange();
 }
 

@@ -44,6 +44,7 @@ struct CellScene::Impl {
     vtkSmartPointer<vtkPolyData> donePoly;
     // Moved with the tool.
     vtkSmartPointer<vtkActor> torchBody, nozzle, flame;
+    vtkSmartPointer<vtkActor> direction; // cutting direction at the tip (arrow)
     std::vector<ArmPiece> arm;
     // Static.
     vtkSmartPointer<vtkActor> grid;

@@ -6,7 +6,8 @@
 //   path       amber/yellow      (planned, reachable)
 //   done       bright green      (the part already cut)
 //   unreachable red
-//   torch      orange body, copper nozzle, blue-white flame while the torch is on
+//   torch      orange body, copper nozzle, blue-white flame while the torch is on, a white
+//              arrow at the tip along the cutting direction
 //   arm        light grey links, dark graphite joints
 //   background dark blue-grey gradient, floor grid slightly lighter
 namespace cutcell::view3d {
@@ -28,6 +29,7 @@ inline constexpr Rgb kUnreachable{1.00, 0.08, 0.08};
 inline constexpr Rgb kTorchBody{1.00, 0.42, 0.02};
 inline constexpr Rgb kNozzle{0.92, 0.50, 0.18};
 inline constexpr Rgb kFlame{0.55, 0.80, 1.00};
+inline constexpr Rgb kDirection{0.95, 0.95, 0.95}; // arrow: cutting direction at the tip
 inline constexpr Rgb kArmLink{0.82, 0.82, 0.80};
 inline constexpr Rgb kArmJoint{0.22, 0.23, 0.26};
 inline constexpr Rgb kMachine{0.30, 0.32, 0.36}; // chuck, headstock, robot pedestal

@@ -20,6 +20,8 @@ namespace cutcell::view3d {
 VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
     window_ = vtkGenericOpenGLRenderWindow::New();
     window_->SetMultiSamples(0); // 4x MSAA costs ~6x the frame time on llvmpipe (STACK.md)
+    // Qt's core profile is forward compatible: glLineWidth > 1 fails there, so VTK must draw
+    // wide lines itself.
     window_->SetForceMaximumHardwareLineWidth(1);
     window_->SetReadyForRendering(false);
     for (unsigned long ev : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
