@@ -90,11 +90,11 @@ void PlotsPanel::setAxisNames(const QStringList& names) {
 
 void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
     for (const auto& s : batch) {
-        // Only the cut itself is plotted, from its first point (approach, settling, homing
-        // and rest are not tracking errors of the cut).
+        // Only the cut itself is plotted, once the path has begun (approach, settling,
+        // homing and rest are not tracking errors of the cut); t is the time since Start.
         const bool cutting =
             s.state == cutcell::EngineState::Running || s.state == cutcell::EngineState::Paused;
-        if (!cutting || (s.elapsed_s <= 0 && s.progress <= 0)) continue;
+        if (!cutting || s.progress <= 0) continue;
         if (lastPlottedS_ >= 0 && s.elapsed_s >= lastPlottedS_ &&
             s.elapsed_s - lastPlottedS_ < kPlotIntervalS - 1e-9)
             continue;
