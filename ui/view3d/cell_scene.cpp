@@ -167,13 +167,14 @@ void CellScene::Impl::build() {
     renderer->AddActor(head);
     fixedActors.push_back(head);
 
-    // Mating pipe, ghosted.
+    // Mating pipe, ghosted as a wireframe: a translucent surface would cost VTK's
+    // order-independent translucency pass, ~30 % of the frame on llvmpipe.
     if (m.hasMatingPipe) {
-        const double mr = m.matingPipe.radius_mm;
-        auto ghost = makeActor(makeTube(mr, std::max(0.0, mr - m.matingPipe.wall_mm), 0,
-                                        m.matingPipe.length_mm, kFacets),
-                               colours::kMating, colours::kMatingOpacity);
-        ghost->GetProperty()->SetSpecular(0.1);
+        auto ghost =
+            makeActor(makeWireTube(m.matingPipe.radius_mm, m.matingPipe.length_mm, 16, 5, kFacets),
+                      colours::kMating, colours::kMatingOpacity);
+        ghost->GetProperty()->LightingOff();
+        ghost->GetProperty()->SetLineWidth(1.0f);
         addWork(ghost, m.workFromMating.matrix());
     }
 
@@ -280,7 +281,7 @@ void CellScene::Impl::build() {
     torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
     nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
     nozzle->GetProperty()->SetSpecular(0.6);
-    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 0.95);
+    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 1.0);
     flame->GetProperty()->SetAmbient(1.0);
     flame->GetProperty()->SetDiffuse(0.0);
     flame->GetProperty()->LightingOff();
