@@ -198,6 +198,14 @@ void CellScene::Impl::build() {
     vtkNew<vtkCellArray> bad;
     pts->SetNumberOfPoints(nd);
     donePts->SetNumberOfPoints(nd + 1); // + the exact current point
+    // Every slot must hold a real point: VTK reads all of them (bounds, the VBO's shift and
+    // scale), and garbage there broke the whole frame now and then.
+    if (nd > 0) {
+        const Vec3 first = liftedPathPoint(drawnIndex.front(), 1.6);
+        donePts->SetPoint(nd, first.x(), first.y(), first.z());
+    } else {
+        donePts->SetPoint(0, 0, 0, 0);
+    }
     rgb->SetNumberOfTuples(nd);
     if (nd >= 2) polyline->InsertNextCell(static_cast<int>(nd)); // 0 or 1 point: nothing
     unreachable = 0;
