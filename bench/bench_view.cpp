@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     int points = 30000, frames = 100, width = 800, height = 600;
     std::string screenshot;
     bool follow = false;
+    double joint3MaxDeg = 1e9; // --joint3-max: shrink joint 3's range to show unreachable points
     for (int i = 1; i < argc; ++i) {
         const auto next = [&] { return i + 1 < argc ? argv[++i] : ""; };
         if (!std::strcmp(argv[i], "--points"))
@@ -79,9 +80,11 @@ int main(int argc, char** argv) {
             screenshot = next();
         else if (!std::strcmp(argv[i], "--follow"))
             follow = true;
+        else if (!std::strcmp(argv[i], "--joint3-max"))
+            joint3MaxDeg = std::atof(next());
         else {
             std::fprintf(stderr, "usage: bench_view [--points N] [--frames N] [--size WxH] "
-                                 "[--screenshot file.png [--follow]]\n");
+                                 "[--screenshot file.png [--follow] [--joint3-max deg]]\n");
             return 2;
         }
     }
@@ -90,6 +93,7 @@ int main(int argc, char** argv) {
 
     if (!screenshot.empty()) {
         Job job = defaultJob();
+        job.dh[3].max_deg = std::min(job.dh[3].max_deg, joint3MaxDeg);
         const CutPlan plan = planCut(job);
         view3d::CellView view;
         view.resize(width, height);

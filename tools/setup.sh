@@ -15,6 +15,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-serialbus-dev libqt6serialbus6-bin
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
+  poppler-utils linuxcnc-uspace
 )
 missing=()
 for p in "${packages[@]}"; do

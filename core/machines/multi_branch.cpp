@@ -16,16 +16,10 @@ JointPipe jointPipeFrom(const OtherBranch& b) {
     return p;
 }
 
-namespace {
-
-struct LocalFrame {
-    Pose mainFromLocal = Pose::Identity();
-    IntersectionSpec spec;
-};
-
 // The other pipe's frame: z = its axis, x = b x z (common perpendicular, so the cut branch's
 // axis lies in the plane x = e' with a positive y component, as PipeIntersection wants).
-LocalFrame localFrame(const PipeIntersection& cut, const JointPipe& pipe) {
+BranchCrossing::LocalFrame BranchCrossing::localFrame(const PipeIntersection& cut,
+                                                      const JointPipe& pipe) {
     const Vec3 b = cut.branchAxis();
     const Vec3 z = pipe.axis_dir.normalized();
     const Vec3 bxz = b.cross(z);
@@ -40,17 +34,19 @@ LocalFrame localFrame(const PipeIntersection& cut, const JointPipe& pipe) {
     const double s = (bz * e - d) / denom, u = (e - bz * d) / denom;
     const Vec3 qb = cut.branchOrigin() + s * b;
     const Vec3 qj = pipe.axis_point + u * z;
-    LocalFrame f;
-    f.mainFromLocal.linear().col(0) = x;
-    f.mainFromLocal.linear().col(1) = y;
-    f.mainFromLocal.linear().col(2) = z;
-    f.mainFromLocal.translation() = qj;
-    f.spec.main_radius_mm = pipe.radius_mm;
-    f.spec.branch_radius_mm = cut.spec().branch_radius_mm;
-    f.spec.angle_deg = rad2deg(std::atan2(b.dot(y), b.dot(z)));
-    f.spec.eccentricity_mm = (qb - qj).dot(x);
+    LocalFrame f{Pose::Identity(), IntersectionSpec{}};
+    f.first.linear().col(0) = x;
+    f.first.linear().col(1) = y;
+    f.first.linear().col(2) = z;
+    f.first.translation() = qj;
+    f.second.main_radius_mm = pipe.radius_mm;
+    f.second.branch_radius_mm = cut.spec().branch_radius_mm;
+    f.second.angle_deg = rad2deg(std::atan2(b.dot(y), b.dot(z)));
+    f.second.eccentricity_mm = (qb - qj).dot(x);
     return f;
 }
+
+namespace {
 
 IntersectionSpec withSide(IntersectionSpec s, int side) {
     s.side = side;
@@ -61,10 +57,12 @@ IntersectionSpec withSide(IntersectionSpec s, int side) {
 
 BranchCrossing::BranchCrossing(const PipeIntersection& cutBranch, const JointPipe& pipe,
                                double mainRadius)
-    : cut_(&cutBranch), pipe_(pipe), mainRadius_(mainRadius),
-      mainFromLocal_(localFrame(cutBranch, pipe).mainFromLocal),
-      localPlus_(withSide(localFrame(cutBranch, pipe).spec, +1)),
-      localMinus_(withSide(localFrame(cutBranch, pipe).spec, -1)) {}
+    : BranchCrossing(cutBranch, pipe, mainRadius, localFrame(cutBranch, pipe)) {}
+
+BranchCrossing::BranchCrossing(const PipeIntersection& cutBranch, const JointPipe& pipe,
+                               double mainRadius, const LocalFrame& frame)
+    : cut_(&cutBranch), pipe_(pipe), mainRadius_(mainRadius), mainFromLocal_(frame.first),
+      localPlus_(withSide(frame.second, +1)), localMinus_(withSide(frame.second, -1)) {}
 
 std::optional<Vec3> BranchCrossing::meet(double phi) const {
     // The generatrix's radial direction in the main frame, then its parameter in the local frame.

@@ -25,6 +25,7 @@
 #include "core/job/job.h"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace cutcell {
@@ -54,6 +55,12 @@ class BranchCrossing {
     const JointPipe& pipe() const { return pipe_; }
 
   private:
+    // The other pipe's frame (main from local) and the crossing seen from it.
+    using LocalFrame = std::pair<Pose, IntersectionSpec>;
+    BranchCrossing(const PipeIntersection& cutBranch, const JointPipe& pipe, double mainRadius,
+                   const LocalFrame& frame);
+    static LocalFrame localFrame(const PipeIntersection& cut, const JointPipe& pipe);
+
     const PipeIntersection* cut_;
     JointPipe pipe_;
     double mainRadius_;

@@ -145,6 +145,7 @@ void TstCellViewPixels::donePartTurnsGreen() {
     const size_t k = plan_.knots.size() * 3 / 4;
     view.setMachineState(plan_.knots[k].q, double(k) / double(plan_.knots.size() - 1), false);
     const QImage img = view.grabFrame();
+    img.save(QDir::temp().filePath("cutcell_view_done.png"));
     // A point cut long ago (half-way) is drawn green where it projects.
     const SceneModel& m = view.scene().model();
     const size_t j = plan_.knots.size() / 2;

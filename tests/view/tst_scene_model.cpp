@@ -1,5 +1,6 @@
 // SceneModel and the CellScene scene graph (no rendering): geometry properties against the
 // core's kinematics, for the default job and variants.
+#include "core/geometry/cut_path.h"
 #include "core/job/default_job.h"
 #include "core/kinematics/pipe_robot.h"
 #include "core/trajectory/cut_planner.h"
@@ -44,6 +45,7 @@ class TstSceneModel : public QObject {
     void unreachablePointsAreFlagged();
     void doneCountAndFlameFollowTheState();
     void emptyPathIsHarmless();
+    void longPathIsDecimatedForDrawing();
 };
 
 void TstSceneModel::pathLiesOnTheWorkPipe_data() {
@@ -190,6 +192,22 @@ void TstSceneModel::emptyPathIsHarmless() {
     QCOMPARE(scene.unreachableShown(), 0);
     const auto b = scene.machineBounds();
     QVERIFY(b[0] < b[1] && b[2] < b[3] && b[4] < b[5]);
+}
+
+void TstSceneModel::longPathIsDecimatedForDrawing() {
+    Job job = defaultJob();
+    job.cut.knot_spacing_mm = CutGeometry(job).length() / 20000;
+    const CutPlan plan = planCut(job);
+    const int n = int(plan.knots.size());
+    QVERIFY(n > 20000);
+    CellScene scene;
+    scene.setScene(buildRobotScene(job, plan));
+    QVERIFY(scene.drawnPathPoints() <= 5001 && scene.drawnPathPoints() >= 2500);
+    // Progress still counts plan points.
+    scene.setMachineState(plan.knots[size_t(n / 3)].q, double(n / 3) / double(n - 1), true);
+    QCOMPARE(scene.doneCount(), n / 3 + 1);
+    scene.setMachineState(plan.knots.back().q, 1.0, false);
+    QCOMPARE(scene.doneCount(), n);
 }
 
 QTEST_GUILESS_MAIN(TstSceneModel)

@@ -21,6 +21,7 @@ namespace cutcell::view3d {
 namespace {
 
 constexpr int kFacets = 64;
+constexpr size_t kMaxDrawnPathPoints = 5000;
 
 vtkSmartPointer<vtkActor> makeActor(vtkPolyData* pd, Rgb c, double opacity = 1.0) {
     vtkNew<vtkPolyDataMapper> mapper;
@@ -166,49 +167,65 @@ void CellScene::Impl::build() {
     renderer->AddActor(head);
     fixedActors.push_back(head);
 
-    // Mating pipe, ghosted.
+    // Mating pipe, ghosted as a wireframe: a translucent surface would cost VTK's
+    // order-independent translucency pass, ~30 % of the frame on llvmpipe.
     if (m.hasMatingPipe) {
-        const double mr = m.matingPipe.radius_mm;
-        auto ghost = makeActor(makeTube(mr, std::max(0.0, mr - m.matingPipe.wall_mm), 0,
-                                        m.matingPipe.length_mm, kFacets),
-                               colours::kMating, colours::kMatingOpacity);
-        ghost->GetProperty()->SetSpecular(0.1);
+        auto ghost =
+            makeActor(makeWireTube(m.matingPipe.radius_mm, m.matingPipe.length_mm, 16, 5, kFacets),
+                      colours::kMating, colours::kMatingOpacity);
+        ghost->GetProperty()->LightingOff();
+        ghost->GetProperty()->SetLineWidth(1.0f);
         addWork(ghost, m.workFromMating.matrix());
     }
 
     // Planned path lifted 0.8 mm off the surface so it never hides in it; the done part 1.6 mm,
-    // so it is drawn over the planned path.
+    // so it is drawn over the planned path. At most kMaxDrawnPathPoints are drawn (a 30 000-point
+    // plan is far denser than the screen); a drawn point is red when any plan point it stands
+    // for is unreachable, and carries a red marker.
+    const size_t n = m.pathWork.size();
+    const size_t stride = std::max<size_t>(1, (n + kMaxDrawnPathPoints - 1) / kMaxDrawnPathPoints);
+    drawnIndex.clear();
+    for (size_t i = 0; i < n; i += stride)
+        drawnIndex.push_back(i);
+    if (n > 0 && drawnIndex.back() != n - 1) drawnIndex.push_back(n - 1);
+    const vtkIdType nd = static_cast<vtkIdType>(drawnIndex.size());
     vtkNew<vtkPoints> pts;
-    vtkNew<vtkPoints> donePts;
+    donePts = vtkSmartPointer<vtkPoints>::New();
     vtkNew<vtkUnsignedCharArray> rgb;
     rgb->SetNumberOfComponents(3);
     rgb->SetName("colours");
     vtkNew<vtkCellArray> polyline;
     vtkNew<vtkCellArray> bad;
-    const vtkIdType n = static_cast<vtkIdType>(m.pathWork.size());
-    pts->SetNumberOfPoints(n);
-    donePts->SetNumberOfPoints(n);
-    rgb->SetNumberOfTuples(n);
-    if (n >= 2)
-        polyline->InsertNextCell(static_cast<int>(n)); // a path of 0 or 1 point draws nothing
+    pts->SetNumberOfPoints(nd);
+    donePts->SetNumberOfPoints(nd + 1); // + the exact current point
+    // Every slot must hold a real point: VTK reads all of them (bounds, the VBO's shift and
+    // scale), and garbage there broke the whole frame now and then.
+    if (nd > 0) {
+        const Vec3 first = liftedPathPoint(drawnIndex.front(), 1.6);
+        donePts->SetPoint(nd, first.x(), first.y(), first.z());
+    } else {
+        donePts->SetPoint(0, 0, 0, 0);
+    }
+    rgb->SetNumberOfTuples(nd);
+    if (nd >= 2) polyline->InsertNextCell(static_cast<int>(nd)); // 0 or 1 point: nothing
     unreachable = 0;
-    for (vtkIdType i = 0; i < n; ++i) {
-        const Vec3& p = m.pathWork[static_cast<size_t>(i)];
-        const Vec3 radial(p.x(), p.y(), 0);
-        const Vec3 lifted = radial.norm() > 1e-9 ? Vec3(p + 0.8 * radial.normalized()) : p;
-        pts->SetPoint(i, lifted.x(), lifted.y(), lifted.z());
-        const Vec3 above = radial.norm() > 1e-9 ? Vec3(p + 1.6 * radial.normalized()) : p;
-        donePts->SetPoint(i, above.x(), above.y(), above.z());
-        if (n >= 2) polyline->InsertCellPoint(i);
-        const bool ok =
-            static_cast<size_t>(i) >= m.reachable.size() || m.reachable[static_cast<size_t>(i)];
+    for (size_t i = 0; i < std::min(n, m.reachable.size()); ++i)
+        unreachable += m.reachable[i] ? 0 : 1;
+    for (vtkIdType k = 0; k < nd; ++k) {
+        const size_t i = drawnIndex[static_cast<size_t>(k)];
+        const Vec3 lifted = liftedPathPoint(i, 0.8);
+        pts->SetPoint(k, lifted.x(), lifted.y(), lifted.z());
+        const Vec3 above = liftedPathPoint(i, 1.6);
+        donePts->SetPoint(k, above.x(), above.y(), above.z());
+        if (nd >= 2) polyline->InsertCellPoint(k);
+        const size_t windowEnd = k + 1 < nd ? drawnIndex[static_cast<size_t>(k) + 1] : n;
+        bool ok = true;
+        for (size_t j = i; j < std::min(windowEnd, m.reachable.size()); ++j)
+            ok = ok && m.reachable[j];
         const Rgb c = ok ? colours::kPath : colours::kUnreachable;
         const unsigned char t[3] = {byte(c.r), byte(c.g), byte(c.b)};
-        rgb->SetTypedTuple(i, t);
-        if (!ok) {
-            bad->InsertNextCell(1, &i);
-            ++unreachable;
-        }
+        rgb->SetTypedTuple(k, t);
+        if (!ok) bad->InsertNextCell(1, &k);
     }
     vtkNew<vtkPolyData> pathPoly;
     pathPoly->SetPoints(pts);
@@ -272,7 +289,7 @@ void CellScene::Impl::build() {
     torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
     nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
     nozzle->GetProperty()->SetSpecular(0.6);
-    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 0.95);
+    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 1.0);
     flame->GetProperty()->SetAmbient(1.0);
     flame->GetProperty()->SetDiffuse(0.0);
     flame->GetProperty()->LightingOff();
@@ -365,12 +382,30 @@ void CellScene::Impl::updateDone(int count) {
     done = count;
     vtkNew<vtkCellArray> lines;
     if (count >= 2) {
-        lines->InsertNextCell(static_cast<int>(count));
-        for (vtkIdType i = 0; i < count; ++i)
-            lines->InsertCellPoint(i);
+        // Drawn points already passed, then the exact current point.
+        const size_t last = static_cast<size_t>(count) - 1;
+        const auto upto =
+            std::upper_bound(drawnIndex.begin(), drawnIndex.end(), last) - drawnIndex.begin();
+        const bool exact = upto > 0 && drawnIndex[static_cast<size_t>(upto) - 1] == last;
+        lines->InsertNextCell(static_cast<int>(upto + (exact ? 0 : 1)));
+        for (vtkIdType k = 0; k < upto; ++k)
+            lines->InsertCellPoint(k);
+        if (!exact) {
+            const vtkIdType slot = static_cast<vtkIdType>(drawnIndex.size());
+            const Vec3 p = liftedPathPoint(last, 1.6);
+            donePts->SetPoint(slot, p.x(), p.y(), p.z());
+            donePts->Modified();
+            lines->InsertCellPoint(slot);
+        }
     }
     donePoly->SetLines(lines);
     donePoly->Modified();
+}
+
+Vec3 CellScene::Impl::liftedPathPoint(size_t i, double mm) const {
+    const Vec3& p = model.pathWork[i];
+    const Vec3 radial(p.x(), p.y(), 0);
+    return radial.norm() > 1e-9 ? Vec3(p + mm * radial.normalized()) : p;
 }
 
 void CellScene::Impl::updateStatus() {
@@ -426,6 +461,9 @@ int CellScene::doneCount() const {
 }
 int CellScene::unreachableShown() const {
     return d->unreachable;
+}
+int CellScene::drawnPathPoints() const {
+    return static_cast<int>(d->drawnIndex.size());
 }
 bool CellScene::flameVisible() const {
     return d->flame && d->flame->GetVisibility();

@@ -48,7 +48,8 @@ class CellScene {
     // World bounds of the machine and the pipes (xmin, xmax, ymin, ymax, zmin, zmax).
     std::array<double, 6> machineBounds() const;
     int doneCount() const;        // path points drawn as done
-    int unreachableShown() const; // red markers
+    int unreachableShown() const; // path points flagged unreachable (drawn red)
+    int drawnPathPoints() const;  // points of the drawn polyline (decimated to <= 5000)
     bool flameVisible() const;
     const JointVector& machineQ() const;
 

@@ -42,6 +42,8 @@ struct CellScene::Impl {
     std::vector<Eigen::Matrix4d> workLocal; // each work actor's pose in the work frame
     vtkSmartPointer<vtkActor> pipe, path, doneActor, unreachableActor;
     vtkSmartPointer<vtkPolyData> donePoly;
+    vtkSmartPointer<vtkPoints> donePts;
+    std::vector<size_t> drawnIndex; // plan point index of each drawn path point (ascending)
     // Moved with the tool.
     vtkSmartPointer<vtkActor> torchBody, nozzle, flame;
     vtkSmartPointer<vtkActor> direction; // cutting direction at the tip (arrow)
@@ -54,6 +56,7 @@ struct CellScene::Impl {
     void build();
     void place();
     void updateDone(int count);
+    Vec3 liftedPathPoint(size_t i, double mm) const; // off the work pipe's surface, work frame
     void updateStatus();
     void applyCamera(ViewPreset p);
 };

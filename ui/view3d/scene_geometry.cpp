@@ -101,6 +101,33 @@ vtkSmartPointer<vtkPolyData> makeFrustum(double r0, double r1, double z0, double
     return m.finish();
 }
 
+vtkSmartPointer<vtkPolyData> makeWireTube(double r, double length, int axialLines, int rings,
+                                          int facets) {
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkCellArray> lines;
+    for (int i = 0; i < axialLines; ++i) {
+        const double a = 2 * kPi * i / axialLines;
+        const vtkIdType ids[2] = {pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), 0),
+                                  pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), length)};
+        lines->InsertNextCell(2, ids);
+    }
+    for (int k = 0; k < rings; ++k) {
+        const double z = rings > 1 ? length * k / (rings - 1) : 0;
+        const vtkIdType first = pts->GetNumberOfPoints();
+        for (int i = 0; i < facets; ++i) {
+            const double a = 2 * kPi * i / facets;
+            pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), z);
+        }
+        lines->InsertNextCell(facets + 1);
+        for (int i = 0; i <= facets; ++i)
+            lines->InsertCellPoint(first + i % facets);
+    }
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(pts);
+    pd->SetLines(lines);
+    return pd;
+}
+
 vtkSmartPointer<vtkPolyData> makeBox(double sx, double sy, double sz) {
     vtkNew<vtkCubeSource> cube;
     cube->SetXLength(sx);

@@ -18,6 +18,9 @@ vtkSmartPointer<vtkPolyData> makeTube(double outerR, double innerR, double z0, d
 // A (truncated) cone from radius r0 at z0 to r1 at z1, closed at both ends when capped.
 vtkSmartPointer<vtkPolyData> makeFrustum(double r0, double r1, double z0, double z1, int facets,
                                          bool capped);
+// A wireframe "ghost" of a tube of radius r from z = 0 to z = length: axial lines and rings.
+vtkSmartPointer<vtkPolyData> makeWireTube(double r, double length, int axialLines, int rings,
+                                          int facets);
 // An axis-aligned box centred at the origin.
 vtkSmartPointer<vtkPolyData> makeBox(double sx, double sy, double sz);
 // Lines on the plane z: a square grid covering [x0, x1] x [y0, y1].

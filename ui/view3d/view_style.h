@@ -2,7 +2,7 @@
 // Look of the 3D view: view presets and the colours of everything drawn (RGB in 0..1).
 // The pixel test (tests/view) looks for these colours, so keep them distinct in hue:
 //   pipe       steel grey-blue   (blue clearly above red)
-//   mating     pale cyan, ghosted (translucent)
+//   mating     pale cyan wireframe (ghost)
 //   path       amber/yellow      (planned, reachable)
 //   done       bright green      (the part already cut)
 //   unreachable red
@@ -21,8 +21,8 @@ struct Rgb {
 namespace colours {
 inline constexpr Rgb kPipe{0.50, 0.60, 0.76};
 inline constexpr Rgb kPipeInner{0.36, 0.40, 0.48};
-inline constexpr Rgb kMating{0.60, 0.85, 0.95};
-inline constexpr double kMatingOpacity = 0.22;
+inline constexpr Rgb kMating{0.45, 0.70, 0.80};
+inline constexpr double kMatingOpacity = 1.0; // wireframe ghost (opaque: no OIT pass)
 inline constexpr Rgb kPath{1.00, 0.78, 0.05};
 inline constexpr Rgb kDone{0.15, 1.00, 0.25};
 inline constexpr Rgb kUnreachable{1.00, 0.08, 0.08};
