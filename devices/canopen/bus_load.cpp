@@ -5,7 +5,9 @@
 
 namespace cutcell::canopen {
 
-int worstCaseFrameBits(int n) { return 8 * n + 47 + (34 + 8 * n - 1) / 4; }
+int worstCaseFrameBits(int n) {
+    return 8 * n + 47 + (34 + 8 * n - 1) / 4;
+}
 
 BusLoad computeBusLoad(const BusLoadInput& in) {
     BusLoad r;
@@ -25,12 +27,13 @@ BusLoad computeBusLoad(const BusLoadInput& in) {
     r.min_period_s = spare > 0 ? cyclic / spare : INFINITY;
     r.ok = r.load <= in.limit;
     char buf[400];
-    std::snprintf(buf, sizeof buf,
-                  "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
-                  "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
-                  in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
-                  heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100,
-                  in.bitrate_bps / 1e3, in.limit * 100);
+    std::snprintf(
+        buf, sizeof buf,
+        "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
+        "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
+        in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
+        heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
+        in.limit * 100);
     r.message = buf;
     if (!r.ok) {
         // Round the advice up to 0.1 ms so that following it passes.

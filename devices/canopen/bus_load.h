@@ -11,22 +11,22 @@ namespace cutcell::canopen {
 int worstCaseFrameBits(int dataBytes);
 
 struct BusLoadInput {
-    double period_s = 0.001;   // SYNC / engine cycle
+    double period_s = 0.001; // SYNC / engine cycle
     double bitrate_bps = 1e6;
     int nodes = 6;
-    int rpdo_bytes = 6;        // per node per cycle
-    int tpdo_bytes = 6;        // per node per cycle
+    int rpdo_bytes = 6;              // per node per cycle
+    int tpdo_bytes = 6;              // per node per cycle
     double heartbeat_period_s = 0.1; // each node's heartbeat (1 byte), 0 = none
-    double limit = 0.8;        // highest admissible load
+    double limit = 0.8;              // highest admissible load
 };
 
 struct BusLoad {
-    int frames_per_cycle = 0;    // cyclic frames (RPDOs, TPDOs, SYNC)
-    double bits_per_cycle = 0;   // cyclic + heartbeats averaged over the cycle
-    double load = 0;             // fraction of the bit rate
-    double min_period_s = 0;     // shortest period within the limit
+    int frames_per_cycle = 0;  // cyclic frames (RPDOs, TPDOs, SYNC)
+    double bits_per_cycle = 0; // cyclic + heartbeats averaged over the cycle
+    double load = 0;           // fraction of the bit rate
+    double min_period_s = 0;   // shortest period within the limit
     bool ok = false;
-    std::string message;         // the figures; says what to change when !ok
+    std::string message; // the figures; says what to change when !ok
 };
 
 BusLoad computeBusLoad(const BusLoadInput& in);

@@ -26,17 +26,25 @@ void append(std::string& s, const char* what) {
 
 const char* toString(BusState s) {
     switch (s) {
-    case BusState::Unknown: return "unknown";
-    case BusState::Good: return "error active";
-    case BusState::Warning: return "error warning";
-    case BusState::ErrorPassive: return "error passive";
-    case BusState::BusOff: return "bus off";
-    case BusState::Disconnected: return "disconnected";
+    case BusState::Unknown:
+        return "unknown";
+    case BusState::Good:
+        return "error active";
+    case BusState::Warning:
+        return "error warning";
+    case BusState::ErrorPassive:
+        return "error passive";
+    case BusState::BusOff:
+        return "bus off";
+    case BusState::Disconnected:
+        return "disconnected";
     }
     return "unknown";
 }
 
-BusState worse(BusState a, BusState b) { return static_cast<int>(a) >= static_cast<int>(b) ? a : b; }
+BusState worse(BusState a, BusState b) {
+    return static_cast<int>(a) >= static_cast<int>(b) ? a : b;
+}
 
 ErrorFrameInfo decodeErrorFrame(std::uint32_t c, const std::uint8_t* d, int len) {
     ErrorFrameInfo r;
@@ -48,7 +56,8 @@ ErrorFrameInfo decodeErrorFrame(std::uint32_t c, const std::uint8_t* d, int len)
     if (c & kErrCtrl) {
         if (ctrl & (kCtrlRxPassive | kCtrlTxPassive)) {
             r.state = worse(r.state, BusState::ErrorPassive);
-            append(r.text, ctrl & kCtrlTxPassive ? "transmitter error passive" : "receiver error passive");
+            append(r.text,
+                   ctrl & kCtrlTxPassive ? "transmitter error passive" : "receiver error passive");
         } else if (ctrl & (kCtrlRxWarning | kCtrlTxWarning)) {
             r.state = worse(r.state, BusState::Warning);
             append(r.text, "error counter reached warning level");
@@ -57,7 +66,8 @@ ErrorFrameInfo decodeErrorFrame(std::uint32_t c, const std::uint8_t* d, int len)
             if (r.state == BusState::Unknown) r.state = BusState::Good;
             append(r.text, "back to error active");
         }
-        if (ctrl & (kCtrlRxOverflow | kCtrlTxOverflow)) append(r.text, "controller buffer overflow");
+        if (ctrl & (kCtrlRxOverflow | kCtrlTxOverflow))
+            append(r.text, "controller buffer overflow");
     }
     if (c & kErrRestarted) {
         r.restarted = true;

@@ -22,7 +22,8 @@ inline std::uint16_t getU16(const CanFrame& f, int at) {
 }
 inline std::uint32_t getU32(const CanFrame& f, int at) {
     std::uint32_t v = 0;
-    for (int i = 3; i >= 0; --i) v = (v << 8) | f.data[static_cast<std::size_t>(at + i)];
+    for (int i = 3; i >= 0; --i)
+        v = (v << 8) | f.data[static_cast<std::size_t>(at + i)];
     return v;
 }
 inline void putU16(CanFrame& f, int at, std::uint16_t v) {
@@ -38,15 +39,19 @@ inline void putU32(CanFrame& f, int at, std::uint32_t v) {
 namespace cob {
 inline constexpr std::uint32_t kNmt = 0x000;
 inline constexpr std::uint32_t kSync = 0x080;
-inline constexpr std::uint32_t kEmcy = 0x080;     // + node id (1..127)
-inline constexpr std::uint32_t kTpdo1 = 0x180;    // + node id
-inline constexpr std::uint32_t kRpdo1 = 0x200;    // + node id
-inline constexpr std::uint32_t kRpdo2 = 0x300;    // + node id
-inline constexpr std::uint32_t kSdoTx = 0x580;    // server -> client, + node id
-inline constexpr std::uint32_t kSdoRx = 0x600;    // client -> server, + node id
+inline constexpr std::uint32_t kEmcy = 0x080;      // + node id (1..127)
+inline constexpr std::uint32_t kTpdo1 = 0x180;     // + node id
+inline constexpr std::uint32_t kRpdo1 = 0x200;     // + node id
+inline constexpr std::uint32_t kRpdo2 = 0x300;     // + node id
+inline constexpr std::uint32_t kSdoTx = 0x580;     // server -> client, + node id
+inline constexpr std::uint32_t kSdoRx = 0x600;     // client -> server, + node id
 inline constexpr std::uint32_t kHeartbeat = 0x700; // + node id
-inline constexpr std::uint32_t functionOf(std::uint32_t id) { return id & 0x780; }
-inline constexpr int nodeOf(std::uint32_t id) { return static_cast<int>(id & 0x7F); }
+inline constexpr std::uint32_t functionOf(std::uint32_t id) {
+    return id & 0x780;
+}
+inline constexpr int nodeOf(std::uint32_t id) {
+    return static_cast<int>(id & 0x7F);
+}
 } // namespace cob
 
 } // namespace cutcell::canopen

@@ -16,8 +16,10 @@ double countsPerRad(double countsPerUnit, bool linear) {
 DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c) {
     followingWindow_ = c.following_error_window_counts > 0
                            ? c.following_error_window_counts
-                           : static_cast<std::uint32_t>(std::lround(5 * std::numbers::pi / 180 * c.counts_per_rad));
-    quickStopDecel_ = static_cast<std::uint32_t>(std::lround(c.quick_stop_decel_rad_s2 * c.counts_per_rad));
+                           : static_cast<std::uint32_t>(
+                                 std::lround(5 * std::numbers::pi / 180 * c.counts_per_rad));
+    quickStopDecel_ =
+        static_cast<std::uint32_t>(std::lround(c.quick_stop_decel_rad_s2 * c.counts_per_rad));
     cyclePeriodUs_ = static_cast<std::uint32_t>(std::lround(c.max_loop_period_s * 1e6));
     loopPeriod_ = c.max_loop_period_s;
     pid_.configure(c.gains, loopPeriod_);
@@ -66,7 +68,8 @@ void DriveNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>& 
         return;
     }
     for (int i = 0; i < 2; ++i)
-        if (rpdo_[static_cast<size_t>(i)].valid() && in.id == (rpdo_[static_cast<size_t>(i)].cob_id & 0x7FF))
+        if (rpdo_[static_cast<size_t>(i)].valid() &&
+            in.id == (rpdo_[static_cast<size_t>(i)].cob_id & 0x7FF))
             onRpdo(i, in, now_s, out);
 }
 
@@ -75,7 +78,8 @@ void DriveNode::tick(double now_s, std::vector<CanFrame>& out) {
     if (f.heartbeat_stop_after_s >= 0 && operationalSince_s_ >= 0 &&
         now_s - operationalSince_s_ >= f.heartbeat_stop_after_s)
         heartbeatStopped_ = true;
-    if (heartbeatMs_ > 0 && !heartbeatStopped_ && nmt_ != NmtState::BootUp && now_s >= nextHeartbeat_s_) {
+    if (heartbeatMs_ > 0 && !heartbeatStopped_ && nmt_ != NmtState::BootUp &&
+        now_s >= nextHeartbeat_s_) {
         out.push_back(encodeHeartbeat(cfg_.node, nmt_));
         nextHeartbeat_s_ += heartbeatMs_ * 1e-3;
         if (nextHeartbeat_s_ < now_s) nextHeartbeat_s_ = now_s + heartbeatMs_ * 1e-3; // fell behind
@@ -103,7 +107,8 @@ void DriveNode::onNmt(NmtCommand c, double now_s, std::vector<CanFrame>& out) {
     case NmtCommand::Stop:
     case NmtCommand::EnterPreOperational:
         // Losing Operational while enabled: the drive stops itself (abort connection option).
-        if (state_ == Cia402State::OperationEnabled) enterState(Cia402State::QuickStopActive, now_s);
+        if (state_ == Cia402State::OperationEnabled)
+            enterState(Cia402State::QuickStopActive, now_s);
         nmt_ = c == NmtCommand::Stop ? NmtState::Stopped : NmtState::PreOperational;
         operationalSince_s_ = -1;
         break;
@@ -136,8 +141,11 @@ void DriveNode::onSdo(const CanFrame& in, std::vector<CanFrame>& out) {
         abort = write(m.address, m.value, m.size, -1, out);
         if (!abort) out.push_back(sdoDownloadResponse(cfg_.node, m.address));
         break;
-    case SdoKind::Abort: return; // client gave up: nothing to answer
-    default: abort = abort_code::kUnknownCommand; break;
+    case SdoKind::Abort:
+        return; // client gave up: nothing to answer
+    default:
+        abort = abort_code::kUnknownCommand;
+        break;
     }
     if (abort) out.push_back(sdoAbort(cfg_.node, m.address, abort, true));
 }
@@ -165,7 +173,8 @@ void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
     for (int i = 0; i < 2; ++i)
         if (rpdoPending_[static_cast<size_t>(i)]) applyRpdoData(i, now_s, out);
     previousTargetRad_ = cycleTargetRad_;
-    if (state_ == Cia402State::OperationEnabled) cycleTargetRad_ = targetCounts_ / cfg_.counts_per_rad;
+    if (state_ == Cia402State::OperationEnabled)
+        cycleTargetRad_ = targetCounts_ / cfg_.counts_per_rad;
     // 3. Move over the next communication cycle.
     tick(now_s, out);
     advance(cyclePeriodUs_ * 1e-6, out);
@@ -174,7 +183,8 @@ void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
 void DriveNode::onRpdo(int which, const CanFrame& in, double now_s, std::vector<CanFrame>& out) {
     const Pdo& p = rpdo_[static_cast<size_t>(which)];
     int bytes = 0;
-    for (int i = 0; i < p.count; ++i) bytes += static_cast<int>((p.map[static_cast<size_t>(i)] & 0xFF) / 8);
+    for (int i = 0; i < p.count; ++i)
+        bytes += static_cast<int>((p.map[static_cast<size_t>(i)] & 0xFF) / 8);
     if (in.len < bytes) {
         raiseFault(0x8210, out); // PDO not processed due to length error
         return;
@@ -193,9 +203,11 @@ void DriveNode::applyRpdoData(int which, double now_s, std::vector<CanFrame>& ou
         const std::uint32_t e = p.map[static_cast<size_t>(i)];
         const int size = static_cast<int>((e & 0xFF) / 8);
         std::uint32_t v = 0;
-        for (int b = size - 1; b >= 0; --b) v = (v << 8) | d[static_cast<size_t>(byte + b)];
+        for (int b = size - 1; b >= 0; --b)
+            v = (v << 8) | d[static_cast<size_t>(byte + b)];
         byte += size;
-        write({static_cast<std::uint16_t>(e >> 16), static_cast<std::uint8_t>(e >> 8)}, v, size, now_s, out);
+        write({static_cast<std::uint16_t>(e >> 16), static_cast<std::uint8_t>(e >> 8)}, v, size,
+              now_s, out);
     }
 }
 
@@ -235,7 +247,8 @@ void DriveNode::raiseFault(std::uint16_t code, std::vector<CanFrame>& out) {
 }
 
 void DriveNode::advance(double cycle_s, std::vector<CanFrame>& out) {
-    const int steps = std::max(1, static_cast<int>(std::ceil(cycle_s / cfg_.max_loop_period_s - 1e-9)));
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(cycle_s / cfg_.max_loop_period_s - 1e-9)));
     const double h = cycle_s / steps;
     if (std::fabs(h - loopPeriod_) > 1e-12) {
         loopPeriod_ = h;
@@ -249,7 +262,8 @@ void DriveNode::advance(double cycle_s, std::vector<CanFrame>& out) {
     for (int j = 0; j < steps; ++j) {
         double u = 0;
         if (state_ == Cia402State::OperationEnabled) {
-            const double r = previousTargetRad_ + (cycleTargetRad_ - previousTargetRad_) * j / steps;
+            const double r =
+                previousTargetRad_ + (cycleTargetRad_ - previousTargetRad_) * j / steps;
             const double e = r - plant_.position();
             u = pid_.step(e);
             if (torqueLost_) u = 0;
@@ -264,7 +278,8 @@ void DriveNode::advance(double cycle_s, std::vector<CanFrame>& out) {
             quickStopVelocity_ -= std::copysign(dv, quickStopVelocity_);
             previousTargetRad_ += quickStopVelocity_ * h;
             u = pid_.step(previousTargetRad_ - plant_.position());
-            if (quickStopVelocity_ == 0 && std::fabs(plant_.velocity()) < 1e-3 && quickStopOption_ != 6) {
+            if (quickStopVelocity_ == 0 && std::fabs(plant_.velocity()) < 1e-3 &&
+                quickStopOption_ != 6) {
                 enterState(Cia402State::SwitchOnDisabled, -1);
                 u = 0;
             }
@@ -276,12 +291,16 @@ void DriveNode::advance(double cycle_s, std::vector<CanFrame>& out) {
 DriveNode::Pdo* DriveNode::pdoFor(std::uint16_t index) {
     switch (index) {
     case od::kRpdoComm:
-    case od::kRpdoMap: return &rpdo_[0];
+    case od::kRpdoMap:
+        return &rpdo_[0];
     case od::kRpdoComm + 1:
-    case od::kRpdoMap + 1: return &rpdo_[1];
+    case od::kRpdoMap + 1:
+        return &rpdo_[1];
     case od::kTpdoComm:
-    case od::kTpdoMap: return &tpdo_[0];
-    default: return nullptr;
+    case od::kTpdoMap:
+        return &tpdo_[0];
+    default:
+        return nullptr;
     }
 }
 

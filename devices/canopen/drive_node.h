@@ -25,11 +25,11 @@ namespace cutcell::canopen {
 
 // Faults a test or a demo can inject (times in s; < 0 = never).
 struct FaultInjection {
-    std::uint16_t fault_code = 0;        // raise this EMCY code ...
-    double fault_after_s = -1;           // ... after this long in Operation Enabled
-    double heartbeat_stop_after_s = -1;  // stop producing heartbeats after this long Operational
-    double torque_loss_after_s = -1;     // the motor loses its torque after this long in
-                                         // Operation Enabled: the following error grows
+    std::uint16_t fault_code = 0;       // raise this EMCY code ...
+    double fault_after_s = -1;          // ... after this long in Operation Enabled
+    double heartbeat_stop_after_s = -1; // stop producing heartbeats after this long Operational
+    double torque_loss_after_s = -1;    // the motor loses its torque after this long in
+                                        // Operation Enabled: the following error grows
 };
 
 struct DriveNodeConfig {
@@ -37,9 +37,9 @@ struct DriveNodeConfig {
     PidGains gains;
     JointPlantParams plant;
     double counts_per_rad = 1000 * 180 / 3.14159265358979323846;
-    double max_loop_period_s = 0.001;   // internal position loop
+    double max_loop_period_s = 0.001;                // internal position loop
     std::uint32_t following_error_window_counts = 0; // 0: 5 deg worth of counts
-    double quick_stop_decel_rad_s2 = 20; // 0x6085 default, converted to counts/s^2
+    double quick_stop_decel_rad_s2 = 20;             // 0x6085 default, converted to counts/s^2
     double start_position_rad = 0;
     FaultInjection faults;
 };
@@ -98,10 +98,10 @@ class DriveNode {
     Cia402State state_ = Cia402State::SwitchOnDisabled;
     std::uint16_t controlword_ = 0;
     std::uint16_t errorCode_ = 0;
-    std::int32_t targetCounts_ = 0;     // 0x607A as last written
-    double cycleTargetRad_ = 0;         // target reached at the end of the running cycle
-    double previousTargetRad_ = 0;      // target at the start of the running cycle
-    double quickStopVelocity_ = 0;      // rad/s of the quick-stop ramp
+    std::int32_t targetCounts_ = 0; // 0x607A as last written
+    double cycleTargetRad_ = 0;     // target reached at the end of the running cycle
+    double previousTargetRad_ = 0;  // target at the start of the running cycle
+    double quickStopVelocity_ = 0;  // rad/s of the quick-stop ramp
     bool followingError_ = false;
     bool torqueLost_ = false;
     std::uint32_t cyclePeriodUs_ = 0;

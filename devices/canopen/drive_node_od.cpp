@@ -21,8 +21,9 @@ struct Mappable {
     bool rx; // may be mapped into an RPDO (else a TPDO)
 };
 constexpr Mappable kMappable[] = {
-    {od::kControlword, 16, true},  {od::kTargetPosition, 32, true},  {od::kModesOfOperation, 8, true},
-    {od::kStatusword, 16, false},  {od::kPositionActual, 32, false}, {od::kModesDisplay, 8, false},
+    {od::kControlword, 16, true},     {od::kTargetPosition, 32, true},
+    {od::kModesOfOperation, 8, true}, {od::kStatusword, 16, false},
+    {od::kPositionActual, 32, false}, {od::kModesDisplay, 8, false},
     {od::kErrorCode, 16, false},
 };
 
@@ -45,41 +46,76 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
         return 0;
     };
     switch (a.index) {
-    case od::kDeviceType: return one(od::kDeviceTypeCia402, 4);
-    case od::kErrorRegister: return one(errorRegisterFor(errorCode_), 1);
-    case od::kCommCyclePeriod: return one(cyclePeriodUs_, 4);
-    case od::kProducerHeartbeat: return one(heartbeatMs_, 2);
+    case od::kDeviceType:
+        return one(od::kDeviceTypeCia402, 4);
+    case od::kErrorRegister:
+        return one(errorRegisterFor(errorCode_), 1);
+    case od::kCommCyclePeriod:
+        return one(cyclePeriodUs_, 4);
+    case od::kProducerHeartbeat:
+        return one(heartbeatMs_, 2);
     case od::kIdentity:
         size = a.sub == 0 ? 1 : 4;
         switch (a.sub) {
-        case 0: v = 4; return 0;
-        case 1: v = kVendorId; return 0;
-        case 2: v = kProductCode; return 0;
-        case 3: v = 1; return 0;
-        case 4: v = static_cast<std::uint32_t>(cfg_.node); return 0;
-        default: return abort_code::kNoSubIndex;
+        case 0:
+            v = 4;
+            return 0;
+        case 1:
+            v = kVendorId;
+            return 0;
+        case 2:
+            v = kProductCode;
+            return 0;
+        case 3:
+            v = 1;
+            return 0;
+        case 4:
+            v = static_cast<std::uint32_t>(cfg_.node);
+            return 0;
+        default:
+            return abort_code::kNoSubIndex;
         }
-    case od::kErrorCode: return one(errorCode_, 2);
-    case od::kControlword: return one(controlword_, 2);
-    case od::kStatusword: return one(statusword(), 2);
-    case od::kQuickStopOption: return one(static_cast<std::uint16_t>(quickStopOption_), 2);
+    case od::kErrorCode:
+        return one(errorCode_, 2);
+    case od::kControlword:
+        return one(controlword_, 2);
+    case od::kStatusword:
+        return one(statusword(), 2);
+    case od::kQuickStopOption:
+        return one(static_cast<std::uint16_t>(quickStopOption_), 2);
     case od::kModesOfOperation:
-    case od::kModesDisplay: return one(static_cast<std::uint8_t>(kModeCyclicSyncPosition), 1);
-    case od::kPositionActual: return one(static_cast<std::uint32_t>(actualCounts()), 4);
-    case od::kFollowingErrorWindow: return one(followingWindow_, 4);
-    case od::kTargetPosition: return one(static_cast<std::uint32_t>(targetCounts_), 4);
-    case od::kQuickStopDecel: return one(quickStopDecel_, 4);
-    default: break;
+    case od::kModesDisplay:
+        return one(static_cast<std::uint8_t>(kModeCyclicSyncPosition), 1);
+    case od::kPositionActual:
+        return one(static_cast<std::uint32_t>(actualCounts()), 4);
+    case od::kFollowingErrorWindow:
+        return one(followingWindow_, 4);
+    case od::kTargetPosition:
+        return one(static_cast<std::uint32_t>(targetCounts_), 4);
+    case od::kQuickStopDecel:
+        return one(quickStopDecel_, 4);
+    default:
+        break;
     }
     const Pdo* p = const_cast<DriveNode*>(this)->pdoFor(a.index);
     if (!p) return abort_code::kNoObject;
     const bool comm = (a.index & 0x0200) == 0; // 0x14xx / 0x18xx vs 0x16xx / 0x1Axx
     if (comm) {
         switch (a.sub) {
-        case 0: v = 2; size = 1; return 0;
-        case 1: v = p->cob_id; size = 4; return 0;
-        case 2: v = p->type; size = 1; return 0;
-        default: return abort_code::kNoSubIndex;
+        case 0:
+            v = 2;
+            size = 1;
+            return 0;
+        case 1:
+            v = p->cob_id;
+            size = 4;
+            return 0;
+        case 2:
+            v = p->type;
+            size = 1;
+            return 0;
+        default:
+            return abort_code::kNoSubIndex;
         }
     }
     if (a.sub == 0) {
@@ -112,7 +148,7 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         return abort_code::kReadOnly;
     case od::kCommCyclePeriod:
         if ((abort = scalar(4))) return abort;
-        if (v < 100) return abort_code::kValueTooLow;      // < 100 us: no position loop fits
+        if (v < 100) return abort_code::kValueTooLow;     // < 100 us: no position loop fits
         if (v > 100000) return abort_code::kValueTooHigh; // > 100 ms: not a servo cycle
         cyclePeriodUs_ = v;
         return 0;
@@ -132,7 +168,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         return 0;
     case od::kModesOfOperation:
         if ((abort = scalar(1))) return abort;
-        return static_cast<std::int8_t>(v) == kModeCyclicSyncPosition ? 0 : abort_code::kInvalidValue;
+        return static_cast<std::int8_t>(v) == kModeCyclicSyncPosition ? 0
+                                                                      : abort_code::kInvalidValue;
     case od::kFollowingErrorWindow:
         if ((abort = scalar(4))) return abort;
         if (v == 0) return abort_code::kValueTooLow;
@@ -147,7 +184,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         if (v == 0) return abort_code::kValueTooLow;
         quickStopDecel_ = v;
         return 0;
-    default: break;
+    default:
+        break;
     }
     Pdo* p = pdoFor(a.index);
     if (!p) return abort_code::kNoObject;
@@ -155,7 +193,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
     const bool comm = (a.index & 0x0200) == 0;
     if (comm) {
         switch (a.sub) {
-        case 0: return abort_code::kReadOnly;
+        case 0:
+            return abort_code::kReadOnly;
         case 1:
             if ((abort = sizeCheck(size, 4))) return abort;
             // A valid PDO's COB-ID may only change by invalidating it first.
@@ -168,7 +207,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
             if (v == 0 || (v > 1 && v < 254)) return abort_code::kInvalidValue; // 1, 254, 255 only
             p->type = static_cast<std::uint8_t>(v);
             return 0;
-        default: return abort_code::kNoSubIndex;
+        default:
+            return abort_code::kNoSubIndex;
         }
     }
     if (p->valid()) return abort_code::kDeviceState; // mapping changes need an invalid PDO

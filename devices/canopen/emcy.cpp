@@ -102,13 +102,20 @@ std::uint8_t errorRegisterFor(std::uint16_t code) {
     if (code == 0) return 0;
     std::uint8_t r = error_register::kGeneric;
     switch (code & 0xF000) {
-    case 0x2000: r |= error_register::kCurrent; break;
-    case 0x3000: r |= error_register::kVoltage; break;
-    case 0x4000: r |= error_register::kTemperature; break;
+    case 0x2000:
+        r |= error_register::kCurrent;
+        break;
+    case 0x3000:
+        r |= error_register::kVoltage;
+        break;
+    case 0x4000:
+        r |= error_register::kTemperature;
+        break;
     case 0x8000:
         r |= (code & 0xFF00) == 0x8100 ? error_register::kCommunication : error_register::kProfile;
         break;
-    default: break;
+    default:
+        break;
     }
     return r;
 }

@@ -4,22 +4,32 @@ namespace cutcell::canopen {
 
 const char* toString(NmtCommand c) {
     switch (c) {
-    case NmtCommand::Start: return "start";
-    case NmtCommand::Stop: return "stop";
-    case NmtCommand::EnterPreOperational: return "enter pre-operational";
-    case NmtCommand::ResetNode: return "reset node";
-    case NmtCommand::ResetCommunication: return "reset communication";
+    case NmtCommand::Start:
+        return "start";
+    case NmtCommand::Stop:
+        return "stop";
+    case NmtCommand::EnterPreOperational:
+        return "enter pre-operational";
+    case NmtCommand::ResetNode:
+        return "reset node";
+    case NmtCommand::ResetCommunication:
+        return "reset communication";
     }
     return "unknown";
 }
 
 const char* toString(NmtState s) {
     switch (s) {
-    case NmtState::BootUp: return "Boot-up";
-    case NmtState::Stopped: return "Stopped";
-    case NmtState::Operational: return "Operational";
-    case NmtState::PreOperational: return "Pre-operational";
-    case NmtState::Unknown: return "Unknown";
+    case NmtState::BootUp:
+        return "Boot-up";
+    case NmtState::Stopped:
+        return "Stopped";
+    case NmtState::Operational:
+        return "Operational";
+    case NmtState::PreOperational:
+        return "Pre-operational";
+    case NmtState::Unknown:
+        return "Unknown";
     }
     return "Unknown";
 }
@@ -40,8 +50,11 @@ bool decodeNmt(const CanFrame& f, NmtCommand& command, int& node) {
     case 0x02:
     case 0x80:
     case 0x81:
-    case 0x82: command = static_cast<NmtCommand>(f.data[0]); break;
-    default: return false;
+    case 0x82:
+        command = static_cast<NmtCommand>(f.data[0]);
+        break;
+    default:
+        return false;
     }
     node = f.data[1];
     return true;
@@ -60,11 +73,21 @@ bool decodeHeartbeat(const CanFrame& f, int& node, NmtState& s) {
         return false;
     node = cob::nodeOf(f.id);
     switch (f.data[0] & 0x7F) { // bit 7 is the toggle bit of node guarding
-    case 0x00: s = NmtState::BootUp; break;
-    case 0x04: s = NmtState::Stopped; break;
-    case 0x05: s = NmtState::Operational; break;
-    case 0x7F: s = NmtState::PreOperational; break;
-    default: s = NmtState::Unknown; break;
+    case 0x00:
+        s = NmtState::BootUp;
+        break;
+    case 0x04:
+        s = NmtState::Stopped;
+        break;
+    case 0x05:
+        s = NmtState::Operational;
+        break;
+    case 0x7F:
+        s = NmtState::PreOperational;
+        break;
+    default:
+        s = NmtState::Unknown;
+        break;
     }
     return true;
 }

@@ -13,7 +13,8 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
         add(comm, 1, kCobIdInvalid | cobId, 4);
         add(map, 0, 0, 1);
         std::uint8_t sub = 1;
-        for (std::uint32_t e : entries) add(map, sub++, e, 4);
+        for (std::uint32_t e : entries)
+            add(map, sub++, e, 4);
         add(map, 0, static_cast<std::uint32_t>(entries.size()), 1);
         add(comm, 2, type, 1);
         add(comm, 1, cobId, 4);

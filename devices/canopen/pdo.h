@@ -17,7 +17,7 @@ namespace cutcell::canopen {
 namespace od {
 inline constexpr std::uint16_t kDeviceType = 0x1000;
 inline constexpr std::uint16_t kErrorRegister = 0x1001;
-inline constexpr std::uint16_t kCommCyclePeriod = 0x1006; // us
+inline constexpr std::uint16_t kCommCyclePeriod = 0x1006;   // us
 inline constexpr std::uint16_t kProducerHeartbeat = 0x1017; // ms
 inline constexpr std::uint16_t kIdentity = 0x1018;
 inline constexpr std::uint16_t kRpdoComm = 0x1400; // + n
@@ -33,17 +33,18 @@ inline constexpr std::uint16_t kModesDisplay = 0x6061;
 inline constexpr std::uint16_t kPositionActual = 0x6064;
 inline constexpr std::uint16_t kFollowingErrorWindow = 0x6065; // counts
 inline constexpr std::uint16_t kTargetPosition = 0x607A;
-inline constexpr std::uint16_t kQuickStopDecel = 0x6085; // counts/s^2
+inline constexpr std::uint16_t kQuickStopDecel = 0x6085;       // counts/s^2
 inline constexpr std::uint32_t kDeviceTypeCia402 = 0x00020192; // profile 402, servo drive
 } // namespace od
 
 // A mapping entry: index << 16 | sub << 8 | bit length.
 constexpr std::uint32_t mapEntry(std::uint16_t index, std::uint8_t sub, std::uint8_t bits) {
-    return (static_cast<std::uint32_t>(index) << 16) | (static_cast<std::uint32_t>(sub) << 8) | bits;
+    return (static_cast<std::uint32_t>(index) << 16) | (static_cast<std::uint32_t>(sub) << 8) |
+           bits;
 }
 inline constexpr std::uint32_t kCobIdInvalid = 0x80000000u; // bit 31: PDO does not exist
-inline constexpr std::uint8_t kTransmissionSync = 1;         // every SYNC
-inline constexpr std::uint8_t kTransmissionEvent = 255;      // event-driven (asynchronous)
+inline constexpr std::uint8_t kTransmissionSync = 1;        // every SYNC
+inline constexpr std::uint8_t kTransmissionEvent = 255;     // event-driven (asynchronous)
 
 // One expedited SDO write of the start-up configuration.
 struct SdoWrite {

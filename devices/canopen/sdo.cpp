@@ -106,7 +106,8 @@ std::string sdoAbortText(std::uint32_t code) {
         {0x06010002, "attempt to write a read-only object"},
         {0x06020000, "object does not exist in the object dictionary"},
         {0x06040041, "object cannot be mapped to the PDO"},
-        {0x06040042, "the number and length of the objects to be mapped would exceed the PDO length"},
+        {0x06040042,
+         "the number and length of the objects to be mapped would exceed the PDO length"},
         {0x06040043, "general parameter incompatibility"},
         {0x06040047, "general internal incompatibility in the device"},
         {0x06060000, "access failed due to a hardware error"},
@@ -121,9 +122,12 @@ std::string sdoAbortText(std::uint32_t code) {
         {0x060A0023, "resource not available: SDO connection"},
         {0x08000000, "general error"},
         {0x08000020, "data cannot be transferred or stored to the application"},
-        {0x08000021, "data cannot be transferred or stored to the application because of local control"},
-        {0x08000022, "data cannot be transferred or stored to the application because of the present device state"},
-        {0x08000023, "object dictionary dynamic generation failed or no object dictionary is present"},
+        {0x08000021,
+         "data cannot be transferred or stored to the application because of local control"},
+        {0x08000022, "data cannot be transferred or stored to the application because of the "
+                     "present device state"},
+        {0x08000023,
+         "object dictionary dynamic generation failed or no object dictionary is present"},
         {0x08000024, "no data available"},
     };
     char head[16];

@@ -11,8 +11,9 @@ TEST(BusLoad, WorstCaseFrameBitsFromFrameFormat) {
     // Unstuffed: 1 SOF + 11 id + RTR + IDE + r0 + 4 DLC + 8n + 15 CRC + 1 + 2 ACK + 7 EOF + 3 IFS.
     for (int n = 0; n <= 8; ++n) {
         const int unstuffed = 1 + 11 + 1 + 1 + 1 + 4 + 8 * n + 15 + 1 + 2 + 7 + 3;
-        const int stuffable = 34 + 8 * n;         // SOF .. CRC
-        const int maxStuff = (stuffable - 1) / 4; // a stuff bit after every 4 bits after the first 5
+        const int stuffable = 34 + 8 * n; // SOF .. CRC
+        const int maxStuff =
+            (stuffable - 1) / 4; // a stuff bit after every 4 bits after the first 5
         EXPECT_EQ(worstCaseFrameBits(n), unstuffed + maxStuff) << n;
     }
     // The published figure for 8 bytes (STACK.md: "up to ~135 with worst-case stuffing").

@@ -41,17 +41,19 @@ const StatusRow kStatusRows[] = {
 
 TEST(Cia402, StatuswordDecodesPerTable) {
     for (const StatusRow& r : kStatusRows)
-        EXPECT_EQ(decodeStatusword(r.statusword), r.state) << "statusword 0x" << std::hex << r.statusword;
+        EXPECT_EQ(decodeStatusword(r.statusword), r.state)
+            << "statusword 0x" << std::hex << r.statusword;
 }
 
 TEST(Cia402, StatuswordEncodeDecodeRoundTrip) {
-    for (auto s : {Cia402State::NotReadyToSwitchOn, Cia402State::SwitchOnDisabled, Cia402State::ReadyToSwitchOn,
-                   Cia402State::SwitchedOn, Cia402State::OperationEnabled, Cia402State::QuickStopActive,
-                   Cia402State::FaultReactionActive, Cia402State::Fault}) {
+    for (auto s :
+         {Cia402State::NotReadyToSwitchOn, Cia402State::SwitchOnDisabled,
+          Cia402State::ReadyToSwitchOn, Cia402State::SwitchedOn, Cia402State::OperationEnabled,
+          Cia402State::QuickStopActive, Cia402State::FaultReactionActive, Cia402State::Fault}) {
         EXPECT_EQ(decodeStatusword(encodeStatusword(s)), s) << toString(s);
         // Extra status bits never change the state.
-        EXPECT_EQ(decodeStatusword(encodeStatusword(s) | sw::kVoltageEnabled | sw::kRemote | sw::kWarning |
-                                   sw::kTargetReached | sw::kFollowingError),
+        EXPECT_EQ(decodeStatusword(encodeStatusword(s) | sw::kVoltageEnabled | sw::kRemote |
+                                   sw::kWarning | sw::kTargetReached | sw::kFollowingError),
                   s)
             << toString(s);
     }
@@ -65,23 +67,23 @@ TEST(Cia402, ControlwordCommandsPerTable) {
     };
     using S = Cia402State;
     const Row rows[] = {
-        {S::SwitchOnDisabled, 0x0006, S::ReadyToSwitchOn},   // 2 shutdown
-        {S::ReadyToSwitchOn, 0x0007, S::SwitchedOn},         // 3 switch on
-        {S::SwitchedOn, 0x000F, S::OperationEnabled},        // 4 enable operation
-        {S::OperationEnabled, 0x0007, S::SwitchedOn},        // 5 disable operation
-        {S::SwitchedOn, 0x0006, S::ReadyToSwitchOn},         // 6 shutdown
-        {S::ReadyToSwitchOn, 0x0000, S::SwitchOnDisabled},   // 7 disable voltage
-        {S::ReadyToSwitchOn, 0x0002, S::SwitchOnDisabled},   // 7 quick stop
-        {S::OperationEnabled, 0x0006, S::ReadyToSwitchOn},   // 8 shutdown
-        {S::OperationEnabled, 0x0000, S::SwitchOnDisabled},  // 9 disable voltage
-        {S::SwitchedOn, 0x0000, S::SwitchOnDisabled},        // 10 disable voltage
-        {S::SwitchedOn, 0x0002, S::SwitchOnDisabled},        // 10 quick stop
-        {S::OperationEnabled, 0x0002, S::QuickStopActive},   // 11 quick stop
-        {S::QuickStopActive, 0x0000, S::SwitchOnDisabled},   // 12 disable voltage
-        {S::QuickStopActive, 0x000F, S::QuickStopActive},    // 16 not offered (option code 2)
-        {S::SwitchOnDisabled, 0x000F, S::SwitchOnDisabled},  // enable needs shutdown first
-        {S::OperationEnabled, 0x008F, S::OperationEnabled},  // reset bit outside Fault: nothing
-        {S::Fault, 0x000F, S::Fault},                        // no reset bit
+        {S::SwitchOnDisabled, 0x0006, S::ReadyToSwitchOn},  // 2 shutdown
+        {S::ReadyToSwitchOn, 0x0007, S::SwitchedOn},        // 3 switch on
+        {S::SwitchedOn, 0x000F, S::OperationEnabled},       // 4 enable operation
+        {S::OperationEnabled, 0x0007, S::SwitchedOn},       // 5 disable operation
+        {S::SwitchedOn, 0x0006, S::ReadyToSwitchOn},        // 6 shutdown
+        {S::ReadyToSwitchOn, 0x0000, S::SwitchOnDisabled},  // 7 disable voltage
+        {S::ReadyToSwitchOn, 0x0002, S::SwitchOnDisabled},  // 7 quick stop
+        {S::OperationEnabled, 0x0006, S::ReadyToSwitchOn},  // 8 shutdown
+        {S::OperationEnabled, 0x0000, S::SwitchOnDisabled}, // 9 disable voltage
+        {S::SwitchedOn, 0x0000, S::SwitchOnDisabled},       // 10 disable voltage
+        {S::SwitchedOn, 0x0002, S::SwitchOnDisabled},       // 10 quick stop
+        {S::OperationEnabled, 0x0002, S::QuickStopActive},  // 11 quick stop
+        {S::QuickStopActive, 0x0000, S::SwitchOnDisabled},  // 12 disable voltage
+        {S::QuickStopActive, 0x000F, S::QuickStopActive},   // 16 not offered (option code 2)
+        {S::SwitchOnDisabled, 0x000F, S::SwitchOnDisabled}, // enable needs shutdown first
+        {S::OperationEnabled, 0x008F, S::OperationEnabled}, // reset bit outside Fault: nothing
+        {S::Fault, 0x000F, S::Fault},                       // no reset bit
     };
     for (const Row& r : rows)
         EXPECT_EQ(applyControlword(r.from, 0, r.cw), r.to)
@@ -90,7 +92,8 @@ TEST(Cia402, ControlwordCommandsPerTable) {
 
 TEST(Cia402, FaultResetActsOnRisingEdgeOnly) {
     EXPECT_EQ(applyControlword(Cia402State::Fault, 0x0000, 0x0080), Cia402State::SwitchOnDisabled);
-    EXPECT_EQ(applyControlword(Cia402State::Fault, 0x0080, 0x0080), Cia402State::Fault); // held high
+    EXPECT_EQ(applyControlword(Cia402State::Fault, 0x0080, 0x0080),
+              Cia402State::Fault); // held high
     EXPECT_EQ(applyControlword(Cia402State::Fault, 0x0006, 0x0086), Cia402State::SwitchOnDisabled);
 }
 
@@ -106,9 +109,11 @@ TEST(Cia402, WalkingTowardGoalsReachesThem) {
             prev = c;
         }
         EXPECT_EQ(s, S::OperationEnabled) << "from " << toString(start);
-        EXPECT_EQ(applyControlword(S::OperationEnabled, prev, controlwordToward(S::OperationEnabled, DriveGoal::Disabled)),
+        EXPECT_EQ(applyControlword(S::OperationEnabled, prev,
+                                   controlwordToward(S::OperationEnabled, DriveGoal::Disabled)),
                   S::SwitchOnDisabled);
-        EXPECT_EQ(applyControlword(S::OperationEnabled, prev, controlwordToward(S::OperationEnabled, DriveGoal::QuickStop)),
+        EXPECT_EQ(applyControlword(S::OperationEnabled, prev,
+                                   controlwordToward(S::OperationEnabled, DriveGoal::QuickStop)),
                   S::QuickStopActive);
     }
     EXPECT_FALSE(torqueOn(S::SwitchOnDisabled));
@@ -222,7 +227,8 @@ TEST(Nmt, FramesAndHeartbeatStates) {
     ASSERT_TRUE(decodeNmt(encodeNmt(NmtCommand::ResetCommunication, 9), c, node));
     EXPECT_EQ(c, NmtCommand::ResetCommunication);
     EXPECT_EQ(node, 9);
-    for (auto s : {NmtState::BootUp, NmtState::Stopped, NmtState::Operational, NmtState::PreOperational}) {
+    for (auto s :
+         {NmtState::BootUp, NmtState::Stopped, NmtState::Operational, NmtState::PreOperational}) {
         NmtState back;
         ASSERT_TRUE(decodeHeartbeat(encodeHeartbeat(4, s), node, back));
         EXPECT_EQ(node, 4);
@@ -258,16 +264,20 @@ TEST(Pdo, ProcessDataRoundTrip) {
 TEST(Pdo, StartupSequenceFollowsMappingProcedure) {
     const auto writes = cspStartupWrites(3, {});
     // For every PDO: invalidate COB-ID before touching its map, count written last, then validate.
-    for (std::uint16_t comm : {std::uint16_t(0x1400), std::uint16_t(0x1401), std::uint16_t(0x1800)}) {
+    for (std::uint16_t comm :
+         {std::uint16_t(0x1400), std::uint16_t(0x1401), std::uint16_t(0x1800)}) {
         const std::uint16_t map = static_cast<std::uint16_t>(comm + 0x200);
         int invalidated = -1, cleared = -1, counted = -1, validated = -1;
         for (size_t i = 0; i < writes.size(); ++i) {
             const SdoWrite& w = writes[i];
             if (w.address == SdoAddress{comm, 1}) {
-                if (w.value & kCobIdInvalid) invalidated = static_cast<int>(i);
-                else validated = static_cast<int>(i);
+                if (w.value & kCobIdInvalid)
+                    invalidated = static_cast<int>(i);
+                else
+                    validated = static_cast<int>(i);
             }
-            if (w.address == SdoAddress{map, 0}) (w.value == 0 ? cleared : counted) = static_cast<int>(i);
+            if (w.address == SdoAddress{map, 0})
+                (w.value == 0 ? cleared : counted) = static_cast<int>(i);
         }
         EXPECT_LT(invalidated, cleared) << std::hex << comm;
         EXPECT_LT(cleared, counted) << std::hex << comm;

@@ -48,7 +48,8 @@ struct Bench {
         for (const SdoWrite& w : cspStartupWrites(kNode, dc)) {
             const SdoMessage m = sdo(sdoDownloadRequest(kNode, w.address, w.value, w.size));
             ASSERT_EQ(m.kind, SdoKind::DownloadResponse)
-                << std::hex << w.address.index << ":" << int(w.address.sub) << " " << sdoAbortText(m.value);
+                << std::hex << w.address.index << ":" << int(w.address.sub) << " "
+                << sdoAbortText(m.value);
         }
         send(encodeNmt(NmtCommand::Start, 0));
     }
@@ -64,8 +65,11 @@ struct Bench {
     }
     Tpdo1 enable() {
         Tpdo1 t = cycle(0, 0);
-        for (int i = 0; i < 5 && decodeStatusword(t.statusword) != Cia402State::OperationEnabled; ++i)
-            t = cycle(controlwordToward(decodeStatusword(t.statusword), DriveGoal::OperationEnabled), t.actual_counts);
+        for (int i = 0; i < 5 && decodeStatusword(t.statusword) != Cia402State::OperationEnabled;
+             ++i)
+            t = cycle(
+                controlwordToward(decodeStatusword(t.statusword), DriveGoal::OperationEnabled),
+                t.actual_counts);
         t = cycle(cw::kEnableOperation, t.actual_counts);
         return t;
     }
@@ -100,16 +104,19 @@ TEST(DriveNode, WrongAccessesGiveCia301Aborts) {
         {sdoDownloadRequest(kNode, {od::kControlword, 0}, 6, 4), abort_code::kLengthMismatch},
         {sdoDownloadRequest(kNode, {od::kCommCyclePeriod, 0}, 10, 4), abort_code::kValueTooLow},
         // Mapping a valid PDO is refused; mapping a TPDO object into an RPDO too.
-        {sdoDownloadRequest(kNode, {od::kRpdoMap, 1}, mapEntry(od::kControlword, 0, 16), 4), abort_code::kDeviceState},
+        {sdoDownloadRequest(kNode, {od::kRpdoMap, 1}, mapEntry(od::kControlword, 0, 16), 4),
+         abort_code::kDeviceState},
     };
     for (const Row& r : rows) {
         const SdoMessage m = b.sdo(r.request);
         EXPECT_EQ(m.kind, SdoKind::Abort);
-        EXPECT_EQ(m.value, r.abort) << sdoAbortText(m.value) << " instead of " << sdoAbortText(r.abort);
+        EXPECT_EQ(m.value, r.abort)
+            << sdoAbortText(m.value) << " instead of " << sdoAbortText(r.abort);
     }
     b.sdo(sdoDownloadRequest(kNode, {od::kRpdoComm, 1}, kCobIdInvalid | 0x204, 4));
     b.sdo(sdoDownloadRequest(kNode, {od::kRpdoMap, 0}, 0, 1));
-    const SdoMessage m = b.sdo(sdoDownloadRequest(kNode, {od::kRpdoMap, 1}, mapEntry(od::kStatusword, 0, 16), 4));
+    const SdoMessage m =
+        b.sdo(sdoDownloadRequest(kNode, {od::kRpdoMap, 1}, mapEntry(od::kStatusword, 0, 16), 4));
     EXPECT_EQ(m.value, abort_code::kCannotMap);
 }
 
@@ -141,7 +148,8 @@ TEST(DriveNode, QuickStopOnAsyncRpdoActsAtOnceThenDisables) {
     b.enable();
     b.send(encodeRpdo2(kNode, cw::kQuickStop)); // no SYNC needed
     EXPECT_EQ(b.node.driveState(), Cia402State::QuickStopActive);
-    for (int i = 0; i < 50 && b.node.driveState() == Cia402State::QuickStopActive; ++i) b.cycle(cw::kQuickStop, 0);
+    for (int i = 0; i < 50 && b.node.driveState() == Cia402State::QuickStopActive; ++i)
+        b.cycle(cw::kQuickStop, 0);
     EXPECT_EQ(b.node.driveState(), Cia402State::SwitchOnDisabled);
 }
 
@@ -163,7 +171,8 @@ TEST(DriveNode, InjectedFaultSendsEmcyAndResetsOnRisingEdge) {
     ASSERT_TRUE(sawEmcy);
     EXPECT_EQ(e.error_code, emcy_code::kDriveOverTemperature);
     EXPECT_EQ(b.node.driveState(), Cia402State::Fault);
-    b.cycle(cw::kFaultResetBit, 0); // reset bit high without a rising edge (prev was 0x0F... then 0x80)
+    b.cycle(cw::kFaultResetBit,
+            0); // reset bit high without a rising edge (prev was 0x0F... then 0x80)
     EXPECT_EQ(b.node.driveState(), Cia402State::SwitchOnDisabled);
     b.cycle(cw::kFaultResetBit, 0);
     EXPECT_EQ(b.node.driveState(), Cia402State::SwitchOnDisabled);
@@ -178,7 +187,8 @@ TEST(DriveNode, TorqueLossEndsInFollowingErrorFault) {
     double target = 0;
     for (int k = 0; k < 2000 && b.node.driveState() == Cia402State::OperationEnabled; ++k) {
         target += 1.0 * 0.002;
-        b.cycle(cw::kEnableOperation, static_cast<std::int32_t>(std::lround(target * c.counts_per_rad)));
+        b.cycle(cw::kEnableOperation,
+                static_cast<std::int32_t>(std::lround(target * c.counts_per_rad)));
     }
     EXPECT_EQ(b.node.driveState(), Cia402State::Fault);
     EXPECT_EQ(b.node.errorCode(), emcy_code::kFollowingError);
