@@ -1,6 +1,9 @@
 // cutcell-cli bench: speed figures of the core (and of the engine once it exists). Printed,
 // never asserted: shared machines make timed assertions flaky.
 #include "cli_commands.h"
+#ifdef CUTCELL_HAVE_DEVICES
+#include "bench_can.h"
+#endif
 
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
@@ -76,6 +79,9 @@ int runBench(const Args& args) {
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
 
+#ifdef CUTCELL_HAVE_DEVICES
+    benchCan(out, quick);
+#endif
     const json::Value doc(std::move(out));
     if (asJson) {
         std::fputs(json::write(doc).c_str(), stdout);

@@ -4,6 +4,11 @@
 #include <string>
 #include <vector>
 
+namespace cutcell {
+struct Job;
+struct CutPlan;
+} // namespace cutcell
+
 namespace cutcell::cli {
 
 enum ExitCode { kOk = 0, kFailure = 1, kInvalidJob = 2, kUnreachable = 3, kUsage = 64 };
@@ -14,6 +19,8 @@ int runValidate(const Args& args);
 int runPlan(const Args& args);
 int runSimulate(const Args& args);
 int runBench(const Args& args);
+int runDriveSim(const Args& args);                                          // drivesim_command.cpp
+int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args); // can_run.cpp
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
 std::string option(const Args& args, const std::string& name);

@@ -13,6 +13,14 @@ usage:
   cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
   cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
   cutcell-cli bench [--json] [--quick]      measure speed figures
+  cutcell-cli simulate JOB --devices canopen [--can-plugin P] [--can-interface I]
+                 [--period-ms T] [--clock realtime|fast] [--drivesim]
+                                            run the cut over CANopen drives (--drivesim: start
+                                            simulated drives in-process)
+  cutcell-cli drivesim [JOB] [--nodes 1-6] [--plugin P] [--interface I] [--duration S]
+                 [--fault-node N] [--fault-code 0xNNNN] [--fault-after S]
+                 [--heartbeat-stop-after S] [--following-error-after S]
+                                            CiA 402 drive simulator on a CAN bus
 
 exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
 )";
@@ -32,6 +40,9 @@ int main(int argc, char** argv) {
     if (cmd == "plan") return runPlan(args);
     if (cmd == "simulate") return runSimulate(args);
     if (cmd == "bench") return runBench(args);
+#ifdef CUTCELL_HAVE_DEVICES
+    if (cmd == "drivesim") return runDriveSim(args);
+#endif
     std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
     return ExitCode::kUsage;
 }

@@ -175,6 +175,13 @@ void CanOpenMaster::sync() {
     [[maybe_unused]] const ssize_t n = ::write(impl_->syncFd, &one, sizeof one);
 }
 
+std::uint64_t CanOpenMaster::cyclesSent() const {
+    return impl_->cycles.load(std::memory_order_acquire);
+}
+std::uint64_t CanOpenMaster::cyclesCompleted() const {
+    return impl_->completed.load(std::memory_order_acquire);
+}
+
 void CanOpenMaster::emergencyStop(bool disableVoltage) {
     const auto goal =
         static_cast<std::uint8_t>(disableVoltage ? DriveGoal::Disabled : DriveGoal::QuickStop);
@@ -256,6 +263,12 @@ MasterStats CanOpenMaster::stats() const {
         s.sync_jitter_us_max = j.back();
     }
     return s;
+}
+
+void CanOpenMaster::resetJitter() {
+    std::lock_guard lock(impl_->mutex);
+    impl_->jitterUs.clear();
+    impl_->jitterNext = 0;
 }
 
 std::string CanOpenMaster::loadText() const {

@@ -125,8 +125,10 @@ class CanOpenMaster {
     int driveCount() const;
     CanOpenDrive* drive(int i);
 
-    bool allOperational() const; // every node configured and reporting Operational
-    void sync();                 // External source: one cycle now
+    bool allOperational() const;           // every node configured and reporting Operational
+    void sync();                           // External source: one cycle now
+    std::uint64_t cyclesSent() const;      // SYNCs written so far
+    std::uint64_t cyclesCompleted() const; // last SYNC whose TPDOs all arrived
     // Every node at once, not waiting for a SYNC: quick stop (category 1) or disable voltage
     // (category 0), on the asynchronous RPDO2.
     void emergencyStop(bool disableVoltage);
@@ -136,6 +138,7 @@ class CanOpenMaster {
     CanBusSnapshot snapshot() const;
     std::vector<MasterEvent> drainEvents();
     MasterStats stats() const;
+    void resetJitter(); // start the SYNC jitter figures afresh (e.g. after start-up)
     std::string loadText() const;
 
   private:

@@ -46,6 +46,8 @@ void DriveNode::boot(double now_s, std::vector<CanFrame>& out) {
     nmt_ = NmtState::PreOperational;
     operationalSince_s_ = -1;
     nextHeartbeat_s_ = now_s;
+    lastAdvance_s_ = now_s;
+    lastSync_s_ = -1;
     out.push_back(encodeHeartbeat(cfg_.node, NmtState::BootUp));
 }
 
@@ -83,6 +85,21 @@ void DriveNode::tick(double now_s, std::vector<CanFrame>& out) {
         out.push_back(encodeHeartbeat(cfg_.node, nmt_));
         nextHeartbeat_s_ += heartbeatMs_ * 1e-3;
         if (nextHeartbeat_s_ < now_s) nextHeartbeat_s_ = now_s + heartbeatMs_ * 1e-3; // fell behind
+    }
+    const double cycle = cyclePeriodUs_ * 1e-6;
+    if (state_ == Cia402State::OperationEnabled && lastSync_s_ >= 0 &&
+        now_s - lastSync_s_ > std::max(0.1, 20 * cycle))
+        raiseFault(0x8250, out); // RPDO timeout: the master stopped the cycle
+    if (lastAdvance_s_ >= 0 && state_ != Cia402State::OperationEnabled &&
+        (lastSync_s_ < 0 || now_s - lastSync_s_ > 3 * cycle)) {
+        // Free-running position loop at its own period while no SYNC comes (stopping, coasting).
+        // Not while following: a SYNC-paced run may be faster than the wall clock (lock-step).
+        const int steps = std::min(50, static_cast<int>((now_s - lastAdvance_s_) / loopPeriod_));
+        if (steps > 0) {
+            previousTargetRad_ = cycleTargetRad_;
+            advance(steps, loopPeriod_, out);
+            lastAdvance_s_ = std::max(lastAdvance_s_ + steps * loopPeriod_, now_s - 0.05);
+        }
     }
     if (state_ == Cia402State::OperationEnabled && enabledSince_s_ >= 0) {
         const double enabled = now_s - enabledSince_s_;
@@ -152,6 +169,7 @@ void DriveNode::onSdo(const CanFrame& in, std::vector<CanFrame>& out) {
 
 void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
     ++syncs_;
+    lastSync_s_ = now_s;
     // 1. Sample: TPDOs carry the state at the SYNC instant.
     for (const Pdo& p : tpdo_) {
         if (!p.valid() || p.type == 0 || p.type > 240) continue;
@@ -177,7 +195,11 @@ void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
         cycleTargetRad_ = targetCounts_ / cfg_.counts_per_rad;
     // 3. Move over the next communication cycle.
     tick(now_s, out);
-    advance(cyclePeriodUs_ * 1e-6, out);
+    const double cycle = cyclePeriodUs_ * 1e-6;
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(cycle / cfg_.max_loop_period_s - 1e-9)));
+    advance(steps, cycle / steps, out);
+    lastAdvance_s_ = now_s;
 }
 
 void DriveNode::onRpdo(int which, const CanFrame& in, double now_s, std::vector<CanFrame>& out) {
@@ -246,10 +268,7 @@ void DriveNode::raiseFault(std::uint16_t code, std::vector<CanFrame>& out) {
     out.push_back(encodeEmcy(cfg_.node, code, errorRegisterFor(code)));
 }
 
-void DriveNode::advance(double cycle_s, std::vector<CanFrame>& out) {
-    const int steps =
-        std::max(1, static_cast<int>(std::ceil(cycle_s / cfg_.max_loop_period_s - 1e-9)));
-    const double h = cycle_s / steps;
+void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
     if (std::fabs(h - loopPeriod_) > 1e-12) {
         loopPeriod_ = h;
         const double q = plant_.position(), v = plant_.velocity();

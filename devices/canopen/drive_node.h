@@ -8,6 +8,10 @@
 // Timing of a SYNC: the TPDOs sample the state at the SYNC instant; then the RPDO data
 // received before the SYNC takes effect and the drive moves toward that target over the next
 // communication cycle (0x1006). A target sent before SYNC k is thus reached at SYNC k+1.
+// Out of Operation Enabled and without SYNCs (none for 3 cycles) the loop runs on by the wall
+// clock, so a quick stop or a coasting axis comes to rest when the master has gone quiet. In
+// Operation Enabled a SYNC gap of max(100 ms, 20 cycles) is a fault (0x8250, RPDO timeout): a
+// drive never keeps following a master that has gone silent.
 //
 // Threading: not thread-safe; DriveSimulator drives it from its own thread.
 #include "core/control/joint_plant.h"
@@ -80,7 +84,7 @@ class DriveNode {
     void setControlword(std::uint16_t cw, double now_s, std::vector<CanFrame>& out);
     void enterState(Cia402State s, double now_s);
     void raiseFault(std::uint16_t code, std::vector<CanFrame>& out);
-    void advance(double cycle_s, std::vector<CanFrame>& out);
+    void advance(int steps, double h, std::vector<CanFrame>& out);
 
     // Object dictionary access; returns 0 or an SDO abort code.
     std::uint32_t read(SdoAddress a, std::uint32_t& value, int& size) const;
@@ -117,6 +121,8 @@ class DriveNode {
     double operationalSince_s_ = -1;
     double enabledSince_s_ = -1;
     bool heartbeatStopped_ = false;
+    double lastSync_s_ = -1;    // wall time of the last SYNC (< 0: none yet)
+    double lastAdvance_s_ = -1; // wall time the plant was last advanced to
     std::uint64_t syncs_ = 0;
 };
 

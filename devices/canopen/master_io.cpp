@@ -9,6 +9,8 @@
 #include "devices/canopen/sdo.h"
 
 #include <QCanBus>
+#include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QVariant>
 
 #include <cstdio>
@@ -101,6 +103,10 @@ void CanOpenMaster::Impl::closeDevice() {
     for (size_t i = 0; i < shared.size(); ++i)
         send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
     send(encodeNmt(NmtCommand::EnterPreOperational, 0));
+    // Let the transport write them out before the device goes (virtualcan buffers in a socket).
+    const QDeadlineTimer flush(50);
+    while (!flush.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
     device->disconnectDevice();
     delete device;
     device = nullptr;
