@@ -102,16 +102,18 @@ bool holdAll(CanOpenMaster& m, DriveState want) {
     return all;
 }
 
-bool waitFor(CanOpenMaster& m, DriveState want, double seconds) {
+// lockStep: this thread produces the SYNCs (SyncSource::External).
+bool waitFor(CanOpenMaster& m, DriveState want, double seconds, bool lockStep = false) {
     const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
     while (Clock::now() < deadline) {
         if (holdAll(m, want)) return true;
+        if (lockStep) m.sync();
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     return false;
 }
 
-bool bringUp(CanOpenMaster& m, std::string& error) {
+bool bringUp(CanOpenMaster& m, std::string& error, bool lockStep = false) {
     if (!m.start(&error)) return false;
     const auto deadline = Clock::now() + std::chrono::seconds(5);
     while (!m.allOperational()) {
@@ -123,7 +125,7 @@ bool bringUp(CanOpenMaster& m, std::string& error) {
     }
     for (int i = 0; i < m.driveCount(); ++i)
         m.drive(i)->activate();
-    if (!waitFor(m, DriveState::Enabled, 3)) {
+    if (!waitFor(m, DriveState::Enabled, 3, lockStep)) {
         error = "drives not enabled within 3 s";
         return false;
     }
@@ -227,7 +229,7 @@ void benchCan(json::Object& out, bool quick) {
         CanOpenMasterConfig c = masterConfigFromJob(job, period, kAxisCount);
         c.sync = SyncSource::External;
         CanOpenMaster m(c);
-        if (!bringUp(m, error)) {
+        if (!bringUp(m, error, true)) {
             std::fprintf(stderr, "bench: CAN master (lock-step): %s\n", error.c_str());
             return;
         }

@@ -107,7 +107,7 @@ void CanOpenMaster::Impl::closeDevice() {
     const QDeadlineTimer flush(50);
     while (!flush.hasExpired())
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    device->disconnectDevice();
+    if (device->state() != QCanBusDevice::UnconnectedState) device->disconnectDevice();
     delete device;
     device = nullptr;
     for (NodeShared& s : shared)
@@ -155,6 +155,8 @@ void CanOpenMaster::Impl::startNode(size_t i, std::int64_t now) {
     NodeRuntime& r = rt[i];
     const int node = cfg.nodes[i].node;
     shared[i].configured = false;
+    // A (re)started node waits for an explicit activate(): never enable behind the engine's back.
+    shared[i].goal.store(static_cast<std::uint8_t>(DriveGoal::Disabled), std::memory_order_release);
     r.phase = StartupPhase::WaitBoot;
     r.deadline_ns = now + static_cast<std::int64_t>(cfg.boot_timeout_ms) * 1'000'000;
     r.ops.clear();

@@ -1,6 +1,9 @@
 // cutcell-cli over CANopen, end to end between processes: `cutcell-cli drivesim` hosts a
 // private virtualcan bus (its own TCP port) with six simulated drives; `cutcell-cli simulate
 // --devices canopen` runs the cut against it. Compared with the in-process simulation.
+#include "core/job/default_job.h"
+#include "devices/canopen/canopen_master.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -9,6 +12,8 @@
 #include <QtTest>
 
 #include <unistd.h>
+
+using namespace cutcell::canopen;
 
 class CanOpenCliTest : public QObject {
     Q_OBJECT
@@ -131,6 +136,51 @@ class CanOpenCliTest : public QObject {
         stop(sim);
         QCOMPARE(code, 1);
         QVERIFY2(err.contains("node 5") && err.contains("heartbeat lost"), err.constData());
+    }
+
+    void busLossFaultsEveryDriveAndRecoversWithoutRestart() {
+        // The drivesim process hosts the bus; killing it takes the bus away under the master.
+        QProcess sim;
+        QVERIFY(startDriveSim(sim, {"--nodes", "1-2"}));
+        cutcell::Job job = cutcell::defaultJob();
+        job.devices.can_interface = interface_.toStdString();
+        CanOpenMaster m(masterConfigFromJob(job, 0.004, 2));
+        std::string error;
+        QVERIFY2(m.start(&error), error.c_str());
+        QTRY_VERIFY_WITH_TIMEOUT(m.allOperational(), 5000);
+        for (int i = 0; i < 2; ++i)
+            m.drive(i)->activate();
+        QTRY_VERIFY_WITH_TIMEOUT(m.drive(0)->read(0).state == cutcell::DriveState::Enabled &&
+                                     m.drive(1)->read(0).state == cutcell::DriveState::Enabled,
+                                 3000);
+        sim.kill();
+        sim.waitForFinished();
+        QTRY_VERIFY_WITH_TIMEOUT(m.drive(0)->read(0).state == cutcell::DriveState::Fault &&
+                                     m.drive(1)->read(0).state == cutcell::DriveState::Fault,
+                                 3000);
+        QCOMPARE(m.drive(0)->read(0).fault_code, master_fault::kBusLost);
+        QVERIFY(!m.drive(0)->read(0).feedback_valid);
+        const CanBusSnapshot down = m.snapshot();
+        QCOMPARE(down.bus, BusState::Disconnected);
+        QVERIFY2(down.nodes[1].fault_text.find("connection to the bus lost") != std::string::npos,
+                 down.nodes[1].fault_text.c_str());
+        // The bus comes back (a new peer hosts it); recover without restarting anything.
+        QProcess sim2;
+        QVERIFY(startDriveSim(sim2, {"--nodes", "1-2"}));
+        m.recoverBus();
+        QTRY_VERIFY_WITH_TIMEOUT(m.allOperational(), 5000);
+        for (int i = 0; i < 2; ++i) {
+            QVERIFY(m.drive(i)->read(0).state ==
+                    cutcell::DriveState::Disabled); // not re-enabled by itself
+            m.drive(i)->faultReset();
+            m.drive(i)->activate();
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(m.drive(0)->read(0).state == cutcell::DriveState::Enabled &&
+                                     m.drive(1)->read(0).state == cutcell::DriveState::Enabled,
+                                 3000);
+        QCOMPARE(m.snapshot().bus, BusState::Good);
+        m.stop();
+        stop(sim2);
     }
 
     void tooShortCycleIsRefusedWithFigures() {

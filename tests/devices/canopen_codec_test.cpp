@@ -285,3 +285,33 @@ TEST(Pdo, StartupSequenceFollowsMappingProcedure) {
         EXPECT_GE(invalidated, 0);
     }
 }
+
+#include "devices/canopen/bus_state.h"
+
+TEST(BusState, SocketCanErrorFramesDecode) {
+    struct Row {
+        std::uint32_t errorClass;
+        std::uint8_t ctrl; // data[1]
+        BusState state;
+        const char* words;
+    };
+    // linux/can/error.h: CAN_ERR_BUSOFF 0x40, CAN_ERR_CRTL 0x04 with data[1] detail,
+    // CAN_ERR_RESTARTED 0x100, CAN_ERR_ACK 0x20.
+    const Row rows[] = {
+        {0x040, 0x00, BusState::BusOff, "bus off"},
+        {0x004, 0x20, BusState::ErrorPassive, "transmitter error passive"},
+        {0x004, 0x10, BusState::ErrorPassive, "receiver error passive"},
+        {0x004, 0x08, BusState::Warning, "warning level"},
+        {0x004, 0x40, BusState::Good, "back to error active"},
+        {0x100, 0x00, BusState::Good, "restarted"},
+        {0x020, 0x00, BusState::Unknown, "no acknowledge"},
+        {0x044, 0x20, BusState::BusOff, "bus off"}, // the worse state wins
+    };
+    for (const Row& r : rows) {
+        const std::uint8_t data[8] = {0, r.ctrl, 0, 0, 0, 0, 0, 0};
+        const ErrorFrameInfo info = decodeErrorFrame(r.errorClass, data, 8);
+        EXPECT_EQ(info.state, r.state) << std::hex << r.errorClass << " " << int(r.ctrl);
+        EXPECT_NE(info.text.find(r.words), std::string::npos) << info.text;
+    }
+    EXPECT_EQ(worse(BusState::Warning, BusState::BusOff), BusState::BusOff);
+}
