@@ -2,6 +2,7 @@
 // never asserted: shared machines make timed assertions flaky.
 #include "cli_commands.h"
 #ifdef CUTCELL_HAVE_DEVICES
+#include "bench_engine.h"
 #include "bench_can.h"
 #endif
 
@@ -78,9 +79,12 @@ int runBench(const Args& args) {
     out.emplace_back("simulate_seconds", best);
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
+#ifdef CUTCELL_HAVE_DEVICES
+    if (!flag(args, "--no-engine")) benchEngine(job, quick, out);
+#endif
 
 #ifdef CUTCELL_HAVE_DEVICES
-    benchCan(out, quick);
+    if (!flag(args, "--no-can")) benchCan(out, quick);
 #endif
     const json::Value doc(std::move(out));
     if (asJson) {

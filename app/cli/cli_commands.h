@@ -19,6 +19,7 @@ int runValidate(const Args& args);
 int runPlan(const Args& args);
 int runSimulate(const Args& args);
 int runBench(const Args& args);
+int runRun(const Args& args);   // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const Args& args);                                          // drivesim_command.cpp
 int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args); // can_run.cpp
 

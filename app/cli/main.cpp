@@ -13,6 +13,9 @@ usage:
   cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
   cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
   cutcell-cli bench [--json] [--quick]      measure speed figures
+  cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
+                                            run the job through the motion engine on
+                                            simulated drives; writes a run log
   cutcell-cli simulate JOB --devices canopen [--can-plugin P] [--can-interface I]
                  [--period-ms T] [--clock realtime|fast] [--drivesim]
                                             run the cut over CANopen drives (--drivesim: start
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
     if (cmd == "simulate") return runSimulate(args);
     if (cmd == "bench") return runBench(args);
 #ifdef CUTCELL_HAVE_DEVICES
+    if (cmd == "run") return runRun(args);
     if (cmd == "drivesim") return runDriveSim(args);
 #endif
     std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);

@@ -4,7 +4,8 @@
 //
 // Threading contract: every method is called from the engine thread only. Lifecycle calls are
 // requests and return at once; their progress shows in the state read back each cycle.
-// read()/write() are called once per cycle and must not block, lock or allocate.
+// read()/write() are called once per cycle and must not block, lock or allocate; read() may
+// also be called right after an emergency-stop push (it returns the latest known state).
 // Units: rotary axes in rad, rad/s; linear axes in mm, mm/s.
 #include <cstdint>
 
@@ -26,6 +27,7 @@ struct DriveFeedback {
     DriveState state = DriveState::Disabled;
     std::uint32_t fault_code = 0; // CiA 402 / EMCY error code, 0 = none
     bool feedback_valid = true;   // false when the drive's data is stale (bus loss, frozen encoder)
+    double torque_ratio = 0;      // torque applied over the last period / rated torque (CiA 402 0x6077)
 };
 
 class AxisDrive {

@@ -23,14 +23,37 @@ enum class EngineState : std::uint8_t {
 const char* toString(EngineState s);
 
 enum class CommandType : std::uint8_t {
-    Load, Enable, Disable, Home, Jog, Start, FeedHold, Resume, SetOverride, Abort,
-    EmergencyStop, ReleaseEmergencyStop, Reset,
+    Load,
+    Enable,
+    Disable,
+    Home,
+    Jog,
+    Start,
+    FeedHold,
+    Resume,
+    SetOverride,
+    Abort,
+    EmergencyStop,
+    ReleaseEmergencyStop,
+    Reset,
 };
 const char* toString(CommandType c);
 
 enum class ClockMode : std::uint8_t { RealTime, AsFastAsPossible };
 
 enum class Severity : std::uint8_t { Info, Warning, Error };
+
+// What an event is about (the run log opens a run folder on RunStarted and writes the summary
+// on RunEnded).
+enum class EventKind : std::uint8_t {
+    Info,       // a note (e.g. "override 80 %"), no state change
+    Transition, // from -> to
+    Refusal,    // a command refused in its state, with the reason
+    Fault,      // a device or tracking fault (also a transition to Fault)
+    RunStarted, // Start accepted: a new run begins
+    RunEnded,   // the run ended (Completed, aborted, fault, emergency stop): report ready
+};
+const char* toString(EventKind k);
 
 struct EngineEvent {
     double time_s = 0;        // engine clock
@@ -39,6 +62,8 @@ struct EngineEvent {
     EngineState from = EngineState::Idle;
     EngineState to = EngineState::Idle;
     std::array<char, 240> text{}; // NUL-terminated, e.g. "Start refused: drives not enabled"
+    EventKind kind = EventKind::Info;
+    std::uint32_t run_id = 0; // the run this event belongs to (0 = before the first Start)
 };
 
 struct TelemetrySample {
@@ -46,9 +71,9 @@ struct TelemetrySample {
     EngineState state = EngineState::Idle;
     JointVector setpoint = JointVector::Zero();
     JointVector actual = JointVector::Zero();
-    JointVector error = JointVector::Zero();   // setpoint - actual
-    Vec3 cartesian_error_mm = Vec3::Zero();    // FK(actual) - FK(setpoint)
-    double progress = 0;                        // 0..1 of the cut's length
+    JointVector error = JointVector::Zero(); // setpoint - actual
+    Vec3 cartesian_error_mm = Vec3::Zero();  // FK(actual) - FK(setpoint)
+    double progress = 0;                     // 0..1 of the cut's length
     std::uint32_t point_index = 0;
     std::uint32_t point_count = 0;
     double elapsed_s = 0;
@@ -71,6 +96,10 @@ struct CycleStats {
     std::uint64_t telemetry_dropped = 0;
     std::uint64_t events_dropped = 0;
     double last_estop_latency_us = 0;
+    std::uint64_t estops_measured = 0;    // emergency stops whose latency was measured
+    std::uint64_t log_events_dropped = 0; // events the run logger could not take
+    double work_us_max = 0;               // longest cycle work (read -> write)
+    std::uint64_t missed_deadlines = 0;   // periods skipped because the thread woke too late
 };
 
 } // namespace cutcell

@@ -12,13 +12,33 @@
 //    lost because the ring was full are counted in CycleStats, never hidden.
 //  - The cycle itself does not allocate, lock or block. Loading a program happens outside the
 //    cycle: load() hands over a shared_ptr that the engine swaps in at the next cycle.
+//  - In thread mode (startThread) a logger thread writes the run log; with runCycles() the
+//    caller writes it with flushRunLog(). runCycles() must not be used while the thread runs.
+//
+// Behaviour (see tests/engine/state_machine_test.cpp for every command in every state):
+//  - Enable (Idle, job loaded) -> Ready once every drive reads back Enabled. Ready is "not
+//    homed" until Home moves every axis to the program's reference at the home speed.
+//  - Start (Ready and homed) -> Running: an approach move to the first set-point at the home
+//    speed (torch off), settling there (in_position_*), torch on, wait for the arc, then the
+//    cut from path time 0. The torch is lit only on the path. The run lasts until the path
+//    ended and at least program.min_run_s of samples were taken -> Completed; its figures
+//    (lastRunReport) are simulateCut()'s for an uninterrupted run at 100 %.
+//  - The path time tau advances by rate * period; the set-point is the program's spline at tau.
+//    Feed hold, abort, override and a category-1 stop change the rate linearly at
+//    1 / spec.feed_hold_decel_s per second (100 % to rest in feed_hold_decel_s), so neither
+//    the set-point nor its velocity jumps; resume ramps back from where the path stopped.
+//  - Emergency stop / fault: torch off at once; category 0 disables every drive at once,
+//    category 1 stops along the path first, then disables. Both latch; Reset clears a fault,
+//    and an emergency stop only after releaseEmergencyStop(). Drives are "not homed" again.
 #include "core/devices/device_interfaces.h"
 #include "core/engine/engine_types.h"
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
+#include "core/sim/tracking_stats.h"
 
 #include <array>
 #include <memory>
+#include <string>
 
 namespace cutcell {
 
@@ -30,8 +50,22 @@ struct EngineDevices {
 struct EngineConfig {
     double period_s = 0.001;
     ClockMode clock = ClockMode::RealTime;
-    EngineSpec spec;          // stop category, feed hold, limits, runs dir
+    EngineSpec spec;                          // stop category, feed hold, limits, runs dir
     std::array<PidGains, kAxisCount> gains{}; // for drives that close the loop themselves: unused
+    // Before a cut starts, every axis must be this close to the first set-point (rad or mm) and
+    // this slow for settle_cycles cycles in a row. Simulated drives settle to rounding level;
+    // real drives need their encoder resolution here.
+    double in_position_window = 1e-12;
+    double in_position_velocity = 1e-10;
+    int settle_cycles = 20;
+    double settle_timeout_s = 30;
+    double enable_timeout_s = 1.0;
+    double ignition_timeout_s = 2.0;
+    double home_speed_linear_mm_s = 20;  // linear axes (EngineSpec.home_speed_deg_s is rotary)
+    double following_error_limit_mm = 2; // linear axes (EngineSpec's limit is rotary, deg)
+    // Feedback that has not changed while the set-point travelled this far is frozen (rad/mm).
+    double frozen_feedback_travel = 0.002;
+    std::uint32_t telemetry_every_n_cycles = 1; // 1 = every cycle
 };
 
 class MotionEngine {
@@ -59,8 +93,8 @@ class MotionEngine {
     bool resume();
     bool setOverride(double fraction); // 0.10 .. 1.50
     bool abort();
-    bool emergencyStop();              // also sets the atomic request at once
-    bool releaseEmergencyStop();       // the operator pulled the mushroom button back out
+    bool emergencyStop();        // also sets the atomic request at once
+    bool releaseEmergencyStop(); // the operator pulled the mushroom button back out
     bool reset();
 
     // Consumer side (one thread).
@@ -71,8 +105,18 @@ class MotionEngine {
     EngineState state() const;
     CycleStats cycleStats() const;
 
+    // The figures of the last run that ended (Completed, aborted, stopped or faulted), with the
+    // same definitions as simulateCut(); false before the first run ended. Any thread.
+    bool lastRunReport(TrackingReport& out, std::string* outcome = nullptr) const;
+    // The folder of the current or last run log ("" when EngineSpec.runs_dir is empty or no
+    // run started). Any thread.
+    std::string lastRunDirectory() const;
+    // Writes pending run-log events now (runCycles() mode; the thread mode has a logger thread).
+    void flushRunLog();
+
   private:
-    struct Impl;
+    bool pushCommand(CommandType type, int axis = 0, double value = 0);
+    struct Impl; // defined in engine_impl.h (private to the engine's sources)
     std::unique_ptr<Impl> impl_;
 };
 

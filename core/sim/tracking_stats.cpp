@@ -19,16 +19,21 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
     const JointVector e = commanded - actual;
     maxAbs_ = maxAbs_.cwiseMax(e.cwiseAbs());
     sumSq_ += e.cwiseProduct(e);
-    const Vec3 tipCmd = robot_->forward(commanded.tail<kArmJointCount>()).translation();
-    const Vec3 tipAct = robot_->forward(actual.tail<kArmJointCount>()).translation();
+    ++n_;
+    if (!robot_ && !model_) return;
+    const Vec3 tipCmd = robot_ ? robot_->forward(commanded.tail<kArmJointCount>()).translation()
+                               : model_->tip(commanded);
+    const Vec3 tipAct = robot_ ? robot_->forward(actual.tail<kArmJointCount>()).translation()
+                               : model_->tip(actual);
     lastCart_ = tipAct - tipCmd;
     cartMin_ = cartMin_.cwiseMin(lastCart_);
     cartMax_ = cartMax_.cwiseMax(lastCart_);
     // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
-    const Vec3 onPipeCmd = robot_->baseFromWork(commanded[0]).inverse() * tipCmd;
-    const Vec3 onPipeAct = robot_->baseFromWork(actual[0]).inverse() * tipAct;
+    const Vec3 onPipeCmd = robot_ ? Vec3(robot_->baseFromWork(commanded[0]).inverse() * tipCmd)
+                                  : model_->tipOnWork(commanded, tipCmd);
+    const Vec3 onPipeAct = robot_ ? Vec3(robot_->baseFromWork(actual[0]).inverse() * tipAct)
+                                  : model_->tipOnWork(actual, tipAct);
     workMaxAbs_ = workMaxAbs_.cwiseMax((onPipeAct - onPipeCmd).cwiseAbs());
-    ++n_;
 }
 
 void TrackingStats::fill(TrackingReport& r) const {

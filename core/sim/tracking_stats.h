@@ -7,6 +7,7 @@
 #include "core/job/job.h"
 #include "core/json/json.h"
 #include "core/kinematics/pipe_robot.h"
+#include "core/kinematics/tip_model.h"
 
 #include <array>
 #include <string>
@@ -42,6 +43,9 @@ struct TrackingReport {
 class TrackingStats {
   public:
     explicit TrackingStats(const PipeRobot& robot) : robot_(&robot) {}
+    // Any machine: the tip comes from its model (the motion engine's programs carry one).
+    // A null model gives joint figures only. The model must outlive the stats.
+    explicit TrackingStats(const TipModel* model) : model_(model) {}
     void reset();
     void add(const JointVector& commanded, const JointVector& actual);
     void addTorqueFraction(double f) {
@@ -55,7 +59,8 @@ class TrackingStats {
     const Vec3& lastCartesianError() const { return lastCart_; }
 
   private:
-    const PipeRobot* robot_;
+    const PipeRobot* robot_ = nullptr;
+    const TipModel* model_ = nullptr;
     long n_ = 0;
     JointVector maxAbs_ = JointVector::Zero();
     JointVector sumSq_ = JointVector::Zero();

@@ -1,0 +1,149 @@
+// cutcell-cli bench: the motion engine's real-time figures (cycle jitter and overruns over a
+// run of the default job at 1 ms; emergency-stop latency over many trials). Printed, never
+// asserted.
+#include "bench_engine.h"
+
+#include "core/engine/motion_engine.h"
+#include "core/machines/pipe_robot_program.h"
+#include "core/trajectory/cut_planner.h"
+#include "devices/sim/simulated_drive.h"
+#include "devices/sim/simulated_torch.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <thread>
+#include <vector>
+
+namespace cutcell::cli {
+namespace {
+
+using namespace std::chrono_literals;
+
+struct SimCell {
+    std::vector<std::unique_ptr<SimulatedDrive>> drives;
+    SimulatedTorch torch;
+    EngineDevices devices;
+
+    explicit SimCell(const Job& job) {
+        for (int i = 0; i < kAxisCount; ++i) {
+            SimulatedDriveConfig dc;
+            dc.gains = job.controller[static_cast<size_t>(i)];
+            dc.plant = job.plant[static_cast<size_t>(i)];
+            dc.period_s = job.sim.period_s;
+            drives.push_back(std::make_unique<SimulatedDrive>(dc));
+            devices.axes[static_cast<size_t>(i)] = drives.back().get();
+        }
+        devices.torch = &torch;
+    }
+};
+
+EngineConfig realTimeConfig(const Job& job) {
+    EngineConfig c;
+    c.period_s = job.sim.period_s;
+    c.clock = ClockMode::RealTime;
+    c.spec = job.engine;
+    c.spec.runs_dir.clear(); // no run log in the benchmark
+    return c;
+}
+
+void drain(MotionEngine& engine) {
+    TelemetrySample t;
+    while (engine.popTelemetry(t)) {
+    }
+    EngineEvent e;
+    while (engine.popEvent(e)) {
+    }
+}
+
+bool waitFor(MotionEngine& engine, EngineState s, std::chrono::milliseconds timeout) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (engine.state() != s) {
+        if (std::chrono::steady_clock::now() > end) return false;
+        std::this_thread::sleep_for(200us);
+        drain(engine);
+    }
+    return true;
+}
+
+double quantile(std::vector<double> v, double p) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const auto k = static_cast<size_t>(std::ceil(p * static_cast<double>(v.size()))) - 1;
+    return v[std::min(k, v.size() - 1)];
+}
+
+} // namespace
+
+void benchEngine(const Job& job, bool quick, json::Object& out) {
+    const CutPlan plan = planCut(job);
+    if (!plan.reachable) return;
+    const auto program = buildPipeRobotProgram(job, plan);
+
+    // 1. Cycle timing: the default job cutting in real time, telemetry drained at 30 Hz.
+    {
+        SimCell cell(job);
+        MotionEngine engine(cell.devices, realTimeConfig(job));
+        engine.load(program);
+        engine.enable();
+        engine.home();
+        engine.start();
+        engine.startThread();
+        const auto end = std::chrono::steady_clock::now() + (quick ? 2s : 10s);
+        while (std::chrono::steady_clock::now() < end) {
+            std::this_thread::sleep_for(33ms);
+            drain(engine);
+        }
+        engine.stopThread();
+        const CycleStats s = engine.cycleStats();
+        out.emplace_back("cycle_period_us", s.period_s * 1e6);
+        out.emplace_back("cycle_count", static_cast<double>(s.cycles));
+        out.emplace_back("cycle_jitter_us_p50", s.jitter_us_p50);
+        out.emplace_back("cycle_jitter_us_p99", s.jitter_us_p99);
+        out.emplace_back("cycle_jitter_us_max", s.jitter_us_max);
+        out.emplace_back("cycle_overruns", static_cast<double>(s.overruns));
+        out.emplace_back("cycle_missed_deadlines", static_cast<double>(s.missed_deadlines));
+        out.emplace_back("cycle_work_us_max", s.work_us_max);
+        out.emplace_back("telemetry_dropped", static_cast<double>(s.telemetry_dropped));
+    }
+
+    // 2. Emergency-stop latency: request at a random phase of the cycle, measured by the
+    //    engine from the request to "all drives read back disabled and torch off".
+    {
+        SimCell cell(job);
+        MotionEngine engine(cell.devices, realTimeConfig(job));
+        engine.load(program);
+        engine.enable();
+        engine.startThread();
+        std::mt19937 rng(11);
+        std::uniform_int_distribution<int> phaseUs(0, 1500);
+        std::vector<double> latencies;
+        const int trials = quick ? 100 : 1000;
+        for (int k = 0; k < trials; ++k) {
+            if (!waitFor(engine, EngineState::Ready, 2000ms)) break;
+            std::this_thread::sleep_for(std::chrono::microseconds(phaseUs(rng)));
+            const std::uint64_t before = engine.cycleStats().estops_measured;
+            engine.emergencyStop();
+            const auto end = std::chrono::steady_clock::now() + 2s;
+            while (engine.cycleStats().estops_measured == before &&
+                   std::chrono::steady_clock::now() < end)
+                std::this_thread::sleep_for(100us);
+            const CycleStats s = engine.cycleStats();
+            if (s.estops_measured == before) break;
+            latencies.push_back(s.last_estop_latency_us);
+            engine.releaseEmergencyStop();
+            engine.reset();
+            if (!waitFor(engine, EngineState::Idle, 2000ms)) break;
+            engine.enable();
+        }
+        engine.stopThread();
+        out.emplace_back("estop_trials", static_cast<double>(latencies.size()));
+        out.emplace_back("estop_latency_us_p50", quantile(latencies, 0.50));
+        out.emplace_back("estop_latency_us_p99", quantile(latencies, 0.99));
+        out.emplace_back("estop_latency_us_max", quantile(latencies, 1.0));
+    }
+}
+
+} // namespace cutcell::cli

@@ -1,0 +1,393 @@
+// The motion engine's commands and state transitions (engine thread only). Every accepted
+// command changes state or says what it did; every refused one says why, as an event.
+#include "core/engine/engine_impl.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace cutcell {
+
+namespace {
+bool inMotion(EngineState s) {
+    return s == EngineState::Homing || s == EngineState::Jogging || s == EngineState::Running ||
+           s == EngineState::Paused;
+}
+bool latched(EngineState s) {
+    return s == EngineState::EmergencyStop || s == EngineState::Fault;
+}
+const char* latchedReason(EngineState s) {
+    return s == EngineState::EmergencyStop ? "emergency stop latched (release it, then Reset)"
+                                           : "fault latched (Reset first)";
+}
+} // namespace
+
+// ---- helpers ---------------------------------------------------------------------------
+
+double MotionEngine::Impl::speedLimit(int i) const {
+    const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
+    return linear ? cfg.home_speed_linear_mm_s : deg2rad(cfg.spec.home_speed_deg_s);
+}
+double MotionEngine::Impl::followingLimit(int i) const {
+    const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
+    return linear ? cfg.following_error_limit_mm : deg2rad(cfg.spec.following_error_limit_deg);
+}
+double MotionEngine::Impl::displayValue(int i, double v) const {
+    const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
+    return linear ? v : rad2deg(v);
+}
+const char* MotionEngine::Impl::unit(int i) const {
+    return program && program->axis_linear[static_cast<size_t>(i)] ? "mm" : "deg";
+}
+const char* MotionEngine::Impl::axisName(int i) const {
+    // c_str() of a string that lives as long as the program: no allocation.
+    if (program && !program->axis_names[static_cast<size_t>(i)].empty())
+        return program->axis_names[static_cast<size_t>(i)].c_str();
+    return "axis";
+}
+
+void MotionEngine::Impl::emit(EventKind kind, Severity sev, EngineState from, EngineState to,
+                              const char* fmt, va_list ap) {
+    EngineEvent e;
+    e.time_s = now;
+    e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                    std::chrono::system_clock::now().time_since_epoch())
+                    .count();
+    e.severity = sev;
+    e.from = from;
+    e.to = to;
+    e.kind = kind;
+    e.run_id = runId;
+    std::vsnprintf(e.text.data(), e.text.size(), fmt, ap);
+    if (!events.push(e)) eventsDropped.fetch_add(1, std::memory_order_relaxed);
+    if (!logEvents.push(e)) logDropped.fetch_add(1, std::memory_order_relaxed);
+}
+
+void MotionEngine::Impl::emitf(EventKind kind, Severity sev, EngineState from, EngineState to,
+                               const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    emit(kind, sev, from, to, fmt, ap);
+    va_end(ap);
+}
+
+void MotionEngine::Impl::note(const char* fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    emit(EventKind::Info, Severity::Info, state, state, fmt, ap);
+    va_end(ap);
+}
+
+void MotionEngine::Impl::refuse(CommandType c, const char* fmt, ...) {
+    char reason[200];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(reason, sizeof reason, fmt, ap);
+    va_end(ap);
+    emitf(EventKind::Refusal, Severity::Warning, state, state, "%s refused: %s", toString(c),
+          reason);
+}
+
+void MotionEngine::Impl::setState(EngineState s, EventKind kind, const char* fmt, ...) {
+    const EngineState from = state;
+    state = s;
+    publicState.store(s, std::memory_order_release);
+    va_list ap;
+    va_start(ap, fmt);
+    emit(kind, kind == EventKind::Fault ? Severity::Error : Severity::Info, from, s, fmt, ap);
+    va_end(ap);
+}
+
+JointVector MotionEngine::Impl::actualPositions() const {
+    JointVector q = setpoint;
+    for (int i = 0; i < kAxisCount; ++i)
+        if (axisPresent(i)) q[i] = fb[static_cast<size_t>(i)].position;
+    return q;
+}
+
+void MotionEngine::Impl::holdAt(const JointVector& q) {
+    traj = TrajectoryKind::Hold;
+    hold = q;
+    rate = 0;
+    tau = anchorTau = 0;
+    anchorCycles = 0;
+}
+
+// ---- transitions -----------------------------------------------------------------------
+
+void MotionEngine::Impl::disableAll() {
+    for (int i = 0; i < kAxisCount; ++i)
+        if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->deactivate();
+    enabling = false;
+    homed = false;
+    stopping = StopReason::None;
+    holding = false;
+    holdAt(actualPositions());
+}
+
+void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
+    torchCommand = false;
+    if (dev.torch) dev.torch->setOn(false); // at once, not at the cycle's write
+    torchWritten = false;
+    const bool moving = traj != TrajectoryKind::Hold && rate > 0;
+    if (category == StopCategory::Cat0 || !moving) {
+        disableAll();
+    } else {
+        stopping = reason; // decelerate along the path, then disable (advance())
+        holding = true;
+    }
+}
+
+void MotionEngine::Impl::endRun(const char* outcome) {
+    if (!runActive) return;
+    runActive = false;
+    const std::uint64_t g = resultGeneration.load(std::memory_order_relaxed);
+    RunResult& r = results[(g + 1) % 2];
+    stats.fill(r.report);
+    cruise.fillCruise(r.report);
+    r.report.reachable = true;
+    r.report.length_mm = program ? program->length_mm : 0;
+    r.report.cut_time_s = program ? program->cut_time_s : 0;
+    r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;
+    r.run_id = runId;
+    std::snprintf(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
+    std::snprintf(r.outcome.data(), r.outcome.size(), "%s", outcome);
+    resultGeneration.store(g + 1, std::memory_order_release);
+    emitf(EventKind::RunEnded, Severity::Info, state, state, "Run %u ended: %s (%ld samples)",
+          runId, outcome, samples);
+}
+
+void MotionEngine::Impl::enterEmergencyStop() {
+    estopLatched = true;
+    latchPress = estopPresses.load(std::memory_order_acquire);
+    estopRequestSeen = estopRequestNs.load(std::memory_order_relaxed);
+    estopLatencyPending = true;
+    const EngineState from = state;
+    stopDevices(cfg.spec.estop_category, StopReason::EmergencyCat1);
+    const bool cat0 = stopping == StopReason::None;
+    setState(EngineState::EmergencyStop, EventKind::Transition,
+             "Emergency stop (%s, from %s): torch off, drives %s",
+             toString(cfg.spec.estop_category), toString(from),
+             cat0 ? "disabled" : "stopping along the path, then disabled");
+    endRun("emergency stop");
+}
+
+void MotionEngine::Impl::enterFault(const char* fmt, ...) {
+    char reason[200];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(reason, sizeof reason, fmt, ap);
+    va_end(ap);
+    if (latched(state)) {
+        // A second fault during a controlled stop: no more waiting, torque off now.
+        const bool wasStopping = stopping != StopReason::None;
+        disableAll();
+        emitf(EventKind::Fault, Severity::Error, state, state, "Fault: %s%s", reason,
+              wasStopping ? " (controlled stop cut short: drives disabled)" : "");
+        return;
+    }
+    stopDevices(cfg.spec.estop_category, StopReason::FaultCat1);
+    char outcome[120];
+    std::snprintf(outcome, sizeof outcome, "fault: %.110s", reason);
+    setState(EngineState::Fault, EventKind::Fault, "Fault: %s; torch off, %s stop", reason,
+             toString(cfg.spec.estop_category));
+    endRun(outcome);
+}
+
+void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveState) {
+    JointVector limit;
+    for (int i = 0; i < kAxisCount; ++i)
+        limit[i] = speedLimit(i);
+    move = JointMove::make(setpoint, target, limit);
+    traj = TrajectoryKind::Move;
+    tau = anchorTau = 0;
+    anchorCycles = 0;
+    rate = 1;
+    holding = false;
+    stopping = StopReason::None;
+    if (moveState != state)
+        setState(moveState, EventKind::Transition, "%s: %.3f s move at up to %.1f deg/s",
+                 moveState == EngineState::Homing    ? "Homing to the reference"
+                 : moveState == EngineState::Jogging ? "Jogging"
+                                                     : "Approach to the first cut point",
+                 move.duration, cfg.spec.home_speed_deg_s);
+}
+
+void MotionEngine::Impl::beginCut() {
+    ++runId;
+    runActive = true;
+    runProgramSeq.store(currentProgramSeq.load(std::memory_order_relaxed),
+                        std::memory_order_release);
+    samples = 0;
+    pathDone = false;
+    stats = TrackingStats(program->tip_model.get());
+    cruise = TrackingStats(program->tip_model.get());
+    minRunSteps = static_cast<long>(std::ceil(program->min_run_s / T - 1e-9));
+    emitf(EventKind::RunStarted, Severity::Info, state, EngineState::Running,
+          "Run %u started: %s, %.1f mm in %.2f s", runId, program->name.c_str(), program->length_mm,
+          program->cut_time_s);
+    setState(EngineState::Running, EventKind::Transition, "Start: approach to the first cut point");
+    phase = RunPhase::Approach;
+    phaseSince = now;
+    beginMove(program->spline.evaluate(0).q, EngineState::Running);
+}
+
+// ---- commands --------------------------------------------------------------------------
+
+void MotionEngine::Impl::processCommands() {
+    EngineCommand c;
+    for (int n = 0; n < 16 && commands.pop(c); ++n)
+        handle(c);
+}
+
+void MotionEngine::Impl::handle(const EngineCommand& c) {
+    const EngineState s = state;
+    switch (c.type) {
+    case CommandType::Load: {
+        processedLoadSeq.store(c.seq, std::memory_order_release);
+        const MotionProgram* p = c.program;
+        if (inMotion(s)) return refuse(c.type, "a motion is in progress (%s)", toString(s));
+        if (!p) return refuse(c.type, "no program");
+        if (p->axis_count < 1 || p->axis_count > kAxisCount)
+            return refuse(c.type, "axis_count = %d is outside 1 .. %d", p->axis_count, kAxisCount);
+        if (p->spline.empty() || !(p->cut_time_s > 0))
+            return refuse(c.type, "the program has no trajectory");
+        for (int i = 0; i < p->axis_count; ++i) {
+            if (!axisPresent(i))
+                return refuse(c.type, "axis %d (%s) has no drive", i,
+                              p->axis_names[static_cast<size_t>(i)].c_str());
+            const double r = p->reference[i];
+            if (r < p->min_position[i] || r > p->max_position[i])
+                return refuse(c.type, "reference of axis %d = %.4g is outside %.4g .. %.4g", i, r,
+                              p->min_position[i], p->max_position[i]);
+        }
+        program = p;
+        currentProgramSeq.store(c.seq, std::memory_order_release);
+        if (s == EngineState::Completed)
+            return setState(EngineState::Ready, EventKind::Transition,
+                            "Job loaded: %s (%zu points, %.1f mm, %.2f s)", p->name.c_str(),
+                            p->point_count, p->length_mm, p->cut_time_s);
+        return note("Job loaded: %s (%zu points, %.1f mm, %.2f s)", p->name.c_str(), p->point_count,
+                    p->length_mm, p->cut_time_s);
+    }
+    case CommandType::Enable:
+        if (latched(s)) return refuse(c.type, "%s", latchedReason(s));
+        if (s != EngineState::Idle)
+            return refuse(c.type, "drives already enabled (%s)", toString(s));
+        if (!program) return refuse(c.type, "no job loaded");
+        if (enabling) return refuse(c.type, "drives are already enabling");
+        for (int i = 0; i < kAxisCount; ++i)
+            if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->activate();
+        enabling = true;
+        enableDeadline = now + cfg.enable_timeout_s;
+        return note("Enabling drives");
+    case CommandType::Disable:
+        if (latched(s)) return refuse(c.type, "drives already disabled (%s)", toString(s));
+        if (inMotion(s)) return refuse(c.type, "motion in progress (%s): Abort first", toString(s));
+        if (s == EngineState::Idle && !enabling) return refuse(c.type, "drives are not enabled");
+        disableAll();
+        if (s == EngineState::Idle) return note("Enable cancelled: drives disabled");
+        return setState(EngineState::Idle, EventKind::Transition, "Drives disabled");
+    case CommandType::Home:
+        if (latched(s)) return refuse(c.type, "%s", latchedReason(s));
+        if (s == EngineState::Idle) return refuse(c.type, "drives not enabled");
+        if (s == EngineState::Homing) return refuse(c.type, "already homing");
+        if (inMotion(s)) return refuse(c.type, "motion in progress (%s)", toString(s));
+        return beginMove(program->reference, EngineState::Homing);
+    case CommandType::Jog: {
+        if (s != EngineState::Ready)
+            return refuse(c.type, "only while Ready (state %s)", toString(s));
+        const int a = c.axis;
+        if (a < 0 || a >= axisCount())
+            return refuse(c.type, "axis %d does not exist (0 .. %d)", a, axisCount() - 1);
+        if (!std::isfinite(c.value)) return refuse(c.type, "the jog distance is not a number");
+        const double target = setpoint[a] + c.value;
+        if (target < program->min_position[a] || target > program->max_position[a])
+            return refuse(c.type,
+                          "axis %d (%s) target %.3f %s is outside its range %.3f .. %.3f %s", a,
+                          axisName(a), displayValue(a, target), unit(a),
+                          displayValue(a, program->min_position[a]),
+                          displayValue(a, program->max_position[a]), unit(a));
+        JointVector q = setpoint;
+        q[a] = target;
+        return beginMove(q, EngineState::Jogging);
+    }
+    case CommandType::Start:
+        if (latched(s)) return refuse(c.type, "%s", latchedReason(s));
+        if (s == EngineState::Idle)
+            return refuse(c.type, program ? "drives not enabled" : "no job loaded");
+        if (s == EngineState::Running) return refuse(c.type, "already running");
+        if (s == EngineState::Paused) return refuse(c.type, "paused (use Resume)");
+        if (s == EngineState::Completed)
+            return refuse(c.type, "the cut is complete (Home, then Start)");
+        if (inMotion(s)) return refuse(c.type, "motion in progress (%s)", toString(s));
+        if (!homed) return refuse(c.type, "not homed (Home first)");
+        return beginCut();
+    case CommandType::FeedHold:
+        if (s != EngineState::Running) return refuse(c.type, "not running (state %s)", toString(s));
+        if (stopping != StopReason::None) return refuse(c.type, "a stop is in progress");
+        if (holding) return refuse(c.type, "already holding");
+        holding = true;
+        if (!cfg.spec.torch_on_during_feed_hold) torchCommand = false;
+        return note("Feed hold: decelerating along the path (torch %s)",
+                    torchCommand ? "stays lit" : "off");
+    case CommandType::Resume:
+        if (s == EngineState::Paused) {
+            holding = false;
+            // The torch went out on hold: it is lit again before the path moves (RunPhase::Ignite).
+            if (phase == RunPhase::Cut && !torchCommand) {
+                phase = RunPhase::Ignite;
+                phaseSince = now;
+            }
+            return setState(EngineState::Running, EventKind::Transition,
+                            "Resume at path time %.3f s", tau);
+        }
+        if (s == EngineState::Running && holding && stopping == StopReason::None) {
+            holding = false;
+            // A torch that went out on hold is lit again (and its arc awaited) before speed-up.
+            if (phase == RunPhase::Cut && !torchCommand) {
+                phase = RunPhase::Ignite;
+                phaseSince = now;
+            }
+            return note("Resume while decelerating: back to speed");
+        }
+        return refuse(c.type, "not paused (state %s)", toString(s));
+    case CommandType::SetOverride:
+        if (!(c.value >= 0.10 - 1e-12 && c.value <= 1.50 + 1e-12))
+            return refuse(c.type, "%.0f %% is outside 10 .. 150 %%", c.value * 100);
+        overrideTarget = c.value;
+        return note("Override %.0f %%", c.value * 100);
+    case CommandType::Abort:
+        if (latched(s)) return refuse(c.type, "%s", latchedReason(s));
+        if (!inMotion(s)) return refuse(c.type, "nothing to abort (state %s)", toString(s));
+        if (stopping == StopReason::Abort) return refuse(c.type, "already aborting");
+        stopping = StopReason::Abort;
+        holding = true;
+        torchCommand = false;
+        return note("Abort: torch off, stopping along the path");
+    case CommandType::EmergencyStop:
+        // Taken from the atomic at the top of the cycle; a press after the latch is noted.
+        if (static_cast<std::uint64_t>(c.value) > latchPress)
+            return note("Emergency stop pressed again: already latched");
+        return;
+    case CommandType::ReleaseEmergencyStop:
+        if (!estopPressed.load(std::memory_order_acquire))
+            return refuse(c.type, "the emergency stop is not pressed");
+        estopPressed.store(false, std::memory_order_release);
+        return note("Emergency stop released (Reset to clear)");
+    case CommandType::Reset:
+        if (!latched(s)) return refuse(c.type, "nothing to reset (state %s)", toString(s));
+        if (estopPressed.load(std::memory_order_acquire))
+            return refuse(c.type, "the emergency stop is still pressed (release it first)");
+        if (stopping != StopReason::None)
+            return refuse(c.type, "the controlled stop is still in progress");
+        for (int i = 0; i < kAxisCount; ++i)
+            if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->faultReset();
+        estopLatched = false;
+        return setState(EngineState::Idle, EventKind::Transition,
+                        "Reset: %s cleared, drives disabled",
+                        s == EngineState::Fault ? "fault" : "emergency stop");
+    }
+}
+
+} // namespace cutcell

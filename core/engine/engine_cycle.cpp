@@ -1,0 +1,362 @@
+// One control cycle of the motion engine (engine thread only; no allocation, lock or wait):
+//   emergency stop request -> read devices -> commands -> state machine -> set-point
+//   -> supervision -> tracking figures -> write devices -> telemetry -> path time.
+#include "core/engine/engine_impl.h"
+
+#include <cmath>
+
+namespace cutcell {
+
+void MotionEngine::Impl::runCycle() {
+    now = static_cast<double>(cycle) * T;
+    checkEmergencyStop();
+    readDevices();
+    checkEstopComplete();
+    processCommands();
+    superviseEnabling();
+    advance();
+    computeSetpoint();
+    superviseDevices();
+    track();
+    writeDevices();
+    publishTelemetry();
+    stepPathTime();
+    ++cycle;
+    cycles.store(cycle, std::memory_order_relaxed);
+}
+
+void MotionEngine::Impl::checkEmergencyStop() {
+    if (estopLatched || !estopPressed.load(std::memory_order_acquire)) return;
+    enterEmergencyStop();
+    // Read back at once so the latency covers "commanded off" and "seen off".
+    readDevices();
+    checkEstopComplete();
+}
+
+void MotionEngine::Impl::readDevices() {
+    for (int i = 0; i < kAxisCount; ++i)
+        if (axisPresent(i))
+            fb[static_cast<size_t>(i)] = dev.axes[static_cast<size_t>(i)]->read(now);
+    if (dev.torch) torchFb = dev.torch->read(now);
+}
+
+void MotionEngine::Impl::checkEstopComplete() {
+    if (!estopLatencyPending) return;
+    for (int i = 0; i < kAxisCount; ++i) {
+        if (!axisPresent(i)) continue;
+        const DriveState d = fb[static_cast<size_t>(i)].state;
+        if (d != DriveState::Disabled && d != DriveState::Fault) return;
+    }
+    if (dev.torch && torchFb.on) return;
+    estopLatencyPending = false;
+    const double us = static_cast<double>(monotonicNowNs() - estopRequestSeen) / 1000.0;
+    lastEstopLatencyUs.store(us, std::memory_order_relaxed);
+    estopsMeasured.fetch_add(1, std::memory_order_release);
+    note("Emergency stop complete: drives disabled, torch off, %.0f us after the request", us);
+}
+
+void MotionEngine::Impl::superviseEnabling() {
+    if (!enabling || state != EngineState::Idle) return;
+    bool all = true;
+    for (int i = 0; i < kAxisCount; ++i) {
+        if (!axisPresent(i)) continue;
+        const DriveFeedback& f = fb[static_cast<size_t>(i)];
+        if (f.state == DriveState::Fault) {
+            enabling = false;
+            return enterFault("Enable failed: axis %d (%s) reports drive fault 0x%04X", i,
+                              axisName(i), f.fault_code);
+        }
+        if (f.state != DriveState::Enabled) {
+            all = false;
+            if (now > enableDeadline) {
+                enabling = false;
+                return enterFault("Enable failed: axis %d (%s) is still %s after %.2f s", i,
+                                  axisName(i), toString(f.state), cfg.enable_timeout_s);
+            }
+        }
+    }
+    if (!all) return;
+    enabling = false;
+    holdAt(actualPositions());
+    setpoint = hold;
+    for (int i = 0; i < kAxisCount; ++i) {
+        lastSensed[static_cast<size_t>(i)] = fb[static_cast<size_t>(i)].position;
+        travelSinceChange[static_cast<size_t>(i)] = 0;
+    }
+    setState(EngineState::Ready, EventKind::Transition, "Drives enabled%s",
+             homed ? "" : " (not homed: Home before Start)");
+}
+
+// State machine step at the current path time (before the set-point is computed).
+void MotionEngine::Impl::advance() {
+    // A controlled stop (abort, category-1 stop) ends when the path rate reaches zero.
+    if (stopping != StopReason::None && rate <= 0) {
+        const StopReason why = stopping;
+        stopping = StopReason::None;
+        holding = false;
+        if (why == StopReason::Abort) {
+            holdAt(setpoint);
+            setState(EngineState::Ready, EventKind::Transition,
+                     "Aborted: stopped on the path at %.3f s", tau);
+            endRun("aborted");
+        } else {
+            disableAll();
+            note("Controlled stop complete: drives disabled");
+        }
+        return;
+    }
+    if (state == EngineState::Homing || state == EngineState::Jogging) {
+        if (tau >= move.duration) {
+            const EngineState from = state;
+            holdAt(move.to);
+            if (from == EngineState::Homing) homed = true;
+            setState(EngineState::Ready, EventKind::Transition,
+                     from == EngineState::Homing ? "Homed: at the reference" : "Jog done");
+        }
+        return;
+    }
+    if (state == EngineState::Running || state == EngineState::Paused) stepRunning();
+}
+
+void MotionEngine::Impl::stepRunning() {
+    if (state == EngineState::Running && holding && rate <= 0 && stopping == StopReason::None) {
+        setState(EngineState::Paused, EventKind::Transition,
+                 "Paused on the path at %.3f s (torch %s)", tau, torchCommand ? "lit" : "off");
+        return;
+    }
+    if (state == EngineState::Paused) return;
+    switch (phase) {
+    case RunPhase::Approach:
+        if (tau >= move.duration) {
+            holdAt(move.to);
+            phase = RunPhase::Settle;
+            phaseSince = now;
+            settleCount = 0;
+        }
+        break;
+    case RunPhase::Settle: {
+        bool in = true;
+        for (int i = 0; i < axisCount() && in; ++i) {
+            const DriveFeedback& f = fb[static_cast<size_t>(i)];
+            in = std::fabs(hold[i] - f.position) <= cfg.in_position_window &&
+                 std::fabs(f.velocity) <= cfg.in_position_velocity;
+        }
+        settleCount = in ? settleCount + 1 : 0;
+        if (settleCount >= cfg.settle_cycles) {
+            note("At the first cut point after %.3f s of settling: torch on", now - phaseSince);
+            phase = RunPhase::Ignite;
+            phaseSince = now;
+            torchCommand = true;
+        } else if (now - phaseSince > cfg.settle_timeout_s) {
+            enterFault("Start failed: the axes did not settle within %.4g of the first cut point "
+                       "in %.1f s",
+                       cfg.in_position_window, cfg.settle_timeout_s);
+        }
+        break;
+    }
+    case RunPhase::Ignite:
+        torchCommand = true;
+        if (!dev.torch || torchFb.arc_ok) {
+            phase = RunPhase::Cut;
+            traj = TrajectoryKind::Path;
+            if (tau <= 0) {
+                // The path starts at rest: full rate at once; sample 0 is this cycle.
+                rate = overrideTarget;
+                anchorTau = tau = 0;
+                anchorCycles = 0;
+                cutStartTime = now;
+            }
+            note(tau <= 0 ? "Arc established: cutting" : "Arc established: resuming the cut");
+        } else if (now - phaseSince > cfg.ignition_timeout_s) {
+            enterFault("torch: arc not established within %.1f s", cfg.ignition_timeout_s);
+        }
+        break;
+    case RunPhase::Cut:
+        if (tau / T >= program->cut_time_s / T - 1e-9) {
+            pathDone = true;
+            torchCommand = false;
+            phase = RunPhase::Finish;
+            note("Cut finished at path time %.3f s: torch off", program->cut_time_s);
+        }
+        break;
+    case RunPhase::Finish:
+        break;
+    case RunPhase::Close:
+        // The torque of the last sample was read back this cycle: the run's figures are whole.
+        for (int i = 0; i < axisCount(); ++i)
+            stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
+        holdAt(setpoint);
+        setState(EngineState::Completed, EventKind::Transition, "Completed: %.1f mm in %.2f s",
+                 program->length_mm, now - cutStartTime);
+        endRun("completed");
+        break;
+    }
+}
+
+JointSample MotionEngine::Impl::evaluate(double t) const {
+    switch (traj) {
+    case TrajectoryKind::Hold: {
+        JointSample s;
+        s.q = hold;
+        return s;
+    }
+    case TrajectoryKind::Move:
+        return move.at(t);
+    case TrajectoryKind::Path:
+        return program->spline.evaluate(t);
+    }
+    return {};
+}
+
+double MotionEngine::Impl::trajectoryDuration() const {
+    if (traj == TrajectoryKind::Move) return move.duration;
+    if (traj == TrajectoryKind::Path) return program->cut_time_s;
+    return 0;
+}
+
+void MotionEngine::Impl::computeSetpoint() {
+    setpointPrev = setpoint;
+    const bool drivesOff = state == EngineState::Idle ||
+                           ((state == EngineState::EmergencyStop || state == EngineState::Fault) &&
+                            stopping == StopReason::None);
+    // Without torque the set-point follows the axes, so enabling holds them where they are.
+    if (drivesOff) holdAt(actualPositions());
+    const JointSample s = evaluate(tau);
+    setpoint = s.q;
+    setpointVel = s.qd * rate;
+}
+
+void MotionEngine::Impl::superviseDevices() {
+    const bool drivesOn = state == EngineState::Ready || state == EngineState::Homing ||
+                          state == EngineState::Jogging || state == EngineState::Running ||
+                          state == EngineState::Paused || state == EngineState::Completed;
+    const bool stoppingLatched =
+        stopping != StopReason::None &&
+        (state == EngineState::EmergencyStop || state == EngineState::Fault);
+    if (!drivesOn && !stoppingLatched) return;
+    for (int i = 0; i < axisCount(); ++i) {
+        const auto a = static_cast<size_t>(i);
+        const DriveFeedback& f = fb[a];
+        if (stoppingLatched && f.state != DriveState::Enabled) continue;
+        if (f.state == DriveState::Fault)
+            return enterFault("axis %d (%s): drive fault 0x%04X at %.3f %s (set-point %.3f %s)", i,
+                              axisName(i), f.fault_code, displayValue(i, f.position), unit(i),
+                              displayValue(i, setpoint[i]), unit(i));
+        if (f.state != DriveState::Enabled)
+            return enterFault("axis %d (%s): drive left operation (now %s)", i, axisName(i),
+                              toString(f.state));
+        if (!f.feedback_valid)
+            return enterFault("axis %d (%s): feedback not valid (stale data) at %.3f %s", i,
+                              axisName(i), displayValue(i, f.position), unit(i));
+        if (f.position == lastSensed[a]) {
+            travelSinceChange[a] += std::fabs(setpoint[i] - setpointPrev[i]);
+            if (travelSinceChange[a] > cfg.frozen_feedback_travel)
+                return enterFault(
+                    "axis %d (%s): feedback frozen at %.4f %s while the set-point moved %.4f %s", i,
+                    axisName(i), displayValue(i, f.position), unit(i),
+                    displayValue(i, travelSinceChange[a]), unit(i));
+        } else {
+            travelSinceChange[a] = 0;
+            lastSensed[a] = f.position;
+        }
+        const double e = setpoint[i] - f.position;
+        if (std::fabs(e) > followingLimit(i))
+            return enterFault("axis %d (%s): following error %.3f %s exceeds %.3f %s (set-point "
+                              "%.3f %s, actual %.3f %s)",
+                              i, axisName(i), displayValue(i, e), unit(i),
+                              displayValue(i, followingLimit(i)), unit(i),
+                              displayValue(i, setpoint[i]), unit(i), displayValue(i, f.position),
+                              unit(i));
+    }
+    if (dev.torch && torchFb.fault_code != 0)
+        return enterFault("torch: fault 0x%04X", torchFb.fault_code);
+    if (dev.torch && torchCommand && arcWasOk && !torchFb.arc_ok) {
+        const std::uint32_t point =
+            program ? static_cast<std::uint32_t>(tau / program->spline.dt()) : 0;
+        return enterFault("torch: arc lost at point %u of %zu (path time %.3f s)", point,
+                          program ? program->point_count : size_t{0}, tau);
+    }
+    arcWasOk = torchCommand && torchFb.arc_ok;
+}
+
+void MotionEngine::Impl::track() {
+    if (!runActive || (phase != RunPhase::Cut && phase != RunPhase::Finish)) return;
+    if (state != EngineState::Running && state != EngineState::Paused) return;
+    const JointVector actual = actualPositions();
+    // The torque read now was applied after the previous sample (simulateCut's order).
+    if (samples > 0)
+        for (int i = 0; i < axisCount(); ++i)
+            stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
+    stats.add(setpoint, actual);
+    if (tau >= program->cruise_from_s && tau <= program->cruise_to_s) cruise.add(setpoint, actual);
+    if (pathDone && samples >= minRunSteps) phase = RunPhase::Close;
+    ++samples;
+}
+
+void MotionEngine::Impl::writeDevices() {
+    for (int i = 0; i < kAxisCount; ++i)
+        if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->write(setpoint[i]);
+    if (dev.torch && torchCommand != torchWritten) {
+        dev.torch->setOn(torchCommand);
+        torchWritten = torchCommand;
+    }
+}
+
+void MotionEngine::Impl::publishTelemetry() {
+    if (cfg.telemetry_every_n_cycles > 1 && cycle % cfg.telemetry_every_n_cycles != 0) return;
+    TelemetrySample t;
+    t.time_s = now;
+    t.state = state;
+    t.setpoint = setpoint;
+    t.actual = actualPositions();
+    t.error = t.setpoint - t.actual;
+    if (program && program->tip_model)
+        t.cartesian_error_mm =
+            program->tip_model->tip(t.actual) - program->tip_model->tip(t.setpoint);
+    if (program && (state == EngineState::Running || state == EngineState::Paused ||
+                    state == EngineState::Completed)) {
+        const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
+                            phase == RunPhase::Close || state == EngineState::Completed;
+        const double pathT = onPath ? std::min(tau, program->cut_time_s) : 0;
+        t.progress = program->cut_time_s > 0 ? pathT / program->cut_time_s : 0;
+        t.point_count = static_cast<std::uint32_t>(program->point_count);
+        t.point_index = static_cast<std::uint32_t>(std::min<double>(
+            pathT / program->spline.dt(), static_cast<double>(program->point_count)));
+        t.elapsed_s = runActive || state == EngineState::Completed ? now - cutStartTime : 0;
+        const double r = rate > 0 ? rate : overrideTarget;
+        t.remaining_s = (program->cut_time_s - pathT) / r;
+    }
+    t.override_fraction = overrideTarget;
+    for (int i = 0; i < kAxisCount; ++i)
+        t.drive_states[static_cast<size_t>(i)] =
+            axisPresent(i) ? fb[static_cast<size_t>(i)].state : DriveState::Disabled;
+    t.torch_on = torchFb.on;
+    t.arc_ok = torchFb.arc_ok;
+    t.homed = homed;
+    if (!telemetry.push(t)) telemetryDropped.fetch_add(1, std::memory_order_relaxed);
+}
+
+// Path time: tau advances by rate * T. While the rate is steady tau is computed from an
+// anchor (tau0 + rate * n * T) so no rounding accumulates; at rate 1 from 0 it is n * T,
+// exactly the offline simulation's sample times.
+void MotionEngine::Impl::stepPathTime() {
+    if (traj == TrajectoryKind::Hold) return;
+    double target = traj == TrajectoryKind::Path ? overrideTarget : 1.0;
+    if (holding || stopping != StopReason::None) target = 0;
+    if (traj == TrajectoryKind::Path && phase == RunPhase::Ignite) target = 0; // wait for the arc
+    const double step = T / cfg.spec.feed_hold_decel_s;
+    const double old = rate;
+    rate = rate < target ? std::min(target, rate + step) : std::max(target, rate - step);
+    if (rate != old) {
+        tau += 0.5 * (old + rate) * T;
+        anchorTau = tau;
+        anchorCycles = 0;
+    } else {
+        ++anchorCycles;
+        tau = anchorTau + rate * (static_cast<double>(anchorCycles) * T);
+    }
+    const double end = trajectoryDuration();
+    if (tau > end) tau = end;
+}
+
+} // namespace cutcell

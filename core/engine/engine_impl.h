@@ -1,0 +1,177 @@
+#pragma once
+// Private to the motion engine: the state shared by its public API (any thread), its cycle
+// (engine thread) and its run logger (logger thread). Members are grouped by the thread that
+// writes them; cross-thread members are atomics or lock-free rings.
+#include "core/engine/cycle_clock.h"
+#include "core/engine/joint_move.h"
+#include "core/engine/motion_engine.h"
+#include "core/engine/mpsc_queue.h"
+#include "core/engine/spsc_ring.h"
+#include "core/sim/tracking_stats.h"
+
+#include <atomic>
+#include <cstdarg>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace cutcell {
+
+struct EngineCommand {
+    CommandType type = CommandType::Reset;
+    int axis = 0;
+    double value = 0;
+    const MotionProgram* program = nullptr; // kept alive by Impl::held_ (Load)
+    std::uint64_t seq = 0;                  // Load: the program's hand-over number
+};
+
+// What the engine is moving along (all time-scaled by the path rate).
+enum class TrajectoryKind : std::uint8_t { Hold, Move, Path };
+// Steps of a Running job.
+enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Cut, Finish, Close };
+// Why the path rate is being brought to zero.
+enum class StopReason : std::uint8_t { None, Abort, EmergencyCat1, FaultCat1 };
+
+// The figures of the last finished run, published by the cycle (double buffer + generation).
+struct RunResult {
+    TrackingReport report;
+    std::array<char, 120> outcome{};
+    std::array<char, 40> method{};
+    std::uint32_t run_id = 0;
+};
+
+struct MotionEngine::Impl {
+    Impl(EngineDevices d, EngineConfig c);
+
+    // ---- immutable after construction
+    EngineDevices dev;
+    EngineConfig cfg;
+    double T;
+
+    // ---- any thread -> engine thread
+    MpscQueue<EngineCommand> commands{256};
+    std::atomic<bool> estopPressed{false};
+    std::atomic<std::int64_t> estopRequestNs{0};
+    std::atomic<std::uint64_t> estopPresses{0};
+    std::uint64_t latchPress = 0; // engine thread: the press that latched the stop
+    CycleTimer timer;
+    std::mutex heldMutex; // never taken by the cycle
+    struct Held {
+        std::uint64_t seq;
+        std::shared_ptr<const MotionProgram> program;
+    };
+    std::vector<Held> held;
+    std::uint64_t nextLoadSeq = 1; // under heldMutex
+    std::atomic<std::uint64_t> processedLoadSeq{0}, currentProgramSeq{0}, runProgramSeq{0};
+
+    // ---- engine thread -> consumers
+    SpscRing<TelemetrySample> telemetry{8192};
+    SpscRing<EngineEvent> events{1024};
+    SpscRing<EngineEvent> logEvents{1024};
+    std::atomic<EngineState> publicState{EngineState::Idle};
+    std::atomic<std::uint64_t> cycles{0}, overruns{0}, telemetryDropped{0}, eventsDropped{0},
+        logDropped{0}, estopsMeasured{0}, missedDeadlines{0};
+    std::atomic<double> lastEstopLatencyUs{0}, workUsMax{0};
+    JitterHistogram jitter;
+    RunResult results[2];
+    std::atomic<std::uint64_t> resultGeneration{0};
+
+    // ---- threads
+    std::thread engineThread, loggerThread;
+    std::atomic<bool> stopRequested{false}, threadRunning{false};
+    std::mutex logMutex;                  // logger side only: one drainer at a time
+    std::unique_ptr<class RunLog> runLog; // under logMutex
+    void loggerDrain();
+    CycleStats snapshot() const; // any thread
+
+    // ---- engine thread only
+    const MotionProgram* program = nullptr;
+    EngineState state = EngineState::Idle;
+    std::uint64_t cycle = 0;
+    double now = 0;
+    std::array<DriveFeedback, kAxisCount> fb{};
+    TorchFeedback torchFb{};
+    bool enabling = false;
+    double enableDeadline = 0;
+    bool homed = false;
+    bool torchCommand = false;
+    double overrideTarget = 1;
+    bool holding = false;
+    StopReason stopping = StopReason::None;
+    bool estopLatched = false; // the request was taken (until Reset)
+    bool estopLatencyPending = false;
+    std::int64_t estopRequestSeen = 0;
+    // trajectory
+    TrajectoryKind traj = TrajectoryKind::Hold;
+    JointMove move;
+    JointVector hold = JointVector::Zero();
+    double tau = 0, rate = 0, anchorTau = 0;
+    std::uint64_t anchorCycles = 0;
+    bool rateChanged = false;
+    JointVector setpoint = JointVector::Zero(), setpointPrev = JointVector::Zero();
+    JointVector setpointVel = JointVector::Zero();
+    // run
+    RunPhase phase = RunPhase::Approach;
+    std::uint32_t runId = 0;
+    double phaseSince = 0, cutStartTime = 0;
+    int settleCount = 0;
+    long samples = 0, minRunSteps = 0;
+    bool pathDone = false;
+    bool runActive = false;
+    bool torchWritten = false;
+    TrackingStats stats{static_cast<const TipModel*>(nullptr)};
+    TrackingStats cruise{static_cast<const TipModel*>(nullptr)};
+    // supervision
+    std::array<double, kAxisCount> lastSensed{}, travelSinceChange{};
+    bool arcWasOk = false;
+
+    // cycle.cpp
+    void runCycle();
+    void readDevices();
+    void checkEmergencyStop();
+    void checkEstopComplete();
+    void superviseDevices();
+    void advance();
+    void stepRunning();
+    void updateRate();
+    void computeSetpoint();
+    void superviseEnabling();
+    void track();
+    void writeDevices();
+    void publishTelemetry();
+    void stepPathTime();
+
+    // commands.cpp
+    void processCommands();
+    void handle(const EngineCommand& c);
+    void refuse(CommandType c, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
+    void enterEmergencyStop();
+    void enterFault(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+    void stopDevices(StopCategory category, StopReason reason);
+    void disableAll();
+    void endRun(const char* outcome);
+    void beginMove(const JointVector& target, EngineState moveState);
+    void beginCut();
+
+    // helpers
+    int axisCount() const { return program ? program->axis_count : 0; }
+    bool axisPresent(int i) const { return dev.axes[static_cast<size_t>(i)] != nullptr; }
+    double speedLimit(int i) const;
+    double followingLimit(int i) const;
+    double displayValue(int i, double v) const; // deg or mm
+    const char* unit(int i) const;
+    const char* axisName(int i) const;
+    void setState(EngineState s, EventKind kind, const char* fmt, ...)
+        __attribute__((format(printf, 4, 5)));
+    void emit(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt,
+              va_list ap);
+    void emitf(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt, ...)
+        __attribute__((format(printf, 6, 7)));
+    void note(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+    JointSample evaluate(double t) const;
+    double trajectoryDuration() const;
+    void holdAt(const JointVector& q);
+    JointVector actualPositions() const;
+};
+
+} // namespace cutcell

@@ -1,0 +1,102 @@
+#include "core/engine/run_log.h"
+
+#include "core/job/job_io.h"
+#include "core/json/json.h"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+
+namespace cutcell {
+
+namespace fs = std::filesystem;
+
+RunLog::~RunLog() {
+    if (file_) std::fclose(file_);
+}
+
+void RunLog::openFile(const std::string& path) {
+    if (file_) std::fclose(file_);
+    file_ = std::fopen(path.c_str(), "a");
+}
+
+std::string RunLog::formatEvent(const EngineEvent& e) {
+    char stamp[40] = "";
+    const std::time_t secs = static_cast<std::time_t>(e.wall_ms / 1000);
+    std::tm tm{};
+    gmtime_r(&secs, &tm);
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%S", &tm);
+    const char* sev = e.severity == Severity::Info      ? "info"
+                      : e.severity == Severity::Warning ? "warn"
+                                                        : "ERROR";
+    char line[420];
+    std::snprintf(line, sizeof line, "%s.%03dZ t=%.3f s %-5s %-11s %s -> %s: %s", stamp,
+                  static_cast<int>(e.wall_ms % 1000), e.time_s, sev, toString(e.kind),
+                  toString(e.from), toString(e.to), e.text.data());
+    return line;
+}
+
+void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText) {
+    if (runsDir_.empty()) return;
+    char stamp[32];
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+    fs::path dir = fs::path(runsDir_) / (std::string(stamp) + "-run" + std::to_string(runId));
+    for (int k = 2; fs::exists(dir); ++k)
+        dir = fs::path(runsDir_) /
+              (std::string(stamp) + "-run" + std::to_string(runId) + "-" + std::to_string(k));
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) return;
+    dir_ = dir.string();
+    try {
+        writeFileAtomically((dir / "job.json").string(), jobText);
+    } catch (const std::exception&) {
+        // The events still go to events.log; a missing job.json is visible in the folder.
+    }
+    openFile((dir / "events.log").string());
+    (void)jobName;
+}
+
+void RunLog::event(const EngineEvent& e) {
+    if (runsDir_.empty()) return;
+    if (!file_) {
+        std::error_code ec;
+        fs::create_directories(runsDir_, ec);
+        openFile((fs::path(runsDir_) / "engine.log").string());
+        if (!file_) return;
+    }
+    const std::string line = formatEvent(e);
+    std::fputs(line.c_str(), file_);
+    std::fputc('\n', file_);
+    std::fflush(file_); // nothing is lost if the program dies after this line
+}
+
+void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c) {
+    if (runsDir_.empty() || dir_.empty()) return;
+    json::Object cycle{{"period_s", c.period_s},
+                       {"cycles", static_cast<double>(c.cycles)},
+                       {"overruns", static_cast<double>(c.overruns)},
+                       {"missed_deadlines", static_cast<double>(c.missed_deadlines)},
+                       {"work_us_max", c.work_us_max},
+                       {"jitter_us_p50", c.jitter_us_p50},
+                       {"jitter_us_p99", c.jitter_us_p99},
+                       {"jitter_us_max", c.jitter_us_max},
+                       {"telemetry_dropped", static_cast<double>(c.telemetry_dropped)},
+                       {"events_dropped", static_cast<double>(c.events_dropped)},
+                       {"last_estop_latency_us", c.last_estop_latency_us}};
+    const json::Value doc(
+        json::Object{{"outcome", outcome}, {"tracking", reportToJson(report)}, {"cycle", cycle}});
+    try {
+        writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));
+    } catch (const std::exception&) {
+    }
+    if (file_) {
+        std::fclose(file_);
+        file_ = nullptr;
+    }
+}
+
+} // namespace cutcell

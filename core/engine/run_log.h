@@ -1,0 +1,39 @@
+#pragma once
+// The log of one engine run, under a runs directory:
+//   <runs_dir>/<UTC yyyymmdd-hhmmss>-run<N>/job.json      copy of the job the run executed
+//                                           events.log    one line per event, flushed per line
+//                                           summary.json  outcome, tracking figures, cycle figures
+// Threading contract: used by one non-cycle thread (the engine's logger thread, or the
+// caller of MotionEngine::flushRunLog()); it does file I/O and may allocate.
+#include "core/engine/engine_types.h"
+#include "core/sim/tracking_stats.h"
+
+#include <cstdio>
+#include <string>
+
+namespace cutcell {
+
+class RunLog {
+  public:
+    explicit RunLog(std::string runsDir) : runsDir_(std::move(runsDir)) {}
+    ~RunLog();
+    RunLog(const RunLog&) = delete;
+    RunLog& operator=(const RunLog&) = delete;
+
+    // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
+    void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
+    void event(const EngineEvent& e);
+    // Writes summary.json (atomically) and closes the run.
+    void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle);
+    std::string runDirectory() const { return dir_; }
+    // One event as a log line (also used by the CLI to print events).
+    static std::string formatEvent(const EngineEvent& e);
+
+  private:
+    void openFile(const std::string& path);
+    std::string runsDir_;
+    std::string dir_;
+    std::FILE* file_ = nullptr;
+};
+
+} // namespace cutcell

@@ -1,0 +1,148 @@
+// The engine's motion: a fast-clock run reproduces the offline simulation; feed hold, resume
+// and override time-scale the path with no jump in set-point or velocity.
+#include "engine_fixture.h"
+
+#include "core/sim/cut_simulation.h"
+
+#include <cmath>
+
+namespace cutcell::test {
+namespace {
+
+TEST(EngineMotion, FastClockRunOfTheDefaultJobGivesTheSameFiguresAsSimulate) {
+    SimCell cell;
+    cell.toCompleted();
+    TrackingReport engineReport;
+    std::string outcome;
+    ASSERT_TRUE(cell.engine().lastRunReport(engineReport, &outcome));
+    EXPECT_EQ(outcome, "completed");
+    const TrackingReport sim = simulateCut(testJob(), testPlan());
+    // The same computation in the same order: equal to rounding.
+    constexpr double tol = 1e-9;
+    EXPECT_EQ(engineReport.steps, sim.steps);
+    EXPECT_NEAR(engineReport.simulated_s, sim.simulated_s, tol);
+    EXPECT_NEAR(engineReport.max_torque_fraction, sim.max_torque_fraction, tol);
+    for (size_t i = 0; i < kAxisCount; ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_NEAR(engineReport.joints[i].max_abs_deg, sim.joints[i].max_abs_deg, tol);
+        EXPECT_NEAR(engineReport.joints[i].rms_deg, sim.joints[i].rms_deg, tol);
+        EXPECT_NEAR(engineReport.cruise_joints[i].max_abs_deg, sim.cruise_joints[i].max_abs_deg,
+                    tol);
+        EXPECT_NEAR(engineReport.cruise_joints[i].rms_deg, sim.cruise_joints[i].rms_deg, tol);
+    }
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(engineReport.cartesian_max_abs_mm[k], sim.cartesian_max_abs_mm[k], tol);
+        EXPECT_NEAR(engineReport.cartesian_min_mm[k], sim.cartesian_min_mm[k], tol);
+        EXPECT_NEAR(engineReport.cartesian_max_mm[k], sim.cartesian_max_mm[k], tol);
+        EXPECT_NEAR(engineReport.on_pipe_max_abs_mm[k], sim.on_pipe_max_abs_mm[k], tol);
+        EXPECT_NEAR(engineReport.cruise_cartesian_max_abs_mm[k], sim.cruise_cartesian_max_abs_mm[k],
+                    tol);
+    }
+    // Not vacuous: the arm really tracks with an error.
+    EXPECT_GT(sim.joints[1].max_abs_deg, 0);
+}
+
+// Largest |q'| and |q''| of the program's spline (dense sampling).
+void splineBounds(double& vmax, double& amax) {
+    const auto& s = testProgram()->spline;
+    vmax = amax = 0;
+    for (double t = 0; t <= s.duration(); t += 1e-4) {
+        const JointSample x = s.evaluate(t);
+        vmax = std::max(vmax, x.qd.cwiseAbs().maxCoeff());
+        amax = std::max(amax, x.qdd.cwiseAbs().maxCoeff());
+    }
+}
+
+// Every per-cycle step of the set-point stays within the path's speed at the highest rate,
+// and every change of that step within what the path's acceleration and the rate ramp allow.
+void expectNoJumps(const std::vector<TelemetrySample>& t, double maxRate) {
+    const double T = testJob().sim.period_s;
+    double vmax = 0, amax = 0;
+    splineBounds(vmax, amax);
+    const double rateSlope = 1.0 / testJob().engine.feed_hold_decel_s;
+    const double stepLimit = vmax * maxRate * T * 1.001;
+    const double dStepLimit = (amax * maxRate * maxRate + vmax * rateSlope) * T * T * 1.01 + 1e-15;
+    for (size_t k = 2; k < t.size(); ++k) {
+        const JointVector d1 = t[k].setpoint - t[k - 1].setpoint;
+        const JointVector d0 = t[k - 1].setpoint - t[k - 2].setpoint;
+        ASSERT_LE(d1.cwiseAbs().maxCoeff(), stepLimit) << "set-point jump at sample " << k;
+        ASSERT_LE((d1 - d0).cwiseAbs().maxCoeff(), dStepLimit) << "velocity jump at sample " << k;
+    }
+}
+
+TEST(EngineMotion, FeedHoldStopsOnThePathAndResumeContinuesWithoutAJump) {
+    SimCell cell;
+    cell.toCutting(5.0);
+    cell.keepTelemetry = true;
+    cell.run(200, EngineState::Fault);
+    cell.engine().feedHold();
+    cell.runUntil(EngineState::Paused);
+    const size_t pausedAt = cell.telemetry.size();
+    cell.run(500, EngineState::Fault); // stays paused
+    EXPECT_EQ(cell.engine().state(), EngineState::Paused);
+    const JointVector held = cell.telemetry[pausedAt - 1].setpoint;
+    for (size_t k = pausedAt; k < cell.telemetry.size(); ++k)
+        ASSERT_EQ(cell.telemetry[k].setpoint, held) << "the set-point stays where the hold stopped";
+    // The torch is off while paused (torch_on_during_feed_hold = false in the default job).
+    EXPECT_FALSE(cell.telemetry.back().torch_on);
+    const double progressAtPause = cell.telemetry.back().progress;
+    EXPECT_GT(progressAtPause, 0.1);
+
+    cell.engine().resume();
+    cell.run(3000, EngineState::Fault);
+    EXPECT_EQ(cell.engine().state(), EngineState::Running) << cell.eventText();
+    EXPECT_GT(cell.telemetry.back().progress, progressAtPause);
+    EXPECT_TRUE(cell.telemetry.back().torch_on) << "the torch is lit again before the path moves";
+    expectNoJumps(cell.telemetry, 1.0);
+    // The path restarts from the held point: the first set-point after the pause is within
+    // one cycle's travel of it.
+    EXPECT_NE(cell.eventText().find("Resume at path time"), std::string::npos);
+}
+
+TEST(EngineMotion, OverrideChangesThePathRateSmoothly) {
+    SimCell cell;
+    cell.toCutting(3.0);
+    cell.keepTelemetry = true;
+    cell.engine().setOverride(1.5);
+    cell.run(2000, EngineState::Fault);
+    cell.engine().setOverride(0.1);
+    cell.run(2000, EngineState::Fault);
+    cell.engine().setOverride(1.0);
+    cell.run(2000, EngineState::Fault);
+    EXPECT_EQ(cell.engine().state(), EngineState::Running);
+    expectNoJumps(cell.telemetry, 1.5);
+}
+
+TEST(EngineMotion, OverrideTimeScalesTheCut) {
+    SimCell cell;
+    cell.engine().setOverride(1.5);
+    cell.keepTelemetry = true;
+    cell.toCompleted();
+    // From the first sample on the path to the path's end: cut_time / 1.5 (within a cycle).
+    double first = -1, last = -1;
+    for (const auto& t : cell.telemetry) {
+        if (t.progress > 0 && first < 0) first = t.time_s;
+        if (t.progress >= 1.0 && last < 0 && first >= 0) last = t.time_s;
+    }
+    ASSERT_GE(first, 0);
+    ASSERT_GE(last, 0);
+    const double T = testJob().sim.period_s;
+    EXPECT_NEAR(last - first, testProgram()->cut_time_s / 1.5, 2 * T);
+}
+
+TEST(EngineMotion, AbortStopsAlongThePathAndReturnsToReady) {
+    SimCell cell;
+    cell.toCutting(4.0);
+    cell.keepTelemetry = true;
+    cell.engine().abort();
+    cell.runUntil(EngineState::Ready);
+    expectNoJumps(cell.telemetry, 1.0);
+    EXPECT_FALSE(cell.torch().isOn());
+    TrackingReport r;
+    std::string outcome;
+    ASSERT_TRUE(cell.engine().lastRunReport(r, &outcome));
+    EXPECT_EQ(outcome, "aborted");
+}
+
+} // namespace
+} // namespace cutcell::test
