@@ -219,8 +219,7 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
 
 namespace cutcell::cli {
 
-int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
-    CanRunOptions o;
+int parseCanOptions(const Args& args, CanRunOptions& o) {
     o.plugin = option(args, "--can-plugin");
     o.interface = option(args, "--can-interface");
     o.in_process_simulator = flag(args, "--drivesim");
@@ -241,6 +240,22 @@ int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
                      clock.c_str());
         return kUsage;
     }
+    return kOk;
+}
+
+int usesCanOpen(const Args& args, const Job& job) {
+    const std::string devices = option(args, "--devices");
+    if (devices.empty()) return job.devices.kind == DeviceKind::CanOpen ? 1 : 0;
+    if (devices == "canopen") return 1;
+    if (devices == "simulated") return 0;
+    std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
+                 devices.c_str());
+    return -1;
+}
+
+int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
+    CanRunOptions o;
+    if (const int code = parseCanOptions(args, o)) return code;
     const CanRunResult r = runCutOverCan(job, plan, o);
     if (!r.ok) {
         std::fprintf(stderr, "cutcell-cli simulate over CANopen: %s\n", r.error.c_str());

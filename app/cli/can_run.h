@@ -13,6 +13,7 @@
 #include "core/trajectory/cut_planner.h"
 
 #include <string>
+#include <vector>
 
 namespace cutcell::cli {
 
@@ -35,5 +36,12 @@ struct CanRunResult {
 };
 
 CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOptions& options);
+
+// --can-plugin, --can-interface, --period-ms, --clock, --drivesim into options; 0 or the exit
+// code after printing what is wrong (value, unit, limit).
+int parseCanOptions(const std::vector<std::string>& args, CanRunOptions& options);
+// Whether a command runs over CANopen: --devices canopen|simulated, else the job's choice;
+// -1 after printing the problem for a bad --devices value.
+int usesCanOpen(const std::vector<std::string>& args, const Job& job);
 
 } // namespace cutcell::cli

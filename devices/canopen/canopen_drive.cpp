@@ -9,10 +9,10 @@
 namespace cutcell::canopen {
 
 CanOpenDrive::CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShared& shared,
-                           int wakeFd)
+                           int wakeFd, int syncFd)
     : node_(node),
       countsPerAxisUnit_(linear ? countsPerUnit : countsPerUnit * 180.0 / std::numbers::pi),
-      shared_(shared), wakeFd_(wakeFd) {}
+      shared_(shared), wakeFd_(wakeFd), syncFd_(syncFd) {}
 
 void CanOpenDrive::command(DriveGoal goal, bool urgent) {
     shared_.goal.store(static_cast<std::uint8_t>(goal), std::memory_order_release);
@@ -52,15 +52,15 @@ DriveFeedback CanOpenDrive::read(double) {
     } else if (!configured) {
         fb.state =
             goal == DriveGoal::OperationEnabled ? DriveState::Enabling : DriveState::Disabled;
-    } else if (s == Cia402State::OperationEnabled && goal == DriveGoal::OperationEnabled) {
+    } else if (s == Cia402State::OperationEnabled) {
+        // Whatever was asked, the drive has torque until its statusword says otherwise.
         fb.state = DriveState::Enabled;
         seenEpoch_ = shared_.enable_epoch.load(std::memory_order_acquire);
-    } else if (s == Cia402State::QuickStopActive || (goal == DriveGoal::QuickStop && torqueOn(s))) {
+    } else if (s == Cia402State::QuickStopActive) {
         fb.state = DriveState::QuickStop;
-    } else if (goal == DriveGoal::OperationEnabled) {
-        fb.state = DriveState::Enabling;
     } else {
-        fb.state = DriveState::Disabled;
+        fb.state =
+            goal == DriveGoal::OperationEnabled ? DriveState::Enabling : DriveState::Disabled;
     }
     // Stale when the process data stopped (3 cycles' worth is judged by the master, which
     // clears configured on a lost bus; here: no TPDO for 100 ms).
@@ -75,6 +75,11 @@ void CanOpenDrive::write(double targetPosition) {
         std::clamp(std::round(targetPosition * countsPerAxisUnit_), -2147483648.0, 2147483647.0);
     shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
                                 std::memory_order_release);
+    if (syncFd_ >= 0) {
+        const std::uint64_t one = 1;
+        [[maybe_unused]] const ssize_t n =
+            ::write(syncFd_, &one, sizeof one); // eventfd: never blocks
+    }
 }
 
 } // namespace cutcell::canopen

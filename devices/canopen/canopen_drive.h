@@ -16,7 +16,10 @@ class CanOpenMaster;
 
 class CanOpenDrive final : public AxisDrive {
   public:
-    CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShared& shared, int wakeFd);
+    // syncFd >= 0: write() also posts one cycle to the master (the last drive of a
+    // SyncSource::LastDriveWrite master).
+    CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShared& shared, int wakeFd,
+                 int syncFd = -1);
 
     void activate() override;
     void deactivate() override;
@@ -35,6 +38,7 @@ class CanOpenDrive final : public AxisDrive {
     double countsPerAxisUnit_; // counts per rad (rotary) or per mm (linear)
     NodeShared& shared_;
     int wakeFd_;
+    int syncFd_;
     std::uint32_t seenEpoch_ = 0; // enable epoch last reported to the engine as Enabled
 };
 

@@ -49,10 +49,13 @@ CanOpenMaster::CanOpenMaster(CanOpenMasterConfig config) : impl_(std::make_uniqu
     m.rt.resize(m.cfg.nodes.size());
     m.faultText.resize(m.cfg.nodes.size());
     m.emcyText.resize(m.cfg.nodes.size());
-    for (const MasterNodeConfig& n : m.cfg.nodes) {
+    for (size_t i = 0; i < m.cfg.nodes.size(); ++i) {
+        const MasterNodeConfig& n = m.cfg.nodes[i];
+        const bool last = i + 1 == m.cfg.nodes.size();
         m.shared.emplace_back();
-        m.drives.push_back(std::make_unique<CanOpenDrive>(n.node, n.counts_per_unit, n.linear,
-                                                          m.shared.back(), m.wakeFd));
+        m.drives.push_back(std::make_unique<CanOpenDrive>(
+            n.node, n.counts_per_unit, n.linear, m.shared.back(), m.wakeFd,
+            last && m.cfg.sync == SyncSource::LastDriveWrite ? m.syncFd : -1));
     }
     m.heartbeatTimeoutNs = static_cast<std::int64_t>(m.cfg.heartbeat_timeout_s * 1e9);
     m.heartbeatProducerMs =

@@ -11,8 +11,10 @@
 // SYNC source (a choice, see the note in canopen_master.cpp):
 //  - SyncSource::Internal: a pacing thread with absolute-time sleeps (clock_nanosleep) wakes
 //    the master thread each period through an eventfd; measured jitter in stats();
-//  - SyncSource::External: the caller (the engine or a lock-step runner) calls sync() once per
-//    cycle; the SYNC then follows the engine's own clock.
+//  - SyncSource::External: the caller (a lock-step runner) calls sync() once per cycle;
+//  - SyncSource::LastDriveWrite: the write() of the last drive posts the cycle, so the SYNC
+//    follows the engine's own real-time clock right after it wrote every set-point (the
+//    engine writes every axis once per cycle). Use this with the motion engine.
 //
 // Threading contract:
 //  - The master runs on its own QThread with its own event loop; the QCanBusDevice lives and
@@ -43,7 +45,7 @@ struct Job;
 
 namespace cutcell::canopen {
 
-enum class SyncSource : std::uint8_t { Internal, External };
+enum class SyncSource : std::uint8_t { Internal, External, LastDriveWrite };
 
 struct MasterNodeConfig {
     int node = 1;
