@@ -183,6 +183,10 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
                                 : "axis " + std::to_string(i) + " left Operation Enabled");
         const JointVector ref = plan.spline.evaluate(t).q;
         stats.add(ref, q);
+        // The torque in this TPDO was applied over the cycle before it (simulateCut's order).
+        if (k > 0)
+            for (int i = 0; i < kAxisCount; ++i)
+                stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
         if (t >= ramp && t <= plan.cut_time_s - ramp) cruise.add(ref, q);
         if (!cycler.step(plan.spline.evaluate(t + 2 * T).q, r.error)) return fail(r.error);
     }

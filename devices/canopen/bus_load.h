@@ -15,7 +15,7 @@ struct BusLoadInput {
     double bitrate_bps = 1e6;
     int nodes = 6;
     int rpdo_bytes = 6;              // per node per cycle
-    int tpdo_bytes = 6;              // per node per cycle
+    int tpdo_bytes = 8;              // per node per cycle
     double heartbeat_period_s = 0.1; // each node's heartbeat (1 byte), 0 = none
     double limit = 0.8;              // highest admissible load
 };

@@ -45,6 +45,7 @@ DriveFeedback CanOpenDrive::read(double) {
     const bool configured = shared_.configured.load(std::memory_order_acquire);
     fb.position = shared_.actual_counts.load(std::memory_order_acquire) / countsPerAxisUnit_;
     fb.velocity = shared_.velocity_counts_s.load(std::memory_order_acquire) / countsPerAxisUnit_;
+    fb.torque_ratio = shared_.torque_permille.load(std::memory_order_relaxed) / 1000.0;
     if (masterFault != 0 || s == Cia402State::Fault || s == Cia402State::FaultReactionActive) {
         fb.state = DriveState::Fault;
         fb.fault_code =

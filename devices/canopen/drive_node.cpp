@@ -303,7 +303,7 @@ void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
                 u = 0;
             }
         }
-        plant_.step(u);
+        lastTorque_ = plant_.step(u);
     }
 }
 

@@ -107,6 +107,7 @@ class DriveNode {
     double previousTargetRad_ = 0;  // target at the start of the running cycle
     double quickStopVelocity_ = 0;  // rad/s of the quick-stop ramp
     bool followingError_ = false;
+    double lastTorque_ = 0; // N m applied over the last loop step
     bool torqueLost_ = false;
     std::uint32_t cyclePeriodUs_ = 0;
     std::uint16_t heartbeatMs_ = 0;

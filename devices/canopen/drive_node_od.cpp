@@ -4,6 +4,8 @@
 #include "devices/canopen/emcy.h"
 #include "devices/canopen/pdo.h"
 
+#include <cmath>
+
 namespace cutcell::canopen {
 namespace {
 
@@ -24,7 +26,7 @@ constexpr Mappable kMappable[] = {
     {od::kControlword, 16, true},     {od::kTargetPosition, 32, true},
     {od::kModesOfOperation, 8, true}, {od::kStatusword, 16, false},
     {od::kPositionActual, 32, false}, {od::kModesDisplay, 8, false},
-    {od::kErrorCode, 16, false},
+    {od::kErrorCode, 16, false},      {od::kTorqueActual, 16, false},
 };
 
 bool mappable(std::uint32_t entry, bool rx) {
@@ -94,6 +96,13 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
         return one(static_cast<std::uint32_t>(targetCounts_), 4);
     case od::kQuickStopDecel:
         return one(quickStopDecel_, 4);
+    case od::kMotorRatedTorque:
+        return one(static_cast<std::uint32_t>(std::lround(cfg_.plant.torque_limit_nm * 1000)), 4);
+    case od::kTorqueActual: {
+        const double limit = cfg_.plant.torque_limit_nm;
+        const long permille = limit > 0 ? std::lround(lastTorque_ / limit * 1000) : 0;
+        return one(static_cast<std::uint16_t>(static_cast<std::int16_t>(permille)), 2);
+    }
     default:
         break;
     }
@@ -144,6 +153,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
     case od::kStatusword:
     case od::kModesDisplay:
     case od::kPositionActual:
+    case od::kMotorRatedTorque:
+    case od::kTorqueActual:
         if ((abort = read(a, v, size))) return abort;
         return abort_code::kReadOnly;
     case od::kCommCyclePeriod:

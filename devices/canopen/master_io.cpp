@@ -265,6 +265,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                                   std::memory_order_relaxed);
         r.previous_actual = t.actual_counts;
         s.actual_counts.store(t.actual_counts, std::memory_order_release);
+        s.torque_permille.store(t.torque_permille, std::memory_order_relaxed);
         s.tpdo_ns.store(now, std::memory_order_release);
         s.statusword.store(t.statusword, std::memory_order_release);
         s.tpdo_count.fetch_add(1, std::memory_order_relaxed);

@@ -23,7 +23,8 @@ struct NodeShared {
     std::atomic<std::uint16_t> statusword{0};
     std::atomic<std::int32_t> actual_counts{0};
     std::atomic<double> velocity_counts_s{0};
-    std::atomic<std::int64_t> tpdo_ns{0}; // steady clock of the last TPDO
+    std::atomic<std::int16_t> torque_permille{0}; // 0x6077
+    std::atomic<std::int64_t> tpdo_ns{0};         // steady clock of the last TPDO
     std::atomic<std::uint64_t> tpdo_count{0};
     std::atomic<std::uint8_t> nmt{static_cast<std::uint8_t>(NmtState::Unknown)};
     std::atomic<std::int64_t> heartbeat_ns{0};  // steady clock of the last heartbeat

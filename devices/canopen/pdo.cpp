@@ -28,7 +28,8 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
     pdo(static_cast<std::uint16_t>(od::kRpdoComm + 1), static_cast<std::uint16_t>(od::kRpdoMap + 1),
         cob::kRpdo2 + n, kTransmissionEvent, {mapEntry(od::kControlword, 0, 16)});
     pdo(od::kTpdoComm, od::kTpdoMap, cob::kTpdo1 + n, kTransmissionSync,
-        {mapEntry(od::kStatusword, 0, 16), mapEntry(od::kPositionActual, 0, 32)});
+        {mapEntry(od::kStatusword, 0, 16), mapEntry(od::kPositionActual, 0, 32),
+         mapEntry(od::kTorqueActual, 0, 16)});
     add(od::kProducerHeartbeat, 0, c.heartbeat_ms, 2);
     return w;
 }
@@ -56,6 +57,7 @@ CanFrame encodeTpdo1(int node, const Tpdo1& p) {
     f.len = kTpdo1Bytes;
     putU16(f, 0, p.statusword);
     putU32(f, 2, static_cast<std::uint32_t>(p.actual_counts));
+    putU16(f, 6, static_cast<std::uint16_t>(p.torque_permille));
     return f;
 }
 
@@ -76,6 +78,7 @@ bool decodeTpdo1(const CanFrame& f, Tpdo1& out) {
     if (cob::functionOf(f.id) != cob::kTpdo1 || f.len != kTpdo1Bytes) return false;
     out.statusword = getU16(f, 0);
     out.actual_counts = static_cast<std::int32_t>(getU32(f, 2));
+    out.torque_permille = static_cast<std::int16_t>(getU16(f, 6));
     return true;
 }
 

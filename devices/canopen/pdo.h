@@ -4,7 +4,8 @@
 //   RPDO1 (0x200 + node, synchronous): controlword 0x6040 + target position 0x607A
 //   RPDO2 (0x300 + node, asynchronous): controlword 0x6040 alone - the emergency-stop channel,
 //         acted on at once instead of at the next SYNC
-//   TPDO1 (0x180 + node, synchronous): statusword 0x6041 + position actual value 0x6064
+//   TPDO1 (0x180 + node, synchronous): statusword 0x6041 + position actual value 0x6064 +
+//         torque actual value 0x6077 (per mille of the rated torque 0x6076)
 #include "devices/canopen/can_frame.h"
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/sdo.h"
@@ -33,6 +34,8 @@ inline constexpr std::uint16_t kModesDisplay = 0x6061;
 inline constexpr std::uint16_t kPositionActual = 0x6064;
 inline constexpr std::uint16_t kFollowingErrorWindow = 0x6065; // counts
 inline constexpr std::uint16_t kTargetPosition = 0x607A;
+inline constexpr std::uint16_t kMotorRatedTorque = 0x6076;     // mN m
+inline constexpr std::uint16_t kTorqueActual = 0x6077;         // per mille of 0x6076
 inline constexpr std::uint16_t kQuickStopDecel = 0x6085;       // counts/s^2
 inline constexpr std::uint32_t kDeviceTypeCia402 = 0x00020192; // profile 402, servo drive
 } // namespace od
@@ -70,10 +73,11 @@ struct Rpdo1 {
 struct Tpdo1 {
     std::uint16_t statusword = 0;
     std::int32_t actual_counts = 0;
+    std::int16_t torque_permille = 0;
 };
 inline constexpr int kRpdo1Bytes = 6;
 inline constexpr int kRpdo2Bytes = 2;
-inline constexpr int kTpdo1Bytes = 6;
+inline constexpr int kTpdo1Bytes = 8;
 
 CanFrame encodeRpdo1(int node, const Rpdo1& p);
 CanFrame encodeRpdo2(int node, std::uint16_t controlword);

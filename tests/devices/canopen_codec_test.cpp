@@ -248,7 +248,8 @@ TEST(Pdo, ProcessDataRoundTrip) {
         EXPECT_EQ(r.controlword, 0x000F);
         EXPECT_EQ(r.target_counts, target);
         Tpdo1 t;
-        ASSERT_TRUE(decodeTpdo1(encodeTpdo1(2, {0x0627, target}), t));
+        ASSERT_TRUE(decodeTpdo1(encodeTpdo1(2, {0x0627, target, -1000}), t));
+        EXPECT_EQ(t.torque_permille, -1000);
         EXPECT_EQ(t.statusword, 0x0627);
         EXPECT_EQ(t.actual_counts, target);
     }
