@@ -7,9 +7,9 @@
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
 
+#include "qt_app.h"
 #include <QCanBus>
 #include <QCanBusDevice>
-#include <QCoreApplication>
 #include <QThread>
 
 #include <algorithm>
@@ -141,11 +141,7 @@ double percentile(std::vector<double> v, double p) {
 } // namespace
 
 void benchCan(json::Object& out, bool quick) {
-    int argc = 1;
-    static char name[] = "cutcell-cli";
-    char* argv[] = {name, nullptr};
-    std::unique_ptr<QCoreApplication> app;
-    if (!QCoreApplication::instance()) app = std::make_unique<QCoreApplication>(argc, argv);
+    const auto app = ensureQCoreApplication();
 
     Job job = defaultJob();
     const QString interface =

@@ -4,7 +4,7 @@
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/engine_tuning.h"
 
-#include <QCoreApplication>
+#include "qt_app.h"
 
 #include <chrono>
 #include <thread>
@@ -22,10 +22,7 @@ CanEngineDevices::~CanEngineDevices() {
 }
 
 bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, std::string* error) {
-    static int argc = 1;
-    static char name[] = "cutcell-cli";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance()) app_ = std::make_unique<QCoreApplication>(argc, argv);
+    if (!app_) app_ = ensureQCoreApplication();
     period_ = o.period_s > 0 ? o.period_s : job.sim.period_s;
     CanOpenMasterConfig mc = masterConfigFromJob(job, period_, kAxisCount);
     if (!o.plugin.empty()) mc.plugin = QString::fromStdString(o.plugin);

@@ -3,7 +3,7 @@
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 
-#include <QCoreApplication>
+#include "qt_app.h"
 
 #include <chrono>
 #include <cmath>
@@ -85,11 +85,7 @@ std::string faultText(CanOpenMaster& m, int axis, const DriveFeedback& fb) {
 CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOptions& o) {
     CanRunResult r;
     const auto t0 = Clock::now();
-    int argc = 1;
-    static char name[] = "cutcell-cli";
-    char* argv[] = {name, nullptr};
-    std::unique_ptr<QCoreApplication> app;
-    if (!QCoreApplication::instance()) app = std::make_unique<QCoreApplication>(argc, argv);
+    const auto app = ensureQCoreApplication();
 
     const double T = o.period_s > 0 ? o.period_s : job.sim.period_s;
     CanOpenMasterConfig mc = masterConfigFromJob(job, T, kAxisCount);

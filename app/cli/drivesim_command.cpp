@@ -7,7 +7,7 @@
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/emcy.h"
 
-#include <QCoreApplication>
+#include "qt_app.h"
 
 #include <algorithm>
 #include <csignal>
@@ -131,10 +131,7 @@ int runDriveSim(const Args& args) {
     sigaddset(&stopSignals, SIGTERM);
     pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
 
-    int argc = 1;
-    static char name[] = "cutcell-cli";
-    char* argv[] = {name, nullptr};
-    QCoreApplication app(argc, argv);
+    const auto app = ensureQCoreApplication();
     DriveSimulatorConfig config;
     if (const std::string p = option(args, "--plugin"); !p.empty())
         config.plugin = QString::fromStdString(p);
