@@ -183,6 +183,35 @@ class CanOpenCliTest : public QObject {
         stop(sim2);
     }
 
+    void engineRunOverCanCompletes() {
+        // cutcell-cli run with the job's devices switched to CANopen by the command line; a
+        // shorter cut (15 mm/s) at a 10 ms cycle keeps the test short and the margins wide.
+        QFile in(job_);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QByteArray text = in.readAll();
+        text.replace("\"speed_mm_s\": 4.397", "\"speed_mm_s\": 15");
+        text.replace("\"duration_s\": 30", "\"duration_s\": 1");
+        const QString fast = dir_.filePath("fast.json");
+        QFile f(fast);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+        f.close();
+        QProcess sim;
+        QVERIFY(startDriveSim(sim));
+        QProcess run;
+        run.start(cli_, {"run", fast, "--devices", "canopen", "--can-plugin", "virtualcan",
+                         "--can-interface", interface_, "--period-ms", "10", "--runs",
+                         dir_.filePath("runs"), "--quiet"});
+        run.waitForFinished(120000);
+        stop(sim);
+        const QByteArray err = run.readAllStandardError();
+        QVERIFY2(run.exitCode() == 0, err.constData());
+        QVERIFY2(err.contains("completed"), err.constData());
+        const QJsonArray joints =
+            QJsonDocument::fromJson(run.readAllStandardOutput()).object()["joints"].toArray();
+        QCOMPARE(joints.size(), 6);
+    }
+
     void tooShortCycleIsRefusedWithFigures() {
         QByteArray out, err;
         QProcess p;
