@@ -70,6 +70,7 @@ int runValidate(const Args& args) {
     Job job;
     int code = kOk;
     if (!loadJob(args, {}, job, &code)) return code;
+    if (job.machine == "profile_cutter_2axis") return runProfileValidate(job);
     const CutPlan plan = planCut(job);
     std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n", job.name.c_str(),
                 toString(job.method), toString(job.cut.target), plan.length_mm, job.cut.speed_mm_s,
@@ -92,6 +93,7 @@ int runPlan(const Args& args) {
         std::fprintf(stderr, "cutcell-cli plan: --out DIR is required\n");
         return kUsage;
     }
+    if (job.machine == "profile_cutter_2axis") return runProfilePlan(job, out);
     const CutPlan plan = planCut(job);
     if (!plan.reachable) {
         printUnreachable(plan);
@@ -118,6 +120,11 @@ int runSimulate(const Args& args) {
     const std::vector<std::string> valueOptions{"--report",        "--method",    "--devices", "--can-plugin",
                                                 "--can-interface", "--period-ms", "--clock"};
     if (!loadJob(args, valueOptions, job, &code)) return code;
+    if (job.machine != "pipe_robot_6axis") {
+        std::fprintf(stderr, "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
+                             "runs in the engine: cutcell-cli run JOB\n", job.machine.c_str());
+        return kUsage;
+    }
     const std::string method = option(args, "--method");
     if (method == "static_pipe") job.method = CutMethod::StaticPipe;
     else if (method == "rotating_pipe") job.method = CutMethod::RotatingPipe;

@@ -13,6 +13,9 @@ usage:
   cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
   cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
   cutcell-cli bench [--json] [--quick]      measure speed figures
+  cutcell-cli export JOB [--gcode FILE] [--template-svg FILE] [--template-pdf FILE] [--path-csv FILE]
+                                            profile cutter G-code (LinuxCNC X/A), 1:1 cutting
+                                            template, path with stepper pulses
   cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
                                             run the job through the motion engine on
                                             simulated drives; writes a run log
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
     if (cmd == "plan") return runPlan(args);
     if (cmd == "simulate") return runSimulate(args);
     if (cmd == "bench") return runBench(args);
+    if (cmd == "export") return runExport(args);
 #ifdef CUTCELL_HAVE_DEVICES
     if (cmd == "run") return runRun(args);
     if (cmd == "drivesim") return runDriveSim(args);

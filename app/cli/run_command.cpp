@@ -86,6 +86,7 @@ int runRun(const Args& args) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
         return kInvalidJob;
     }
+    if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, args);
     bool realtime = flag(args, "--realtime");
     const bool quiet = flag(args, "--quiet");
     if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");

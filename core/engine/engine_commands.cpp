@@ -141,6 +141,7 @@ void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
 void MotionEngine::Impl::endRun(const char* outcome) {
     if (!runActive) return;
     runActive = false;
+    runEndTime = now;
     const std::uint64_t g = resultGeneration.load(std::memory_order_relaxed);
     RunResult& r = results[(g + 1) % 2];
     stats.fill(r.report);
@@ -216,6 +217,7 @@ void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveSt
 void MotionEngine::Impl::beginCut() {
     ++runId;
     runActive = true;
+    runStartTime = now;
     runProgramSeq.store(currentProgramSeq.load(std::memory_order_relaxed),
                         std::memory_order_release);
     samples = 0;

@@ -317,12 +317,14 @@ void MotionEngine::Impl::publishTelemetry() {
                     state == EngineState::Completed)) {
         const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
                             phase == RunPhase::Close || state == EngineState::Completed;
-        const double pathT = onPath ? std::min(tau, program->cut_time_s) : 0;
+        const double pathT = state == EngineState::Completed ? program->cut_time_s
+                             : onPath                        ? std::min(tau, program->cut_time_s)
+                                                             : 0;
         t.progress = program->cut_time_s > 0 ? pathT / program->cut_time_s : 0;
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(
             pathT / program->spline.dt(), static_cast<double>(program->point_count)));
-        t.elapsed_s = runActive || state == EngineState::Completed ? now - cutStartTime : 0;
+        t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime; // since Start
         const double r = rate > 0 ? rate : overrideTarget;
         t.remaining_s = (program->cut_time_s - pathT) / r;
     }

@@ -113,7 +113,7 @@ struct MotionEngine::Impl {
     // run
     RunPhase phase = RunPhase::Approach;
     std::uint32_t runId = 0;
-    double phaseSince = 0, cutStartTime = 0;
+    double phaseSince = 0, cutStartTime = 0, runStartTime = 0, runEndTime = 0;
     int settleCount = 0;
     long samples = 0, minRunSteps = 0;
     bool pathDone = false;

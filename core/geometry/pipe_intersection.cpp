@@ -28,6 +28,10 @@ double PipeIntersection::branchAxial(double phi) const {
     return (p - branchOrigin()).dot(b_);
 }
 
+bool PipeIntersection::generatrixMeetsMain(double phi) const {
+    return std::fabs(spec_.eccentricity_mm + spec_.branch_radius_mm * std::sin(phi)) <= spec_.main_radius_mm;
+}
+
 Vec3 PipeIntersection::derivative(double phi) const {
     const double r = spec_.branch_radius_mm, R = spec_.main_radius_mm;
     const double x = spec_.eccentricity_mm + r * std::sin(phi);

@@ -5,6 +5,8 @@
 // direction b = (0, sin a, cos a). A branch point is
 //   (e + r sin(phi), 0, 0) + r cos(phi) * (0, cos a, -sin a) + t * b,
 // and the side +1 takes the half of the main pipe with y > 0 (the seed's "+" root).
+// The formulas hold for any angle in (0, 180) deg; jobs limit the main/branch angle to (0, 90],
+// the profile cutter also uses (90, 180) for crossings of two branches (core/machines/).
 #include "core/common/types.h"
 
 namespace cutcell {
@@ -27,6 +29,9 @@ class PipeIntersection {
     Vec3 derivative(double phi) const;
     // Axial coordinate t of the point along the branch axis (from (e, 0, 0)).
     double branchAxial(double phi) const;
+    // Whether the branch's generatrix at phi meets the main cylinder at all (|e + r sin phi| <= R);
+    // always true when |e| + r <= R. point() clamps where it does not.
+    bool generatrixMeetsMain(double phi) const;
 
     Vec3 branchOrigin() const { return {spec_.eccentricity_mm, 0, 0}; }
     Vec3 branchAxis() const { return b_; }

@@ -92,6 +92,32 @@ struct DeviceSpec {
     double heartbeat_timeout_ms = 300;
 };
 
+// Another branch pipe at the same joint (seed 002: "several pipes connecting together"). The
+// cut branch (branch_pipe, angle_deg, eccentricity_mm) is cut to fit the main pipe AND these.
+// Main pipe frame (see core/geometry/pipe_intersection.h): this branch's axis passes through
+// Rz(phase) * (eccentricity, 0, position) with outward direction Rz(phase) * (0, sin a, cos a).
+struct OtherBranch {
+    double radius_mm = 0;       // outer radius
+    double angle_deg = 90;      // between its axis and the main axis, (0, 180)
+    double eccentricity_mm = 0; // |e| + radius <= main radius
+    double position_mm = 0;     // along the main axis, from the cut branch's axis crossing
+    double phase_deg = 0;       // about the main axis; 0 = on the cut branch's side
+};
+
+// The 2-axis NC pipe profile cutter of seed 002: torch on a linear X axis over the rotating
+// pipe (A axis), both driven by stepper motors through a pulse card.
+struct ProfileCutterSpec {
+    int steps_per_rev_a = 400;        // the seed's n: interpolation steps per pipe revolution
+    int pulses_per_step_a = 16;       // A-axis pulses per step (pulses/rev = n * this)
+    double mm_per_pulse_x = 0.005;    // X-axis travel per pulse
+    double max_pulse_rate_hz = 200000; // pulse card limit per axis (PCL-839+: 1 Hz .. 200 kHz)
+    double pierce_s = 1.0;            // dwell after torch on, before moving
+    double x_travel_mm = 3000;        // X carriage travel from 0 (the fixed end) to here
+    // Hole cut: X of the branch axis crossing (the seed's S); absent = middle of the main pipe.
+    bool branch_position_auto = true;
+    double branch_position_mm = 0;
+};
+
 struct Job {
     int schema = 1;
     std::string machine = "pipe_robot_6axis";
@@ -109,6 +135,8 @@ struct Job {
     SimSpec sim;
     EngineSpec engine;
     DeviceSpec devices;
+    std::vector<OtherBranch> other_branches; // profile cutter, cut = "branch" only
+    ProfileCutterSpec profile_cutter;
 };
 
 const char* toString(CutTarget t);

@@ -111,6 +111,53 @@ void readTable(const Reader& parent, const std::string& k, std::array<T, kAxisCo
         out[i] = readRow(Reader(arr[i], parent.key(k) + "[" + std::to_string(i) + "]"));
 }
 
+std::vector<OtherBranch> readOtherBranches(const Reader& r) {
+    std::vector<OtherBranch> out;
+    const json::Value* m = r.get("other_branches");
+    if (!m) return out;
+    if (!m->isArray())
+        throw JobError("other_branches must be an array of branch pipes, found " + m->typeName());
+    for (size_t i = 0; i < m->asArray().size(); ++i) {
+        const Reader b(m->asArray()[i], "other_branches[" + std::to_string(i) + "]");
+        OtherBranch o;
+        o.radius_mm = b.number("radius_mm", "mm");
+        o.angle_deg = b.number("angle_deg", "deg");
+        o.eccentricity_mm = b.number("eccentricity_mm", "mm", 0);
+        o.position_mm = b.number("position_mm", "mm", 0);
+        o.phase_deg = b.number("phase_deg", "deg", 0);
+        out.push_back(o);
+    }
+    return out;
+}
+
+ProfileCutterSpec readProfileCutter(const Reader& r) {
+    ProfileCutterSpec p;
+    if (!r.has("profile_cutter")) return p;
+    const Reader c = r.child("profile_cutter");
+    auto integer = [&c](const std::string& k, const char* unit, int fallback) {
+        const double v = c.number(k, unit, fallback);
+        if (v != std::floor(v) || std::fabs(v) > 1e9)
+            throw JobError(c.key(k) + " = " + num(v) + " " + unit + " must be a whole number");
+        return static_cast<int>(v);
+    };
+    p.steps_per_rev_a = integer("steps_per_rev_a", "steps/rev", p.steps_per_rev_a);
+    p.pulses_per_step_a = integer("pulses_per_step_a", "pulses/step", p.pulses_per_step_a);
+    p.mm_per_pulse_x = c.number("mm_per_pulse_x", "mm/pulse", p.mm_per_pulse_x);
+    p.max_pulse_rate_hz = c.number("max_pulse_rate_hz", "Hz", p.max_pulse_rate_hz);
+    p.pierce_s = c.number("pierce_s", "s", p.pierce_s);
+    p.x_travel_mm = c.number("x_travel_mm", "mm", p.x_travel_mm);
+    p.branch_position_auto = !c.has("branch_position_mm");
+    p.branch_position_mm = c.number("branch_position_mm", "mm", 0);
+    return p;
+}
+
+bool isDefault(const ProfileCutterSpec& p) {
+    const ProfileCutterSpec d;
+    return p.steps_per_rev_a == d.steps_per_rev_a && p.pulses_per_step_a == d.pulses_per_step_a &&
+           p.mm_per_pulse_x == d.mm_per_pulse_x && p.max_pulse_rate_hz == d.max_pulse_rate_hz &&
+           p.pierce_s == d.pierce_s && p.x_travel_mm == d.x_travel_mm && p.branch_position_auto == d.branch_position_auto;
+}
+
 json::Value pipeJson(const PipeSpec& p) {
     return json::Object{{"radius_mm", p.radius_mm}, {"wall_mm", p.wall_mm}, {"length_mm", p.length_mm}};
 }
@@ -225,6 +272,8 @@ Job jobFromJson(const json::Value& doc) {
             }
         }
     }
+    job.other_branches = readOtherBranches(r);
+    job.profile_cutter = readProfileCutter(r);
     return job;
 }
 
@@ -251,7 +300,7 @@ json::Value jobToJson(const Job& job) {
                                         {"torque_limit_nm", p.torque_limit_nm}});
     for (int id : job.devices.node_ids) ids.emplace_back(id);
     for (double c : job.devices.counts_per_unit) cpu.emplace_back(c);
-    return json::Object{
+    json::Object doc{
         {"schema", job.schema},
         {"machine", job.machine},
         {"name", job.name},
@@ -280,6 +329,27 @@ json::Value jobToJson(const Job& job) {
                                  {"counts_per_unit", cpu},
                                  {"heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms}}},
     };
+    // Profile-cutter keys are written when used, so robot job files keep their shape.
+    if (!job.other_branches.empty()) {
+        json::Array others;
+        for (const auto& o : job.other_branches)
+            others.emplace_back(json::Object{{"radius_mm", o.radius_mm}, {"angle_deg", o.angle_deg},
+                                             {"eccentricity_mm", o.eccentricity_mm},
+                                             {"position_mm", o.position_mm}, {"phase_deg", o.phase_deg}});
+        doc.emplace_back("other_branches", others);
+    }
+    const ProfileCutterSpec& pc = job.profile_cutter;
+    if (job.machine == "profile_cutter_2axis" || !isDefault(pc)) {
+        json::Object o{{"steps_per_rev_a", pc.steps_per_rev_a},
+                       {"pulses_per_step_a", pc.pulses_per_step_a},
+                       {"mm_per_pulse_x", pc.mm_per_pulse_x},
+                       {"max_pulse_rate_hz", pc.max_pulse_rate_hz},
+                       {"pierce_s", pc.pierce_s},
+                       {"x_travel_mm", pc.x_travel_mm}};
+        if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
+        doc.emplace_back("profile_cutter", o);
+    }
+    return doc;
 }
 
 Job parseJob(const std::string& text) {

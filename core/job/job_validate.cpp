@@ -45,6 +45,49 @@ void checkPipe(Checker& c, const std::string& name, const PipeSpec& p) {
                                      name + ".radius_mm = " + num(p.radius_mm) + " mm");
 }
 
+// The other branches at the joint (seed 002's several pipes) and the 2-axis machine's drives.
+void checkProfileCutter(Checker& c, const Job& job) {
+    const double R = job.main_pipe.radius_mm;
+    const double a = deg2rad(job.angle_deg);
+    for (size_t i = 0; i < job.other_branches.size(); ++i) {
+        const OtherBranch& o = job.other_branches[i];
+        const std::string k = "other_branches[" + std::to_string(i) + "]";
+        c.positive(k + ".radius_mm", o.radius_mm, "mm");
+        if (!(o.angle_deg > 0 && o.angle_deg < 180))
+            c.add(k + ".angle_deg", k + ".angle_deg = " + num(o.angle_deg) +
+                                        " deg is outside (0, 180) deg (angle to the main axis)");
+        c.finite(k + ".eccentricity_mm", o.eccentricity_mm, "mm");
+        c.finite(k + ".position_mm", o.position_mm, "mm");
+        c.finite(k + ".phase_deg", o.phase_deg, "deg");
+        const double fit = std::fabs(o.eccentricity_mm) + o.radius_mm;
+        if (R > 0 && o.radius_mm > 0 && fit > R)
+            c.add(k + ".radius_mm", k + ".radius_mm = " + num(o.radius_mm) +
+                                        " mm does not fit: |eccentricity_mm| + radius = " + num(fit) +
+                                        " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
+        // Axes must not be parallel to the cut branch's: the crossing would be undefined.
+        const double aj = deg2rad(o.angle_deg), ph = deg2rad(o.phase_deg);
+        const double cosAxes = std::sin(a) * std::cos(ph) * std::sin(aj) + std::cos(a) * std::cos(aj);
+        const double between = rad2deg(std::acos(std::min(1.0, std::fabs(cosAxes))));
+        if (std::isfinite(between) && between < 1.0)
+            c.add(k + ".angle_deg", k + ": its axis is " + num(between) +
+                                        " deg from the cut branch's axis; it must differ by >= 1 deg");
+    }
+    if (job.machine != "profile_cutter_2axis") return;
+    const ProfileCutterSpec& p = job.profile_cutter;
+    c.range("profile_cutter.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
+    c.range("profile_cutter.pulses_per_step_a", p.pulses_per_step_a, 1, 100000, "pulses/step");
+    c.range("profile_cutter.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
+    c.range("profile_cutter.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
+    c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
+    c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
+    if (!p.branch_position_auto)
+        c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0, job.main_pipe.length_mm, "mm");
+    // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
+    if (job.cut.bevel_deg != 0)
+        c.add("cut.bevel_deg", "cut.bevel_deg = " + num(job.cut.bevel_deg) +
+                                   " deg: the 2-axis profile cutter cuts square only (0 deg)");
+}
+
 } // namespace
 
 std::vector<JobIssue> validateJob(const Job& job) {
@@ -153,6 +196,7 @@ std::vector<JobIssue> validateJob(const Job& job) {
                    job.devices.counts_per_unit[static_cast<size_t>(i)], "counts/deg");
     }
     c.range("devices.heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms, 10, 10000, "ms");
+    checkProfileCutter(c, job);
     return c.issues;
 }
 

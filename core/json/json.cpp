@@ -270,8 +270,10 @@ void writeNumber(std::ostringstream& os, double d) {
         os << static_cast<long long>(d);
         return;
     }
+    // Shortest of 15 or 17 significant digits that reads back to the same double.
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.15g", d);
+    if (std::strtod(buf, nullptr) != d) std::snprintf(buf, sizeof buf, "%.17g", d);
     os << buf;
 }
 

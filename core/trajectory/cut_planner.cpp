@@ -54,10 +54,36 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
     plan.knot_dt_s = plan.cut_time_s / intervals;
     plan.knots.resize(static_cast<size_t>(intervals) + 1);
 
+    // Pass 1: the cut points and, for the rotating method, the chuck angle that brings each
+    // point to the top of the pipe (s0 x + c0 y = r, -c0 x + s0 y = 0), unwrapped.
+    double previousChuck = deg2rad(job.cut.static_chuck_deg);
+    for (size_t k = 0; k < plan.knots.size(); ++k) {
+        PlannedPoint& p = plan.knots[k];
+        p.t_s = plan.knot_dt_s * static_cast<double>(k);
+        p.cut = geo.atArcLength(profile.distance(p.t_s));
+        double chuck = deg2rad(job.cut.static_chuck_deg);
+        if (job.method == CutMethod::RotatingPipe) {
+            chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
+            if (k > 0) chuck += 2 * kPi * std::round((previousChuck - chuck) / (2 * kPi));
+        }
+        previousChuck = chuck;
+        p.chuck_rad = chuck;
+    }
+    if (job.method == CutMethod::RotatingPipe) {
+        // Shift the whole sweep by whole turns so that it fits the chuck's range, if it can.
+        double lo = 1e300, hi = -1e300;
+        for (const auto& p : plan.knots) {
+            lo = std::min(lo, p.chuck_rad);
+            hi = std::max(hi, p.chuck_rad);
+        }
+        const double mid = (robot.minRad(0) + robot.maxRad(0)) / 2;
+        const double shift = 2 * kPi * std::round((mid - (lo + hi) / 2) / (2 * kPi));
+        for (auto& p : plan.knots) p.chuck_rad += shift;
+    }
+
     const double maxDev = job.cut.max_direction_deviation_deg;
     ArmVector previous = ArmVector::Zero();
     bool havePrevious = false;
-    double previousChuck = deg2rad(job.cut.static_chuck_deg);
     plan.reachable = true;
     std::vector<JointVector> q(plan.knots.size(), JointVector::Zero());
     for (size_t k = 0; k < plan.knots.size(); ++k) {
@@ -69,22 +95,7 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         }
         if (options.progress && k % 64 == 0) options.progress(static_cast<double>(k) / static_cast<double>(plan.knots.size()));
         PlannedPoint& p = plan.knots[k];
-        p.t_s = plan.knot_dt_s * static_cast<double>(k);
-        p.cut = geo.atArcLength(profile.distance(p.t_s));
-
-        double chuck = deg2rad(job.cut.static_chuck_deg);
-        if (job.method == CutMethod::RotatingPipe) {
-            // Turn the pipe so the cut point comes to the top: s0 x + c0 y = r, -c0 x + s0 y = 0.
-            chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
-            chuck += 2 * kPi * std::round((previousChuck - chuck) / (2 * kPi));
-            if (k == 0) {
-                // Start on the representative inside the chuck's range nearest zero.
-                for (int turn = -1; turn <= 1 && !robot.withinLimits(0, chuck); ++turn)
-                    if (robot.withinLimits(0, chuck + 2 * kPi * turn)) chuck += 2 * kPi * turn;
-            }
-        }
-        previousChuck = chuck;
-        p.chuck_rad = chuck;
+        const double chuck = p.chuck_rad;
         const Pose baseFromWork = robot.baseFromWork(chuck);
         p.tip_base = baseFromWork * p.cut.p_work;
         const Vec3 desired = baseFromWork.linear() * p.cut.approach_work;

@@ -15,7 +15,17 @@ std::shared_ptr<const MotionProgram> testProgram() {
     return program;
 }
 
-SimCell::SimCell(const CellOptions& o) {
+std::shared_ptr<const MotionProgram> quickProgram() {
+    static const auto program = [] {
+        Job job = testJob();
+        job.cut.speed_mm_s = 40;
+        job.sim.duration_s = 0;
+        return buildPipeRobotProgram(job, planCut(job));
+    }();
+    return program;
+}
+
+SimCell::SimCell(const CellOptions& o) : program_(o.quick ? quickProgram() : testProgram()) {
     const Job& job = testJob();
     EngineDevices devices;
     for (int i = 0; i < kAxisCount; ++i) {
@@ -35,8 +45,9 @@ SimCell::SimCell(const CellOptions& o) {
     config.spec.estop_category = o.category;
     config.spec.runs_dir = o.runs_dir;
     config.telemetry_every_n_cycles = o.telemetry_every;
+    if (o.quick) config.spec.home_speed_deg_s = 90;
     engine_ = std::make_unique<MotionEngine>(devices, config);
-    engine_->load(testProgram());
+    engine_->load(program_);
 }
 
 EngineState SimCell::run(std::uint64_t cycles, EngineState until) {

@@ -20,6 +20,9 @@ namespace cutcell::test {
 const Job& testJob();
 const CutPlan& testPlan();
 std::shared_ptr<const MotionProgram> testProgram();
+// The same cell with a quick cut (40 mm/s, no minimum run time): for tests that only need to
+// pass through the states (the state-machine table runs a whole job per cell).
+std::shared_ptr<const MotionProgram> quickProgram();
 
 struct CellOptions {
     StopCategory category = StopCategory::Cat0;
@@ -27,6 +30,7 @@ struct CellOptions {
     double chuck_start_deg = 30; // away from the reference, so homing takes a while
     std::uint32_t telemetry_every = 1;
     ClockMode clock = ClockMode::AsFastAsPossible;
+    bool quick = false; // quickProgram() and a faster home speed
 };
 
 class SimCell {
@@ -61,7 +65,10 @@ class SimCell {
     std::string eventText(size_t from = 0) const;
     bool drivesAllDisabled();
 
+    const std::shared_ptr<const MotionProgram>& program() const { return program_; }
+
   private:
+    std::shared_ptr<const MotionProgram> program_;
     std::vector<std::unique_ptr<SimulatedDrive>> drives_;
     SimulatedTorch torch_;
     std::unique_ptr<MotionEngine> engine_;

@@ -28,7 +28,9 @@ std::vector<StateSetup> everyState() {
 TEST(EmergencyStop, FromEveryStateStopsTheDevicesAndLatchesUntilReleasedAndReset) {
     for (const auto& s : everyState()) {
         SCOPED_TRACE(s.name);
-        SimCell cell;
+        CellOptions quick;
+        quick.quick = true;
+        SimCell cell(quick);
         s.go(cell);
         if (HasFatalFailure()) return;
         const std::uint64_t measured = cell.engine().cycleStats().estops_measured;
@@ -109,7 +111,9 @@ TEST(Faults, EachInjectedFaultEndsInFaultWithTheRightMessage) {
     };
     for (const auto& fc : cases) {
         SCOPED_TRACE(fc.name);
-        SimCell cell;
+        CellOptions quick;
+        quick.quick = true;
+        SimCell cell(quick);
         cell.toCutting(2.0);
         if (HasFatalFailure()) return;
         const size_t mark = cell.events.size();

@@ -310,7 +310,9 @@ TEST_P(EveryCommandInEveryState, GivesANewStateOrARefusalWithItsReason) {
     ASSERT_EQ(row->cases.size(), 14u) << "every command has a row";
     for (const auto& [cmd, expected] : row->cases) {
         SCOPED_TRACE(std::string(name(from)) + " + " + name(cmd));
-        SimCell cell;
+        CellOptions quick;
+        quick.quick = true;
+        SimCell cell(quick);
         bringTo(cell, from);
         if (HasFatalFailure()) return;
         const EngineState before = cell.engine().state();

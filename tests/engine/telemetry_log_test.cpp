@@ -45,6 +45,14 @@ TEST(Telemetry, NoSampleLostWhenDrainedAt30HzOfEngineTime) {
         }
     }
     ASSERT_EQ(e.state(), EngineState::Completed);
+    // The last sample: the whole path done, nothing remaining, the run's time since Start.
+    EXPECT_EQ(t.state, EngineState::Completed);
+    EXPECT_DOUBLE_EQ(t.progress, 1.0);
+    EXPECT_DOUBLE_EQ(t.remaining_s, 0.0);
+    EXPECT_EQ(t.point_index + 1, t.point_count);
+    EXPECT_GT(t.elapsed_s, testProgram()->cut_time_s);
+    EXPECT_TRUE(t.homed);
+    EXPECT_FALSE(t.torch_on);
     const CycleStats s = e.cycleStats();
     EXPECT_EQ(s.telemetry_dropped, 0u);
     EXPECT_EQ(samples, s.cycles) << "one sample per cycle";

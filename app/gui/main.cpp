@@ -1,0 +1,121 @@
+// cutcell: the operator station of the cutting cell (Qt Widgets).
+#include "gui_run.h"
+#include "sim_rig.h"
+
+#include "ui/main_window.h"
+#include "ui/run_controller.h"
+#include "ui/theme.h"
+#ifdef CUTCELL_HAVE_VIEW3D
+#include "ui/view3d/cell_view.h"
+#endif
+
+#include <QApplication>
+#include <QCommandLineParser>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+
+// Qt aborts with a cryptic message when no platform can be opened: say what to do instead.
+bool displayAvailable(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (!std::strcmp(argv[i], "-platform") || !std::strcmp(argv[i], "--platform") ||
+            !std::strncmp(argv[i], "-platform=", 10) || !std::strncmp(argv[i], "--platform=", 11))
+            return true;
+    for (const char* var : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"}) {
+        const char* v = std::getenv(var);
+        if (v && *v) return true;
+    }
+    return false;
+}
+
+bool wantsHelp(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return true;
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (!wantsHelp(argc, argv) && !displayAvailable(argc, argv)) {
+        std::fputs("cutcell: no display: run with --platform offscreen (or under xvfb-run), "
+                   "or use cutcell-cli for headless work\n",
+                   stderr);
+        return 2;
+    }
+#ifdef CUTCELL_HAVE_VIEW3D
+    cutcell::view3d::CellView::setDefaultSurfaceFormat(); // before QApplication
+#endif
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("CutCell"));
+    QApplication::setApplicationName(QStringLiteral("cutcell"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+
+    QCommandLineParser cli;
+    cli.setApplicationDescription(
+        QStringLiteral("CutCell operator station. Qt options such as --platform offscreen "
+                       "are accepted."));
+    cli.addHelpOption();
+    cli.addVersionOption();
+    const QCommandLineOption jobOpt("job", "Open the job FILE (default: the built-in job).",
+                                    "FILE");
+    const QCommandLineOption runOpt(
+        "run", "Run the job on the simulated cell (as fast as possible) and quit when it ends.");
+    const QCommandLineOption realTimeOpt("realtime", "With --run: pace the run to the wall clock.");
+    const QCommandLineOption shotOpt("screenshot", "With --run: save the main window to PNG.",
+                                     "PNG");
+    const QCommandLineOption sizeOpt("size", "Window size WIDTHxHEIGHT (default 1440x900).", "WxH",
+                                     "1440x900");
+    const QCommandLineOption timeoutOpt("timeout", "With --run: give up after S seconds.", "S",
+                                        "300");
+    const QCommandLineOption benchOpt(
+        "bench-stall",
+        "Measure the longest GUI-thread stall during a real-time run of S "
+        "seconds; prints JSON.",
+        "S");
+    cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt});
+    cli.process(app);
+
+    const QStringList size = cli.value(sizeOpt).split('x');
+    if (size.size() != 2 || size[0].toInt() < 320 || size[1].toInt() < 240) {
+        std::fprintf(stderr, "cutcell: --size must be WIDTHxHEIGHT, e.g. 1440x900\n");
+        return 64;
+    }
+    if (cli.isSet(shotOpt) && !cli.isSet(runOpt)) {
+        std::fprintf(stderr, "cutcell: --screenshot needs --run\n");
+        return 64;
+    }
+    CutCell::ui::applyDarkIndustrialTheme(app);
+    CutCell::ui::MainWindow window(&cutcell::app::makeRig);
+    window.resize(size[0].toInt(), size[1].toInt());
+    const bool bench = cli.isSet(benchOpt);
+    if (cli.isSet(runOpt) && !cli.isSet(realTimeOpt) && !bench)
+        window.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
+    if (cli.isSet(jobOpt)) {
+        QString error;
+        if (!window.openJob(cli.value(jobOpt), &error)) {
+            std::fprintf(stderr, "cutcell: %s\n", error.toUtf8().constData());
+            if (cli.isSet(runOpt) || bench) return 1;
+        }
+    }
+    window.show();
+    if (bench) {
+        bool ok = false;
+        const double seconds = cli.value(benchOpt).toDouble(&ok);
+        if (!ok || seconds <= 0) {
+            std::fprintf(stderr, "cutcell: --bench-stall needs a number of seconds > 0\n");
+            return 64;
+        }
+        cutcell::app::startStallBench(window, seconds);
+    } else if (cli.isSet(runOpt)) {
+        cutcell::app::RunOptions opt;
+        opt.screenshot = cli.value(shotOpt);
+        opt.timeout_s = cli.value(timeoutOpt).toDouble();
+        if (opt.timeout_s <= 0) opt.timeout_s = 300;
+        cutcell::app::startUnattendedRun(window, opt);
+    }
+    return app.exec();
+}

@@ -1,0 +1,75 @@
+#pragma once
+// Live tracking-error plots: joint errors (deg, one trace per axis) above Cartesian errors
+// (mm, x/y/z), with a small toolbar (Pause, Fit, Export PNG..., Export CSV...).
+//
+// Data path: append() only stores into a bounded ring (no replot, no allocation); one 30 Hz
+// QTimer moves what is new into the plots and asks for a queued replot, and only when
+// something changed and the widget is visible. Paused: data keeps arriving into the ring, the view
+// stays frozen. Mouse: drag pans, wheel zooms (either turns autoscale off; Fit turns it back on);
+// clicking a legend entry hides or shows its trace. QCustomPlot is an implementation detail
+// (pimpl).
+//
+// Threading: GUI thread only, like every QWidget. Times must not decrease between clear()s;
+// a sample older than the last one restarts the plots from the ring's content.
+#include <QStringList>
+#include <QWidget>
+
+#include <cstdint>
+#include <memory>
+
+namespace cutcell::plots {
+
+class TrackingPlotsWidget : public QWidget {
+    Q_OBJECT
+  public:
+    static constexpr int kMaxAxes = 8;
+    static constexpr int kDefaultCapacity = 60000; // samples kept per trace (60 s at 1 kHz)
+
+    explicit TrackingPlotsWidget(QWidget* parent = nullptr);
+    ~TrackingPlotsWidget() override;
+
+    // Names of the joint traces, e.g. {"A0 chuck", "J1", ...}; shorter lists keep defaults.
+    void setAxisNames(const QStringList& names);
+    QStringList axisNames() const;
+    // Number of joint traces (1..kMaxAxes); clears the data.
+    void setAxisCount(int n);
+    int axisCount() const;
+    // Ring capacity in samples; clears the data.
+    void setCapacity(int samples);
+    int capacity() const;
+
+    // Cheap: copies into the ring. jointErrorsDeg has n values (extra ones are ignored,
+    // missing ones are NaN); cartErrMm may be null (NaN).
+    void append(double t_s, const double* jointErrorsDeg, int n, const double cartErrMm[3]);
+    void clear();
+
+    void setPaused(bool paused);
+    bool isPaused() const;
+    // Autoscale both plots and follow the data again.
+    void fit();
+    bool autoscale() const;
+    void setTraceVisible(int trace, bool visible); // traces: joints 0..n-1, then x, y, z
+    bool traceVisible(int trace) const;
+
+    // Both plots stacked into one PNG / all kept samples as CSV; written atomically.
+    bool exportPng(const QString& path, QString* error = nullptr);
+    bool exportCsv(const QString& path, QString* error = nullptr);
+
+    int sampleCount() const;            // samples kept in the ring
+    std::uint64_t droppedCount() const; // samples dropped since clear()
+    int plottedPointCount() const;      // points in the joint plot's first trace (tests, bench)
+    // Syncs and replots at once (tests, benchmark); returns the replot time in ms.
+    double replotNow();
+
+  signals:
+    void pausedChanged(bool paused);
+
+  protected:
+    void showEvent(QShowEvent* e) override;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+} // namespace cutcell::plots

@@ -1,0 +1,139 @@
+// cutcell-cli as a user runs it: exit codes, messages and the files it writes.
+#include "core/job/default_job.h"
+#include "core/job/job_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace cutcell;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int code;
+    std::string output; // stdout + stderr
+};
+
+Result runCli(const std::string& args) {
+    const std::string cmd = std::string(CUTCELL_CLI) + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    while (p && fgets(buf, sizeof buf, p)) out += buf;
+    const int status = p ? pclose(p) : -1;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path tempDir(const std::string& name) {
+    const fs::path d = fs::temp_directory_path() / ("cutcell_cli_" + name);
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string defaultJobPath() { return std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/default_job.json"; }
+
+} // namespace
+
+TEST(Cli, ValidateAcceptsTheDefaultJob) {
+    const Result r = runCli("validate " + defaultJobPath());
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("is valid"), std::string::npos);
+}
+
+TEST(Cli, InvalidJobExitsTwoWithTheKeyValueUnitAndLimit) {
+    const fs::path dir = tempDir("invalid");
+    Job job = defaultJob();
+    job.branch_pipe.radius_mm = 80;
+    saveJobFile(job, (dir / "bad.json").string());
+    const Result r = runCli("validate " + (dir / "bad.json").string());
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("branch_pipe.radius_mm = 80 mm"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("main_pipe.radius_mm = 57.15 mm"), std::string::npos) << r.output;
+
+    std::ofstream(dir / "broken.json") << "{ \"schema\": 1,\n  \"main_pipe\": {\"radius_mm\": 5";
+    const Result b = runCli("simulate " + (dir / "broken.json").string());
+    EXPECT_EQ(b.code, 2) << b.output;
+    EXPECT_NE(b.output.find("line 2"), std::string::npos) << b.output;
+}
+
+TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
+    const fs::path dir = tempDir("unreachable");
+    Job job = defaultJob();
+    job.method = CutMethod::StaticPipe;
+    job.cut.target = CutTarget::Branch;
+    saveJobFile(job, (dir / "job.json").string());
+    const Result r = runCli("plan " + (dir / "job.json").string() + " --out " + (dir / "out").string());
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("point "), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out" / "path.csv"));
+}
+
+TEST(Cli, PlanWritesPathAndJointsCsv) {
+    const fs::path dir = tempDir("plan");
+    const Result r = runCli("plan " + defaultJobPath() + " --out " + dir.string());
+    ASSERT_EQ(r.code, 0) << r.output;
+    std::ifstream path(dir / "path.csv");
+    std::string header;
+    std::getline(path, header);
+    EXPECT_EQ(header.rfind("index,t_s,s_mm,phi_deg,x_mm,y_mm,z_mm,", 0), 0u) << header;
+    const Job job = defaultJob();
+    std::string line;
+    int rows = 0;
+    while (std::getline(path, line)) {
+        std::stringstream ss(line);
+        std::string cell;
+        std::vector<double> v;
+        while (std::getline(ss, cell, ',')) v.push_back(std::atof(cell.c_str()));
+        // Main pipe frame: x^2 + y^2 = R1^2 (columns x_mm, y_mm).
+        ASSERT_NEAR(std::hypot(v[4], v[5]), job.main_pipe.radius_mm, 1e-6) << line;
+        ++rows;
+    }
+    EXPECT_GT(rows, 100);
+    std::ifstream joints(dir / "joints.csv");
+    std::getline(joints, header);
+    EXPECT_EQ(header, "t_s,q0_deg,q1_deg,q2_deg,q3_deg,q4_deg,q5_deg");
+    int jrows = 0;
+    double lastT = -1;
+    while (std::getline(joints, line)) {
+        const double t = std::atof(line.c_str());
+        ASSERT_NEAR(t - lastT, lastT < 0 ? t + 1 : job.sim.period_s, 1e-9);
+        lastT = t;
+        ++jrows;
+    }
+    // The whole cut at the control period, both ends included.
+    const double cutTime = 0.001 * (jrows - 1);
+    EXPECT_GE(cutTime, 30.0 - 1e-9);
+    EXPECT_LT(cutTime, 30.0 + 0.01);
+}
+
+TEST(Cli, SimulateWritesTheReport) {
+    const fs::path dir = tempDir("simulate");
+    const Result r = runCli("simulate " + defaultJobPath() + " --report " + (dir / "report.json").string());
+    ASSERT_EQ(r.code, 0) << r.output;
+    const json::Value v = json::parse(readTextFile((dir / "report.json").string()));
+    EXPECT_EQ(v.find("joints")->asArray().size(), 6u);
+    EXPECT_TRUE(v.find("reachable")->asBool());
+    EXPECT_EQ(v.find("method")->asString(), "rotating_pipe");
+}
+
+TEST(Cli, BenchPrintsTheFigures) {
+    const Result r = runCli("bench --json --quick");
+    ASSERT_EQ(r.code, 0) << r.output;
+    const json::Value v = json::parse(r.output);
+    EXPECT_GT(v.find("ik_ns_per_solve")->asNumber(), 0);
+    EXPECT_GT(v.find("simulate_realtime_factor")->asNumber(), 0);
+}
+
+TEST(Cli, UnknownCommandAndMissingArgumentsAreUsageErrors) {
+    EXPECT_EQ(runCli("frobnicate").code, 64);
+    EXPECT_EQ(runCli("plan " + defaultJobPath()).code, 64);
+    EXPECT_EQ(runCli("validate /nonexistent/job.json").code, 1);
+}

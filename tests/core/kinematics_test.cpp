@@ -1,0 +1,147 @@
+// Forward and inverse kinematics of the seed's arm: round trips on random configurations,
+// the seed's closed-form FK, and the status of poses that cannot be reached.
+#include "core/job/job.h"
+#include "core/kinematics/pipe_robot.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace cutcell;
+
+namespace {
+
+ArmVector randomInLimits(const PipeRobot& robot, std::mt19937& rng, double margin = 0.02) {
+    ArmVector q;
+    for (int j = 0; j < kArmJointCount; ++j) {
+        std::uniform_real_distribution<double> d(robot.minRad(j + 1) + margin, robot.maxRad(j + 1) - margin);
+        q[j] = d(rng);
+    }
+    return q;
+}
+
+} // namespace
+
+TEST(Kinematics, ChainMatchesTheSeedsClosedFormPosition) {
+    // Seed 000 Eq. (34)-(36), with the columns named n o a (DESIGN.md errata).
+    const PipeRobot robot(seedDhTable());
+    std::mt19937 rng(1);
+    for (int i = 0; i < 500; ++i) {
+        const ArmVector q = randomInLimits(robot, rng);
+        const double c1 = std::cos(q[0]), s1 = std::sin(q[0]), c2 = std::cos(q[1]), s2 = std::sin(q[1]);
+        const double c23 = std::cos(q[1] + q[2]), s23 = std::sin(q[1] + q[2]);
+        const double c234 = std::cos(q[1] + q[2] + q[3]), s234 = std::sin(q[1] + q[2] + q[3]);
+        const double d1 = 371, a2 = 157, a3 = 120, a4 = 50, d5 = 210;
+        const double reach = d5 * s234 + a4 * c234 + a3 * c23 + a2 * c2;
+        const Pose T = robot.forward(q);
+        EXPECT_NEAR(T.translation().x(), c1 * reach, 1e-9);
+        EXPECT_NEAR(T.translation().y(), s1 * reach, 1e-9);
+        EXPECT_NEAR(T.translation().z(), -d5 * c234 + a4 * s234 + a3 * s23 + a2 * s2 + d1, 1e-9);
+        // Torch axis (third column): o of Eq. (31)-(33).
+        EXPECT_NEAR(T.linear()(0, 2), c1 * s234, 1e-12);
+        EXPECT_NEAR(T.linear()(1, 2), s1 * s234, 1e-12);
+        EXPECT_NEAR(T.linear()(2, 2), -c234, 1e-12);
+    }
+}
+
+TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
+    const PipeRobot robot(seedDhTable());
+    std::mt19937 rng(2);
+    int solved = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const ArmVector q = randomInLimits(robot, rng);
+        const Pose T = robot.forward(q);
+        // With the true configuration as the continuity reference, IK must return it exactly.
+        const IkResult r = robot.solve(T, &q);
+        ASSERT_TRUE(r.ok()) << describe(r);
+        ASSERT_LE((r.q - q).cwiseAbs().maxCoeff(), 1e-7) << "i = " << i;
+        ++solved;
+    }
+    EXPECT_EQ(solved, 5000);
+}
+
+TEST(Kinematics, ForwardOfInverseGivesBackThePose) {
+    const PipeRobot robot(seedDhTable());
+    std::mt19937 rng(3);
+    for (int i = 0; i < 5000; ++i) {
+        const Pose T = robot.forward(randomInLimits(robot, rng));
+        // Without a reference any in-limit branch may come back; its pose must be the same.
+        const IkResult r = robot.solve(T);
+        ASSERT_TRUE(r.ok()) << describe(r);
+        for (int j = 0; j < kArmJointCount; ++j) ASSERT_TRUE(robot.withinLimits(j + 1, r.q[j]));
+        const Pose back = robot.forward(r.q);
+        ASSERT_LE((back.translation() - T.translation()).norm(), 1e-6);
+        ASSERT_LE((back.linear() - T.linear()).cwiseAbs().maxCoeff(), 1e-9);
+    }
+}
+
+TEST(Kinematics, PositionAndAxisSolveKeepsTheRoll) {
+    const PipeRobot robot(seedDhTable());
+    std::mt19937 rng(4);
+    for (int i = 0; i < 1000; ++i) {
+        ArmVector q = randomInLimits(robot, rng);
+        const Pose T = robot.forward(q);
+        const IkResult r = robot.solve(T.translation(), T.linear().col(2), 0.3, &q);
+        ASSERT_TRUE(r.ok()) << describe(r);
+        EXPECT_NEAR(r.q[4], 0.3, 1e-12);
+        const Pose back = robot.forward(r.q);
+        EXPECT_LE((back.translation() - T.translation()).norm(), 1e-6);
+        EXPECT_LE((back.linear().col(2) - T.linear().col(2)).norm(), 1e-9);
+    }
+}
+
+TEST(Kinematics, UnreachablePosesSayWhyNeverWrongAngles) {
+    const PipeRobot robot(seedDhTable());
+    // Far away: the wrist cannot get there.
+    IkResult r = robot.solve(Vec3(900, 0, 300), Vec3(0, 0, -1), 0);
+    EXPECT_EQ(r.status, IkStatus::OutOfReach);
+    EXPECT_EQ(r.axis, 3);
+    EXPECT_GT(r.residual, 100);
+    EXPECT_NE(describe(r).find("beyond the arm's reach"), std::string::npos);
+
+    // Torch tilted sideways out of the plane of joint 1: a 5-DOF arm cannot do it.
+    const Vec3 sideways = Vec3(0, 0.3, -1).normalized();
+    r = robot.solve(Vec3(300, 0, 100), sideways, 0);
+    EXPECT_EQ(r.status, IkStatus::OrientationUnreachable);
+    EXPECT_NEAR(rad2deg(r.residual), rad2deg(std::asin(0.3 / std::hypot(0.3, 1.0))), 1e-9);
+
+    // Reachable geometrically but only past a joint limit: theta2 in [-45, 45] deg.
+    ArmVector q;
+    q << 0.1, deg2rad(60), deg2rad(-30), deg2rad(10), 0;
+    const Pose beyond = robot.forward(q);
+    r = robot.solve(beyond, &q);
+    if (!r.ok()) {
+        EXPECT_EQ(r.status, IkStatus::JointLimit);
+        EXPECT_GE(r.axis, 1);
+        EXPECT_GT(r.residual, 0);
+        EXPECT_NE(describe(r).find("past its limit"), std::string::npos);
+    } else {
+        // Another in-limit branch reaches the same pose: that is a correct answer too.
+        EXPECT_LE((robot.forward(r.q).translation() - beyond.translation()).norm(), 1e-6);
+    }
+
+    // On the joint-1 axis with a vertical torch, theta1 is undefined.
+    r = robot.solve(Vec3(0, 0, 100), Vec3(0, 0, -1), 0);
+    EXPECT_EQ(r.status, IkStatus::Singular);
+    EXPECT_EQ(r.axis, 1);
+}
+
+TEST(Kinematics, LimitsUseLowestNotMin) {
+    const DhLink unbounded;
+    EXPECT_LT(unbounded.min_rad, -1e300);
+    EXPECT_GT(unbounded.max_rad, 1e300);
+}
+
+TEST(Kinematics, ChuckFrameMapsThePipeAxisOntoX0) {
+    const PipeRobot robot(seedDhTable());
+    for (double th : {0.0, 0.7, -2.1}) {
+        const Pose T = robot.baseFromWork(th);
+        EXPECT_NEAR(T.linear().determinant(), 1, 1e-12);
+        // Work axis (z) runs along -X0 through (d0, 0, 0).
+        EXPECT_LE((T.linear().col(2) - Vec3(-1, 0, 0)).norm(), 1e-12);
+        EXPECT_LE((T * Vec3(0, 0, 0) - Vec3(260, 0, 0)).norm(), 1e-12);
+    }
+    // At theta0 = 0 the work pipe's +y side is on top (Z0 up), seed Eq. (9).
+    EXPECT_LE((robot.baseFromWork(0) * Vec3(0, 10, 0) - Vec3(260, 0, 10)).norm(), 1e-12);
+}

@@ -1,0 +1,146 @@
+// Parameter forms: a bad value marks its field (red, tooltip naming key, value, unit and
+// limit), counts in its tab title and disables Start with the reason; fixing it clears all.
+#include "core/job/default_job.h"
+#include "ui/forms/job_editor.h"
+#include "ui/forms/parameter_tabs.h"
+#include "ui/main_window.h"
+#include "ui/panels/control_panel.h"
+#include "ui/run_controller.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QtTest>
+
+using CutCell::ui::MainWindow;
+
+class TestJobForms : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void everyValidatedKeyHasAField() {
+        // Break the job in many ways at once: every key validateJob reports must be shown.
+        MainWindow w(nullptr);
+        auto job = cutcell::defaultJob();
+        job.main_pipe.wall_mm = -1;
+        job.branch_pipe.radius_mm = 500;
+        job.cut.speed_mm_s = 900;
+        job.dh[3].min_deg = 100;
+        job.controller[2].tau_f = 0;
+        job.plant[4].inertia_kg_m2 = 0;
+        job.sim.period_s = 1;
+        job.devices.node_ids[2] = 1;
+        job.engine.home_speed_deg_s = 0;
+        w.editor()->setJob(job);
+        QVERIFY(!w.editor()->issues().empty());
+        for (const auto& issue : w.editor()->issues()) {
+            QWidget* f = w.parameters()->fieldFor(issue.key);
+            QVERIFY2(f, issue.key.c_str());
+            QVERIFY2(f->property("invalid").toBool(), issue.key.c_str());
+            QVERIFY(f->toolTip().contains(QString::fromStdString(issue.message)));
+        }
+    }
+
+    void badValueMarksFieldAndBlocksStart_data() {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<double>("bad");
+        QTest::addColumn<QString>("unit");
+        QTest::newRow("main radius negative") << "main_pipe.radius_mm" << -5.0 << "mm";
+        QTest::newRow("branch wider than main") << "branch_pipe.radius_mm" << 80.0 << "mm";
+        QTest::newRow("angle above 90") << "angle_deg" << 120.0 << "deg";
+        QTest::newRow("speed above limit") << "cut.speed_mm_s" << 600.0 << "mm/s";
+        QTest::newRow("bevel above 60") << "cut.bevel_deg" << 75.0 << "deg";
+        QTest::newRow("joint limit past 360") << "robot.dh[2].max_deg" << 400.0 << "deg";
+        QTest::newRow("tau_f zero") << "controller[1].tau_f_s" << 0.0 << "s";
+        QTest::newRow("period too long") << "sim.period_s" << 0.5 << "s";
+        QTest::newRow("heartbeat too short") << "devices.heartbeat_timeout_ms" << 1.0 << "ms";
+    }
+
+    void badValueMarksFieldAndBlocksStart() {
+        QFETCH(QString, key);
+        QFETCH(double, bad);
+        QFETCH(QString, unit);
+        MainWindow w(nullptr);
+        auto* field = qobject_cast<QDoubleSpinBox*>(w.parameters()->fieldFor(key.toStdString()));
+        QVERIFY(field);
+        QVERIFY(!field->property("invalid").toBool());
+        const double good = field->value();
+
+        field->setValue(bad); // as typed by the operator: no clamping
+        QCOMPARE(field->value(), bad);
+        QVERIFY(field->property("invalid").toBool());
+        QVERIFY2(field->toolTip().contains(key), qPrintable(field->toolTip()));
+        QVERIFY2(field->toolTip().contains(unit), qPrintable(field->toolTip()));
+        auto* start = w.controls()->startButton();
+        QVERIFY(!start->isEnabled());
+        QVERIFY(w.controls()->startBlockedReason().contains("invalid"));
+        QVERIFY(w.controls()->startBlockedReason().contains(key));
+        // The tab holding the field counts it.
+        const QString tabs = [&] {
+            QStringList t;
+            for (int i = 0; i < w.parameters()->tabs()->count(); ++i)
+                t << w.parameters()->tabs()->tabText(i);
+            return t.join('|');
+        }();
+        QVERIFY2(tabs.contains("(1)") || tabs.contains("(2)"), qPrintable(tabs));
+
+        field->setValue(good);
+        QVERIFY(!field->property("invalid").toBool());
+        QVERIFY(w.editor()->valid());
+        QVERIFY(!w.controls()->startBlockedReason().contains("invalid"));
+    }
+
+    void typedTextIsValidatedLive() {
+        MainWindow w(nullptr);
+        w.show();
+        auto* field = qobject_cast<QDoubleSpinBox*>(w.parameters()->fieldFor("cut.speed_mm_s"));
+        QVERIFY(field);
+        w.parameters()->revealField("cut.speed_mm_s");
+        field->selectAll();
+        QTest::keyClicks(field, "750");
+        QCOMPARE(w.editor()->job().cut.speed_mm_s, 750.0);
+        QVERIFY(field->property("invalid").toBool());
+        QVERIFY(field->toolTip().contains("500 mm/s"));
+    }
+
+    void duplicateNodeIdMarksTheIdFields() {
+        MainWindow w(nullptr);
+        auto* id = qobject_cast<QSpinBox*>(w.parameters()->fieldFor("devices.node_ids[3]"));
+        QVERIFY(id);
+        id->setValue(1); // axis 0 has node 1 already
+        QVERIFY(id->property("invalid").toBool());
+        QVERIFY(id->toolTip().contains("used twice"));
+    }
+
+    void choiceFieldsWriteTheJob() {
+        MainWindow w(nullptr);
+        auto* method = qobject_cast<QComboBox*>(w.parameters()->fieldFor("method"));
+        QVERIFY(method);
+        method->setCurrentIndex(1);
+        QCOMPARE(w.editor()->job().method, cutcell::CutMethod::StaticPipe);
+        auto* target = qobject_cast<QComboBox*>(w.parameters()->fieldFor("cut.target"));
+        target->setCurrentIndex(1);
+        QCOMPARE(w.editor()->job().cut.target, cutcell::CutTarget::Branch);
+    }
+
+    void unreachablePathBlocksStartWithTheProblem() {
+        MainWindow w(nullptr);
+        auto job = cutcell::defaultJob();
+        job.dh[0].d_mm = 2000; // pipe far out of the arm's reach: valid values, no path
+        w.editor()->setJob(job);
+        QVERIFY(w.editor()->valid());
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->plan() != nullptr, 60000);
+        QVERIFY(!w.run()->plan()->reachable);
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+        QVERIFY2(w.controls()->startBlockedReason().contains("not reachable"),
+                 qPrintable(w.controls()->startBlockedReason()));
+        QVERIFY(w.controls()->startBlockedReason().contains(
+            QString::fromStdString(w.run()->plan()->problem)));
+    }
+};
+
+QTEST_MAIN(TestJobForms)
+#include "test_job_forms.moc"

@@ -1,0 +1,31 @@
+#pragma once
+// Jobs for the profile cutter tests: the shipped example and random valid variations of it.
+#include "core/job/job_io.h"
+
+#include <random>
+#include <string>
+
+namespace cutcell::test {
+
+inline Job exampleProfileJob() {
+    return loadJobFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json");
+}
+
+// A valid profile-cutter job with random pipes, angle and eccentricity (single branch).
+inline Job randomProfileJob(std::mt19937& rng, CutTarget target) {
+    std::uniform_real_distribution<double> U(0, 1);
+    Job job = exampleProfileJob();
+    job.other_branches.clear();
+    job.cut.target = target;
+    job.main_pipe.radius_mm = 40 + 160 * U(rng);
+    job.main_pipe.wall_mm = 3 + 5 * U(rng);
+    job.branch_pipe.radius_mm = (0.2 + 0.75 * U(rng)) * job.main_pipe.radius_mm;
+    job.branch_pipe.wall_mm = std::min(0.3 * job.branch_pipe.radius_mm, 2 + 4 * U(rng));
+    const double room = job.main_pipe.radius_mm - job.branch_pipe.radius_mm;
+    job.eccentricity_mm = (2 * U(rng) - 1) * room;
+    job.angle_deg = 25 + 65 * U(rng);
+    if (U(rng) < 0.2) job.angle_deg = 90;
+    return job;
+}
+
+} // namespace cutcell::test

@@ -1,0 +1,231 @@
+// TrackingPlotsWidget and BoundedSeries, offscreen: ring semantics, pause, exports.
+#include "plots/bounded_series.h"
+#include "plots/tracking_plots_widget.h"
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using cutcell::plots::BoundedSeries;
+using cutcell::plots::TrackingPlotsWidget;
+
+namespace {
+// Sample i of a synthetic run: distinct, exactly representable values per channel.
+void sample(int i, double* j, double* c) {
+    for (int k = 0; k < 6; ++k)
+        j[k] = 0.125 * (k + 1) + i * 0.5;
+    for (int k = 0; k < 3; ++k)
+        c[k] = -0.25 * (k + 1) - i;
+}
+} // namespace
+
+class TstTrackingPlots : public QObject {
+    Q_OBJECT
+  private slots:
+    void ringKeepsNewestAndCountsDrops();
+    void ringPadsMissingValuesWithNaN();
+    void appendStoresWithoutReplot();
+    void pausedViewStaysFrozen();
+    void csvRoundTrip();
+    void csvOfTwoAxisMachine();
+    void pngIsAValidImage();
+    void exportToBadPathNamesThePath();
+    void traceVisibilityToggles();
+    void clearEmptiesEverything();
+    void hiddenWidgetCatchesUpWhenShown();
+};
+
+void TstTrackingPlots::ringKeepsNewestAndCountsDrops() {
+    BoundedSeries s(2, 5);
+    for (int i = 0; i < 12; ++i) {
+        const double v[2] = {double(i), -double(i)};
+        s.append(i * 0.1, v, 2);
+    }
+    QCOMPARE(s.size(), 5);
+    QCOMPARE(s.dropped(), std::uint64_t(7));
+    QCOMPARE(s.appended(), std::uint64_t(12));
+    for (int i = 0; i < 5; ++i) { // oldest first: samples 7..11
+        QCOMPARE(s.time(i), (7 + i) * 0.1);
+        QCOMPARE(s.value(i, 0), double(7 + i));
+        QCOMPARE(s.value(i, 1), -double(7 + i));
+    }
+}
+
+void TstTrackingPlots::ringPadsMissingValuesWithNaN() {
+    BoundedSeries s(3, 4);
+    const double v[1] = {2.0};
+    s.append(0, v, 1);
+    QCOMPARE(s.value(0, 0), 2.0);
+    QVERIFY(std::isnan(s.value(0, 1)) && std::isnan(s.value(0, 2)));
+}
+
+void TstTrackingPlots::appendStoresWithoutReplot() {
+    TrackingPlotsWidget w;
+    w.show();
+    w.setCapacity(100);
+    double j[6], c[3];
+    for (int i = 0; i < 250; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QCOMPARE(w.sampleCount(), 100);
+    QCOMPARE(w.droppedCount(), std::uint64_t(150));
+    QCOMPARE(w.plottedPointCount(), 0); // nothing moved into the plot until the timer ticks
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 100, 2000);
+}
+
+void TstTrackingPlots::pausedViewStaysFrozen() {
+    TrackingPlotsWidget w;
+    w.show();
+    double j[6], c[3];
+    for (int i = 0; i < 10; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 10, 2000);
+    w.setPaused(true);
+    for (int i = 10; i < 30; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTest::qWait(150); // several timer ticks
+    QCOMPARE(w.plottedPointCount(), 10);
+    QCOMPARE(w.sampleCount(), 30);
+    w.setPaused(false);
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 30, 2000);
+}
+
+void TstTrackingPlots::csvRoundTrip() {
+    QTemporaryDir dir;
+    TrackingPlotsWidget w;
+    w.show();
+    w.setAxisNames({"A0 chuck", "J1", "J2", "J3", "J4", "J5"});
+    double j[6], c[3];
+    const int n = 40;
+    for (int i = 0; i < n; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.002, j, 6, c);
+    }
+    const QString path = dir.filePath("errors.csv");
+    QString err;
+    QVERIFY2(w.exportCsv(path, &err), qPrintable(err));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines.size(), n + 1);
+    QCOMPARE(
+        lines[0],
+        QByteArray("t_s,A0_chuck_err_deg,J1_err_deg,J2_err_deg,J3_err_deg,J4_err_deg,J5_err_deg,"
+                   "x_err_mm,y_err_mm,z_err_mm"));
+    for (int i = 0; i < n; ++i) {
+        const QList<QByteArray> cells = lines[i + 1].split(',');
+        QCOMPARE(cells.size(), 10);
+        sample(i, j, c);
+        QCOMPARE(cells[0].toDouble(), i * 0.002);
+        for (int k = 0; k < 6; ++k)
+            QCOMPARE(cells[1 + k].toDouble(), j[k]);
+        for (int k = 0; k < 3; ++k)
+            QCOMPARE(cells[7 + k].toDouble(), c[k]);
+    }
+}
+
+void TstTrackingPlots::csvOfTwoAxisMachine() {
+    QTemporaryDir dir;
+    TrackingPlotsWidget w;
+    w.show();
+    w.setAxisCount(2);
+    w.setAxisNames({"X", "A"});
+    const double j[2] = {0.5, -0.5};
+    w.append(0.0, j, 2, nullptr); // no Cartesian error: empty cells
+    QString err;
+    QVERIFY2(w.exportCsv(dir.filePath("xa.csv"), &err), qPrintable(err));
+    QFile f(dir.filePath("xa.csv"));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines[0], QByteArray("t_s,X_err_deg,A_err_deg,x_err_mm,y_err_mm,z_err_mm"));
+    QCOMPARE(lines[1], QByteArray("0,0.5,-0.5,,,"));
+}
+
+void TstTrackingPlots::pngIsAValidImage() {
+    QTemporaryDir dir;
+    TrackingPlotsWidget w;
+    w.show();
+    w.resize(900, 600);
+    double j[6], c[3];
+    for (int i = 0; i < 500; ++i) {
+        sample(i % 7, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    const QString path = dir.filePath("plots.png");
+    QString err;
+    QVERIFY2(w.exportPng(path, &err), qPrintable(err));
+    QImage img(path);
+    QVERIFY(!img.isNull());
+    QVERIFY(img.width() >= 800 && img.height() >= 600);
+    // Traces were drawn: some pixels carry the first trace's blue.
+    int coloured = 0;
+    for (int y = 0; y < img.height(); y += 2)
+        for (int x = 0; x < img.width(); x += 2) {
+            const QColor p = img.pixelColor(x, y);
+            if (p.blue() > 150 && p.red() < 90) ++coloured;
+        }
+    QVERIFY2(coloured > 20, qPrintable(QString::number(coloured)));
+}
+
+void TstTrackingPlots::exportToBadPathNamesThePath() {
+    TrackingPlotsWidget w;
+    w.show();
+    const QString bad = QStringLiteral("/nonexistent-dir/x/errors.csv");
+    QString err;
+    QVERIFY(!w.exportCsv(bad, &err));
+    QVERIFY2(err.contains(bad), qPrintable(err));
+    QVERIFY(!w.exportPng(QStringLiteral("/nonexistent-dir/x/p.png"), &err));
+    QVERIFY2(err.contains(QStringLiteral("p.png")), qPrintable(err));
+}
+
+void TstTrackingPlots::traceVisibilityToggles() {
+    TrackingPlotsWidget w;
+    w.show();
+    QVERIFY(w.traceVisible(2));
+    w.setTraceVisible(2, false);
+    QVERIFY(!w.traceVisible(2));
+    QVERIFY(w.traceVisible(3));
+    w.setTraceVisible(6 + 1, false); // Cartesian y
+    QVERIFY(!w.traceVisible(7));
+    w.setTraceVisible(2, true);
+    QVERIFY(w.traceVisible(2));
+}
+
+void TstTrackingPlots::clearEmptiesEverything() {
+    TrackingPlotsWidget w;
+    w.show();
+    double j[6], c[3];
+    for (int i = 0; i < 20; ++i) {
+        sample(i, j, c);
+        w.append(i, j, 6, c);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 20, 2000);
+    w.clear();
+    QCOMPARE(w.sampleCount(), 0);
+    QCOMPARE(w.droppedCount(), std::uint64_t(0));
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 0, 2000);
+}
+
+void TstTrackingPlots::hiddenWidgetCatchesUpWhenShown() {
+    TrackingPlotsWidget w; // never shown yet
+    double j[6], c[3];
+    for (int i = 0; i < 25; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTest::qWait(120);
+    QCOMPARE(w.plottedPointCount(), 0); // no work for a hidden widget
+    w.show();
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 25, 2000);
+}
+
+QTEST_MAIN(TstTrackingPlots)
+#include "tst_tracking_plots.moc"

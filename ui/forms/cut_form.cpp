@@ -1,0 +1,61 @@
+#include "ui/forms/cut_form.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QVBoxLayout>
+
+namespace CutCell::ui {
+
+using cutcell::CutTarget;
+using cutcell::Job;
+
+CutForm::CutForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
+    auto* what = new QGroupBox(tr("Target and bevel"), this);
+    auto* f = new QFormLayout(what);
+    addRow(f, tr("Cut"),
+           bindChoice(
+               "cut.target", {tr("Hole in the main pipe"), tr("End of the branch pipe")},
+               [](const Job& j) { return j.cut.target == CutTarget::Main ? 0 : 1; },
+               [](Job& j, int i) { j.cut.target = i == 0 ? CutTarget::Main : CutTarget::Branch; }),
+           {});
+    addRow(f, tr("Bevel angle"),
+           bindDouble("cut.bevel_deg", 2, [](Job& j) -> double& { return j.cut.bevel_deg; }),
+           "deg");
+    mainLayout()->addWidget(what);
+
+    auto* speed = new QGroupBox(tr("Speed"), this);
+    auto* s = new QFormLayout(speed);
+    addRow(s, tr("Cutting speed"),
+           bindDouble("cut.speed_mm_s", 3, [](Job& j) -> double& { return j.cut.speed_mm_s; }),
+           "mm/s");
+    addRow(s, tr("Start / stop ramp"),
+           bindDouble("cut.ramp_s", 3, [](Job& j) -> double& { return j.cut.ramp_s; }), "s");
+    mainLayout()->addWidget(speed);
+
+    auto* path = new QGroupBox(tr("Path"), this);
+    auto* p = new QFormLayout(path);
+    addRow(p, tr("Knot spacing"),
+           bindDouble("cut.knot_spacing_mm", 3,
+                      [](Job& j) -> double& { return j.cut.knot_spacing_mm; }),
+           "mm");
+    addRow(p, tr("Max. torch tilt"),
+           bindDouble("cut.max_direction_deviation_deg", 2,
+                      [](Job& j) -> double& { return j.cut.max_direction_deviation_deg; }),
+           "deg");
+    auto* autoPhi = bindBool("cut.start_phi_auto", tr("automatic start point"),
+                             [](Job& j) -> bool& { return j.cut.start_phi_auto; });
+    p->addRow(tr("Start point"), autoPhi);
+    auto* phi =
+        bindDouble("cut.start_phi_deg", 2, [](Job& j) -> double& { return j.cut.start_phi_deg; });
+    addRow(p, tr("Start angle phi"), phi, "deg");
+    connect(autoPhi, &QCheckBox::toggled, phi, [phi](bool on) { phi->setEnabled(!on); });
+    connect(editor, &JobEditor::jobReset, phi,
+            [phi, editor] { phi->setEnabled(!editor->job().cut.start_phi_auto); });
+    mainLayout()->addWidget(path);
+    mainLayout()->addStretch(1);
+}
+
+} // namespace CutCell::ui

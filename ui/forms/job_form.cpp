@@ -1,0 +1,216 @@
+#include "ui/forms/job_form.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QStyle>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace CutCell::ui {
+namespace {
+
+void setInvalid(QWidget* w, bool invalid, const QString& tip) {
+    if (w->property("invalid").toBool() != invalid) {
+        w->setProperty("invalid", invalid);
+        w->style()->unpolish(w);
+        w->style()->polish(w);
+    }
+    w->setToolTip(tip);
+}
+
+} // namespace
+
+JobForm::JobForm(JobEditor* editor, QWidget* parent)
+    : QWidget(parent), editor_(editor), layout_(new QVBoxLayout(this)),
+      issuesLabel_(new QLabel(this)) {
+    issuesLabel_->setObjectName("formIssues");
+    issuesLabel_->setWordWrap(true);
+    issuesLabel_->setTextFormat(Qt::PlainText);
+    issuesLabel_->hide();
+    layout_->addWidget(issuesLabel_);
+    connect(editor_, &JobEditor::jobReset, this, &JobForm::reload);
+    connect(editor_, &JobEditor::issuesChanged, this, &JobForm::markIssues);
+}
+
+QWidget* JobForm::fieldFor(const std::string& key) const {
+    auto it = fields_.find(key);
+    return it == fields_.end() ? nullptr : it->second;
+}
+
+std::vector<std::string> JobForm::keys() const {
+    std::vector<std::string> out;
+    for (const auto& [k, w] : fields_)
+        if (out.empty() || out.back() != k) out.push_back(k);
+    return out;
+}
+
+int JobForm::markedCount() const {
+    return marked_;
+}
+
+void JobForm::registerField(const std::string& key, QWidget* w) {
+    fields_.emplace(key, w);
+    w->setProperty("jobKey", QString::fromStdString(key));
+    w->setObjectName(QString::fromStdString(key));
+}
+
+void JobForm::alsoMark(const std::string& key, QWidget* w) {
+    fields_.emplace(key, w);
+}
+
+QDoubleSpinBox* JobForm::bindDouble(const std::string& key, int decimals, DoubleRef ref) {
+    auto* w = new QDoubleSpinBox(this);
+    w->setDecimals(decimals);
+    w->setRange(-1e9, 1e9);
+    w->setKeyboardTracking(true);
+    w->setAccelerated(true);
+    w->setButtonSymbols(QAbstractSpinBox::NoButtons);
+    w->setAlignment(Qt::AlignRight);
+    registerField(key, w);
+    bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
+                             auto copy = job;
+                             w->setValue(ref(copy));
+                         }});
+    connect(w, &QDoubleSpinBox::valueChanged, this, [this, ref](double v) {
+        if (loading_) return;
+        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+    });
+    return w;
+}
+
+QSpinBox* JobForm::bindInt(const std::string& key, IntRef ref) {
+    auto* w = new QSpinBox(this);
+    w->setRange(-1000000000, 1000000000);
+    w->setButtonSymbols(QAbstractSpinBox::NoButtons);
+    w->setAlignment(Qt::AlignRight);
+    registerField(key, w);
+    bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
+                             auto copy = job;
+                             w->setValue(ref(copy));
+                         }});
+    connect(w, &QSpinBox::valueChanged, this, [this, ref](int v) {
+        if (loading_) return;
+        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+    });
+    return w;
+}
+
+QCheckBox* JobForm::bindBool(const std::string& key, const QString& text, BoolRef ref) {
+    auto* w = new QCheckBox(text, this);
+    registerField(key, w);
+    bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
+                             auto copy = job;
+                             w->setChecked(ref(copy));
+                         }});
+    connect(w, &QCheckBox::toggled, this, [this, ref](bool v) {
+        if (loading_) return;
+        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+    });
+    return w;
+}
+
+QLineEdit* JobForm::bindString(const std::string& key, StringRef ref) {
+    auto* w = new QLineEdit(this);
+    registerField(key, w);
+    bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
+                             auto copy = job;
+                             w->setText(QString::fromStdString(ref(copy)));
+                             w->setCursorPosition(0); // show the start of long names
+                         }});
+    connect(w, &QLineEdit::textEdited, this, [this, ref](const QString& v) {
+        if (loading_) return;
+        editor_->edit([&](cutcell::Job& j) { ref(j) = v.toStdString(); });
+    });
+    return w;
+}
+
+QPlainTextEdit* JobForm::bindText(const std::string& key, StringRef ref) {
+    auto* w = new QPlainTextEdit(this);
+    w->setTabChangesFocus(true);
+    registerField(key, w);
+    bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
+                             auto copy = job;
+                             w->setPlainText(QString::fromStdString(ref(copy)));
+                         }});
+    connect(w, &QPlainTextEdit::textChanged, this, [this, w, ref] {
+        if (loading_) return;
+        const auto text = w->toPlainText().toStdString();
+        auto current = editor_->job();
+        if (ref(current) == text) return;
+        editor_->edit([&](cutcell::Job& j) { ref(j) = text; });
+    });
+    return w;
+}
+
+QComboBox* JobForm::bindChoice(const std::string& key, const QStringList& items,
+                               std::function<int(const cutcell::Job&)> get,
+                               std::function<void(cutcell::Job&, int)> set) {
+    auto* w = new QComboBox(this);
+    w->addItems(items);
+    registerField(key, w);
+    bindings_.push_back({w, [w, get](const cutcell::Job& job) { w->setCurrentIndex(get(job)); }});
+    connect(w, &QComboBox::currentIndexChanged, this, [this, set](int i) {
+        if (loading_ || i < 0) return;
+        editor_->edit([&](cutcell::Job& j) { set(j, i); });
+    });
+    return w;
+}
+
+void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, const QString& unit) {
+    if (unit.isEmpty()) { // no unit (names, choices): the field takes the whole row
+        form->addRow(label, field);
+        return;
+    }
+    auto* row = new QWidget(form->parentWidget());
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(field, 1);
+    auto* u = new QLabel(unit, row);
+    u->setObjectName("unitLabel");
+    u->setMinimumWidth(64);
+    h->addWidget(u);
+    form->addRow(label, row);
+}
+
+void JobForm::reload() {
+    loading_ = true;
+    for (const auto& b : bindings_) {
+        const QSignalBlocker block(b.widget);
+        b.load(editor_->job());
+    }
+    reloadExtra(editor_->job());
+    loading_ = false;
+}
+
+void JobForm::markIssues() {
+    std::map<QWidget*, QStringList> messages;
+    QStringList mine;
+    for (const auto& [key, w] : fields_)
+        messages.emplace(w, QStringList{});
+    for (const auto& issue : editor_->issues()) {
+        auto [lo, hi] = fields_.equal_range(issue.key);
+        if (lo == hi) continue;
+        mine << QString::fromStdString(issue.message);
+        for (auto it = lo; it != hi; ++it)
+            messages[it->second] << QString::fromStdString(issue.message);
+    }
+    marked_ = 0;
+    for (const auto& [w, msgs] : messages) {
+        setInvalid(w, !msgs.isEmpty(), msgs.join('\n'));
+        if (!msgs.isEmpty()) ++marked_;
+    }
+    mine.removeDuplicates();
+    issuesLabel_->setVisible(!mine.isEmpty());
+    issuesLabel_->setText(mine.join('\n'));
+}
+
+} // namespace CutCell::ui

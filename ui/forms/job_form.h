@@ -1,0 +1,88 @@
+#pragma once
+// Base of the parameter forms: binds editor widgets to Job members under the job's dotted keys
+// (the keys validateJob() reports), reloads them when the job is replaced, and marks the
+// fields that have issues (red frame, tooltip and a message under the form naming the value,
+// the unit and the limit).
+//
+// Threading contract: GUI thread only.
+#include "ui/forms/job_editor.h"
+
+#include <QWidget>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+class QSpinBox;
+class QVBoxLayout;
+
+namespace CutCell::ui {
+
+class JobForm : public QWidget {
+    Q_OBJECT
+  public:
+    JobForm(JobEditor* editor, QWidget* parent = nullptr);
+
+    // The widget bound to a job key (tests, focus on an issue); nullptr if this form has none.
+    QWidget* fieldFor(const std::string& key) const;
+    std::vector<std::string> keys() const;
+    // Number of fields currently marked invalid.
+    int markedCount() const;
+
+  protected:
+    using DoubleRef = std::function<double&(cutcell::Job&)>;
+    using IntRef = std::function<int&(cutcell::Job&)>;
+    using BoolRef = std::function<bool&(cutcell::Job&)>;
+    using StringRef = std::function<std::string&(cutcell::Job&)>;
+
+    // A spin box with a wide range: limits are the validator's business, so a bad value can be
+    // entered, is marked and explained instead of being clamped silently.
+    QDoubleSpinBox* bindDouble(const std::string& key, int decimals, DoubleRef ref);
+    QSpinBox* bindInt(const std::string& key, IntRef ref);
+    QCheckBox* bindBool(const std::string& key, const QString& text, BoolRef ref);
+    QLineEdit* bindString(const std::string& key, StringRef ref);
+    QPlainTextEdit* bindText(const std::string& key, StringRef ref);
+    // An enum as a combo: `get` maps the job to an index, `set` an index to the job.
+    QComboBox* bindChoice(const std::string& key, const QStringList& items,
+                          std::function<int(const cutcell::Job&)> get,
+                          std::function<void(cutcell::Job&, int)> set);
+    // Registers an extra key shown on an existing widget (e.g. a group of fields).
+    void alsoMark(const std::string& key, QWidget* w);
+
+    // Adds "label [field] unit" to a form layout.
+    static void addRow(QFormLayout* form, const QString& label, QWidget* field,
+                       const QString& unit);
+    QVBoxLayout* mainLayout() const { return layout_; }
+    JobEditor* editor() const { return editor_; }
+    bool loading() const { return loading_; }
+
+    // Reloads extra (non-bound) widgets after the job was replaced.
+    virtual void reloadExtra(const cutcell::Job&) {}
+
+  private:
+    struct Binding {
+        QWidget* widget = nullptr;
+        std::function<void(const cutcell::Job&)> load;
+    };
+    void reload();
+    void markIssues();
+    void registerField(const std::string& key, QWidget* w);
+
+    JobEditor* editor_;
+    QVBoxLayout* layout_;
+    QLabel* issuesLabel_;
+    std::vector<Binding> bindings_;
+    std::multimap<std::string, QWidget*> fields_;
+    bool loading_ = false;
+    int marked_ = 0;
+};
+
+} // namespace CutCell::ui

@@ -1,0 +1,333 @@
+#include "ui/main_window.h"
+
+#include "core/job/default_job.h"
+#include "ui/forms/job_editor.h"
+#include "ui/forms/parameter_tabs.h"
+#include "ui/job_document.h"
+#include "ui/panels/control_panel.h"
+#include "ui/panels/event_log_panel.h"
+#include "ui/panels/monitor_views.h"
+#include "ui/panels/progress_panel.h"
+#include "ui/panels/state_lamps.h"
+#include "ui/plan_worker.h"
+#include "ui/run_controller.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFrame>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+namespace CutCell::ui {
+
+using cutcell::EngineState;
+using cutcell::Severity;
+
+MainWindow::MainWindow(EngineRigFactory factory, QWidget* parent)
+    : QMainWindow(parent), editor_(new JobEditor(this)), document_(new JobDocument(editor_, this)),
+      run_(new RunController(editor_, std::move(factory), this)) {
+    setObjectName("mainWindow");
+    buildLayout();
+    buildMenus();
+    connectRun();
+    connect(document_, &JobDocument::changed, this, &MainWindow::refreshTitle);
+    connect(editor_, &JobEditor::edited, this, &MainWindow::refreshTitle);
+    connect(document_, &JobDocument::recentFilesChanged, this, &MainWindow::refreshRecentMenu);
+    document_->newJob(cutcell::defaultJob());
+    refreshRecentMenu();
+    resize(1600, 1000);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildLayout() {
+    params_ = new ParameterTabs(editor_, this);
+    params_->setMinimumWidth(400);
+    cell_ = new CellViewPanel(this);
+    plots_ = new PlotsPanel(this);
+    plots_->setAxisNames({"q0 chuck", "q1 base", "q2 shoulder", "q3 elbow", "q4 wrist", "q5 roll"});
+    controls_ = new ControlPanel(this);
+    lamps_ = new StateLamps(this);
+    progress_ = new ProgressPanel(this);
+    log_ = new EventLogPanel(this);
+
+    auto* centre = new QSplitter(Qt::Vertical, this);
+    centre->addWidget(cell_);
+    centre->addWidget(plots_);
+    centre->setStretchFactor(0, 3);
+    centre->setStretchFactor(1, 2);
+    centre->setSizes({560, 360});
+
+    // The operator column: E-STOP first, always on screen.
+    auto* column = new QFrame(this);
+    column->setObjectName("operatorColumn");
+    column->setFixedWidth(320);
+    auto* cv = new QVBoxLayout(column);
+    cv->setContentsMargins(0, 0, 0, 0);
+    cv->addWidget(controls_);
+    cv->addWidget(lamps_);
+    cv->addWidget(progress_);
+    cv->addStretch(1);
+
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    top->addWidget(params_);
+    top->addWidget(centre);
+    top->setStretchFactor(0, 0);
+    top->setStretchFactor(1, 1);
+    top->setSizes({400, 900});
+
+    auto* main = new QSplitter(Qt::Vertical, this);
+    main->addWidget(top);
+    main->addWidget(log_);
+    main->setStretchFactor(0, 4);
+    main->setStretchFactor(1, 1);
+    main->setSizes({800, 140});
+
+    auto* central = new QWidget(this);
+    auto* h = new QHBoxLayout(central);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->setSpacing(0);
+    h->addWidget(main, 1);
+    h->addWidget(column);
+    setCentralWidget(central);
+
+    stateLabel_ = new QLabel(tr("Idle"), this);
+    stateLabel_->setObjectName("statusState");
+    rigLabel_ = new QLabel(tr("no machine yet"), this);
+    planBar_ = new QProgressBar(this);
+    planBar_->setRange(0, 100);
+    planBar_->setMaximumWidth(180);
+    planBar_->setFormat(tr("planning %p %"));
+    planBar_->hide();
+    planCancel_ = new QPushButton(tr("Cancel planning"), this);
+    planCancel_->hide();
+    statusBar()->addWidget(stateLabel_);
+    statusBar()->addWidget(rigLabel_, 1);
+    cycleLabel_ = new QLabel(this);
+    cycleLabel_->setObjectName("cycleStats");
+    statusBar()->addPermanentWidget(cycleLabel_);
+    statusBar()->addPermanentWidget(planBar_);
+    statusBar()->addPermanentWidget(planCancel_);
+    statusBar()->addPermanentWidget(
+        new QLabel(tr("E-STOP: %1 (any field)").arg(ControlPanel::kEStopKey), this));
+}
+
+void MainWindow::buildMenus() {
+    auto* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
+        if (maybeSave()) newJob();
+    });
+    file->addAction(tr("&Open..."), QKeySequence::Open, this, [this] {
+        if (!maybeSave()) return;
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open job"), {},
+                                                       tr("CutCell jobs (*.json);;All files (*)"));
+        if (!p.isEmpty()) openJob(p);
+    });
+    recentMenu_ = file->addMenu(tr("Open &recent"));
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
+    file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { saveAs(); });
+    file->addSeparator();
+    file->addAction(tr("Export plots as PNG..."), this, [this] {
+        const QString p = QFileDialog::getSaveFileName(this, tr("Export plots"), {}, "PNG (*.png)");
+        QString err;
+        if (!p.isEmpty() && !plots_->exportPng(p, &err)) log_->add(Severity::Error, err);
+    });
+    file->addAction(tr("Export plot data as CSV..."), this, [this] {
+        const QString p = QFileDialog::getSaveFileName(this, tr("Export data"), {}, "CSV (*.csv)");
+        QString err;
+        if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    auto* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keys"), this, [this] {
+        QMessageBox::information(
+            this, tr("Keys"),
+            tr("%1: EMERGENCY STOP (works from any field)\nCtrl+N / Ctrl+O / Ctrl+S: job files")
+                .arg(ControlPanel::kEStopKey));
+    });
+}
+
+void MainWindow::connectRun() {
+    connect(controls_, &ControlPanel::emergencyStopRequested, run_, &RunController::emergencyStop);
+    connect(controls_, &ControlPanel::enableRequested, run_, &RunController::enable);
+    connect(controls_, &ControlPanel::homeRequested, run_, &RunController::home);
+    connect(controls_, &ControlPanel::startRequested, this, [this] {
+        plots_->clear();
+        run_->start();
+    });
+    connect(controls_, &ControlPanel::feedHoldRequested, run_, &RunController::feedHold);
+    connect(controls_, &ControlPanel::resumeRequested, run_, &RunController::resume);
+    connect(controls_, &ControlPanel::abortRequested, run_, &RunController::abort);
+    connect(controls_, &ControlPanel::resetRequested, run_, &RunController::reset);
+    connect(controls_, &ControlPanel::overrideChanged, run_, &RunController::setOverride);
+    connect(run_, &RunController::startBlockedChanged, controls_, &ControlPanel::setStartBlocked);
+    controls_->setStartBlocked(run_->startBlockedReason());
+    connect(run_, &RunController::message, log_,
+            [this](Severity s, const QString& m) { log_->add(s, m); });
+    connect(run_, &RunController::rigChanged, rigLabel_, &QLabel::setText);
+    connect(run_, &RunController::planStarted, this, [this] {
+        planBar_->setValue(0);
+        planBar_->show();
+        planCancel_->show();
+    });
+    connect(run_, &RunController::planProgress, this,
+            [this](double f) { planBar_->setValue(static_cast<int>(f * 100)); });
+    connect(run_->planner(), &PlanWorker::planned, this, [this] {
+        planBar_->hide();
+        planCancel_->hide();
+    });
+    connect(run_->planner(), &PlanWorker::cancelled, planBar_, &QWidget::hide);
+    connect(run_->planner(), &PlanWorker::cancelled, planCancel_, &QWidget::hide);
+    connect(run_->planner(), &PlanWorker::failed, planBar_, &QWidget::hide);
+    connect(run_->planner(), &PlanWorker::failed, planCancel_, &QWidget::hide);
+    connect(planCancel_, &QPushButton::clicked, run_, &RunController::cancelPlanning);
+    connect(run_, &RunController::planChanged, this,
+            [this](std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job) {
+                cell_->setPlan(plan, job);
+                progress_->setPlannedTotals(static_cast<std::uint32_t>(plan->knots.size()),
+                                            plan->cut_time_s);
+            });
+    auto* bridge = run_->bridge();
+    connect(bridge, &EngineBridge::samples, this, &MainWindow::onSamples);
+    connect(bridge, &EngineBridge::event, log_, &EventLogPanel::addEngineEvent);
+    connect(bridge, &EngineBridge::stateChanged, this, &MainWindow::onState);
+    connect(bridge, &EngineBridge::cycleStats, this, [this](const cutcell::CycleStats& c) {
+        QString text = tr("cycle %1 ms, jitter p99 %2 us, overruns %3")
+                           .arg(c.period_s * 1000.0, 0, 'g', 3)
+                           .arg(c.jitter_us_p99, 0, 'f', 0)
+                           .arg(c.overruns);
+        if (c.estops_measured > 0)
+            text += tr(", E-STOP latency %1 us").arg(c.last_estop_latency_us, 0, 'f', 0);
+        cycleLabel_->setText(text);
+    });
+}
+
+void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {
+    const auto& last = batch.back();
+    plots_->append(batch);
+    progress_->setSample(last);
+    cell_->setSample(last);
+    lamps_->setTorch(last.torch_on);
+    controls_->setState(last.state, last.homed);
+}
+
+void MainWindow::onState(EngineState s) {
+    lamps_->setState(s);
+    controls_->setState(s, run_->bridge()->last().homed);
+    plots_->setPaused(s == EngineState::Paused);
+    stateLabel_->setText(QString::fromLatin1(cutcell::toString(s)));
+    if (s == EngineState::EmergencyStop || s == EngineState::Fault) lamps_->setTorch(false);
+    const bool locked = s == EngineState::Running || s == EngineState::Paused ||
+                        s == EngineState::Homing || s == EngineState::Jogging;
+    params_->setEditingLocked(locked, tr("Parameters are locked while the machine moves."));
+}
+
+void MainWindow::refreshTitle() {
+    setWindowTitle(tr("%1[*] - CutCell").arg(document_->displayName()));
+    setWindowModified(document_->modified());
+}
+
+void MainWindow::refreshRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = document_->recentFiles();
+    for (const QString& f : files)
+        recentMenu_
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            if (maybeSave()) openJob(f);
+                        })
+            ->setToolTip(f);
+    recentMenu_->setEnabled(!files.isEmpty());
+    if (!files.isEmpty()) {
+        recentMenu_->addSeparator();
+        recentMenu_->addAction(tr("Clear list"), document_, &JobDocument::clearRecentFiles);
+    }
+}
+
+bool MainWindow::openJob(const QString& path, QString* error) {
+    QString err;
+    if (!document_->open(path, &err)) {
+        log_->add(Severity::Error, err);
+        if (error) *error = err;
+        return false;
+    }
+    log_->add(Severity::Info, tr("Opened %1").arg(document_->path()));
+    return true;
+}
+
+void MainWindow::newJob() {
+    document_->newJob(cutcell::defaultJob());
+    log_->add(Severity::Info, tr("New job from the default job."));
+}
+
+bool MainWindow::save() {
+    if (document_->path().isEmpty()) return saveAs();
+    QString err;
+    if (!document_->save(&err)) {
+        log_->add(Severity::Error, err);
+        return false;
+    }
+    log_->add(Severity::Info, tr("Saved %1").arg(document_->path()));
+    return true;
+}
+
+bool MainWindow::saveAs(const QString& path) {
+    QString p = path;
+    if (p.isEmpty())
+        p = QFileDialog::getSaveFileName(this, tr("Save job"), document_->path(),
+                                         tr("CutCell jobs (*.json)"));
+    if (p.isEmpty()) return false;
+    QString err;
+    if (!document_->saveAs(p, &err)) {
+        log_->add(Severity::Error, err);
+        return false;
+    }
+    log_->add(Severity::Info, tr("Saved %1").arg(document_->path()));
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!document_->modified()) return true;
+    const int answer =
+        savePrompt_
+            ? savePrompt_()
+            : QMessageBox::warning(this, tr("Unsaved changes"),
+                                   tr("The job \"%1\" has unsaved changes. Save them?")
+                                       .arg(document_->displayName()),
+                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                   QMessageBox::Save);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    const auto s = run_->bridge()->state();
+    if (s == EngineState::Running || s == EngineState::Paused || s == EngineState::Homing) {
+        const auto answer = QMessageBox::warning(
+            this, tr("Machine in motion"),
+            tr("The machine is %1. Quitting stops it at once (emergency stop). Quit?")
+                .arg(QString::fromLatin1(cutcell::toString(s))),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+        if (answer != QMessageBox::Yes) {
+            e->ignore();
+            return;
+        }
+        run_->emergencyStop();
+    }
+    if (maybeSave())
+        e->accept();
+    else
+        e->ignore();
+}
+
+} // namespace CutCell::ui

@@ -1,0 +1,90 @@
+#pragma once
+// The operator station's main window. It only lays out and connects the parts: parameter
+// forms (ParameterTabs/JobEditor), the job file (JobDocument), the run (RunController with
+// its EngineBridge and PlanWorker), the control panel with the EMERGENCY STOP, lamps,
+// progress, 3D view, plots and the event log. No maths and no device I/O here.
+//
+// Threading contract: GUI thread only.
+#include "ui/engine_rig.h"
+
+#include <QMainWindow>
+
+#include <functional>
+
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QPushButton;
+
+namespace CutCell::ui {
+
+class CellViewPanel;
+class ControlPanel;
+class EventLogPanel;
+class JobDocument;
+class JobEditor;
+class ParameterTabs;
+class PlotsPanel;
+class ProgressPanel;
+class RunController;
+class StateLamps;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit MainWindow(EngineRigFactory factory, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a job file; on failure the message is logged and returned.
+    bool openJob(const QString& path, QString* error = nullptr);
+    void newJob();
+    bool save();
+    bool saveAs(const QString& path = {});
+    // Asks whether to save unsaved changes; false when the user cancels.
+    bool maybeSave();
+    // Replaces the Save/Discard/Cancel dialog (tests): returns a QMessageBox::StandardButton.
+    void setSavePrompt(std::function<int()> prompt) { savePrompt_ = std::move(prompt); }
+
+    JobEditor* editor() const { return editor_; }
+    JobDocument* document() const { return document_; }
+    RunController* run() const { return run_; }
+    ParameterTabs* parameters() const { return params_; }
+    ControlPanel* controls() const { return controls_; }
+    StateLamps* lamps() const { return lamps_; }
+    ProgressPanel* progress() const { return progress_; }
+    EventLogPanel* eventLog() const { return log_; }
+    CellViewPanel* cellView() const { return cell_; }
+    PlotsPanel* plots() const { return plots_; }
+
+  protected:
+    void closeEvent(QCloseEvent* e) override;
+
+  private:
+    void buildLayout();
+    void buildMenus();
+    void connectRun();
+    void refreshTitle();
+    void refreshRecentMenu();
+    void onSamples(const std::vector<cutcell::TelemetrySample>& batch);
+    void onState(cutcell::EngineState s);
+
+    JobEditor* editor_;
+    JobDocument* document_;
+    RunController* run_;
+    ParameterTabs* params_ = nullptr;
+    ControlPanel* controls_ = nullptr;
+    StateLamps* lamps_ = nullptr;
+    ProgressPanel* progress_ = nullptr;
+    EventLogPanel* log_ = nullptr;
+    CellViewPanel* cell_ = nullptr;
+    PlotsPanel* plots_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QLabel* stateLabel_ = nullptr;
+    QLabel* rigLabel_ = nullptr;
+    QLabel* cycleLabel_ = nullptr;
+    QProgressBar* planBar_ = nullptr;
+    QPushButton* planCancel_ = nullptr;
+    std::function<int()> savePrompt_;
+};
+
+} // namespace CutCell::ui

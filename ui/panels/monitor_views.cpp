@@ -1,0 +1,137 @@
+#include "ui/panels/monitor_views.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#ifdef CUTCELL_HAVE_VIEW3D
+#include "ui/view3d/cell_view.h"
+#include "ui/view3d/scene_model.h"
+#endif
+#ifdef CUTCELL_HAVE_PLOTS
+#include "plots/tracking_plots_widget.h"
+#endif
+
+#include <cmath>
+
+namespace CutCell::ui {
+
+CellViewPanel::CellViewPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("cellViewPanel");
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+#ifdef CUTCELL_HAVE_VIEW3D
+    // The view brings its own preset toolbar and, without OpenGL, its own placeholder.
+    view_ = new cutcell::view3d::CellView(this);
+    v->addWidget(view_, 1);
+#else
+    auto* note = new QLabel(tr("3D view not built in this configuration."), this);
+    note->setObjectName("viewPlaceholder");
+    note->setAlignment(Qt::AlignCenter);
+    v->addWidget(note, 1);
+#endif
+}
+
+bool CellViewPanel::rendering() const {
+#ifdef CUTCELL_HAVE_VIEW3D
+    return view_ && view_->rendering();
+#else
+    return false;
+#endif
+}
+
+void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
+                            const cutcell::Job& job) {
+#ifdef CUTCELL_HAVE_VIEW3D
+    if (view_ && plan) view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
+#else
+    (void)plan;
+    (void)job;
+#endif
+}
+
+void CellViewPanel::setSample(const cutcell::TelemetrySample& s) {
+#ifdef CUTCELL_HAVE_VIEW3D
+    if (view_) view_->setMachineState(s.actual, s.progress, s.torch_on);
+#else
+    (void)s;
+#endif
+}
+
+PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("plotsPanel");
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_ = new cutcell::plots::TrackingPlotsWidget(this);
+    v->addWidget(plots_);
+#else
+    auto* note = new QLabel(tr("Tracking plots not built in this configuration."), this);
+    note->setAlignment(Qt::AlignCenter);
+    v->addWidget(note);
+#endif
+}
+
+void PlotsPanel::setAxisNames(const QStringList& names) {
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->setAxisNames(names);
+    plots_->setAxisCount(static_cast<int>(names.size()));
+#else
+    (void)names;
+#endif
+}
+
+void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
+    for (const auto& s : batch) {
+        // Only the cut itself is plotted, from its first point (approach, settling, homing
+        // and rest are not tracking errors of the cut).
+        const bool cutting =
+            s.state == cutcell::EngineState::Running || s.state == cutcell::EngineState::Paused;
+        if (!cutting || (s.elapsed_s <= 0 && s.progress <= 0)) continue;
+#ifdef CUTCELL_HAVE_PLOTS
+        double err[cutcell::kAxisCount];
+        for (int i = 0; i < cutcell::kAxisCount; ++i)
+            err[i] = cutcell::rad2deg(s.error[i]);
+        const double cart[3] = {s.cartesian_error_mm.x(), s.cartesian_error_mm.y(),
+                                s.cartesian_error_mm.z()};
+        plots_->append(s.elapsed_s, err, cutcell::kAxisCount, cart);
+#endif
+        ++appended_;
+    }
+}
+
+void PlotsPanel::clear() {
+    appended_ = 0;
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->clear();
+#endif
+}
+
+void PlotsPanel::setPaused(bool paused) {
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->setPaused(paused);
+#else
+    (void)paused;
+#endif
+}
+
+bool PlotsPanel::exportPng(const QString& path, QString* error) {
+#ifdef CUTCELL_HAVE_PLOTS
+    return plots_->exportPng(path, error);
+#else
+    (void)path;
+    if (error) *error = tr("plots not built");
+    return false;
+#endif
+}
+
+bool PlotsPanel::exportCsv(const QString& path, QString* error) {
+#ifdef CUTCELL_HAVE_PLOTS
+    return plots_->exportCsv(path, error);
+#else
+    (void)path;
+    if (error) *error = tr("plots not built");
+    return false;
+#endif
+}
+
+} // namespace CutCell::ui

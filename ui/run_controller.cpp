@@ -1,0 +1,308 @@
+#include "ui/run_controller.h"
+
+#include "core/job/job_io.h"
+#include "core/json/json.h"
+#include "ui/forms/job_editor.h"
+#include "ui/plan_worker.h"
+
+#if __has_include("core/machines/pipe_robot_program.h")
+#include "core/machines/pipe_robot_program.h"
+#define CUTCELL_HAVE_PROGRAM_BUILDER 1
+#endif
+
+#include <QTimer>
+
+namespace CutCell::ui {
+
+using cutcell::EngineState;
+using cutcell::Severity;
+
+namespace {
+
+// Parts of a job that shape the rig (devices, cycle, engine behaviour): a change rebuilds it.
+std::string rigKey(const cutcell::Job& job) {
+    const auto doc = cutcell::jobToJson(job);
+    std::string key;
+    for (const char* part : {"sim", "engine", "devices", "controller", "plant"})
+        if (const auto* v = doc.find(part)) key += cutcell::json::write(*v, 0);
+    return key;
+}
+
+bool busyState(EngineState s) {
+    return s == EngineState::Running || s == EngineState::Paused || s == EngineState::Homing ||
+           s == EngineState::Jogging || s == EngineState::EmergencyStop || s == EngineState::Fault;
+}
+
+} // namespace
+
+RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObject* parent)
+    : QObject(parent), editor_(editor), factory_(std::move(factory)),
+      planner_(new PlanWorker(this)), bridge_(new EngineBridge(this)),
+      replanTimer_(new QTimer(this)) {
+    replanTimer_->setSingleShot(true);
+    replanTimer_->setInterval(400); // replan after a pause in typing, not at every keystroke
+    connect(replanTimer_, &QTimer::timeout, this, &RunController::replanNow);
+    connect(editor_, &JobEditor::edited, this, [this] {
+        replanTimer_->start();
+        updateBlocked();
+    });
+    connect(editor_, &JobEditor::jobReset, this, &RunController::replanNow);
+    connect(planner_, &PlanWorker::started, this, [this] {
+        emit planStarted();
+        updateBlocked();
+    });
+    connect(planner_, &PlanWorker::progress, this, &RunController::planProgress);
+    connect(planner_, &PlanWorker::planned, this, &RunController::onPlanned);
+    connect(planner_, &PlanWorker::cancelled, this, [this] {
+        emit message(Severity::Warning, tr("Planning cancelled."));
+        updateBlocked();
+    });
+    connect(planner_, &PlanWorker::failed, this, [this](const QString& m) {
+        emit message(Severity::Error, tr("Planning failed: %1").arg(m));
+        updateBlocked();
+    });
+    connect(bridge_, &EngineBridge::stateChanged, this, &RunController::onState);
+    connect(bridge_, &EngineBridge::samples, this, [this] {
+        updateBlocked(); // e.g. homed may change within one tick without a visible state change
+        if (autoRun_) stepAutoRun();
+    });
+    updateBlocked();
+}
+
+RunController::~RunController() {
+    bridge_->setEngine(nullptr);
+    if (rig_) rig_->engine().emergencyStop(); // never leave a machine moving
+    rig_.reset();
+}
+
+bool RunController::planning() const {
+    return replanTimer_->isActive() || planner_->busy();
+}
+
+bool RunController::engineBusy() const {
+    return busyState(bridge_->state());
+}
+
+void RunController::replanNow() {
+    replanTimer_->stop();
+    if (!editor_->valid()) {
+        planner_->cancel();
+        updateBlocked();
+        if (autoRun_) {
+            autoRun_ = false;
+            emit autoRunFinished(false, blocked_);
+        }
+        return;
+    }
+    planner_->request(editor_->job());
+    updateBlocked();
+}
+
+void RunController::cancelPlanning() {
+    replanTimer_->stop();
+    planner_->cancel();
+}
+
+void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
+                              const cutcell::Job& job) {
+    plan_ = std::move(plan);
+    planJob_ = job;
+    programLoaded_ = false;
+    programError_.clear();
+    emit planChanged(plan_, planJob_);
+    if (!plan_->reachable) {
+        emit message(Severity::Error,
+                     tr("Path not reachable: %1").arg(QString::fromStdString(plan_->problem)));
+        updateBlocked();
+        if (autoRun_) {
+            autoRun_ = false;
+            emit autoRunFinished(false, blocked_);
+        }
+        return;
+    }
+    emit message(Severity::Info, tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
+                                     .arg(plan_->knots.size())
+                                     .arg(plan_->length_mm, 0, 'f', 1)
+                                     .arg(plan_->cut_time_s, 0, 'f', 1)
+                                     .arg(plan_->max_deviation_deg, 0, 'f', 1));
+    programPending_ = true;
+    loadProgram();
+}
+
+void RunController::loadProgram() {
+    if (!programPending_ || !plan_) return;
+    if (engineBusy()) {
+        updateBlocked(); // loaded when the engine is back at rest (onState)
+        return;
+    }
+    programPending_ = false;
+    if (!rig_ || rigKey(rigJob_) != rigKey(planJob_)) {
+        bridge_->setEngine(nullptr);
+        rig_.reset();
+        std::string err;
+        rig_ = factory_ ? factory_(planJob_, clock_, &err) : nullptr;
+        if (!rig_) {
+            programError_ = tr("machine not available: %1")
+                                .arg(QString::fromStdString(err.empty() ? "no rig factory" : err));
+            emit message(Severity::Error, programError_);
+            updateBlocked();
+            return;
+        }
+        rigJob_ = planJob_;
+        bridge_->setEngine(&rig_->engine());
+        emit rigChanged(QString::fromStdString(rig_->description()));
+    }
+#ifdef CUTCELL_HAVE_PROGRAM_BUILDER
+    try {
+        const auto text = cutcell::json::write(cutcell::jobToJson(planJob_));
+        auto program = cutcell::buildPipeRobotProgram(planJob_, *plan_, text);
+        if (!rig_->engine().load(std::move(program)))
+            throw std::runtime_error("the engine's command queue is full");
+        programLoaded_ = true;
+    } catch (const std::exception& e) {
+        programError_ = tr("cannot load the program: %1").arg(QString::fromUtf8(e.what()));
+        emit message(Severity::Error, programError_);
+    }
+#else
+    programError_ = tr("this build has no motion program builder");
+#endif
+    updateBlocked();
+    if (autoRun_) stepAutoRun();
+}
+
+void RunController::onState(EngineState s) {
+    if (programPending_ && !busyState(s)) loadProgram();
+    updateBlocked();
+    if (autoRun_) stepAutoRun();
+}
+
+void RunController::updateBlocked() {
+    QString r;
+    const auto s = bridge_->state();
+    const auto& issues = editor_->issues();
+    if (!issues.empty())
+        r = tr("%n invalid field(s) - %1", nullptr, static_cast<int>(issues.size()))
+                .arg(QString::fromStdString(issues.front().message));
+    else if (planning())
+        r = tr("planning the path...");
+    else if (!plan_)
+        r = tr("no plan yet");
+    else if (!plan_->reachable)
+        r = tr("path not reachable - %1").arg(QString::fromStdString(plan_->problem));
+    else if (!programError_.isEmpty())
+        r = programError_;
+    else if (programPending_ && busyState(s))
+        r = tr("the new plan is loaded when the machine is at rest");
+    else if (!programLoaded_)
+        r = tr("no program loaded");
+    else {
+        switch (s) {
+        case EngineState::Idle:
+            r = tr("drives disabled - press Enable");
+            break;
+        case EngineState::Ready:
+            if (!bridge_->last().homed) r = tr("axes not homed - press Home");
+            break;
+        case EngineState::Homing:
+            r = tr("homing in progress");
+            break;
+        case EngineState::Jogging:
+            r = tr("jogging in progress");
+            break;
+        case EngineState::Running:
+            r = tr("the cut is running");
+            break;
+        case EngineState::Paused:
+            r = tr("feed hold - press Resume or Abort");
+            break;
+        case EngineState::Completed:
+            r = tr("cut completed - press Home to cut again");
+            break;
+        case EngineState::EmergencyStop:
+            r = tr("EMERGENCY STOP latched - press Reset");
+            break;
+        case EngineState::Fault:
+            r = tr("fault - see the event log, then press Reset");
+            break;
+        }
+    }
+    if (r != blocked_) {
+        blocked_ = r;
+        emit startBlockedChanged(blocked_);
+    }
+}
+
+void RunController::enable() {
+    if (rig_) rig_->engine().enable();
+}
+void RunController::home() {
+    if (rig_) rig_->engine().home();
+}
+void RunController::start() {
+    if (rig_ && blocked_.isEmpty()) rig_->engine().start();
+}
+void RunController::feedHold() {
+    if (rig_) rig_->engine().feedHold();
+}
+void RunController::resume() {
+    if (rig_) rig_->engine().resume();
+}
+void RunController::abort() {
+    if (rig_) rig_->engine().abort();
+}
+void RunController::setOverride(double fraction) {
+    if (rig_) rig_->engine().setOverride(fraction);
+}
+
+void RunController::reset() {
+    if (!rig_) return;
+    // The operator has pulled the mushroom button back out and acknowledges.
+    if (bridge_->state() == EngineState::EmergencyStop) rig_->engine().releaseEmergencyStop();
+    rig_->engine().reset();
+}
+
+void RunController::emergencyStop() {
+    emit message(Severity::Error, tr("EMERGENCY STOP pressed by the operator."));
+    if (rig_) rig_->engine().emergencyStop();
+}
+
+void RunController::startAutoRun() {
+    autoRun_ = true;
+    autoEnableSent_ = autoHomeSent_ = autoStartSent_ = false;
+    stepAutoRun();
+}
+
+void RunController::stepAutoRun() {
+    if (!autoRun_ || !rig_ || !programLoaded_) return;
+    const auto s = bridge_->state();
+    auto& engine = rig_->engine();
+    const auto finish = [this](bool ok, const QString& why) {
+        autoRun_ = false;
+        emit autoRunFinished(ok, why);
+    };
+    switch (s) {
+    case EngineState::Idle:
+        if (!autoEnableSent_) autoEnableSent_ = engine.enable();
+        break;
+    case EngineState::Ready:
+        if (!bridge_->last().homed) {
+            if (!autoHomeSent_) autoHomeSent_ = engine.home();
+        } else if (!autoStartSent_) {
+            autoStartSent_ = engine.start();
+        }
+        break;
+    case EngineState::Completed:
+        if (autoStartSent_) finish(true, {});
+        break;
+    case EngineState::EmergencyStop:
+        finish(false, tr("emergency stop during the run"));
+        break;
+    case EngineState::Fault:
+        finish(false, tr("fault during the run (see the event log)"));
+        break;
+    default:
+        break;
+    }
+}
+
+} // namespace CutCell::ui

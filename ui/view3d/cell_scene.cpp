@@ -1,0 +1,437 @@
+#include "ui/view3d/cell_scene.h"
+
+#include "ui/view3d/cell_scene_impl.h"
+#include "ui/view3d/scene_geometry.h"
+
+#include <vtkCellArray.h>
+#include <vtkLightKit.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace cutcell::view3d {
+
+namespace {
+
+constexpr int kFacets = 64;
+
+vtkSmartPointer<vtkActor> makeActor(vtkPolyData* pd, Rgb c, double opacity = 1.0) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(pd);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    vtkProperty* p = actor->GetProperty();
+    p->SetColor(c.r, c.g, c.b);
+    p->SetOpacity(opacity);
+    p->SetDiffuse(0.8);
+    p->SetAmbient(0.15);
+    p->SetSpecular(0.25);
+    p->SetSpecularPower(25);
+    return actor;
+}
+
+void setPose(vtkActor* actor, const Eigen::Matrix4d& m) {
+    vtkMatrix4x4* um = actor->GetUserMatrix();
+    if (!um) {
+        vtkNew<vtkMatrix4x4> fresh;
+        actor->SetUserMatrix(fresh);
+        um = fresh;
+    }
+    toVtkMatrix(m, um);
+    um->Modified();
+    actor->Modified();
+}
+
+unsigned char byte(double v) {
+    return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+}
+
+Eigen::Matrix4d scaled(const Pose& frame, double rx, double ry, double rz) {
+    Eigen::Matrix4d m = frame.matrix();
+    m.block<3, 1>(0, 0) *= rx;
+    m.block<3, 1>(0, 1) *= ry;
+    m.block<3, 1>(0, 2) *= rz;
+    return m;
+}
+
+} // namespace
+
+CellScene::CellScene() : d(std::make_unique<Impl>()) {
+    d->renderer->GradientBackgroundOn();
+    d->renderer->SetBackground(colours::kBackgroundBottom.r, colours::kBackgroundBottom.g,
+                               colours::kBackgroundBottom.b);
+    d->renderer->SetBackground2(colours::kBackgroundTop.r, colours::kBackgroundTop.g,
+                                colours::kBackgroundTop.b);
+    d->renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLightKit> lights;
+    lights->SetKeyLightIntensity(0.85);
+    lights->AddLightsToRenderer(d->renderer);
+}
+
+CellScene::~CellScene() = default;
+
+vtkRenderer* CellScene::renderer() const {
+    return d->renderer;
+}
+const SceneModel& CellScene::model() const {
+    return d->model;
+}
+bool CellScene::hasScene() const {
+    return d->hasScene;
+}
+
+void CellScene::setScene(const SceneModel& model) {
+    d->model = model;
+    d->hasScene = true;
+    d->q = model.homeQ;
+    d->progress = 0;
+    d->torchOn = false;
+    d->done = -1;
+    d->statusKey = -1;
+    d->build();
+    d->place();
+    d->updateDone(0);
+    d->updateStatus();
+    d->applyCamera(d->preset);
+}
+
+void CellScene::setMachineState(const JointVector& q, double progressFraction, bool torchOn) {
+    if (!d->hasScene) return;
+    d->q = q;
+    d->progress = std::clamp(std::isfinite(progressFraction) ? progressFraction : 0.0, 0.0, 1.0);
+    d->torchOn = torchOn;
+    d->place();
+    const int n = static_cast<int>(d->model.pathWork.size());
+    const int count =
+        d->progress <= 0 || n == 0 ? 0 : 1 + static_cast<int>(std::lround(d->progress * (n - 1)));
+    d->updateDone(std::min(count, n));
+    d->updateStatus();
+    if (d->preset == ViewPreset::FollowTorch) d->applyCamera(ViewPreset::FollowTorch);
+}
+
+void CellScene::Impl::build() {
+    renderer->RemoveAllViewProps();
+    workActors.clear();
+    workLocal.clear();
+    arm.clear();
+    fixedActors.clear();
+    const SceneModel& m = model;
+    const auto addWork = [&](vtkSmartPointer<vtkActor> a, const Eigen::Matrix4d& local) {
+        renderer->AddActor(a);
+        workActors.push_back(a);
+        workLocal.push_back(local);
+        return a;
+    };
+    const Eigen::Matrix4d I = Eigen::Matrix4d::Identity();
+
+    // Work pipe with its wall.
+    const double R = m.workPipe.radius_mm;
+    const double rIn = std::max(0.0, R - m.workPipe.wall_mm);
+    const double z0 = m.workPipeCentreZ_mm - m.workPipe.length_mm / 2;
+    const double z1 = m.workPipeCentreZ_mm + m.workPipe.length_mm / 2;
+    pipe = addWork(makeActor(makeTube(R, rIn, z0, z1, kFacets * 2), colours::kPipe), I);
+    pipe->GetProperty()->SetSpecular(0.45);
+    pipe->GetProperty()->SetSpecularPower(30);
+
+    // Chuck at the end farther from the machine's base (it turns with the pipe).
+    const Vec3 e0 = m.baseFromWorkAtZero * Vec3(0, 0, z0);
+    const Vec3 e1 = m.baseFromWorkAtZero * Vec3(0, 0, z1);
+    const double s = e1.head<2>().norm() > e0.head<2>().norm() ? 1.0 : -1.0;
+    const double zEnd = s > 0 ? z1 : z0;
+    const double chuckR = R * 1.45 + 15;
+    addWork(makeActor(makeFrustum(chuckR, chuckR, zEnd - s * 20, zEnd + s * 70, kFacets, true),
+                      colours::kMachine),
+            I);
+    for (int j = 0; j < 3; ++j) {
+        Pose jaw = Pose::Identity();
+        jaw.rotate(Eigen::AngleAxisd(2 * kPi * j / 3 + kPi / 2, Vec3::UnitZ()));
+        jaw.translate(Vec3(R + 14, 0, zEnd - s * 38));
+        addWork(makeActor(makeBox(26, 22, 34), colours::kArmLink), jaw.matrix());
+    }
+    // Headstock behind the chuck (does not turn), down to the floor.
+    const Vec3 axis = m.baseFromWorkAtZero.linear().col(2) * s;
+    const Vec3 hc = m.baseFromWorkAtZero * Vec3(0, 0, zEnd + s * 110);
+    const double top = hc.z() + chuckR;
+    const Vec3 size = axis.cwiseAbs() * 80 + (Vec3::Ones() - axis.cwiseAbs()) * (1.8 * chuckR);
+    auto head = makeActor(makeBox(size.x(), size.y(), top - m.floorZ_mm), colours::kMachine);
+    head->SetPosition(hc.x(), hc.y(), (top + m.floorZ_mm) / 2);
+    renderer->AddActor(head);
+    fixedActors.push_back(head);
+
+    // Mating pipe, ghosted.
+    if (m.hasMatingPipe) {
+        const double mr = m.matingPipe.radius_mm;
+        auto ghost = makeActor(makeTube(mr, std::max(0.0, mr - m.matingPipe.wall_mm), 0,
+                                        m.matingPipe.length_mm, kFacets),
+                               colours::kMating, colours::kMatingOpacity);
+        ghost->GetProperty()->SetSpecular(0.1);
+        addWork(ghost, m.workFromMating.matrix());
+    }
+
+    // Planned path lifted 0.8 mm off the surface so it never hides in it; the done part 1.6 mm,
+    // so it is drawn over the planned path.
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkPoints> donePts;
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetNumberOfComponents(3);
+    rgb->SetName("colours");
+    vtkNew<vtkCellArray> polyline;
+    vtkNew<vtkCellArray> bad;
+    const vtkIdType n = static_cast<vtkIdType>(m.pathWork.size());
+    pts->SetNumberOfPoints(n);
+    donePts->SetNumberOfPoints(n);
+    rgb->SetNumberOfTuples(n);
+    if (n >= 2)
+        polyline->InsertNextCell(static_cast<int>(n)); // a path of 0 or 1 point draws nothing
+    unreachable = 0;
+    for (vtkIdType i = 0; i < n; ++i) {
+        const Vec3& p = m.pathWork[static_cast<size_t>(i)];
+        const Vec3 radial(p.x(), p.y(), 0);
+        const Vec3 lifted = radial.norm() > 1e-9 ? Vec3(p + 0.8 * radial.normalized()) : p;
+        pts->SetPoint(i, lifted.x(), lifted.y(), lifted.z());
+        const Vec3 above = radial.norm() > 1e-9 ? Vec3(p + 1.6 * radial.normalized()) : p;
+        donePts->SetPoint(i, above.x(), above.y(), above.z());
+        if (n >= 2) polyline->InsertCellPoint(i);
+        const bool ok =
+            static_cast<size_t>(i) >= m.reachable.size() || m.reachable[static_cast<size_t>(i)];
+        const Rgb c = ok ? colours::kPath : colours::kUnreachable;
+        const unsigned char t[3] = {byte(c.r), byte(c.g), byte(c.b)};
+        rgb->SetTypedTuple(i, t);
+        if (!ok) {
+            bad->InsertNextCell(1, &i);
+            ++unreachable;
+        }
+    }
+    vtkNew<vtkPolyData> pathPoly;
+    pathPoly->SetPoints(pts);
+    pathPoly->SetLines(polyline);
+    pathPoly->GetPointData()->SetScalars(rgb);
+    path = makeActor(pathPoly, colours::kPath);
+    path->GetMapper()->ScalarVisibilityOn();
+    path->GetMapper()->SetColorModeToDirectScalars();
+    path->GetProperty()->LightingOff();
+    path->GetProperty()->SetLineWidth(2.5f);
+    addWork(path, I);
+
+    donePoly = vtkSmartPointer<vtkPolyData>::New();
+    donePoly->SetPoints(donePts);
+    donePoly->SetLines(vtkNew<vtkCellArray>());
+    doneActor = makeActor(donePoly, colours::kDone);
+    doneActor->GetProperty()->LightingOff();
+    doneActor->GetProperty()->SetLineWidth(5.0f);
+    addWork(doneActor, I);
+
+    vtkNew<vtkPolyData> badPoly;
+    badPoly->SetPoints(pts);
+    badPoly->SetVerts(bad);
+    unreachableActor = makeActor(badPoly, colours::kUnreachable);
+    unreachableActor->GetProperty()->SetPointSize(8.0f);
+    unreachableActor->GetProperty()->RenderPointsAsSpheresOn();
+    unreachableActor->GetProperty()->LightingOff();
+    unreachableActor->SetVisibility(unreachable > 0);
+    addWork(unreachableActor, I);
+
+    // Arm: joints on the z axis of frames 0..n-1, links along z (d) then x (a), the last link
+    // being the torch itself.
+    if (m.mount == ToolMount::DhArm) {
+        auto pedestal =
+            makeActor(makeFrustum(58, 48, m.floorZ_mm, -40, kFacets, true), colours::kMachine);
+        renderer->AddActor(pedestal);
+        fixedActors.push_back(pedestal);
+        vtkSmartPointer<vtkPolyData> unitJoint = makeFrustum(1, 1, -0.5, 0.5, 32, true);
+        vtkSmartPointer<vtkPolyData> unitLink = makeFrustum(1, 1, 0, 1, 24, true);
+        const int links = static_cast<int>(m.armChain.size());
+        for (int i = 0; i < links; ++i) {
+            const double scale = std::max(0.45, 1.0 - 0.12 * i);
+            ArmPiece joint{ArmPiece::Joint, i, 42 * scale, 95 * scale,
+                           makeActor(unitJoint, colours::kArmJoint)};
+            arm.push_back(joint);
+            if (i == links - 1) break; // the torch
+            const DhLink& l = m.armChain.link(static_cast<size_t>(i));
+            if (std::fabs(l.d_mm) > 1e-6)
+                arm.push_back({ArmPiece::LinkAlongZ, i, 30 * scale, 0,
+                               makeActor(unitLink, colours::kArmLink)});
+            if (std::fabs(l.a_mm) > 1e-6)
+                arm.push_back({ArmPiece::LinkAlongX, i, 28 * scale, 0,
+                               makeActor(unitLink, colours::kArmLink)});
+        }
+        for (ArmPiece& p : arm)
+            renderer->AddActor(p.actor);
+    }
+
+    // Torch in the tool frame: tip at the origin, axis +z into the work.
+    const double L = m.toolLength_mm;
+    torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
+    nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
+    nozzle->GetProperty()->SetSpecular(0.6);
+    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 0.95);
+    flame->GetProperty()->SetAmbient(1.0);
+    flame->GetProperty()->SetDiffuse(0.0);
+    flame->GetProperty()->LightingOff();
+    for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
+        renderer->AddActor(a);
+    direction = makeActor(makeFrustum(1, 0, 0, 1, 24, true), colours::kDirection);
+    direction->GetProperty()->SetAmbient(0.5);
+    renderer->AddActor(direction);
+
+    // Floor grid and axes triad around what is drawn.
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    const double margin = 250, step = 50;
+    const double gx0 = std::floor((b[0] - margin) / step) * step,
+                 gx1 = std::ceil((b[1] + margin) / step) * step;
+    const double gy0 = std::floor((b[2] - margin) / step) * step,
+                 gy1 = std::ceil((b[3] + margin) / step) * step;
+    grid = makeActor(makeGrid(gx0, gx1, gy0, gy1, step, m.floorZ_mm), colours::kGrid);
+    grid->GetProperty()->LightingOff();
+    grid->SetUseBounds(false); // the camera frames the machine, not the floor
+    renderer->AddActor(grid);
+    auto triad = makeActor(makeTriad(120), colours::kText);
+    triad->GetMapper()->ScalarVisibilityOn();
+    triad->GetMapper()->SetColorModeToDirectScalars();
+    triad->GetProperty()->LightingOff();
+    triad->GetProperty()->SetLineWidth(3.0f);
+    triad->SetPosition(gx0 + step, gy0 + step, m.floorZ_mm + 1);
+    triad->SetUseBounds(false);
+    renderer->AddActor(triad);
+    fixedActors.push_back(triad);
+
+    title = vtkSmartPointer<vtkTextActor>::New();
+    title->SetInput(m.title.c_str());
+    title->GetTextProperty()->SetFontSize(15);
+    title->GetTextProperty()->SetColor(colours::kText.r, colours::kText.g, colours::kText.b);
+    title->GetTextProperty()->SetVerticalJustificationToTop();
+    title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    title->SetPosition(0.012, 0.985);
+    renderer->AddActor2D(title);
+    status = vtkSmartPointer<vtkTextActor>::New();
+    status->GetTextProperty()->SetFontSize(13);
+    status->GetTextProperty()->SetColor(colours::kText.r, colours::kText.g, colours::kText.b);
+    status->SetPosition(10, 8);
+    renderer->AddActor2D(status);
+}
+
+void CellScene::Impl::place() {
+    const Pose work = model.baseFromWork(q);
+    for (size_t i = 0; i < workActors.size(); ++i)
+        setPose(workActors[i], work.matrix() * workLocal[i]);
+    if (model.mount == ToolMount::DhArm) {
+        const std::vector<Pose> frames = model.armFrames(q);
+        for (ArmPiece& p : arm) {
+            const Pose& f = frames[static_cast<size_t>(p.frame)];
+            if (p.kind == ArmPiece::Joint) {
+                setPose(p.actor, scaled(f, p.radius, p.radius, p.height));
+                continue;
+            }
+            const DhLink& l = model.armChain.link(static_cast<size_t>(p.frame));
+            const Vec3 a = f.translation();
+            const Vec3 mid = a + f.linear().col(2) * l.d_mm; // after Tz(d), before Tx(a)
+            const Vec3 b = frames[static_cast<size_t>(p.frame) + 1].translation();
+            setPose(p.actor, p.kind == ArmPiece::LinkAlongZ ? segmentMatrix(a, mid, p.radius)
+                                                            : segmentMatrix(mid, b, p.radius));
+        }
+    }
+    const Eigen::Matrix4d tool = model.toolPose(q).matrix();
+    for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
+        setPose(a, tool);
+    flame->SetVisibility(torchOn);
+
+    // Cutting direction: the path's tangent at the current point, drawn just off the surface.
+    const size_t n = model.pathWork.size();
+    direction->SetVisibility(n >= 2);
+    if (n >= 2) {
+        const size_t i = std::min(
+            n - 2, static_cast<size_t>(std::lround(progress * static_cast<double>(n - 1))));
+        const Vec3 tangent = work.linear() * (model.pathWork[i + 1] - model.pathWork[i]);
+        const Vec3 axis = tool.block<3, 1>(0, 2);
+        if (tangent.norm() > 1e-12) {
+            const Vec3 start =
+                Vec3(tool.block<3, 1>(0, 3)) - axis * 6.0 + tangent.normalized() * 6.0;
+            setPose(direction, segmentMatrix(start, start + tangent.normalized() * 18.0, 3.0));
+        }
+    }
+}
+
+void CellScene::Impl::updateDone(int count) {
+    if (count == done) return;
+    done = count;
+    vtkNew<vtkCellArray> lines;
+    if (count >= 2) {
+        lines->InsertNextCell(static_cast<int>(count));
+        for (vtkIdType i = 0; i < count; ++i)
+            lines->InsertCellPoint(i);
+    }
+    donePoly->SetLines(lines);
+    donePoly->Modified();
+}
+
+void CellScene::Impl::updateStatus() {
+    const int percent = static_cast<int>(std::floor(progress * 100 + 1e-9));
+    const int key = percent * 2 + (torchOn ? 1 : 0);
+    if (key == statusKey) return;
+    statusKey = key;
+    char buf[200];
+    if (unreachable > 0)
+        std::snprintf(buf, sizeof buf,
+                      "progress %d %%   torch %s   %d path points NOT reachable (red)", percent,
+                      torchOn ? "ON" : "off", unreachable);
+    else
+        std::snprintf(buf, sizeof buf, "progress %d %%   torch %s   %zu path points, all reachable",
+                      percent, torchOn ? "ON" : "off", model.pathWork.size());
+    status->SetInput(buf);
+}
+
+namespace {
+Vec3 apply(vtkActor* a, const Vec3& p) {
+    double in[4] = {p.x(), p.y(), p.z(), 1}, out[4];
+    a->GetMatrix()->MultiplyPoint(in, out);
+    return {out[0], out[1], out[2]};
+}
+} // namespace
+
+Vec3 CellScene::torchTipWorld() const {
+    return d->torchBody ? apply(d->torchBody, Vec3::Zero()) : Vec3::Zero();
+}
+
+Vec3 CellScene::torchAxisWorld() const {
+    if (!d->torchBody) return Vec3::UnitZ();
+    return (apply(d->torchBody, Vec3::UnitZ()) - torchTipWorld()).normalized();
+}
+
+Vec3 CellScene::torchBodyCentreWorld() const {
+    return d->torchBody ? apply(d->torchBody, Vec3(0, 0, -0.65 * d->model.toolLength_mm))
+                        : Vec3::Zero();
+}
+
+Vec3 CellScene::pipeCentreWorld() const {
+    return d->pipe ? apply(d->pipe, Vec3(0, 0, d->model.workPipeCentreZ_mm)) : Vec3::Zero();
+}
+
+Vec3 CellScene::pipeSurfaceWorld(double zWork, double angleRad) const {
+    const double R = d->model.workPipe.radius_mm;
+    return d->pipe ? apply(d->pipe, Vec3(R * std::cos(angleRad), R * std::sin(angleRad), zWork))
+                   : Vec3::Zero();
+}
+
+int CellScene::doneCount() const {
+    return std::max(0, d->done);
+}
+int CellScene::unreachableShown() const {
+    return d->unreachable;
+}
+bool CellScene::flameVisible() const {
+    return d->flame && d->flame->GetVisibility();
+}
+const JointVector& CellScene::machineQ() const {
+    return d->q;
+}
+
+} // namespace cutcell::view3d

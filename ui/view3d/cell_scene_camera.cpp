@@ -1,0 +1,109 @@
+// Camera presets of the cell view (part of CellScene).
+#include "ui/view3d/cell_scene.h"
+#include "ui/view3d/cell_scene_impl.h"
+
+#include <vtkCamera.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcell::view3d {
+
+namespace {
+// Direction from the focal point to the camera, and the view-up, of each fixed preset.
+struct Look {
+    Vec3 toCamera;
+    Vec3 up;
+};
+Look lookFor(ViewPreset p) {
+    switch (p) {
+    case ViewPreset::Front:
+        return {Vec3(0, -1, 0), Vec3::UnitZ()};
+    case ViewPreset::Top:
+        return {Vec3(0, 0, 1), Vec3::UnitY()};
+    case ViewPreset::Iso:
+    case ViewPreset::FollowTorch:
+        break;
+    }
+    return {Vec3(0.75, -1.0, 0.7).normalized(), Vec3::UnitZ()};
+}
+} // namespace
+
+void CellScene::Impl::applyCamera(ViewPreset p) {
+    vtkCamera* cam = renderer->GetActiveCamera();
+    if (p == ViewPreset::FollowTorch) {
+        const Vec3 tip = torchBody ? Vec3(model.toolPose(q).translation()) : Vec3(Vec3::Zero());
+        if (preset != ViewPreset::FollowTorch || !hasScene) return;
+        double f[3], pos[3];
+        cam->GetFocalPoint(f);
+        cam->GetPosition(pos);
+        const bool fresh = followTip.x() > 1e299; // set by setPreset
+        if (fresh) {
+            // First frame of the follow mode: close to the tip, from the iso side.
+            const Vec3 dir = lookFor(ViewPreset::Iso).toCamera;
+            const Vec3 c = tip + dir * (1.8 * model.toolLength_mm);
+            cam->SetFocalPoint(tip.x(), tip.y(), tip.z());
+            cam->SetPosition(c.x(), c.y(), c.z());
+            cam->SetViewUp(0, 0, 1);
+        } else {
+            // Keep the user's orbit: move the camera with the tip.
+            const Vec3 delta = tip - followTip;
+            cam->SetFocalPoint(f[0] + delta.x(), f[1] + delta.y(), f[2] + delta.z());
+            cam->SetPosition(pos[0] + delta.x(), pos[1] + delta.y(), pos[2] + delta.z());
+        }
+        followTip = tip;
+        renderer->ResetCameraClippingRange();
+        return;
+    }
+    const Look look = lookFor(p);
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    if (b[0] > b[1]) return; // nothing to frame
+    const Vec3 centre((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
+    cam->SetFocalPoint(centre.x(), centre.y(), centre.z());
+    const Vec3 pos = centre + look.toCamera * 1000.0;
+    cam->SetPosition(pos.x(), pos.y(), pos.z());
+    cam->SetViewUp(look.up.x(), look.up.y(), look.up.z());
+    cam->SetViewAngle(30);
+    renderer->ResetCamera(b);
+    cam->Zoom(1.15); // ResetCamera leaves a wide margin
+    renderer->ResetCameraClippingRange();
+}
+
+void CellScene::setPreset(ViewPreset preset) {
+    d->preset = preset;
+    if (preset == ViewPreset::FollowTorch)
+        d->followTip = Vec3(1e300, 0, 0); // forces a fresh framing
+    d->applyCamera(preset);
+}
+
+ViewPreset CellScene::preset() const {
+    return d->preset;
+}
+
+void CellScene::resetView() {
+    setPreset(ViewPreset::Iso);
+}
+
+void CellScene::prepareRender() {
+    double b[6];
+    d->renderer->ComputeVisiblePropBounds(b);
+    if (b[0] > b[1]) return;
+    // Include the floor grid (not part of the bounds used to frame the machine).
+    if (d->grid) {
+        const double* g = d->grid->GetBounds();
+        for (int i = 0; i < 6; i += 2) {
+            b[i] = std::min(b[i], g[i]);
+            b[i + 1] = std::max(b[i + 1], g[i + 1]);
+        }
+    }
+    d->renderer->ResetCameraClippingRange(b);
+}
+
+std::array<double, 6> CellScene::machineBounds() const {
+    std::array<double, 6> b{};
+    d->renderer->ComputeVisiblePropBounds(b.data());
+    return b;
+}
+
+} // namespace cutcell::view3d

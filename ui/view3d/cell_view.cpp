@@ -1,0 +1,184 @@
+#include "ui/view3d/cell_view.h"
+
+#include "ui/view3d/cell_scene.h"
+#include "ui/view3d/vtk_gl_widget.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QSurfaceFormat>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkRenderer.h>
+
+namespace cutcell::view3d {
+
+void CellView::setDefaultSurfaceFormat() {
+    QSurfaceFormat fmt;
+    fmt.setRenderableType(QSurfaceFormat::OpenGL);
+    fmt.setVersion(3, 2);
+    fmt.setProfile(QSurfaceFormat::CoreProfile);
+    fmt.setDepthBufferSize(24);
+    fmt.setAlphaBufferSize(8);
+    fmt.setStencilBufferSize(8);
+    fmt.setSamples(0);
+    QSurfaceFormat::setDefaultFormat(fmt);
+}
+
+bool CellView::openGlAvailable() {
+    static const bool available = [] {
+        const QString platform = QGuiApplication::platformName();
+        // The offscreen platform cannot host a QOpenGLWidget even with a display (STACK.md).
+        if (platform == QLatin1String("offscreen") || platform == QLatin1String("minimal"))
+            return false;
+        QOpenGLContext ctx;
+        ctx.setFormat(QSurfaceFormat::defaultFormat());
+        if (!ctx.create()) return false;
+        QOffscreenSurface surface;
+        surface.setFormat(ctx.format());
+        surface.create();
+        if (!surface.isValid() || !ctx.makeCurrent(&surface)) return false;
+        const auto version = ctx.format().version();
+        ctx.doneCurrent();
+        return version >= qMakePair(3, 2);
+    }();
+    return available;
+}
+
+CellView::CellView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<CellScene>()) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+
+    auto* bar = new QToolBar(this);
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    presets_ = new QActionGroup(this);
+    const std::pair<const char*, ViewPreset> entries[] = {
+        {"Iso", ViewPreset::Iso},
+        {"Front", ViewPreset::Front},
+        {"Top", ViewPreset::Top},
+        {"Follow torch", ViewPreset::FollowTorch}};
+    for (const auto& [label, preset] : entries) {
+        QAction* a = bar->addAction(tr(label));
+        a->setCheckable(true);
+        a->setData(static_cast<int>(preset));
+        a->setChecked(preset == ViewPreset::Iso);
+        presets_->addAction(a);
+        connect(a, &QAction::triggered, this, [this, p = preset] { setPreset(p); });
+    }
+    bar->addSeparator();
+    QAction* reset = bar->addAction(tr("Reset view"));
+    reset->setToolTip(tr("Back to the iso view of the whole cell"));
+    connect(reset, &QAction::triggered, this, &CellView::resetView);
+    layout->addWidget(bar);
+
+    if (openGlAvailable()) {
+        gl_ = new VtkGlWidget(this);
+        gl_->renderWindow()->AddRenderer(scene_->renderer());
+        gl_->setBeforeRender([this] { scene_->prepareRender(); });
+        layout->addWidget(gl_, 1);
+    } else {
+        placeholder_ =
+            new QLabel(tr("3D view unavailable: no OpenGL on this platform (offscreen)"), this);
+        placeholder_->setObjectName(QStringLiteral("view3dPlaceholder"));
+        placeholder_->setAlignment(Qt::AlignCenter);
+        placeholder_->setWordWrap(true);
+        placeholder_->setMinimumSize(160, 120);
+        placeholder_->setStyleSheet(
+            QStringLiteral("QLabel { background: #1b1e24; color: #c8ccd4; }"));
+        layout->addWidget(placeholder_, 1);
+    }
+}
+
+CellView::~CellView() {
+    delete gl_; // releases VTK's GL resources while the scene still exists
+    gl_ = nullptr;
+}
+
+bool CellView::rendering() const {
+    return gl_ != nullptr;
+}
+
+void CellView::requestRender() {
+    if (gl_) gl_->update();
+}
+
+void CellView::setScene(const SceneModel& model) {
+    scene_->setScene(model);
+    requestRender();
+}
+
+void CellView::setMachineState(const JointVector& q, double progressFraction, bool torchOn) {
+    scene_->setMachineState(q, progressFraction, torchOn);
+    requestRender();
+}
+
+void CellView::setPreset(ViewPreset preset) {
+    scene_->setPreset(preset);
+    for (QAction* a : presets_->actions())
+        if (a->data().toInt() == static_cast<int>(preset)) a->setChecked(true);
+    requestRender();
+    emit presetChanged(preset);
+}
+
+ViewPreset CellView::preset() const {
+    return scene_->preset();
+}
+
+void CellView::resetView() {
+    setPreset(ViewPreset::Iso);
+}
+
+void CellView::setMultiSamples(int samples) {
+    if (gl_) gl_->setMultiSamples(samples);
+}
+
+QImage CellView::grabFrame() {
+    return gl_ ? gl_->grabFramebuffer() : QImage();
+}
+
+double CellView::renderFrameMs() {
+    return gl_ ? gl_->renderNow() : -1.0;
+}
+
+bool CellView::projectToImage(const Vec3& world, QPointF* pixel) const {
+    if (!gl_) return false;
+    vtkRenderer* r = scene_->renderer();
+    r->SetWorldPoint(world.x(), world.y(), world.z(), 1.0);
+    r->WorldToView();
+    double v[3];
+    r->GetViewPoint(v);
+    if (v[2] < -1.0 || v[2] > 1.0) return false; // outside the near/far planes
+    r->WorldToDisplay();
+    double dpt[3];
+    r->GetDisplayPoint(dpt);
+    const int* size = gl_->renderWindow()->GetSize();
+    *pixel = QPointF(dpt[0], size[1] - 1 - dpt[1]); // VTK's display origin is bottom-left
+    return true;
+}
+
+const CellScene& CellView::scene() const {
+    return *scene_;
+}
+Vec3 CellView::torchTipWorld() const {
+    return scene_->torchTipWorld();
+}
+Vec3 CellView::torchBodyCentreWorld() const {
+    return scene_->torchBodyCentreWorld();
+}
+Vec3 CellView::pipeCentreWorld() const {
+    return scene_->pipeCentreWorld();
+}
+std::array<double, 6> CellView::machineBounds() const {
+    return scene_->machineBounds();
+}
+int CellView::doneCount() const {
+    return scene_->doneCount();
+}
+
+} // namespace cutcell::view3d

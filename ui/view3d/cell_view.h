@@ -1,0 +1,83 @@
+#pragma once
+// The 3D view of the cell: the pipe being cut (tube with its wall) in its chuck, the mating
+// pipe ghosted, the planned path (amber; red where not reachable), the part already cut
+// (green), the torch (orange body, copper nozzle, flame while on) on the arm drawn from its DH
+// frames. Mouse: left drag rotates, middle drag (or shift + left) pans, right drag / wheel
+// zooms. A small toolbar offers the presets (Iso, Front, Top, Follow torch) and Reset.
+// Colours: ui/view3d/view_style.h.
+//
+// Where OpenGL is unavailable (Qt's offscreen platform) a label takes the 3D view's place;
+// the scene graph (CellScene) is still built and updated, so the accessors below work.
+//
+// Threading: GUI thread only. setMachineState() is cheap (matrices only) and rendering is
+// coalesced by update(), so it can be called at the telemetry rate.
+#include "core/common/types.h"
+#include "ui/view3d/scene_model.h"
+#include "ui/view3d/view_style.h"
+
+#include <QImage>
+#include <QPointF>
+#include <QWidget>
+
+#include <array>
+#include <memory>
+
+class QLabel;
+class QActionGroup;
+
+namespace cutcell::view3d {
+
+class CellScene;
+class VtkGlWidget;
+
+class CellView : public QWidget {
+    Q_OBJECT
+  public:
+    explicit CellView(QWidget* parent = nullptr);
+    ~CellView() override;
+
+    // Call before constructing QApplication: OpenGL 3.2 core, depth 24, alpha 8.
+    static void setDefaultSurfaceFormat();
+    // Whether a QOpenGLWidget can work here (probed once: offscreen platform -> false; else a
+    // context must be created and made current on an offscreen surface with GL >= 3.2).
+    static bool openGlAvailable();
+    // Whether this instance renders (false: the placeholder label is shown).
+    bool rendering() const;
+
+    void setScene(const SceneModel& model);
+    void setMachineState(const JointVector& q, double progressFraction, bool torchOn);
+    void setPreset(ViewPreset preset);
+    ViewPreset preset() const;
+    void resetView();
+    // Multisampling off by default (speed); 4 gives smooth edges.
+    void setMultiSamples(int samples);
+
+    // The current frame (renders now); a null image without OpenGL.
+    QImage grabFrame();
+    // Renders once synchronously and returns the time in ms (-1 without OpenGL).
+    double renderFrameMs();
+    // World point -> pixel of grabFrame()'s image (origin top-left, device pixels).
+    // False without OpenGL or when the point is behind the camera.
+    bool projectToImage(const Vec3& world, QPointF* pixel) const;
+
+    // Scene-graph queries for tests (world frame, mm): see CellScene.
+    const CellScene& scene() const;
+    Vec3 torchTipWorld() const;
+    Vec3 torchBodyCentreWorld() const;
+    Vec3 pipeCentreWorld() const;
+    std::array<double, 6> machineBounds() const;
+    int doneCount() const;
+
+  signals:
+    void presetChanged(cutcell::view3d::ViewPreset preset);
+
+  private:
+    void requestRender();
+
+    std::unique_ptr<CellScene> scene_;
+    VtkGlWidget* gl_ = nullptr;
+    QLabel* placeholder_ = nullptr;
+    QActionGroup* presets_ = nullptr;
+};
+
+} // namespace cutcell::view3d
