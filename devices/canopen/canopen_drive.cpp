@@ -17,8 +17,7 @@ CanOpenDrive::CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShar
 void CanOpenDrive::command(DriveGoal goal, bool urgent) {
     shared_.goal.store(static_cast<std::uint8_t>(goal), std::memory_order_release);
     if (urgent) shared_.urgent.store(true, std::memory_order_release);
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const ssize_t n = ::write(wakeFd_, &one, sizeof one); // eventfd: never blocks
+    postEventFd(wakeFd_);
 }
 
 void CanOpenDrive::activate() {
@@ -77,9 +76,7 @@ void CanOpenDrive::write(double targetPosition) {
     shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
                                 std::memory_order_release);
     if (syncFd_ >= 0) {
-        const std::uint64_t one = 1;
-        [[maybe_unused]] const ssize_t n =
-            ::write(syncFd_, &one, sizeof one); // eventfd: never blocks
+        postEventFd(syncFd_);
     }
 }
 

@@ -123,8 +123,7 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
                     ++next.tv_sec;
                 }
                 clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr);
-                const std::uint64_t one = 1;
-                [[maybe_unused]] const ssize_t n = ::write(m.syncFd, &one, sizeof one);
+                postEventFd(m.syncFd);
             }
         });
     }
@@ -174,8 +173,7 @@ bool CanOpenMaster::allOperational() const {
 }
 
 void CanOpenMaster::sync() {
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const ssize_t n = ::write(impl_->syncFd, &one, sizeof one);
+    postEventFd(impl_->syncFd);
 }
 
 std::uint64_t CanOpenMaster::cyclesSent() const {
@@ -192,8 +190,7 @@ void CanOpenMaster::emergencyStop(bool disableVoltage) {
         s.goal.store(goal, std::memory_order_release);
         s.urgent.store(true, std::memory_order_release);
     }
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const ssize_t n = ::write(impl_->wakeFd, &one, sizeof one);
+    postEventFd(impl_->wakeFd);
 }
 
 void CanOpenMaster::recoverBus() {

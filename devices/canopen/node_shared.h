@@ -6,8 +6,15 @@
 
 #include <atomic>
 #include <cstdint>
+#include <unistd.h>
 
 namespace cutcell::canopen {
+
+// Adds one to an eventfd: wakes the master thread; never blocks (EFD_NONBLOCK), no allocation.
+inline void postEventFd(int fd) {
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const ssize_t n = ::write(fd, &one, sizeof one);
+}
 
 struct NodeShared {
     // Engine -> master.
