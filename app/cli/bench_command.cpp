@@ -3,6 +3,7 @@
 #include "cli_commands.h"
 #ifdef CUTCELL_HAVE_DEVICES
 #include "bench_engine.h"
+#include "bench_can.h"
 #endif
 
 #include "core/job/default_job.h"
@@ -82,6 +83,9 @@ int runBench(const Args& args) {
     if (!flag(args, "--no-engine")) benchEngine(job, quick, out);
 #endif
 
+#ifdef CUTCELL_HAVE_DEVICES
+    if (!flag(args, "--no-can")) benchCan(out, quick);
+#endif
     const json::Value doc(std::move(out));
     if (asJson) {
         std::fputs(json::write(doc).c_str(), stdout);

@@ -117,7 +117,8 @@ int runPlan(const Args& args) {
 int runSimulate(const Args& args) {
     Job job;
     int code = kOk;
-    const std::vector<std::string> valueOptions{"--report", "--method"};
+    const std::vector<std::string> valueOptions{"--report",        "--method",    "--devices", "--can-plugin",
+                                                "--can-interface", "--period-ms", "--clock"};
     if (!loadJob(args, valueOptions, job, &code)) return code;
     if (job.machine != "pipe_robot_6axis") {
         std::fprintf(stderr, "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
@@ -135,6 +136,19 @@ int runSimulate(const Args& args) {
     if (!plan.reachable) {
         printUnreachable(plan);
         return kUnreachable;
+    }
+    const std::string devices = option(args, "--devices");
+    if (!devices.empty() && devices != "simulated" && devices != "canopen") {
+        std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n", devices.c_str());
+        return kUsage;
+    }
+    if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
+#ifdef CUTCELL_HAVE_DEVICES
+        return runSimulateCan(job, plan, args);
+#else
+        std::fprintf(stderr, "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
+        return kFailure;
+#endif
     }
     const TrackingReport report = simulateCut(job, plan);
     const std::string text = json::write(reportToJson(report));

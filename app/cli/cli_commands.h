@@ -6,7 +6,8 @@
 
 namespace cutcell {
 struct Job;
-}
+struct CutPlan;
+} // namespace cutcell
 
 namespace cutcell::cli {
 
@@ -23,6 +24,8 @@ int runExport(const Args& args);
 int runProfileValidate(const Job& job);
 int runProfilePlan(const Job& job, const std::string& outDir);
 int runRun(const Args& args);   // run_command.cpp (needs CutCell::devices)
+int runDriveSim(const Args& args);                                          // drivesim_command.cpp
+int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args); // can_run.cpp
 int runProfileRun(const Job& job, const std::string& jobText, const Args& args); // profile_run_command.cpp
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.

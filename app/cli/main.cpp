@@ -19,6 +19,14 @@ usage:
   cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
                                             run the job through the motion engine on
                                             simulated drives; writes a run log
+  cutcell-cli simulate JOB --devices canopen [--can-plugin P] [--can-interface I]
+                 [--period-ms T] [--clock realtime|fast] [--drivesim]
+                                            run the cut over CANopen drives (--drivesim: start
+                                            simulated drives in-process)
+  cutcell-cli drivesim [JOB] [--nodes 1-6] [--plugin P] [--interface I] [--duration S]
+                 [--fault-node N] [--fault-code 0xNNNN] [--fault-after S]
+                 [--heartbeat-stop-after S] [--following-error-after S]
+                                            CiA 402 drive simulator on a CAN bus
 
 exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
 )";
@@ -41,6 +49,7 @@ int main(int argc, char** argv) {
     if (cmd == "export") return runExport(args);
 #ifdef CUTCELL_HAVE_DEVICES
     if (cmd == "run") return runRun(args);
+    if (cmd == "drivesim") return runDriveSim(args);
 #endif
     std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
     return ExitCode::kUsage;

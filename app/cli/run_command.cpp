@@ -11,6 +11,8 @@
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
 
+#include "can_devices.h"
+
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -68,7 +70,8 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 } // namespace
 
 int runRun(const Args& args) {
-    const std::vector<std::string> valueOptions{"--report", "--runs"};
+    const std::vector<std::string> valueOptions{"--report",    "--runs",      "--devices", "--can-plugin",
+                                                "--can-interface", "--period-ms", "--clock"};
     const auto pos = positionals(args, valueOptions);
     if (pos.empty()) {
         std::fprintf(stderr, "cutcell-cli run: missing JOB file argument\n");
@@ -84,7 +87,7 @@ int runRun(const Args& args) {
         return kInvalidJob;
     }
     if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, args);
-    const bool realtime = flag(args, "--realtime");
+    bool realtime = flag(args, "--realtime");
     const bool quiet = flag(args, "--quiet");
     if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");
 
@@ -98,7 +101,19 @@ int runRun(const Args& args) {
 
     std::vector<std::unique_ptr<SimulatedDrive>> drives;
     EngineDevices devices;
-    for (int i = 0; i < kAxisCount; ++i) {
+    // CANopen drives (the job's devices section or --devices canopen): always real time.
+    const int overCan = usesCanOpen(args, job);
+    if (overCan < 0) return kUsage;
+    CanRunOptions canOptions;
+    if (const int code = overCan ? parseCanOptions(args, canOptions) : 0) return code;
+    CanEngineDevices can;
+    std::string canError;
+    if (overCan && !can.start(job, canOptions, &canError)) {
+        std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
+        return kFailure;
+    }
+    for (int i = 0; overCan && i < kAxisCount; ++i) devices.axes[static_cast<size_t>(i)] = can.axis(i);
+    for (int i = 0; !overCan && i < kAxisCount; ++i) {
         SimulatedDriveConfig dc;
         dc.gains = job.controller[static_cast<size_t>(i)];
         dc.plant = job.plant[static_cast<size_t>(i)];
@@ -112,6 +127,10 @@ int runRun(const Args& args) {
 
     EngineConfig config;
     config.period_s = job.sim.period_s;
+    if (overCan) {
+        can.tune(config, job);
+        realtime = true;
+    }
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
     MotionEngine engine(devices, config);

@@ -1,0 +1,67 @@
+#include "can_devices.h"
+
+#include "devices/canopen/canopen_master.h"
+#include "devices/canopen/drive_simulator.h"
+#include "devices/canopen/engine_tuning.h"
+
+#include "qt_app.h"
+
+#include <chrono>
+#include <thread>
+
+namespace cutcell::cli {
+
+using namespace cutcell::canopen;
+
+CanEngineDevices::CanEngineDevices() = default;
+
+CanEngineDevices::~CanEngineDevices() {
+    if (master_) master_->stop();
+    master_.reset();
+    sim_.reset();
+}
+
+bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, std::string* error) {
+    if (!app_) app_ = ensureQCoreApplication();
+    period_ = o.period_s > 0 ? o.period_s : job.sim.period_s;
+    CanOpenMasterConfig mc = masterConfigFromJob(job, period_, kAxisCount);
+    if (!o.plugin.empty()) mc.plugin = QString::fromStdString(o.plugin);
+    if (!o.interface.empty()) mc.interface = QString::fromStdString(o.interface);
+    mc.sync = SyncSource::LastDriveWrite;
+    if (o.in_process_simulator) {
+        DriveSimulatorConfig sc;
+        sc.plugin = mc.plugin;
+        sc.interface = mc.interface;
+        sc.nodes = nodesFromJob(job, {job.devices.node_ids.begin(), job.devices.node_ids.end()});
+        sim_ = std::make_unique<DriveSimulator>(sc);
+        if (!sim_->start()) {
+            *error = "drive simulator: " + sim_->errorText().toStdString();
+            return false;
+        }
+    }
+    master_ = std::make_unique<CanOpenMaster>(mc);
+    if (!master_->start(error)) return false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (!master_->allOperational()) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            *error = "not every CAN node became operational within 5 s";
+            for (const CanNodeSnapshot& n : master_->snapshot().nodes)
+                if (!n.configured)
+                    *error += "; node " + std::to_string(n.node) + ": " +
+                              (n.fault_text.empty() ? "no answer" : n.fault_text);
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return true;
+}
+
+AxisDrive* CanEngineDevices::axis(int i) {
+    return master_ && i < master_->driveCount() ? master_->drive(i) : nullptr;
+}
+
+void CanEngineDevices::tune(EngineConfig& config, const Job& job) const {
+    tuneEngineForCan(config, job, period_);
+}
+
+} // namespace cutcell::cli

@@ -1,0 +1,191 @@
+#include "devices/canopen/drive_simulator.h"
+
+#include "devices/canopen/qt_can_frame.h"
+
+#include <QCanBus>
+#include <QCanBusDevice>
+#include <QThread>
+#include <QTimer>
+
+#include <chrono>
+
+namespace cutcell::canopen {
+
+std::vector<DriveNodeConfig> nodesFromJob(const Job& job, const std::vector<int>& ids) {
+    std::vector<DriveNodeConfig> out;
+    for (int id : ids) {
+        size_t axis = static_cast<size_t>((id - 1) % kAxisCount);
+        for (size_t a = 0; a < job.devices.node_ids.size(); ++a)
+            if (job.devices.node_ids[a] == id) axis = a;
+        DriveNodeConfig c;
+        c.node = id;
+        c.gains = job.controller[axis];
+        c.plant = job.plant[axis];
+        // The pipe robot's axes are all rotary (counts per degree).
+        c.counts_per_rad = countsPerRad(job.devices.counts_per_unit[axis], false);
+        c.max_loop_period_s = std::min(0.001, job.sim.period_s);
+        out.push_back(c);
+    }
+    return out;
+}
+
+DriveSimulator::DriveSimulator(DriveSimulatorConfig config) : config_(std::move(config)) {
+    for (const DriveNodeConfig& c : config_.nodes)
+        nodes_.emplace_back(c);
+}
+
+DriveSimulator::~DriveSimulator() {
+    stop();
+}
+
+double DriveSimulator::now() const {
+    const auto ns = std::chrono::steady_clock::now().time_since_epoch().count() - startNs_;
+    return static_cast<double>(ns) * 1e-9;
+}
+
+bool DriveSimulator::start(int timeout_ms) {
+    if (thread_) return true;
+    startNs_ = std::chrono::steady_clock::now().time_since_epoch().count();
+    thread_ = std::make_unique<QThread>();
+    thread_->setObjectName(QStringLiteral("drivesim"));
+    context_ = new QObject;
+    context_->moveToThread(thread_.get());
+    thread_->start();
+    QMetaObject::invokeMethod(
+        context_, [this] { openOnThread(); }, Qt::QueuedConnection);
+    std::unique_lock lock(mutex_);
+    const bool done = changed_.wait_for(lock, std::chrono::milliseconds(timeout_ms),
+                                        [this] { return connected_ || failed_; });
+    if (!done)
+        error_ = QStringLiteral("CAN connection to %1 %2 did not come up within %3 ms")
+                     .arg(config_.plugin, config_.interface)
+                     .arg(timeout_ms);
+    const bool ok = connected_;
+    lock.unlock();
+    if (!ok) stop();
+    return ok;
+}
+
+void DriveSimulator::stop() {
+    if (!thread_) return;
+    QMetaObject::invokeMethod(
+        context_, [this] { closeOnThread(); }, Qt::BlockingQueuedConnection);
+    thread_->quit();
+    thread_->wait();
+    delete context_;
+    context_ = nullptr;
+    thread_.reset();
+}
+
+QString DriveSimulator::errorText() const {
+    std::lock_guard lock(mutex_);
+    return error_;
+}
+
+std::vector<SimNodeSnapshot> DriveSimulator::snapshot() const {
+    std::lock_guard lock(mutex_);
+    return snapshot_;
+}
+
+std::uint64_t DriveSimulator::framesReceived() const {
+    std::lock_guard lock(mutex_);
+    return framesReceived_;
+}
+
+void DriveSimulator::openOnThread() {
+    QString err;
+    device_ = QCanBus::instance()->createDevice(config_.plugin, config_.interface, &err);
+    auto fail = [this](const QString& text) {
+        std::lock_guard lock(mutex_);
+        error_ = text;
+        failed_ = true;
+        changed_.notify_all();
+    };
+    if (!device_) {
+        fail(QStringLiteral("cannot create CAN device %1 %2: %3")
+                 .arg(config_.plugin, config_.interface, err));
+        return;
+    }
+    QObject::connect(device_, &QCanBusDevice::framesReceived, context_,
+                     [this] { onFramesReceived(); });
+    QObject::connect(device_, &QCanBusDevice::stateChanged, context_,
+                     [this](QCanBusDevice::CanBusDeviceState s) {
+                         if (s != QCanBusDevice::ConnectedState) return;
+                         std::vector<CanFrame> boot;
+                         for (DriveNode& n : nodes_)
+                             n.boot(now(), boot);
+                         send(boot);
+                         publish();
+                         std::lock_guard lock(mutex_);
+                         connected_ = true;
+                         changed_.notify_all();
+                     });
+    QObject::connect(device_, &QCanBusDevice::errorOccurred, context_,
+                     [this, fail](QCanBusDevice::CanBusError) {
+                         if (!connected_) fail(device_->errorString());
+                     });
+    if (!device_->connectDevice()) {
+        fail(QStringLiteral("cannot connect CAN device %1 %2: %3")
+                 .arg(config_.plugin, config_.interface, device_->errorString()));
+        return;
+    }
+    tick_ = new QTimer(context_);
+    tick_->setTimerType(Qt::PreciseTimer);
+    QObject::connect(tick_, &QTimer::timeout, context_, [this] { onTick(); });
+    tick_->start(2);
+}
+
+void DriveSimulator::closeOnThread() {
+    delete tick_;
+    tick_ = nullptr;
+    if (device_) {
+        device_->disconnectDevice();
+        delete device_;
+        device_ = nullptr;
+    }
+}
+
+void DriveSimulator::onFramesReceived() {
+    std::uint64_t count = 0;
+    while (device_->framesAvailable()) {
+        const QCanBusFrame q = device_->readFrame();
+        CanFrame f;
+        if (!fromQt(q, f)) continue;
+        ++count;
+        out_.clear();
+        const double t = now();
+        for (DriveNode& n : nodes_)
+            n.handle(f, t, out_);
+        send(out_);
+    }
+    publish();
+    std::lock_guard lock(mutex_);
+    framesReceived_ += count;
+}
+
+void DriveSimulator::onTick() {
+    out_.clear();
+    const double t = now();
+    for (DriveNode& n : nodes_)
+        n.tick(t, out_);
+    send(out_);
+    publish();
+}
+
+void DriveSimulator::send(const std::vector<CanFrame>& frames) {
+    if (!device_ || device_->state() != QCanBusDevice::ConnectedState) return;
+    for (const CanFrame& f : frames)
+        device_->writeFrame(toQt(f));
+}
+
+void DriveSimulator::publish() {
+    std::lock_guard lock(mutex_);
+    snapshot_.resize(nodes_.size());
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+        const DriveNode& n = nodes_[i];
+        snapshot_[i] = {n.node(),        n.nmtState(),  n.driveState(),
+                        n.positionRad(), n.errorCode(), n.syncCount()};
+    }
+}
+
+} // namespace cutcell::canopen

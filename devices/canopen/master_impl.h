@@ -1,0 +1,108 @@
+#pragma once
+// Private to the CANopen master (canopen_master.cpp, master_io.cpp): its state on the master
+// thread. Fields marked [master] are touched only on the master thread.
+#include "devices/canopen/can_frame.h"
+#include "devices/canopen/canopen_master.h"
+#include "devices/canopen/pdo.h"
+
+#include <QCanBusDevice>
+#include <QObject>
+#include <QSocketNotifier>
+#include <QThread>
+#include <QTimer>
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+namespace cutcell::canopen {
+
+enum class StartupPhase : std::uint8_t { Idle, WaitBoot, Sdo, WaitOperational, Running, Failed };
+
+struct SdoOp {
+    SdoWrite write; // for an upload, write.size == 0 and value unused
+    bool upload = false;
+};
+
+struct NodeRuntime { // [master]
+    StartupPhase phase = StartupPhase::Idle;
+    std::vector<SdoOp> ops;
+    size_t op = 0;
+    int retries = 0;
+    std::int64_t deadline_ns = 0;
+    std::uint32_t seen_resets = 0;
+    int reset_phase = 0; // 1: send bit 7 low, 2: send bit 7 high (the rising edge)
+    std::int32_t previous_actual = 0;
+    bool was_enabled = false;
+    std::uint64_t tpdo_cycle = 0; // last cycle a TPDO was counted for
+};
+
+struct CanOpenMaster::Impl {
+    CanOpenMasterConfig cfg;
+    std::deque<NodeShared> shared;
+    std::vector<std::unique_ptr<CanOpenDrive>> drives;
+    std::vector<NodeRuntime> rt; // [master]
+    int wakeFd = -1;             // commands and urgent stops
+    int syncFd = -1;             // one count per cycle to run
+    std::int64_t heartbeatTimeoutNs = 0;
+    std::uint16_t heartbeatProducerMs = 100;
+    double load = 0;
+    std::string loadText;
+
+    std::unique_ptr<QThread> thread;
+    QObject* context = nullptr;              // lives on the master thread
+    QCanBusDevice* device = nullptr;         // [master]
+    QSocketNotifier* wakeNotifier = nullptr; // [master]
+    QSocketNotifier* syncNotifier = nullptr; // [master]
+    QTimer* housekeeping = nullptr;          // [master]
+    std::thread pacer;
+    std::atomic<bool> pacing{false};
+    bool stopping = false;       // [master]
+    std::int64_t lastSyncNs = 0; // [master]
+
+    std::atomic<std::uint64_t> cycles{0};
+    std::atomic<std::uint64_t> completed{0};
+    std::atomic<std::uint64_t> framesTx{0};
+    std::atomic<std::uint64_t> framesRx{0};
+    std::atomic<std::int64_t> lastUrgentNs{0};
+
+    mutable std::mutex mutex; // guards the fields below (texts, events, jitter ring, bus)
+    std::condition_variable changed;
+    bool connected = false;
+    bool connectFailed = false;
+    std::string connectError;
+    BusState bus = BusState::Unknown;
+    std::string busText;
+    std::vector<std::string> faultText; // per node
+    std::vector<std::string> emcyText;  // per node
+    std::deque<MasterEvent> events;
+    std::vector<double> jitterUs; // ring of |interval - period|
+    size_t jitterNext = 0;
+
+    // canopen_master.cpp
+    void event(int node, bool error, const std::string& text);
+    void setFault(size_t i, std::uint32_t code, const std::string& text);
+    // master_io.cpp (master thread)
+    void openDevice();
+    void closeDevice();
+    void onFrames();
+    void onFrame(const CanFrame& f, std::int64_t now);
+    void onErrorFrame(std::uint32_t errorClass, const QByteArray& payload);
+    void onStateChanged(QCanBusDevice::CanBusDeviceState s);
+    void onWake();
+    void onSyncDue();
+    void runCycle(std::int64_t now);
+    void onHousekeeping();
+    void startNode(size_t i, std::int64_t now);
+    void nextSdo(size_t i, std::int64_t now);
+    void onSdoReply(size_t i, const CanFrame& f, std::int64_t now);
+    void onBusDown(BusState s, std::uint32_t code, const std::string& why);
+    std::uint16_t controlwordFor(size_t i);
+    bool send(const CanFrame& f);
+};
+
+std::int64_t steadyNs();
+
+} // namespace cutcell::canopen

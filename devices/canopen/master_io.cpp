@@ -1,0 +1,502 @@
+// The CANopen master's bus work, all on the master thread: device, start-up of the nodes by
+// SDO, the cycle (RPDO1s + SYNC), urgent stops (RPDO2), TPDO/heartbeat/EMCY consumers, bus
+// state. See canopen_master.h for the protocol and the threading contract.
+#include "devices/canopen/bus_load.h"
+#include "devices/canopen/emcy.h"
+#include "devices/canopen/master_impl.h"
+#include "devices/canopen/nmt.h"
+#include "devices/canopen/qt_can_frame.h"
+#include "devices/canopen/sdo.h"
+
+#include <QCanBus>
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+#include <QVariant>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace cutcell::canopen {
+namespace {
+
+std::string hex(std::uint32_t v, int digits) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%0*X", digits, static_cast<unsigned>(v));
+    return buf;
+}
+
+std::uint64_t drain(int fd) {
+    std::uint64_t n = 0;
+    if (::read(fd, &n, sizeof n) != static_cast<ssize_t>(sizeof n)) return 0;
+    return n;
+}
+
+} // namespace
+
+bool CanOpenMaster::Impl::send(const CanFrame& f) {
+    if (!device || device->state() != QCanBusDevice::ConnectedState) return false;
+    if (!device->writeFrame(toQt(f))) return false;
+    framesTx.fetch_add(1, std::memory_order_relaxed);
+    return true;
+}
+
+void CanOpenMaster::Impl::openDevice() {
+    QString err;
+    device = QCanBus::instance()->createDevice(cfg.plugin, cfg.interface, &err);
+    auto fail = [this](const std::string& why) {
+        std::lock_guard lock(mutex);
+        connectFailed = true;
+        connectError = why;
+        bus = BusState::Disconnected;
+        busText = why;
+        changed.notify_all();
+    };
+    if (!device) {
+        fail("cannot create CAN device " + cfg.plugin.toStdString() + " " +
+             cfg.interface.toStdString() + ": " + err.toStdString());
+        return;
+    }
+    if (cfg.plugin == QLatin1String("socketcan")) {
+        device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant(cfg.bitrate_bps));
+        // Ask the kernel for error frames: bus-off, controller (error passive), restarted.
+        device->setConfigurationParameter(
+            QCanBusDevice::ErrorFilterKey,
+            QVariant::fromValue(QCanBusFrame::FrameErrors(QCanBusFrame::AnyError)));
+    }
+    QObject::connect(device, &QCanBusDevice::framesReceived, context, [this] { onFrames(); });
+    QObject::connect(device, &QCanBusDevice::stateChanged, context,
+                     [this](QCanBusDevice::CanBusDeviceState s) { onStateChanged(s); });
+    QObject::connect(device, &QCanBusDevice::errorOccurred, context,
+                     [this, fail](QCanBusDevice::CanBusError e) {
+                         const std::string why = device->errorString().toStdString();
+                         bool wasConnected;
+                         {
+                             std::lock_guard lock(mutex);
+                             wasConnected = connected;
+                         }
+                         if (!wasConnected)
+                             fail("CAN device " + cfg.plugin.toStdString() + " " +
+                                  cfg.interface.toStdString() + ": " + why);
+                         else
+                             event(0, e != QCanBusDevice::NoError, "device error: " + why);
+                     });
+    if (!wakeNotifier) {
+        wakeNotifier = new QSocketNotifier(wakeFd, QSocketNotifier::Read, context);
+        QObject::connect(wakeNotifier, &QSocketNotifier::activated, context, [this] { onWake(); });
+        syncNotifier = new QSocketNotifier(syncFd, QSocketNotifier::Read, context);
+        QObject::connect(syncNotifier, &QSocketNotifier::activated, context,
+                         [this] { onSyncDue(); });
+        housekeeping = new QTimer(context);
+        QObject::connect(housekeeping, &QTimer::timeout, context, [this] { onHousekeeping(); });
+        housekeeping->start(5);
+    }
+    if (!device->connectDevice()) {
+        fail("cannot connect CAN device " + cfg.plugin.toStdString() + " " +
+             cfg.interface.toStdString() + ": " + device->errorString().toStdString());
+    }
+}
+
+void CanOpenMaster::Impl::closeDevice() {
+    stopping = true;
+    if (!device) return;
+    // Leave the drives without torque and the nodes pre-operational.
+    for (size_t i = 0; i < shared.size(); ++i)
+        send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
+    send(encodeNmt(NmtCommand::EnterPreOperational, 0));
+    // Let the transport write them out before the device goes (virtualcan buffers in a socket).
+    const QDeadlineTimer flush(50);
+    while (!flush.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    if (device->state() != QCanBusDevice::UnconnectedState) device->disconnectDevice();
+    delete device;
+    device = nullptr;
+    for (NodeShared& s : shared)
+        s.configured = false;
+    std::lock_guard lock(mutex);
+    connected = false;
+}
+
+void CanOpenMaster::Impl::onStateChanged(QCanBusDevice::CanBusDeviceState s) {
+    if (s == QCanBusDevice::ConnectedState) {
+        {
+            std::lock_guard lock(mutex);
+            connected = true;
+            bus = BusState::Good;
+            busText =
+                "connected to " + cfg.plugin.toStdString() + " " + cfg.interface.toStdString();
+            changed.notify_all();
+        }
+        event(0, false, "connected; " + loadText);
+        const std::int64_t now = steadyNs();
+        for (size_t i = 0; i < rt.size(); ++i)
+            startNode(i, now);
+    } else if (s == QCanBusDevice::UnconnectedState && !stopping) {
+        onBusDown(BusState::Disconnected, master_fault::kBusLost, "connection to the bus lost");
+    }
+}
+
+void CanOpenMaster::Impl::onBusDown(BusState s, std::uint32_t code, const std::string& why) {
+    {
+        std::lock_guard lock(mutex);
+        bus = s;
+        busText = why;
+    }
+    event(0, true, why + ": every drive is in Fault; recover the bus, then reset the faults");
+    for (size_t i = 0; i < shared.size(); ++i) {
+        shared[i].configured = false;
+        rt[i].phase = StartupPhase::Failed;
+        setFault(i, code, "CAN bus: " + why);
+    }
+}
+
+// ---- start-up of one node ----------------------------------------------------------------
+
+void CanOpenMaster::Impl::startNode(size_t i, std::int64_t now) {
+    NodeRuntime& r = rt[i];
+    const int node = cfg.nodes[i].node;
+    shared[i].configured = false;
+    // A (re)started node waits for an explicit activate(): never enable behind the engine's back.
+    shared[i].goal.store(static_cast<std::uint8_t>(DriveGoal::Disabled), std::memory_order_release);
+    r.phase = StartupPhase::WaitBoot;
+    r.deadline_ns = now + static_cast<std::int64_t>(cfg.boot_timeout_ms) * 1'000'000;
+    r.ops.clear();
+    r.op = 0;
+    r.retries = 0;
+    r.was_enabled = false;
+    send(encodeNmt(NmtCommand::ResetCommunication, node));
+}
+
+void CanOpenMaster::Impl::nextSdo(size_t i, std::int64_t now) {
+    NodeRuntime& r = rt[i];
+    const int node = cfg.nodes[i].node;
+    if (r.op >= r.ops.size()) {
+        r.phase = StartupPhase::WaitOperational;
+        r.deadline_ns = now + static_cast<std::int64_t>(cfg.boot_timeout_ms) * 1'000'000;
+        send(encodeNmt(NmtCommand::Start, node));
+        return;
+    }
+    const SdoOp& op = r.ops[r.op];
+    send(op.upload ? sdoUploadRequest(node, op.write.address)
+                   : sdoDownloadRequest(node, op.write.address, op.write.value, op.write.size));
+    r.deadline_ns = now + static_cast<std::int64_t>(cfg.sdo_timeout_ms) * 1'000'000;
+}
+
+void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t now) {
+    NodeRuntime& r = rt[i];
+    if (r.phase != StartupPhase::Sdo || r.op >= r.ops.size()) return;
+    const SdoOp& op = r.ops[r.op];
+    const SdoMessage m = decodeSdo(f);
+    if (!(m.address == op.write.address)) return; // a late answer to an earlier try
+    const std::string what = (op.upload ? "SDO read " : "SDO write ") +
+                             hex(op.write.address.index, 4) + ":" +
+                             hex(op.write.address.sub, 2).substr(2) +
+                             (op.upload ? "" : " = " + hex(op.write.value, 2 * op.write.size));
+    if (m.kind == SdoKind::Abort) {
+        r.phase = StartupPhase::Failed;
+        setFault(i, m.value, what + " refused: " + sdoAbortText(m.value));
+        return;
+    }
+    if ((op.upload && m.kind != SdoKind::UploadResponse) ||
+        (!op.upload && m.kind != SdoKind::DownloadResponse)) {
+        r.phase = StartupPhase::Failed;
+        setFault(i, abort_code::kUnknownCommand,
+                 what + ": unexpected SDO answer (segmented transfer?)");
+        return;
+    }
+    if (op.upload && op.write.address.index == od::kDeviceType && (m.value & 0xFFFF) != 402) {
+        r.phase = StartupPhase::Failed;
+        setFault(i, master_fault::kWrongDevice,
+                 "device type " + hex(m.value, 8) + " is not a CiA 402 drive (profile " +
+                     std::to_string(m.value & 0xFFFF) + ")");
+        return;
+    }
+    ++r.op;
+    r.retries = 0;
+    nextSdo(i, now);
+}
+
+// ---- frames in ---------------------------------------------------------------------------
+
+void CanOpenMaster::Impl::onFrames() {
+    const std::int64_t now = steadyNs();
+    while (device && device->framesAvailable()) {
+        const QCanBusFrame q = device->readFrame();
+        framesRx.fetch_add(1, std::memory_order_relaxed);
+        if (q.frameType() == QCanBusFrame::ErrorFrame) {
+            onErrorFrame(q.frameId(), q.payload());
+            continue;
+        }
+        CanFrame f;
+        if (fromQt(q, f)) onFrame(f, now);
+    }
+}
+
+void CanOpenMaster::Impl::onErrorFrame(std::uint32_t errorClass, const QByteArray& payload) {
+    const ErrorFrameInfo info =
+        decodeErrorFrame(errorClass, reinterpret_cast<const std::uint8_t*>(payload.constData()),
+                         static_cast<int>(payload.size()));
+    if (info.state == BusState::BusOff) {
+        onBusDown(BusState::BusOff, master_fault::kBusOff, "bus off (" + info.text + ")");
+        return;
+    }
+    {
+        std::lock_guard lock(mutex);
+        if (info.state != BusState::Unknown) bus = info.state;
+        busText = info.text;
+    }
+    event(0, info.state == BusState::ErrorPassive || info.state == BusState::Warning, info.text);
+}
+
+void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
+    const int node = cob::nodeOf(f.id);
+    size_t i = 0;
+    while (i < cfg.nodes.size() && cfg.nodes[i].node != node)
+        ++i;
+    if (i == cfg.nodes.size()) return; // not one of ours (or a frame of the master's kind)
+    NodeShared& s = shared[i];
+    NodeRuntime& r = rt[i];
+    Tpdo1 t;
+    if (decodeTpdo1(f, t)) {
+        const Cia402State state = decodeStatusword(t.statusword);
+        const bool enabled = state == Cia402State::OperationEnabled;
+        if (enabled && !r.was_enabled) s.enable_epoch.fetch_add(1, std::memory_order_acq_rel);
+        r.was_enabled = enabled;
+        s.velocity_counts_s.store((t.actual_counts - r.previous_actual) / cfg.period_s,
+                                  std::memory_order_relaxed);
+        r.previous_actual = t.actual_counts;
+        s.actual_counts.store(t.actual_counts, std::memory_order_release);
+        s.torque_permille.store(t.torque_permille, std::memory_order_relaxed);
+        s.tpdo_ns.store(now, std::memory_order_release);
+        s.statusword.store(t.statusword, std::memory_order_release);
+        s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
+        // The cycle is complete when every running node has answered this SYNC.
+        const std::uint64_t c = cycles.load(std::memory_order_relaxed);
+        r.tpdo_cycle = c;
+        bool all = true;
+        for (size_t k = 0; k < rt.size(); ++k)
+            if (rt[k].phase == StartupPhase::Running && rt[k].tpdo_cycle != c) all = false;
+        if (all) completed.store(c, std::memory_order_release);
+        return;
+    }
+    int hbNode = 0;
+    NmtState nmt;
+    if (decodeHeartbeat(f, hbNode, nmt)) {
+        s.heartbeat_ns.store(now, std::memory_order_release);
+        s.nmt.store(static_cast<std::uint8_t>(nmt), std::memory_order_release);
+        if (nmt == NmtState::BootUp) {
+            if (r.phase == StartupPhase::WaitBoot) {
+                r.phase = StartupPhase::Sdo;
+                r.ops.clear();
+                r.ops.push_back({{{od::kDeviceType, 0}, 0, 0}, true});
+                DriveConfig dc;
+                dc.cycle_period_us = static_cast<std::uint32_t>(cfg.period_s * 1e6 + 0.5);
+                dc.heartbeat_ms = heartbeatProducerMs;
+                for (const SdoWrite& w : cspStartupWrites(node, dc))
+                    r.ops.push_back({w, false});
+                r.op = 0;
+                nextSdo(i, now);
+            } else if (r.phase == StartupPhase::Running) {
+                s.configured = false;
+                r.phase = StartupPhase::Failed;
+                setFault(i, master_fault::kRebooted,
+                         "node rebooted while running (unexpected boot-up)");
+            }
+        } else if (nmt == NmtState::Operational && r.phase == StartupPhase::WaitOperational) {
+            r.phase = StartupPhase::Running;
+            r.tpdo_cycle = cycles.load(std::memory_order_relaxed);
+            s.master_fault.store(0, std::memory_order_release);
+            {
+                std::lock_guard lock(mutex);
+                faultText[i].clear();
+            }
+            s.configured = true;
+            event(node, false,
+                  "configured (CSP, RPDO1/RPDO2/TPDO1, heartbeat " +
+                      std::to_string(heartbeatProducerMs) + " ms) and operational");
+        }
+        return;
+    }
+    Emcy e;
+    if (decodeEmcy(f, e)) {
+        s.last_emcy.store(e.error_code, std::memory_order_release);
+        const std::string text = "EMCY " + canopen::emcyText(e.error_code) + " (error register " +
+                                 hex(e.error_register, 2) + ")";
+        {
+            std::lock_guard lock(mutex);
+            emcyText[i] = e.error_code ? text : std::string();
+        }
+        event(node, e.error_code != 0, text);
+        return;
+    }
+    if (cob::functionOf(f.id) == cob::kSdoTx) onSdoReply(i, f, now);
+}
+
+// ---- commands, cycle, housekeeping -------------------------------------------------------
+
+std::uint16_t CanOpenMaster::Impl::controlwordFor(size_t i) {
+    NodeShared& s = shared[i];
+    NodeRuntime& r = rt[i];
+    const std::uint32_t resets = s.fault_reset_requests.load(std::memory_order_acquire);
+    if (resets != r.seen_resets) {
+        r.seen_resets = resets;
+        r.reset_phase = 1;
+    }
+    if (r.reset_phase == 1) {
+        r.reset_phase = 2;
+        return cw::kDisableVoltage; // bit 7 low ...
+    }
+    if (r.reset_phase == 2) {
+        r.reset_phase = 0;
+        return cw::kFaultResetBit; // ... then high: the rising edge
+    }
+    const Cia402State state = decodeStatusword(s.statusword.load(std::memory_order_acquire));
+    if (s.master_fault.load(std::memory_order_acquire) != 0) return cw::kDisableVoltage;
+    return controlwordToward(state, static_cast<DriveGoal>(s.goal.load(std::memory_order_acquire)));
+}
+
+void CanOpenMaster::Impl::onWake() {
+    drain(wakeFd);
+    const std::int64_t now = steadyNs();
+    bool sent = false;
+    for (size_t i = 0; i < shared.size(); ++i) {
+        NodeShared& s = shared[i];
+        // A fault reset of a master-side fault: clear it when its cause is gone, else start
+        // the node again (reset communication, SDO configuration).
+        const std::uint32_t resets = s.fault_reset_requests.load(std::memory_order_acquire);
+        const std::uint32_t fault = s.master_fault.load(std::memory_order_acquire);
+        if (resets != rt[i].seen_resets && fault != 0) {
+            const bool heartbeatFresh = now - s.heartbeat_ns.load() < heartbeatTimeoutNs;
+            if (fault == master_fault::kHeartbeatLost && heartbeatFresh &&
+                rt[i].phase == StartupPhase::Running) {
+                s.master_fault.store(0, std::memory_order_release);
+                std::lock_guard lock(mutex);
+                faultText[i].clear();
+            } else if (device && device->state() == QCanBusDevice::ConnectedState &&
+                       (rt[i].phase == StartupPhase::Failed ||
+                        rt[i].phase == StartupPhase::Running)) {
+                event(cfg.nodes[i].node, false, "fault reset: configuring the node again");
+                startNode(i, now);
+            }
+        }
+        if (!s.urgent.exchange(false, std::memory_order_acq_rel)) continue;
+        const Cia402State state = decodeStatusword(s.statusword.load(std::memory_order_acquire));
+        const auto goal = static_cast<DriveGoal>(s.goal.load(std::memory_order_acquire));
+        sent = send(encodeRpdo2(cfg.nodes[i].node, controlwordToward(state, goal))) || sent;
+    }
+    if (sent) lastUrgentNs.store(steadyNs(), std::memory_order_release);
+}
+
+void CanOpenMaster::Impl::onSyncDue() {
+    if (drain(syncFd) == 0) return;
+    runCycle(steadyNs());
+}
+
+void CanOpenMaster::Impl::runCycle(std::int64_t now) {
+    if (!device || device->state() != QCanBusDevice::ConnectedState) return;
+    for (size_t i = 0; i < shared.size(); ++i) {
+        if (rt[i].phase != StartupPhase::Running) continue;
+        NodeShared& s = shared[i];
+        const std::uint16_t c = controlwordFor(i);
+        const std::uint64_t tagged = s.tagged_target.load(std::memory_order_acquire);
+        const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
+        // Hold the actual position unless the engine wrote a target after seeing this enable.
+        const std::int32_t target =
+            enabled && NodeShared::epochOf(tagged) == s.enable_epoch.load(std::memory_order_acquire)
+                ? NodeShared::countsOf(tagged)
+                : s.actual_counts.load(std::memory_order_acquire);
+        send(encodeRpdo1(cfg.nodes[i].node, {c, target}));
+    }
+    send(encodeSync());
+    cycles.fetch_add(1, std::memory_order_release);
+    if (lastSyncNs != 0) {
+        const double jitter =
+            std::abs(static_cast<double>(now - lastSyncNs) * 1e-3 - cfg.period_s * 1e6);
+        std::lock_guard lock(mutex);
+        if (jitterUs.size() < 4096)
+            jitterUs.push_back(jitter);
+        else
+            jitterUs[jitterNext] = jitter;
+        jitterNext = (jitterNext + 1) % 4096;
+    }
+    lastSyncNs = now;
+}
+
+void CanOpenMaster::Impl::onHousekeeping() {
+    const std::int64_t now = steadyNs();
+    for (size_t i = 0; i < rt.size(); ++i) {
+        NodeRuntime& r = rt[i];
+        NodeShared& s = shared[i];
+        const int node = cfg.nodes[i].node;
+        switch (r.phase) {
+        case StartupPhase::WaitBoot:
+            if (now > r.deadline_ns) {
+                r.phase = StartupPhase::Failed;
+                setFault(
+                    i, master_fault::kNoBootUp,
+                    "no boot-up within " + std::to_string(cfg.boot_timeout_ms) +
+                        " ms after NMT reset communication (is a node with this id on the bus?)");
+            }
+            break;
+        case StartupPhase::Sdo:
+            if (now > r.deadline_ns) {
+                if (r.retries++ < cfg.sdo_retries) {
+                    nextSdo(i, now);
+                } else {
+                    const SdoAddress a = r.ops[r.op].write.address;
+                    r.phase = StartupPhase::Failed;
+                    send(sdoAbort(node, a, abort_code::kTimeout, false));
+                    setFault(i, abort_code::kTimeout,
+                             "SDO " + hex(a.index, 4) + ":" + hex(a.sub, 2).substr(2) +
+                                 " unanswered after " + std::to_string(cfg.sdo_retries + 1) +
+                                 " tries of " + std::to_string(cfg.sdo_timeout_ms) +
+                                 " ms: " + sdoAbortText(abort_code::kTimeout));
+                }
+            }
+            break;
+        case StartupPhase::WaitOperational:
+            if (now > r.deadline_ns) {
+                r.phase = StartupPhase::Failed;
+                setFault(i, master_fault::kNoBootUp, "no Operational heartbeat after NMT start");
+            }
+            break;
+        case StartupPhase::Running: {
+            const std::int64_t age = now - s.heartbeat_ns.load(std::memory_order_acquire);
+            if (age > heartbeatTimeoutNs && s.master_fault.load() != master_fault::kHeartbeatLost) {
+                setFault(i, master_fault::kHeartbeatLost,
+                         "heartbeat lost (none for " + std::to_string(age / 1'000'000) + " ms > " +
+                             std::to_string(heartbeatTimeoutNs / 1'000'000) + " ms)");
+                // The node may still listen: take its torque away at once.
+                send(encodeRpdo2(node, cw::kDisableVoltage));
+            }
+            break;
+        }
+        default:
+            break;
+        }
+    }
+    if (device && device->hasBusStatus()) {
+        const auto st = device->busStatus();
+        const BusState b = st == QCanBusDevice::CanBusStatus::Good      ? BusState::Good
+                           : st == QCanBusDevice::CanBusStatus::Warning ? BusState::Warning
+                           : st == QCanBusDevice::CanBusStatus::Error   ? BusState::ErrorPassive
+                           : st == QCanBusDevice::CanBusStatus::BusOff  ? BusState::BusOff
+                                                                        : BusState::Unknown;
+        BusState before;
+        {
+            std::lock_guard lock(mutex);
+            before = bus;
+        }
+        if (b == BusState::BusOff && before != BusState::BusOff)
+            onBusDown(b, master_fault::kBusOff, "bus off");
+        else if (b != BusState::Unknown && b != before && before != BusState::BusOff) {
+            {
+                std::lock_guard lock(mutex);
+                bus = b;
+                busText = toString(b);
+            }
+            event(0, b != BusState::Good, std::string("bus state: ") + toString(b));
+        }
+    }
+}
+
+} // namespace cutcell::canopen
