@@ -66,6 +66,11 @@ struct EngineConfig {
     // Feedback that has not changed while the set-point travelled this far is frozen (rad/mm).
     double frozen_feedback_travel = 0.002;
     std::uint32_t telemetry_every_n_cycles = 1; // 1 = every cycle
+    // Transport delay of the drives (s): from write() to the feedback that shows the drive
+    // acting on it (2 cycles on a CANopen bus: RPDO after SYNC k, reached at SYNC k + 2).
+    // The engine writes each set-point extrapolated this far ahead along its velocity, so the
+    // error it measures is the drive's tracking error, not the bus's delay. 0 for in-process drives.
+    double setpoint_lead_s = 0;
 };
 
 class MotionEngine {

@@ -11,6 +11,8 @@ namespace cutcell::canopen {
 
 inline void tuneEngineForCan(EngineConfig& config, const Job& job, double period_s) {
     config.period_s = period_s;
+    // A set-point written after SYNC k is acted on at SYNC k + 1 and seen in the TPDO of k + 2.
+    config.setpoint_lead_s = 2 * period_s;
     double count = 0; // rad per count, the coarsest axis (all axes of the pipe robot are rotary)
     for (double c : job.devices.counts_per_unit)
         count = std::max(count, 1.0 / (c * 180.0 / kPi));
