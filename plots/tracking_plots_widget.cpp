@@ -423,6 +423,10 @@ int TrackingPlotsWidget::plottedPointCount() const {
     return d->jointPlot->graphCount() ? d->jointPlot->graph(0)->dataCount() : 0;
 }
 
+void TrackingPlotsWidget::redrawPending() {
+    d->onTick();
+}
+
 double TrackingPlotsWidget::replotNow() {
     d->refresh();
     QElapsedTimer timer;

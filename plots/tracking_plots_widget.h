@@ -58,6 +58,10 @@ class TrackingPlotsWidget : public QWidget {
     int sampleCount() const;            // samples kept in the ring
     std::uint64_t droppedCount() const; // samples dropped since clear()
     int plottedPointCount() const;      // points in the joint plot's first trace (tests, bench)
+    // Draws pending data now, as the internal ~30 Hz timer would. A host with its own display
+    // tick (the telemetry poll) calls it there, so the plots join that tick's window
+    // composition instead of causing a second one (costly with a QOpenGLWidget in the window).
+    void redrawPending();
     // Syncs and replots at once (tests, benchmark); returns the replot time in ms.
     double replotNow();
 

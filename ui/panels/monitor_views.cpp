@@ -109,6 +109,9 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
 #endif
         ++appended_;
     }
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->redrawPending(); // in this tick's composition, not in one of its own
+#endif
 }
 
 void PlotsPanel::clear() {
