@@ -67,7 +67,9 @@ struct TrackingPlotsWidget::Impl {
     bool paused = false;
     bool autoscale = true;
     bool fullResync = true;
-    bool viewChanged = false; // one plot's time range moved: redraw both at the next tick
+    bool viewChanged = false;
+    bool hostDriven = false;  // new data is drawn by redrawPending() only // one plot's time range
+                              // moved: redraw both at the next tick
     std::uint64_t synced = 0; // ring.appended() at the last sync
 
     explicit Impl(TrackingPlotsWidget* s) : self(s) {
@@ -183,10 +185,10 @@ struct TrackingPlotsWidget::Impl {
         dirty = false;
     }
 
-    void onTick() {
+    void onTick(bool fromTimer = false) {
         // Hidden (e.g. another tab): keep the data, draw when shown again.
         if (!self->isVisible()) return;
-        if (dirty && !paused)
+        if (dirty && !paused && !(fromTimer && hostDriven))
             refresh();
         else if (!viewChanged)
             return;
@@ -262,7 +264,7 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     d->refresh();
 
     d->tick.setInterval(kTickMs);
-    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(); });
+    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(true); });
     d->tick.start();
 }
 
@@ -425,6 +427,10 @@ int TrackingPlotsWidget::plottedPointCount() const {
 
 void TrackingPlotsWidget::redrawPending() {
     d->onTick();
+}
+
+void TrackingPlotsWidget::setHostDrivenRedraw(bool on) {
+    d->hostDriven = on;
 }
 
 double TrackingPlotsWidget::replotNow() {
