@@ -41,6 +41,16 @@ QString csvName(QString s) {
     return s;
 }
 
+// QCustomPlot 2.1's replot() ends in a synchronous repaint(). With a QOpenGLWidget (the 3D
+// view) in the window, every repaint is a full-window GL composition (~10-40 ms on llvmpipe),
+// one per plot per tick. Draw into the plot's buffers with updates off (repaint() is then a
+// no-op); re-enabling schedules a soft update() that joins the window's next composition.
+void softReplot(QCustomPlot* p) {
+    p->setUpdatesEnabled(false);
+    p->replot(QCustomPlot::rpRefreshHint);
+    p->setUpdatesEnabled(true);
+}
+
 } // namespace
 
 struct TrackingPlotsWidget::Impl {
@@ -57,6 +67,9 @@ struct TrackingPlotsWidget::Impl {
     bool paused = false;
     bool autoscale = true;
     bool fullResync = true;
+    bool viewChanged = false;
+    bool hostDriven = false;  // new data is drawn by redrawPending() only // one plot's time range
+                              // moved: redraw both at the next tick
     std::uint64_t synced = 0; // ring.appended() at the last sync
 
     explicit Impl(TrackingPlotsWidget* s) : self(s) {
@@ -172,12 +185,16 @@ struct TrackingPlotsWidget::Impl {
         dirty = false;
     }
 
-    void onTick() {
+    void onTick(bool fromTimer = false) {
         // Hidden (e.g. another tab): keep the data, draw when shown again.
-        if (!dirty || paused || !self->isVisible()) return;
-        refresh();
-        jointPlot->replot(QCustomPlot::rpQueuedReplot);
-        cartPlot->replot(QCustomPlot::rpQueuedReplot);
+        if (!self->isVisible()) return;
+        if (dirty && !paused && !(fromTimer && hostDriven))
+            refresh();
+        else if (!viewChanged)
+            return;
+        softReplot(jointPlot);
+        softReplot(cartPlot);
+        viewChanged = false;
     }
 
     QImage render() {
@@ -236,17 +253,18 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
             d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
     connect(d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
             d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
-    connect(d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), d->cartPlot,
-            [this] { d->cartPlot->replot(QCustomPlot::rpQueuedReplot); });
-    connect(d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), d->jointPlot,
-            [this] { d->jointPlot->replot(QCustomPlot::rpQueuedReplot); });
+    // The partner plot follows at the next tick (a queued replot would repaint on its own).
+    connect(d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+            [this] { d->viewChanged = true; });
+    connect(d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+            [this] { d->viewChanged = true; });
     layout->addWidget(d->jointPlot, 1);
     layout->addWidget(d->cartPlot, 1);
     d->rebuildGraphs();
     d->refresh();
 
     d->tick.setInterval(kTickMs);
-    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(); });
+    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(true); });
     d->tick.start();
 }
 
@@ -405,6 +423,14 @@ std::uint64_t TrackingPlotsWidget::droppedCount() const {
 
 int TrackingPlotsWidget::plottedPointCount() const {
     return d->jointPlot->graphCount() ? d->jointPlot->graph(0)->dataCount() : 0;
+}
+
+void TrackingPlotsWidget::redrawPending() {
+    d->onTick();
+}
+
+void TrackingPlotsWidget::setHostDrivenRedraw(bool on) {
+    d->hostDriven = on;
 }
 
 double TrackingPlotsWidget::replotNow() {

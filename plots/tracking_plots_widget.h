@@ -58,6 +58,13 @@ class TrackingPlotsWidget : public QWidget {
     int sampleCount() const;            // samples kept in the ring
     std::uint64_t droppedCount() const; // samples dropped since clear()
     int plottedPointCount() const;      // points in the joint plot's first trace (tests, bench)
+    // Draws pending data now, as the internal ~30 Hz timer would. A host with its own display
+    // tick calls it there and turns the timer's data redraws off (setHostDrivenRedraw(true)),
+    // so the plots join that tick's window composition instead of causing one of their own
+    // (costly with a QOpenGLWidget in the window). The timer still syncs the two plots' time
+    // ranges after a drag or zoom.
+    void redrawPending();
+    void setHostDrivenRedraw(bool on);
     // Syncs and replots at once (tests, benchmark); returns the replot time in ms.
     double replotNow();
 

@@ -215,6 +215,18 @@ void MainWindow::connectRun() {
 void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {
     const auto& last = batch.back();
     plots_->append(batch);
+    // One display frame (a single window composition) at most every kDisplayFrameMs, at once
+    // when the state, the torch or the end of the path changes. With the 3D view's
+    // QOpenGLWidget in the window every composition redraws the whole window through OpenGL
+    // (10-40 ms with llvmpipe): one per 33 ms telemetry tick saturated the GUI thread.
+    const bool due = !sinceDisplayFrame_.isValid() ||
+                     sinceDisplayFrame_.elapsed() >= kDisplayFrameMs || last.state != shownState_ ||
+                     last.torch_on != shownTorch_ || last.progress >= 1.0;
+    if (!due) return;
+    sinceDisplayFrame_.start();
+    shownState_ = last.state;
+    shownTorch_ = last.torch_on;
+    plots_->redraw();
     progress_->setSample(last);
     cell_->setSample(last);
     lamps_->setTorch(last.torch_on);

@@ -7,6 +7,7 @@
 // Threading contract: GUI thread only.
 #include "ui/engine_rig.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 
 #include <functional>
@@ -85,6 +86,11 @@ class MainWindow : public QMainWindow {
     QProgressBar* planBar_ = nullptr;
     QPushButton* planCancel_ = nullptr;
     std::function<int()> savePrompt_;
+    // Display frames: the panels follow the telemetry at most every kDisplayFrameMs.
+    static constexpr int kDisplayFrameMs = 60;
+    QElapsedTimer sinceDisplayFrame_;
+    cutcell::EngineState shownState_ = cutcell::EngineState::Idle;
+    bool shownTorch_ = false;
 };
 
 } // namespace CutCell::ui

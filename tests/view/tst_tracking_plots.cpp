@@ -36,6 +36,7 @@ class TstTrackingPlots : public QObject {
     void traceVisibilityToggles();
     void clearEmptiesEverything();
     void hiddenWidgetCatchesUpWhenShown();
+    void hostDrivenRedrawWaitsForTheHost();
 };
 
 void TstTrackingPlots::ringKeepsNewestAndCountsDrops() {
@@ -228,4 +229,28 @@ void TstTrackingPlots::hiddenWidgetCatchesUpWhenShown() {
 }
 
 QTEST_MAIN(TstTrackingPlots)
+// Host-driven: the timer no longer moves new data into the plots (the host's display frame
+// does, with redrawPending), so the plots never cause a window composition of their own.
+void TstTrackingPlots::hostDrivenRedrawWaitsForTheHost() {
+    TrackingPlotsWidget w;
+    w.setHostDrivenRedraw(true);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    double j[6], c[3];
+    for (int i = 0; i < 40; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTest::qWait(150); // several timer ticks
+    QCOMPARE(w.plottedPointCount(), 0);
+    w.redrawPending();
+    QCOMPARE(w.plottedPointCount(), 40);
+    w.setHostDrivenRedraw(false); // back to the timer
+    for (int i = 40; i < 50; ++i) {
+        sample(i, j, c);
+        w.append(i * 0.01, j, 6, c);
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 50, 2000);
+}
+
 #include "tst_tracking_plots.moc"

@@ -71,6 +71,7 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     v->setContentsMargins(0, 0, 0, 0);
 #ifdef CUTCELL_HAVE_PLOTS
     plots_ = new cutcell::plots::TrackingPlotsWidget(this);
+    plots_->setHostDrivenRedraw(true); // drawn in the main window's display frame (redraw())
     v->addWidget(plots_);
 #else
     auto* note = new QLabel(tr("Tracking plots not built in this configuration."), this);
@@ -109,6 +110,12 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
 #endif
         ++appended_;
     }
+}
+
+void PlotsPanel::redraw() {
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->redrawPending();
+#endif
 }
 
 void PlotsPanel::clear() {

@@ -37,8 +37,9 @@ class CellViewPanel : public QWidget {
     cutcell::view3d::CellView* view() const { return view_; }
 
     // The view follows the machine at most this often: each frame costs a render and, with
-    // software OpenGL, a composition of the whole window.
-    static constexpr int kFrameIntervalMs = 66;
+    // software OpenGL, a composition of the whole window. (The main window feeds it at its
+    // display-frame rate, ~15 Hz; this bound keeps other callers from rendering faster.)
+    static constexpr int kFrameIntervalMs = 50;
 
   private:
     cutcell::view3d::CellView* view_ = nullptr;
@@ -52,7 +53,9 @@ class PlotsPanel : public QWidget {
     explicit PlotsPanel(QWidget* parent = nullptr);
 
     void setAxisNames(const QStringList& names);
+    // Cheap: copies into the plots' ring; redraw() draws what was appended.
     void append(const std::vector<cutcell::TelemetrySample>& batch);
+    void redraw();
     void clear();
     void setPaused(bool paused);
     bool exportPng(const QString& path, QString* error);

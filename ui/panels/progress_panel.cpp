@@ -53,7 +53,16 @@ QString ProgressPanel::formatDuration(double s) {
 
 void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
     const double p = std::clamp(s.progress, 0.0, 1.0);
-    bar_->setValue(static_cast<int>(std::lround(p * 1000)));
+    const int value = static_cast<int>(std::lround(p * 1000));
+    if (value != bar_->value()) {
+        // QProgressBar::setValue() repaints synchronously when the fill moves a pixel; with the
+        // 3D view's QOpenGLWidget in the window that is a whole-window GL composition (~20 ms on
+        // llvmpipe) inside the telemetry tick. With updates off it is a no-op; re-enabling
+        // schedules an update() that joins the tick's single composition.
+        bar_->setUpdatesEnabled(false);
+        bar_->setValue(value);
+        bar_->setUpdatesEnabled(true);
+    }
     percent_->setText(QStringLiteral("%1 %").arg(p * 100.0, 0, 'f', 1));
     elapsed_->setText(formatDuration(s.elapsed_s));
     remaining_->setText(formatDuration(s.remaining_s));
