@@ -83,7 +83,7 @@ class TestGuiCan : public QObject {
     }
 
     void enableAndEmergencyStopShowInDevicePanel() {
-        const cutcell::Job job = canJob(0.01);
+        const cutcell::Job job = canJob(0.004); // the controller filters need tau_f >= period / 2
         cutcell::canopen::DriveSimulatorConfig sc;
         sc.interface = interface_;
         sc.nodes = cutcell::canopen::nodesFromJob(
@@ -92,6 +92,7 @@ class TestGuiCan : public QObject {
         QVERIFY2(sim.start(), qPrintable(sim.errorText()));
 
         MainWindow w(&cutcell::app::makeRig);
+        w.resize(1440, 900);
         w.show();
         QString error;
         QVERIFY2(w.openJob(saveJob(job, "can.json"), &error), qPrintable(error));
@@ -102,6 +103,9 @@ class TestGuiCan : public QObject {
         w.run()->enable();
         QTRY_VERIFY2_WITH_TIMEOUT(allAre(cia402States(w), "Operation enabled"),
                                   qPrintable(cia402States(w).join(", ")), 5000);
+        // For a look at the window: CUTCELL_TEST_SCREENSHOT=/tmp/can.png
+        if (const QString shot = qEnvironmentVariable("CUTCELL_TEST_SCREENSHOT"); !shot.isEmpty())
+            QVERIFY(w.grab().save(shot));
         w.run()->emergencyStop();
         QTRY_VERIFY2_WITH_TIMEOUT(noneIs(cia402States(w), "Operation enabled"),
                                   qPrintable(cia402States(w).join(", ")), 5000);
