@@ -25,7 +25,9 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     bitrate_ = new QSpinBox;
     bitrate_->setRange(10, 1000);
     bitrate_->setSuffix(tr(" kbit/s"));
-    auto* form = new QFormLayout;
+    choiceBox_ = new QWidget;
+    auto* form = new QFormLayout(choiceBox_);
+    form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Drives"), kind_);
     form->addRow(tr("CAN plugin"), plugin_);
     form->addRow(tr("Interface"), interface_);
@@ -44,7 +46,7 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     reset_ = new QPushButton(tr("Fault reset"));
 
     auto* layout = new QVBoxLayout(this);
-    layout->addLayout(form);
+    layout->addWidget(choiceBox_);
     layout->addWidget(bus_);
     layout->addWidget(load_);
     layout->addWidget(nodes_, 1);
@@ -57,6 +59,10 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     connect(reset_, &QPushButton::clicked, this, &DevicePanel::faultResetRequested);
     setChoice({});
     setSnapshot({});
+}
+
+void DevicePanel::setChoiceVisible(bool visible) {
+    choiceBox_->setVisible(visible);
 }
 
 void DevicePanel::setChoice(const DeviceChoice& c) {
@@ -91,7 +97,7 @@ void DevicePanel::emitChoice() {
 
 void DevicePanel::setSnapshot(const DevicePanelSnapshot& s) {
     if (!s.can) {
-        bus_->setText(tr("Bus: none (simulated drives)"));
+        bus_->setText(tr("Bus: none (simulated in-process drives)"));
         load_->clear();
     } else {
         bus_->setText(tr("Bus: %1").arg(s.bus_state));

@@ -55,6 +55,8 @@ class DevicePanel : public QWidget {
 
     void setChoice(const DeviceChoice& c); // from the job (does not emit choiceEdited)
     DeviceChoice choice() const;
+    // Hides the choice (kind, plugin, interface, bit rate) where another form edits it.
+    void setChoiceVisible(bool visible);
     void setSnapshot(const DevicePanelSnapshot& s);
 
   signals:
@@ -64,6 +66,7 @@ class DevicePanel : public QWidget {
   private:
     void emitChoice();
 
+    QWidget* choiceBox_;
     QComboBox* kind_;
     QLineEdit* plugin_;
     QLineEdit* interface_;

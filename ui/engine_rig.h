@@ -10,6 +10,10 @@
 #include <memory>
 #include <string>
 
+namespace cutcell::ui {
+struct DevicePanelSnapshot;
+}
+
 namespace CutCell::ui {
 
 class EngineRig {
@@ -18,6 +22,11 @@ class EngineRig {
     virtual cutcell::MotionEngine& engine() = 0;
     // One line for the status bar, e.g. "simulated cell, 1 ms cycle, real time".
     virtual std::string description() const = 0;
+    // The drives and bus for the device panel (GUI thread, never waits on the bus); false:
+    // nothing to show beyond "simulated in-process drives".
+    virtual bool deviceSnapshot(cutcell::ui::DevicePanelSnapshot& /*out*/) { return false; }
+    // The operator's fault reset at the device panel (node 0: every node and the bus).
+    virtual void faultReset(int /*node*/) {}
 };
 
 // Builds a rig (engine thread started) for a job; returns null with *error set on failure.

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "core/job/default_job.h"
+#include "ui/device_panel.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
@@ -24,6 +25,8 @@
 #include <QPushButton>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace CutCell::ui {
@@ -58,6 +61,9 @@ void MainWindow::buildLayout() {
     lamps_ = new StateLamps(this);
     progress_ = new ProgressPanel(this);
     log_ = new EventLogPanel(this);
+    devices_ = new cutcell::ui::DevicePanel(this);
+    devices_->setObjectName("devicePanel");
+    devices_->setChoiceVisible(false); // chosen in the "Cycle & devices" parameter tab
 
     auto* centre = new QSplitter(Qt::Vertical, this);
     centre->addWidget(cell_);
@@ -86,7 +92,11 @@ void MainWindow::buildLayout() {
 
     auto* main = new QSplitter(Qt::Vertical, this);
     main->addWidget(top);
-    main->addWidget(log_);
+    bottomTabs_ = new QTabWidget(this);
+    bottomTabs_->setObjectName("bottomTabs");
+    bottomTabs_->addTab(log_, tr("Event log"));
+    bottomTabs_->addTab(devices_, tr("Devices"));
+    main->addWidget(bottomTabs_);
     main->setStretchFactor(0, 4);
     main->setStretchFactor(1, 1);
     main->setSizes({800, 140});
@@ -175,6 +185,15 @@ void MainWindow::connectRun() {
     connect(run_, &RunController::message, log_,
             [this](Severity s, const QString& m) { log_->add(s, m); });
     connect(run_, &RunController::rigChanged, rigLabel_, &QLabel::setText);
+    // The device panel at ~5 Hz from the rig (a short mutex in the CAN master, no bus wait).
+    deviceTimer_ = new QTimer(this);
+    deviceTimer_->setInterval(200);
+    connect(deviceTimer_, &QTimer::timeout, this, &MainWindow::refreshDevicePanel);
+    deviceTimer_->start();
+    connect(devices_, &cutcell::ui::DevicePanel::faultResetRequested, this, [this] {
+        if (EngineRig* rig = run_->rig()) rig->faultReset(0);
+        run_->reset();
+    });
     connect(run_, &RunController::planStarted, this, [this] {
         planBar_->setValue(0);
         planBar_->show();
@@ -340,6 +359,15 @@ void MainWindow::closeEvent(QCloseEvent* e) {
         e->accept();
     else
         e->ignore();
+}
+
+void MainWindow::refreshDevicePanel() {
+    cutcell::ui::DevicePanelSnapshot snapshot; // can = false: simulated in-process drives
+    if (EngineRig* rig = run_->rig()) rig->deviceSnapshot(snapshot);
+    devices_->setSnapshot(snapshot);
+    // A bus just came up: show it (the operator can switch back to the log).
+    if (snapshot.can && !showingBus_) bottomTabs_->setCurrentWidget(devices_);
+    showingBus_ = snapshot.can;
 }
 
 } // namespace CutCell::ui

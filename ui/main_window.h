@@ -13,9 +13,15 @@
 #include <functional>
 
 class QLabel;
+class QTabWidget;
+class QTimer;
 class QMenu;
 class QProgressBar;
 class QPushButton;
+
+namespace cutcell::ui {
+class DevicePanel;
+}
 
 namespace CutCell::ui {
 
@@ -56,6 +62,7 @@ class MainWindow : public QMainWindow {
     EventLogPanel* eventLog() const { return log_; }
     CellViewPanel* cellView() const { return cell_; }
     PlotsPanel* plots() const { return plots_; }
+    cutcell::ui::DevicePanel* devicePanel() const { return devices_; }
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -68,6 +75,7 @@ class MainWindow : public QMainWindow {
     void refreshRecentMenu();
     void onSamples(const std::vector<cutcell::TelemetrySample>& batch);
     void onState(cutcell::EngineState s);
+    void refreshDevicePanel();
 
     JobEditor* editor_;
     JobDocument* document_;
@@ -77,6 +85,10 @@ class MainWindow : public QMainWindow {
     StateLamps* lamps_ = nullptr;
     ProgressPanel* progress_ = nullptr;
     EventLogPanel* log_ = nullptr;
+    cutcell::ui::DevicePanel* devices_ = nullptr;
+    QTimer* deviceTimer_ = nullptr;
+    QTabWidget* bottomTabs_ = nullptr; // event log, devices
+    bool showingBus_ = false;
     CellViewPanel* cell_ = nullptr;
     PlotsPanel* plots_ = nullptr;
     QMenu* recentMenu_ = nullptr;

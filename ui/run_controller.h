@@ -33,6 +33,7 @@ class RunController : public QObject {
     std::shared_ptr<const cutcell::CutPlan> plan() const { return plan_; }
     QString startBlockedReason() const { return blocked_; }
     bool planning() const;
+    EngineRig* rig() const { return rig_.get(); } // null until a plan was loaded
     // Plans the current job now (after an open or a New; edits replan after a short pause).
     void replanNow();
 

@@ -1,5 +1,7 @@
 #include "sim_rig.h"
 
+#include "can_rig.h"
+
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
 
@@ -58,6 +60,7 @@ class SimulatedRig : public CutCell::ui::EngineRig {
 
 std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                                                 std::string* error) {
+    if (job.devices.kind == DeviceKind::CanOpen) return makeCanRig(job, error);
     if (job.devices.kind != DeviceKind::Simulated) {
         if (error)
             *error = std::string("devices.kind = \"") + toString(job.devices.kind) +

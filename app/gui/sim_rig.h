@@ -5,8 +5,8 @@
 
 namespace cutcell::app {
 
-// The factory the main window uses; CANopen drives are refused with a message until the
-// CAN layer is wired here.
+// The factory the main window uses: the simulated cell, or the CANopen cell (can_rig.h) for a
+// job with devices.kind = "canopen".
 std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                                                 std::string* error);
 
