@@ -4,6 +4,7 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
+#include "ui/machine_views.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
@@ -193,9 +194,7 @@ void MainWindow::connectRun() {
     connect(planCancel_, &QPushButton::clicked, run_, &RunController::cancelPlanning);
     connect(run_, &RunController::planChanged, this,
             [this](std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job) {
-                cell_->setPlan(plan, job);
-                progress_->setPlannedTotals(static_cast<std::uint32_t>(plan->knots.size()),
-                                            plan->cut_time_s);
+                adaptViewsToPlan(plan, job, cell_, plots_, progress_);
             });
     auto* bridge = run_->bridge();
     connect(bridge, &EngineBridge::samples, this, &MainWindow::onSamples);

@@ -12,6 +12,8 @@
 #include <QElapsedTimer>
 #include <QWidget>
 
+#include <array>
+
 #include <memory>
 #include <vector>
 
@@ -52,6 +54,8 @@ class PlotsPanel : public QWidget {
     explicit PlotsPanel(QWidget* parent = nullptr);
 
     void setAxisNames(const QStringList& names);
+    // Axes whose error is a length (mm, plotted as is); the others are rad, plotted in deg.
+    void setLinearAxes(const std::array<bool, cutcell::kAxisCount>& linear) { linear_ = linear; }
     void append(const std::vector<cutcell::TelemetrySample>& batch);
     void clear();
     void setPaused(bool paused);
@@ -67,6 +71,7 @@ class PlotsPanel : public QWidget {
   private:
     cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
     std::uint64_t appended_ = 0;
+    std::array<bool, cutcell::kAxisCount> linear_{};
     double lastPlottedS_ = -1;
 };
 
