@@ -10,14 +10,17 @@
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
+#include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
 #include "ui/run_controller.h"
 
+#include <QDoubleSpinBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QtTest>
 
 using cutcell::EngineState;
@@ -116,6 +119,43 @@ class TestGuiProfile : public QObject {
         QTest::qWait(300);
         QCOMPARE(state(w), EngineState::EmergencyStop);
         QVERIFY(!w.controls()->startButton()->isEnabled());
+    }
+
+    void formsShowTheProfilePage() {
+        MainWindow w(&cutcell::app::makeRig);
+        auto* params = w.parameters();
+        QVERIFY(params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Profile cutter"));
+        openProfileJob(w);
+        QVERIFY(params->tabShown("Profile cutter"));
+        QVERIFY(!params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Method"));
+        QVERIFY(!params->fieldFor("cut.bevel_deg")->isEnabled());
+        const auto job = w.editor()->job();
+        for (const char* key :
+             {"profile_cutter.steps_per_rev_a", "profile_cutter.pulses_per_step_a",
+              "profile_cutter.mm_per_pulse_x", "profile_cutter.max_pulse_rate_hz",
+              "profile_cutter.pierce_s", "profile_cutter.x_travel_mm"})
+            QVERIFY2(params->fieldFor(key), key);
+        // The fields show the job's values.
+        auto* steps = qobject_cast<QSpinBox*>(params->fieldFor("profile_cutter.steps_per_rev_a"));
+        QVERIFY(steps);
+        QCOMPARE(steps->value(), job.profile_cutter.steps_per_rev_a);
+        // Live validation: an out-of-range entry is marked and named in the issues.
+        auto* pierce = qobject_cast<QDoubleSpinBox*>(params->fieldFor("profile_cutter.pierce_s"));
+        QVERIFY(pierce);
+        pierce->setValue(-1);
+        QTRY_VERIFY(!w.editor()->issues().empty());
+        bool named = false;
+        for (const auto& issue : w.editor()->issues())
+            named = named || issue.key == "profile_cutter.pierce_s";
+        QVERIFY(named);
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+        // Back to a robot job: the robot's pages return.
+        w.newJob();
+        QVERIFY(params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Profile cutter"));
+        QVERIFY(params->fieldFor("cut.bevel_deg")->isEnabled());
     }
 
     void cutOffTheCarriageBlocksStart() {
