@@ -4,6 +4,7 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
+#include "ui/machine_exports.h"
 #include "ui/machine_views.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/event_log_panel.h"
@@ -146,6 +147,7 @@ void MainWindow::buildMenus() {
         QString err;
         if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
+    addCutExportActions(file, this, editor_, log_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
