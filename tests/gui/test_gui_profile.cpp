@@ -5,12 +5,15 @@
 // core's message.
 #include "sim_rig.h"
 
+#include "core/io/gcode_export.h"
+#include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
+#include "ui/machine_exports.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/monitor_views.h"
@@ -156,6 +159,36 @@ class TestGuiProfile : public QObject {
         QVERIFY(params->tabShown("Robot"));
         QVERIFY(!params->tabShown("Profile cutter"));
         QVERIFY(params->fieldFor("cut.bevel_deg")->isEnabled());
+    }
+
+    void exportsWriteFilesAndNameTheFileOnError() {
+        using CutCell::ui::ExportKind;
+        const auto job = cutcell::loadJobFile(kJobFile.toStdString());
+        QTemporaryDir dir;
+        QString err, summary;
+        const QString ngc = dir.filePath("cut.ngc");
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::Gcode, job, ngc, &err, &summary),
+                 qPrintable(err));
+        QVERIFY(summary.contains(ngc));
+        QFile f(ngc);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // Same text as the core writer (what the CLI writes).
+        QCOMPARE(f.readAll().toStdString(),
+                 cutcell::profileGcode(job, cutcell::computeProfileCut(job)));
+        const QString svg = dir.filePath("t.svg"), pdf = dir.filePath("t.pdf");
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplateSvg, job, svg, &err), qPrintable(err));
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplatePdf, job, pdf, &err), qPrintable(err));
+        QFile s(svg), p(pdf);
+        QVERIFY(s.open(QIODevice::ReadOnly) && s.readAll().contains("<svg"));
+        QVERIFY(p.open(QIODevice::ReadOnly) && p.read(5) == "%PDF-");
+        // A robot job has no G-code; a directory that does not exist cannot be written.
+        const QString robotNgc = dir.filePath("robot.ngc");
+        QVERIFY(!CutCell::ui::exportCut(ExportKind::Gcode, cutcell::defaultJob(), robotNgc, &err));
+        QVERIFY(err.contains(robotNgc) && err.contains("profile_cutter_2axis"));
+        QVERIFY(!QFile::exists(robotNgc));
+        const QString bad = dir.filePath("missing/dir/t.svg");
+        QVERIFY(!CutCell::ui::exportCut(ExportKind::TemplateSvg, job, bad, &err));
+        QVERIFY(err.contains(bad));
     }
 
     void cutOffTheCarriageBlocksStart() {
