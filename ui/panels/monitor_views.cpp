@@ -44,9 +44,13 @@ void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
     if (!view_ || !plan) return;
-    if (job.machine == "profile_cutter_2axis")
-        view_->setScene(cutcell::view3d::buildProfileCutterScene(job));
-    else
+    if (job.machine == "profile_cutter_2axis") {
+        try {
+            view_->setScene(cutcell::view3d::buildProfileCutterScene(job));
+        } catch (const std::exception&) {
+            // No cut to draw; the plan's problem is reported by the run controller.
+        }
+    } else
         view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
 #else
     (void)plan;
