@@ -43,7 +43,9 @@ SceneModel buildProfileCutterScene(const Job& job) {
     base.linear().col(0) = Vec3::UnitY();
     base.linear().col(1) = Vec3::UnitZ();
     base.linear().col(2) = Vec3::UnitX();
-    base.translation() = Vec3(0, 0, axisHeight);
+    // The view puts the chuck at the tube's end farther from the world origin: shift the pipe
+    // along -X so that end is X = 0 (the chuck end of the seed's l), the cut end near the origin.
+    base.translation() = Vec3(-(xMax + 200), 0, axisHeight);
     m.baseFromWorkAtZero = base;
 
     // The torch tip at X = 0 touches the top generatrix; the carriage runs along the pipe axis.
