@@ -73,9 +73,9 @@ void PlanWorker::launch() {
         };
         try {
             // The profile cutter has its own (fast, closed-form) cut computation.
-            run->plan = std::make_shared<cutcell::CutPlan>(
-                isProfileCutterJob(run->job) ? planProfileCutter(run->job)
-                                             : cutcell::planCut(run->job, opt));
+            run->plan = std::make_shared<cutcell::CutPlan>(isProfileCutterJob(run->job)
+                                                               ? planProfileCutter(run->job)
+                                                               : cutcell::planCut(run->job, opt));
         } catch (const std::exception& e) {
             run->error = e.what();
         }

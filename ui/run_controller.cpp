@@ -123,17 +123,16 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
         }
         return;
     }
-    const QString summary =
-        isProfileCutterJob(job)
-            ? tr("Profile cutter: %1 points, %2 mm in %3 s.")
-                  .arg(plannedPointCount(job, *plan_))
-                  .arg(plan_->length_mm, 0, 'f', 1)
-                  .arg(plan_->cut_time_s, 0, 'f', 1)
-            : tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
-                  .arg(plan_->knots.size())
-                  .arg(plan_->length_mm, 0, 'f', 1)
-                  .arg(plan_->cut_time_s, 0, 'f', 1)
-                  .arg(plan_->max_deviation_deg, 0, 'f', 1);
+    const QString summary = isProfileCutterJob(job)
+                                ? tr("Profile cutter: %1 points, %2 mm in %3 s.")
+                                      .arg(plannedPointCount(job, *plan_))
+                                      .arg(plan_->length_mm, 0, 'f', 1)
+                                      .arg(plan_->cut_time_s, 0, 'f', 1)
+                                : tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
+                                      .arg(plan_->knots.size())
+                                      .arg(plan_->length_mm, 0, 'f', 1)
+                                      .arg(plan_->cut_time_s, 0, 'f', 1)
+                                      .arg(plan_->max_deviation_deg, 0, 'f', 1);
     emit message(Severity::Info, summary);
     programPending_ = true;
     loadProgram();
