@@ -5,6 +5,8 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
+#include "ui/machine_exports.h"
+#include "ui/machine_views.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
@@ -155,6 +157,7 @@ void MainWindow::buildMenus() {
         QString err;
         if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
+    addCutExportActions(file, this, editor_, log_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -212,9 +215,7 @@ void MainWindow::connectRun() {
     connect(planCancel_, &QPushButton::clicked, run_, &RunController::cancelPlanning);
     connect(run_, &RunController::planChanged, this,
             [this](std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job) {
-                cell_->setPlan(plan, job);
-                progress_->setPlannedTotals(static_cast<std::uint32_t>(plan->knots.size()),
-                                            plan->cut_time_s);
+                adaptViewsToPlan(plan, job, cell_, plots_, progress_);
             });
     auto* bridge = run_->bridge();
     connect(bridge, &EngineBridge::samples, this, &MainWindow::onSamples);

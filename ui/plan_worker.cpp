@@ -1,5 +1,7 @@
 #include "ui/plan_worker.h"
 
+#include "ui/machine_plan.h"
+
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -70,7 +72,10 @@ void PlanWorker::launch() {
                 Qt::QueuedConnection);
         };
         try {
-            run->plan = std::make_shared<cutcell::CutPlan>(cutcell::planCut(run->job, opt));
+            // The profile cutter has its own (fast, closed-form) cut computation.
+            run->plan = std::make_shared<cutcell::CutPlan>(isProfileCutterJob(run->job)
+                                                               ? planProfileCutter(run->job)
+                                                               : cutcell::planCut(run->job, opt));
         } catch (const std::exception& e) {
             run->error = e.what();
         }

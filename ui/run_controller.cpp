@@ -5,10 +5,8 @@
 #include "ui/forms/job_editor.h"
 #include "ui/plan_worker.h"
 
-#if __has_include("core/machines/pipe_robot_program.h")
-#include "core/machines/pipe_robot_program.h"
+#include "ui/machine_plan.h"
 #define CUTCELL_HAVE_PROGRAM_BUILDER 1
-#endif
 
 #include <QTimer>
 
@@ -23,7 +21,8 @@ namespace {
 std::string rigKey(const cutcell::Job& job) {
     const auto doc = cutcell::jobToJson(job);
     std::string key;
-    for (const char* part : {"sim", "engine", "devices", "controller", "plant"})
+    for (const char* part :
+         {"machine", "sim", "engine", "devices", "controller", "plant", "profile_cutter"})
         if (const auto* v = doc.find(part)) key += cutcell::json::write(*v, 0);
     return key;
 }
@@ -124,11 +123,17 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
         }
         return;
     }
-    emit message(Severity::Info, tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
-                                     .arg(plan_->knots.size())
-                                     .arg(plan_->length_mm, 0, 'f', 1)
-                                     .arg(plan_->cut_time_s, 0, 'f', 1)
-                                     .arg(plan_->max_deviation_deg, 0, 'f', 1));
+    const QString summary = isProfileCutterJob(job)
+                                ? tr("Profile cutter: %1 points, %2 mm in %3 s.")
+                                      .arg(plannedPointCount(job, *plan_))
+                                      .arg(plan_->length_mm, 0, 'f', 1)
+                                      .arg(plan_->cut_time_s, 0, 'f', 1)
+                                : tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
+                                      .arg(plan_->knots.size())
+                                      .arg(plan_->length_mm, 0, 'f', 1)
+                                      .arg(plan_->cut_time_s, 0, 'f', 1)
+                                      .arg(plan_->max_deviation_deg, 0, 'f', 1);
+    emit message(Severity::Info, summary);
     programPending_ = true;
     loadProgram();
 }
@@ -159,7 +164,7 @@ void RunController::loadProgram() {
 #ifdef CUTCELL_HAVE_PROGRAM_BUILDER
     try {
         const auto text = cutcell::json::write(cutcell::jobToJson(planJob_));
-        auto program = cutcell::buildPipeRobotProgram(planJob_, *plan_, text);
+        auto program = buildMachineProgram(planJob_, *plan_, text);
         if (!rig_->engine().load(std::move(program)))
             throw std::runtime_error("the engine's command queue is full");
         programLoaded_ = true;

@@ -1,6 +1,7 @@
 #include "sim_rig.h"
 
 #include "can_rig.h"
+#include "profile_sim_rig.h"
 
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
@@ -67,6 +68,7 @@ std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                      "\": this build of cutcell drives the simulated cell only";
         return nullptr;
     }
+    if (job.machine == "profile_cutter_2axis") return makeProfileCutterRig(job, clock, error);
     try {
         return std::make_unique<SimulatedRig>(job, clock);
     } catch (const std::exception& e) {

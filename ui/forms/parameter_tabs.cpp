@@ -5,6 +5,7 @@
 #include "ui/forms/cycle_devices_form.h"
 #include "ui/forms/method_form.h"
 #include "ui/forms/pipes_form.h"
+#include "ui/forms/profile_cutter_form.h"
 #include "ui/forms/robot_dh_table_form.h"
 
 #include <QIcon>
@@ -65,6 +66,10 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     add(new RobotDhTableForm(editor), tr("Robot"));
     add(new ControllerForm(editor), tr("Controller"));
     add(new CycleDevicesForm(editor), tr("Cycle && devices"));
+    add(new ProfileCutterForm(editor), tr("Profile cutter"));
+    connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyMachine);
+    connect(editor, &JobEditor::edited, this, &ParameterTabs::applyMachine);
+    applyMachine();
     // After the forms: they mark their fields first, the titles count them.
     connect(editor, &JobEditor::issuesChanged, this, &ParameterTabs::refreshTitles);
     refreshTitles();
@@ -83,6 +88,29 @@ void ParameterTabs::revealField(const std::string& key) {
             w->setFocus(Qt::OtherFocusReason);
             return;
         }
+}
+
+bool ParameterTabs::tabShown(const QString& title) const {
+    const int i = static_cast<int>(titles_.indexOf(title));
+    return i >= 0 && tabs_->isTabVisible(i);
+}
+
+void ParameterTabs::applyMachine() {
+    // Robot-only pages (how the robot cuts, its DH table) give way to the profile cutter's.
+    const bool profile = editor_->job().machine == "profile_cutter_2axis";
+    const auto show = [this](const QString& title, bool on) {
+        const int i = static_cast<int>(titles_.indexOf(title));
+        if (i >= 0) tabs_->setTabVisible(i, on);
+    };
+    show(tr("Method"), !profile);
+    show(tr("Robot"), !profile);
+    show(tr("Profile cutter"), profile);
+    if (auto* bevel = fieldFor("cut.bevel_deg")) {
+        bevel->setEnabled(!profile);
+        bevel->setToolTip(profile ? tr("The profile cutter's torch stands radial: no bevel.")
+                                  : QString());
+    }
+    if (auto* tilt = fieldFor("cut.max_direction_deviation_deg")) tilt->setEnabled(!profile);
 }
 
 void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {

@@ -27,9 +27,13 @@ class ParameterTabs : public QWidget {
     void revealField(const std::string& key);
     QTabWidget* tabs() const { return tabs_; }
     void setEditingLocked(bool locked, const QString& reason);
+    // Whether the tab with this (untranslated-count) title is shown for the current machine.
+    bool tabShown(const QString& title) const;
 
   private:
     void refreshTitles();
+    // Shows the pages of the job's machine (robot or profile cutter), hides the others.
+    void applyMachine();
 
     JobEditor* editor_;
     QTabWidget* tabs_;

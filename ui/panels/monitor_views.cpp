@@ -5,6 +5,7 @@
 
 #ifdef CUTCELL_HAVE_VIEW3D
 #include "ui/view3d/cell_view.h"
+#include "ui/view3d/profile_scene.h"
 #include "ui/view3d/scene_model.h"
 #endif
 #ifdef CUTCELL_HAVE_PLOTS
@@ -42,7 +43,15 @@ bool CellViewPanel::rendering() const {
 void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
-    if (view_ && plan) view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
+    if (!view_ || !plan) return;
+    if (job.machine == "profile_cutter_2axis") {
+        try {
+            view_->setScene(cutcell::view3d::buildProfileCutterScene(job));
+        } catch (const std::exception&) {
+            // No cut to draw; the plan's problem is reported by the run controller.
+        }
+    } else
+        view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
 #else
     (void)plan;
     (void)job;
@@ -103,7 +112,7 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
 #ifdef CUTCELL_HAVE_PLOTS
         double err[cutcell::kAxisCount];
         for (int i = 0; i < cutcell::kAxisCount; ++i)
-            err[i] = cutcell::rad2deg(s.error[i]);
+            err[i] = linear_[size_t(i)] ? s.error[i] : cutcell::rad2deg(s.error[i]);
         const double cart[3] = {s.cartesian_error_mm.x(), s.cartesian_error_mm.y(),
                                 s.cartesian_error_mm.z()};
         plots_->append(s.elapsed_s, err, cutcell::kAxisCount, cart);

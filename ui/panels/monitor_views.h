@@ -12,6 +12,8 @@
 #include <QElapsedTimer>
 #include <QWidget>
 
+#include <array>
+
 #include <memory>
 #include <vector>
 
@@ -53,6 +55,8 @@ class PlotsPanel : public QWidget {
     explicit PlotsPanel(QWidget* parent = nullptr);
 
     void setAxisNames(const QStringList& names);
+    // Axes whose error is a length (mm, plotted as is); the others are rad, plotted in deg.
+    void setLinearAxes(const std::array<bool, cutcell::kAxisCount>& linear) { linear_ = linear; }
     // Cheap: copies into the plots' ring; redraw() draws what was appended.
     void append(const std::vector<cutcell::TelemetrySample>& batch);
     void redraw();
@@ -70,6 +74,7 @@ class PlotsPanel : public QWidget {
   private:
     cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
     std::uint64_t appended_ = 0;
+    std::array<bool, cutcell::kAxisCount> linear_{};
     double lastPlottedS_ = -1;
 };
 

@@ -286,6 +286,21 @@ void CellScene::Impl::build() {
 
     // Torch in the tool frame: tip at the origin, axis +z into the work.
     const double L = m.toolLength_mm;
+    carriage = nullptr;
+    if (m.mount == ToolMount::LinearCarriage) {
+        // A fixed rail along the carriage axis above the torch, and the carriage block on it.
+        const Vec3 dir = m.carriageDirection.normalized();
+        const Vec3 up = -m.carriageApproach.normalized();
+        const Vec3 c = m.carriageOrigin + dir * m.workPipeCentreZ_mm + up * (L + 45);
+        const Vec3 railSize =
+            dir.cwiseAbs() * (m.workPipe.length_mm + 300) + (Vec3::Ones() - dir.cwiseAbs()) * 40;
+        auto rail = makeActor(makeBox(railSize.x(), railSize.y(), railSize.z()), colours::kMachine);
+        rail->SetPosition(c.x(), c.y(), c.z());
+        renderer->AddActor(rail);
+        fixedActors.push_back(rail);
+        carriage = makeActor(makeBox(70, 70, 50), colours::kArmLink);
+        renderer->AddActor(carriage);
+    }
     torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
     nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
     nozzle->GetProperty()->SetSpecular(0.6);
@@ -359,6 +374,11 @@ void CellScene::Impl::place() {
     const Eigen::Matrix4d tool = model.toolPose(q).matrix();
     for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
         setPose(a, tool);
+    if (carriage) { // the block sits on the torch's back end (tool frame -z)
+        Eigen::Matrix4d block = tool;
+        block.block<3, 1>(0, 3) -= tool.block<3, 1>(0, 2) * (model.toolLength_mm + 25);
+        setPose(carriage, block);
+    }
     flame->SetVisibility(torchOn);
 
     // Cutting direction: the path's tangent at the current point, drawn just off the surface.

@@ -46,6 +46,7 @@ struct CellScene::Impl {
     std::vector<size_t> drawnIndex; // plan point index of each drawn path point (ascending)
     // Moved with the tool.
     vtkSmartPointer<vtkActor> torchBody, nozzle, flame;
+    vtkSmartPointer<vtkActor> carriage;  // LinearCarriage only: the block riding the rail
     vtkSmartPointer<vtkActor> direction; // cutting direction at the tip (arrow)
     std::vector<ArmPiece> arm;
     // Static.

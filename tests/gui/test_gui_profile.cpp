@@ -1,0 +1,207 @@
+// The 2-axis profile cutter (seed 002) in the operator station: the job file selects the
+// machine; the simulated cell (A + X steppers, torch) runs it to Completed with progress and
+// both plots fed on two axes (A in deg, X in mm); EMERGENCY STOP latches and turns the torch
+// off; feed hold holds the progress; a job whose cut leaves the X travel blocks Start with the
+// core's message.
+#include "sim_rig.h"
+
+#include "core/io/gcode_export.h"
+#include "core/job/default_job.h"
+#include "core/job/job_io.h"
+#include "core/machines/profile_cutter.h"
+#include "plots/tracking_plots_widget.h"
+#include "ui/engine_bridge.h"
+#include "ui/forms/job_editor.h"
+#include "ui/forms/parameter_tabs.h"
+#include "ui/machine_exports.h"
+#include "ui/main_window.h"
+#include "ui/panels/control_panel.h"
+#include "ui/panels/monitor_views.h"
+#include "ui/panels/progress_panel.h"
+#include "ui/run_controller.h"
+
+#include <QDoubleSpinBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QtTest>
+
+using cutcell::EngineState;
+using CutCell::ui::MainWindow;
+
+namespace {
+
+const QString kJobFile = CUTCELL_SOURCE_DIR "/resources/jobs/profile_cutter_job.json";
+
+EngineState state(const MainWindow& w) {
+    return w.run()->bridge()->state();
+}
+
+// Opens the job file and keeps run logs out of the source tree.
+void openProfileJob(MainWindow& w) {
+    QString err;
+    QVERIFY2(w.openJob(kJobFile, &err), qPrintable(err));
+    auto job = w.editor()->job();
+    QCOMPARE(QString::fromStdString(job.machine), QString("profile_cutter_2axis"));
+    job.engine.runs_dir = "";
+    w.editor()->setJob(job);
+}
+
+} // namespace
+
+class TestGuiProfile : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void runsToCompletedOnTwoAxes() {
+        MainWindow w(&cutcell::app::makeRig);
+        w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
+        openProfileJob(w);
+        w.show();
+        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
+        w.run()->startAutoRun();
+        QVERIFY(done.wait(240000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        QTRY_COMPARE(state(w), EngineState::Completed);
+        w.run()->bridge()->poll();
+        QCOMPARE(w.progress()->bar()->value(), w.progress()->bar()->maximum());
+        const auto& last = w.run()->bridge()->last();
+        QVERIFY(last.point_count > 0);
+        QVERIFY(!last.torch_on);
+        // The cut's X range was travelled (axis 1 is the carriage, in mm).
+        const auto cut = cutcell::computeProfileCut(w.editor()->job());
+        double xMin = 1e300, xMax = -1e300;
+        for (const auto& p : cut.points) {
+            xMin = std::min(xMin, p.x_mm);
+            xMax = std::max(xMax, p.x_mm);
+        }
+        QVERIFY(last.actual[1] >= xMin - 1 && last.actual[1] <= xMax + 1);
+        // Two joint traces, named for the machine; both plots got data.
+        auto* plots = w.plots()->plots();
+        QCOMPARE(plots->axisCount(), 2);
+        QVERIFY(plots->axisNames().at(0).contains("A"));
+        QVERIFY(plots->axisNames().at(1).contains("mm"));
+        QVERIFY(w.plots()->samplesAppended() > 0);
+        QVERIFY(plots->sampleCount() > 0);
+        plots->replotNow();
+        QVERIFY(plots->plottedPointCount() > 0);
+        QTemporaryDir dir;
+        QString err;
+        QVERIFY2(plots->exportCsv(dir.filePath("errors.csv"), &err), qPrintable(err));
+        QFile csv(dir.filePath("errors.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QByteArray text = csv.readAll();
+        QVERIFY(text.count('\n') > 10);
+        // Cartesian columns carry numbers (the torch's miss on the pipe), not only NaN.
+        const QList<QByteArray> rows = text.split('\n');
+        QVERIFY(rows.size() > 3);
+        QVERIFY(!rows.at(rows.size() / 2).contains("nan"));
+    }
+
+    void emergencyStopLatchesInTheCut() {
+        MainWindow w(&cutcell::app::makeRig);
+        openProfileJob(w); // real time: the operator's pace
+        w.show();
+        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
+        w.run()->startAutoRun();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            w.run()->bridge()->last().torch_on && w.run()->bridge()->last().progress > 0, 30000);
+        // Feed hold: the progress stops, Resume continues.
+        QTest::mouseClick(w.controls()->holdButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Paused, 5000);
+        QTest::qWait(200);
+        w.run()->bridge()->poll();
+        const double held = w.run()->bridge()->last().progress;
+        QTest::qWait(300);
+        w.run()->bridge()->poll();
+        QCOMPARE(w.run()->bridge()->last().progress, held);
+        QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::EmergencyStop, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.run()->bridge()->last().torch_on, 2000);
+        QTest::qWait(300);
+        QCOMPARE(state(w), EngineState::EmergencyStop);
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+    }
+
+    void formsShowTheProfilePage() {
+        MainWindow w(&cutcell::app::makeRig);
+        auto* params = w.parameters();
+        QVERIFY(params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Profile cutter"));
+        openProfileJob(w);
+        QVERIFY(params->tabShown("Profile cutter"));
+        QVERIFY(!params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Method"));
+        QVERIFY(!params->fieldFor("cut.bevel_deg")->isEnabled());
+        const auto job = w.editor()->job();
+        for (const char* key :
+             {"profile_cutter.steps_per_rev_a", "profile_cutter.pulses_per_step_a",
+              "profile_cutter.mm_per_pulse_x", "profile_cutter.max_pulse_rate_hz",
+              "profile_cutter.pierce_s", "profile_cutter.x_travel_mm"})
+            QVERIFY2(params->fieldFor(key), key);
+        // The fields show the job's values.
+        auto* steps = qobject_cast<QSpinBox*>(params->fieldFor("profile_cutter.steps_per_rev_a"));
+        QVERIFY(steps);
+        QCOMPARE(steps->value(), job.profile_cutter.steps_per_rev_a);
+        // Live validation: an out-of-range entry is marked and named in the issues.
+        auto* pierce = qobject_cast<QDoubleSpinBox*>(params->fieldFor("profile_cutter.pierce_s"));
+        QVERIFY(pierce);
+        pierce->setValue(-1);
+        QTRY_VERIFY(!w.editor()->issues().empty());
+        bool named = false;
+        for (const auto& issue : w.editor()->issues())
+            named = named || issue.key == "profile_cutter.pierce_s";
+        QVERIFY(named);
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+        // Back to a robot job: the robot's pages return.
+        w.newJob();
+        QVERIFY(params->tabShown("Robot"));
+        QVERIFY(!params->tabShown("Profile cutter"));
+        QVERIFY(params->fieldFor("cut.bevel_deg")->isEnabled());
+    }
+
+    void exportsWriteFilesAndNameTheFileOnError() {
+        using CutCell::ui::ExportKind;
+        const auto job = cutcell::loadJobFile(kJobFile.toStdString());
+        QTemporaryDir dir;
+        QString err, summary;
+        const QString ngc = dir.filePath("cut.ngc");
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::Gcode, job, ngc, &err, &summary),
+                 qPrintable(err));
+        QVERIFY(summary.contains(ngc));
+        QFile f(ngc);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // Same text as the core writer (what the CLI writes).
+        QCOMPARE(f.readAll().toStdString(),
+                 cutcell::profileGcode(job, cutcell::computeProfileCut(job)));
+        const QString svg = dir.filePath("t.svg"), pdf = dir.filePath("t.pdf");
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplateSvg, job, svg, &err), qPrintable(err));
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplatePdf, job, pdf, &err), qPrintable(err));
+        QFile s(svg), p(pdf);
+        QVERIFY(s.open(QIODevice::ReadOnly) && s.readAll().contains("<svg"));
+        QVERIFY(p.open(QIODevice::ReadOnly) && p.read(5) == "%PDF-");
+        // A robot job has no G-code; a directory that does not exist cannot be written.
+        const QString robotNgc = dir.filePath("robot.ngc");
+        QVERIFY(!CutCell::ui::exportCut(ExportKind::Gcode, cutcell::defaultJob(), robotNgc, &err));
+        QVERIFY(err.contains(robotNgc) && err.contains("profile_cutter_2axis"));
+        QVERIFY(!QFile::exists(robotNgc));
+        const QString bad = dir.filePath("missing/dir/t.svg");
+        QVERIFY(!CutCell::ui::exportCut(ExportKind::TemplateSvg, job, bad, &err));
+        QVERIFY(err.contains(bad));
+    }
+
+    void cutOffTheCarriageBlocksStart() {
+        MainWindow w(&cutcell::app::makeRig);
+        openProfileJob(w);
+        auto job = w.editor()->job();
+        job.profile_cutter.x_travel_mm = 10; // far shorter than the cut's X range
+        w.editor()->setJob(job);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
+        QTRY_VERIFY(w.run()->startBlockedReason().contains("x_travel_mm"));
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+    }
+};
+
+QTEST_MAIN(TestGuiProfile)
+#include "test_gui_profile.moc"

@@ -1,0 +1,21 @@
+#pragma once
+// Adapts the monitor views to the planned job's machine: the 3D scene, the plots' axes (the
+// robot's six joints in deg, or the profile cutter's A in deg and X in mm) and the progress
+// totals.
+//
+// Threading contract: GUI thread only.
+#include "core/job/job.h"
+#include "core/trajectory/cut_planner.h"
+
+#include <memory>
+
+namespace CutCell::ui {
+
+class CellViewPanel;
+class PlotsPanel;
+class ProgressPanel;
+
+void adaptViewsToPlan(const std::shared_ptr<const cutcell::CutPlan>& plan, const cutcell::Job& job,
+                      CellViewPanel* cell, PlotsPanel* plots, ProgressPanel* progress);
+
+} // namespace CutCell::ui
