@@ -2,8 +2,8 @@
 // never asserted: shared machines make timed assertions flaky.
 #include "cli_commands.h"
 #ifdef CUTCELL_HAVE_DEVICES
-#include "bench_engine.h"
 #include "bench_can.h"
+#include "bench_engine.h"
 #endif
 
 #include "core/job/default_job.h"
@@ -23,7 +23,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
 
 // Mean time of one IK solve over reachable poses made by FK of random in-limit joints.
 double benchIk(const Job& job, int poses, int repeats) {
@@ -42,7 +44,8 @@ double benchIk(const Job& job, int poses, int repeats) {
     volatile double sink = 0;
     const auto t0 = Clock::now();
     for (int r = 0; r < repeats; ++r)
-        for (const Pose& p : targets) sink = sink + robot.solve(p).q[0];
+        for (const Pose& p : targets)
+            sink = sink + robot.solve(p).q[0];
     const auto t1 = Clock::now();
     return seconds(t0, t1) * 1e9 / (static_cast<double>(poses) * repeats);
 }
@@ -90,7 +93,8 @@ int runBench(const Args& args) {
     if (asJson) {
         std::fputs(json::write(doc).c_str(), stdout);
     } else {
-        for (const auto& [k, v] : doc.asObject()) std::printf("%-28s %.6g\n", k.c_str(), v.asNumber());
+        for (const auto& [k, v] : doc.asObject())
+            std::printf("%-28s %.6g\n", k.c_str(), v.asNumber());
     }
     return kOk;
 }

@@ -26,7 +26,8 @@ bool flag(const Args& args, const std::string& name) {
     return false;
 }
 
-std::vector<std::string> positionals(const Args& args, const std::vector<std::string>& valueOptions) {
+std::vector<std::string> positionals(const Args& args,
+                                     const std::vector<std::string>& valueOptions) {
     std::vector<std::string> out;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -42,7 +43,8 @@ std::vector<std::string> positionals(const Args& args, const std::vector<std::st
 
 namespace {
 
-// Loads the job named by the first positional argument; prints the reason and sets *code on failure.
+// Loads the job named by the first positional argument; prints the reason and sets *code on
+// failure.
 bool loadJob(const Args& args, const std::vector<std::string>& valueOptions, Job& job, int* code) {
     const auto pos = positionals(args, valueOptions);
     if (pos.empty()) {
@@ -61,7 +63,8 @@ bool loadJob(const Args& args, const std::vector<std::string>& valueOptions, Job
 }
 
 void printUnreachable(const CutPlan& plan) {
-    std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method), plan.problem.c_str());
+    std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method),
+                 plan.problem.c_str());
 }
 
 } // namespace
@@ -72,9 +75,9 @@ int runValidate(const Args& args) {
     if (!loadJob(args, {}, job, &code)) return code;
     if (job.machine == "profile_cutter_2axis") return runProfileValidate(job);
     const CutPlan plan = planCut(job);
-    std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n", job.name.c_str(),
-                toString(job.method), toString(job.cut.target), plan.length_mm, job.cut.speed_mm_s,
-                plan.cut_time_s);
+    std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n",
+                job.name.c_str(), toString(job.method), toString(job.cut.target), plan.length_mm,
+                job.cut.speed_mm_s, plan.cut_time_s);
     if (!plan.reachable) {
         printUnreachable(plan);
         return kUnreachable;
@@ -105,8 +108,8 @@ int runPlan(const Args& args) {
         const std::string jointsFile = (std::filesystem::path(out) / "joints.csv").string();
         writeFileAtomically(pathFile, pathCsv(plan));
         writeFileAtomically(jointsFile, jointsCsv(plan, job.sim.period_s));
-        std::printf("wrote %s (%zu points) and %s (%.3f s at %.4f s)\n", pathFile.c_str(), plan.knots.size(),
-                    jointsFile.c_str(), plan.cut_time_s, job.sim.period_s);
+        std::printf("wrote %s (%zu points) and %s (%.3f s at %.4f s)\n", pathFile.c_str(),
+                    plan.knots.size(), jointsFile.c_str(), plan.cut_time_s, job.sim.period_s);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "cutcell-cli plan: %s\n", e.what());
         return kFailure;
@@ -117,19 +120,25 @@ int runPlan(const Args& args) {
 int runSimulate(const Args& args) {
     Job job;
     int code = kOk;
-    const std::vector<std::string> valueOptions{"--report",        "--method",    "--devices", "--can-plugin",
-                                                "--can-interface", "--period-ms", "--clock"};
+    const std::vector<std::string> valueOptions{"--report",     "--method",        "--devices",
+                                                "--can-plugin", "--can-interface", "--period-ms",
+                                                "--clock"};
     if (!loadJob(args, valueOptions, job, &code)) return code;
     if (job.machine != "pipe_robot_6axis") {
-        std::fprintf(stderr, "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
-                             "runs in the engine: cutcell-cli run JOB\n", job.machine.c_str());
+        std::fprintf(stderr,
+                     "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
+                     "runs in the engine: cutcell-cli run JOB\n",
+                     job.machine.c_str());
         return kUsage;
     }
     const std::string method = option(args, "--method");
-    if (method == "static_pipe") job.method = CutMethod::StaticPipe;
-    else if (method == "rotating_pipe") job.method = CutMethod::RotatingPipe;
+    if (method == "static_pipe")
+        job.method = CutMethod::StaticPipe;
+    else if (method == "rotating_pipe")
+        job.method = CutMethod::RotatingPipe;
     else if (!method.empty()) {
-        std::fprintf(stderr, "--method = \"%s\" is not one of \"static_pipe\", \"rotating_pipe\"\n", method.c_str());
+        std::fprintf(stderr, "--method = \"%s\" is not one of \"static_pipe\", \"rotating_pipe\"\n",
+                     method.c_str());
         return kUsage;
     }
     const CutPlan plan = planCut(job);
@@ -139,14 +148,16 @@ int runSimulate(const Args& args) {
     }
     const std::string devices = option(args, "--devices");
     if (!devices.empty() && devices != "simulated" && devices != "canopen") {
-        std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n", devices.c_str());
+        std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
+                     devices.c_str());
         return kUsage;
     }
     if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
 #ifdef CUTCELL_HAVE_DEVICES
         return runSimulateCan(job, plan, args);
 #else
-        std::fprintf(stderr, "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
+        std::fprintf(stderr,
+                     "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
         return kFailure;
 #endif
     }
@@ -163,14 +174,17 @@ int runSimulate(const Args& args) {
         std::fprintf(stderr, "cutcell-cli simulate: %s\n", e.what());
         return kFailure;
     }
-    std::printf("%s method, %.1f s simulated at %.4f s: report written to %s\n", report.method.c_str(),
-                report.simulated_s, job.sim.period_s, reportFile.c_str());
+    std::printf("%s method, %.1f s simulated at %.4f s: report written to %s\n",
+                report.method.c_str(), report.simulated_s, job.sim.period_s, reportFile.c_str());
     std::printf("%-16s %14s %14s\n", "axis", "max |e| (deg)", "rms (deg)");
     for (int i = 0; i < kAxisCount; ++i)
-        std::printf("%-16s %14.6f %14.6f\n", i == 0 ? "0 chuck" : ("" + std::to_string(i) + " arm").c_str(),
-                    report.joints[static_cast<size_t>(i)].max_abs_deg, report.joints[static_cast<size_t>(i)].rms_deg);
-    std::printf("tip error (mm), base frame: x %.6f  y %.6f  z %.6f\n", report.cartesian_max_abs_mm.x(),
-                report.cartesian_max_abs_mm.y(), report.cartesian_max_abs_mm.z());
+        std::printf("%-16s %14.6f %14.6f\n",
+                    i == 0 ? "0 chuck" : ("" + std::to_string(i) + " arm").c_str(),
+                    report.joints[static_cast<size_t>(i)].max_abs_deg,
+                    report.joints[static_cast<size_t>(i)].rms_deg);
+    std::printf("tip error (mm), base frame: x %.6f  y %.6f  z %.6f\n",
+                report.cartesian_max_abs_mm.x(), report.cartesian_max_abs_mm.y(),
+                report.cartesian_max_abs_mm.z());
     return kOk;
 }
 

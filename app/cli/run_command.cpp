@@ -70,8 +70,9 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 } // namespace
 
 int runRun(const Args& args) {
-    const std::vector<std::string> valueOptions{"--report",    "--runs",      "--devices", "--can-plugin",
-                                                "--can-interface", "--period-ms", "--clock"};
+    const std::vector<std::string> valueOptions{"--report",     "--runs",          "--devices",
+                                                "--can-plugin", "--can-interface", "--period-ms",
+                                                "--clock"};
     const auto pos = positionals(args, valueOptions);
     if (pos.empty()) {
         std::fprintf(stderr, "cutcell-cli run: missing JOB file argument\n");
@@ -112,7 +113,8 @@ int runRun(const Args& args) {
         std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
         return kFailure;
     }
-    for (int i = 0; overCan && i < kAxisCount; ++i) devices.axes[static_cast<size_t>(i)] = can.axis(i);
+    for (int i = 0; overCan && i < kAxisCount; ++i)
+        devices.axes[static_cast<size_t>(i)] = can.axis(i);
     for (int i = 0; !overCan && i < kAxisCount; ++i) {
         SimulatedDriveConfig dc;
         dc.gains = job.controller[static_cast<size_t>(i)];

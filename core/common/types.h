@@ -16,7 +16,11 @@ using Mat3 = Eigen::Matrix3d;
 using Pose = Eigen::Isometry3d;
 
 inline constexpr double kPi = std::numbers::pi;
-inline constexpr double deg2rad(double deg) { return deg * kPi / 180.0; }
-inline constexpr double rad2deg(double rad) { return rad * 180.0 / kPi; }
+inline constexpr double deg2rad(double deg) {
+    return deg * kPi / 180.0;
+}
+inline constexpr double rad2deg(double rad) {
+    return rad * 180.0 / kPi;
+}
 
 } // namespace cutcell

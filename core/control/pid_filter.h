@@ -1,7 +1,8 @@
 #pragma once
 // PID with a first-order filter (seed Eq. 69-79):
 //   C(s) = (Kd s + Kp + Ki / s) / (tau_f s + 1)
-//   x1' = -x1 / tau_f + e,  x2' = x1,  V = (Kp/tau_f - Kd/tau_f^2) x1 + (Ki/tau_f) x2 + (Kd/tau_f) e
+//   x1' = -x1 / tau_f + e,  x2' = x1,  V = (Kp/tau_f - Kd/tau_f^2) x1 + (Ki/tau_f) x2 + (Kd/tau_f)
+//   e
 // discretised exactly for an error held constant over each period (zero-order hold): the
 // discrete output equals the continuous one at every sample for piecewise-constant errors.
 // Real-time safe: step() neither allocates nor locks.
@@ -26,7 +27,7 @@ class PidFilter {
 
   private:
     double x1_ = 0, x2_ = 0;
-    double e_ = 0; // exp(-T / tau)
+    double e_ = 0;  // exp(-T / tau)
     double g1_ = 0; // tau (1 - E): x1 gain from e, x2 gain from x1
     double g2_ = 0; // tau (T - tau (1 - E)): x2 gain from e
     double c1_ = 0, c2_ = 0, d_ = 0;

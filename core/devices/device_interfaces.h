@@ -13,11 +13,11 @@ namespace cutcell {
 
 // A CiA 402-like view of a drive's power state.
 enum class DriveState : std::uint8_t {
-    Disabled,    // no torque (switch on disabled / ready to switch on)
-    Enabling,    // transition requested, not yet in operation
-    Enabled,     // operation enabled: following the target position
-    QuickStop,   // quick stop active (decelerating or stopped), torque on
-    Fault,       // fault latched; faultReset() needed
+    Disabled,  // no torque (switch on disabled / ready to switch on)
+    Enabling,  // transition requested, not yet in operation
+    Enabled,   // operation enabled: following the target position
+    QuickStop, // quick stop active (decelerating or stopped), torque on
+    Fault,     // fault latched; faultReset() needed
 };
 const char* toString(DriveState s);
 
@@ -27,7 +27,7 @@ struct DriveFeedback {
     DriveState state = DriveState::Disabled;
     std::uint32_t fault_code = 0; // CiA 402 / EMCY error code, 0 = none
     bool feedback_valid = true;   // false when the drive's data is stale (bus loss, frozen encoder)
-    double torque_ratio = 0;      // torque applied over the last period / rated torque (CiA 402 0x6077)
+    double torque_ratio = 0; // torque applied over the last period / rated torque (CiA 402 0x6077)
 };
 
 class AxisDrive {

@@ -296,7 +296,8 @@ void MotionEngine::Impl::track() {
 void MotionEngine::Impl::writeDevices() {
     for (int i = 0; i < kAxisCount; ++i)
         if (axisPresent(i))
-            dev.axes[static_cast<size_t>(i)]->write(setpoint[i] + setpointVel[i] * cfg.setpoint_lead_s);
+            dev.axes[static_cast<size_t>(i)]->write(setpoint[i] +
+                                                    setpointVel[i] * cfg.setpoint_lead_s);
     if (dev.torch && torchCommand != torchWritten) {
         dev.torch->setOn(torchCommand);
         torchWritten = torchCommand;

@@ -69,7 +69,8 @@ struct EngineConfig {
     // Transport delay of the drives (s): from write() to the feedback that shows the drive
     // acting on it (2 cycles on a CANopen bus: RPDO after SYNC k, reached at SYNC k + 2).
     // The engine writes each set-point extrapolated this far ahead along its velocity, so the
-    // error it measures is the drive's tracking error, not the bus's delay. 0 for in-process drives.
+    // error it measures is the drive's tracking error, not the bus's delay. 0 for in-process
+    // drives.
     double setpoint_lead_s = 0;
 };
 

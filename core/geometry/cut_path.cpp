@@ -34,7 +34,8 @@ ArcLengthTable::ArcLengthTable(const PipeIntersection& curve, double phi0, int s
         const double fa = curve.derivative(a).norm();
         const double fm = curve.derivative(a + dphi_ / 2).norm();
         const double fb = curve.derivative(a + dphi_).norm();
-        s_[static_cast<size_t>(i) + 1] = s_[static_cast<size_t>(i)] + dphi_ / 6 * (fa + 4 * fm + fb);
+        s_[static_cast<size_t>(i) + 1] =
+            s_[static_cast<size_t>(i)] + dphi_ / 6 * (fa + 4 * fm + fb);
     }
     length_ = s_.back();
 }
@@ -54,8 +55,8 @@ double ArcLengthTable::sAt(double phi) const {
 double ArcLengthTable::phiAt(double s) const {
     s = std::clamp(s, 0.0, length_);
     const auto it = std::upper_bound(s_.begin(), s_.end(), s);
-    const size_t i = std::min<size_t>(static_cast<size_t>(std::max<std::ptrdiff_t>(it - s_.begin() - 1, 0)),
-                                      s_.size() - 2);
+    const size_t i = std::min<size_t>(
+        static_cast<size_t>(std::max<std::ptrdiff_t>(it - s_.begin() - 1, 0)), s_.size() - 2);
     const double ds = s_[i + 1] - s_[i];
     double phi = phi0_ + dphi_ * (static_cast<double>(i) + (ds > 0 ? (s - s_[i]) / ds : 0));
     // Newton on s(phi) = s; ds/dphi = |P'(phi)|.
@@ -111,8 +112,8 @@ CutPoint CutGeometry::atPhi(double phi) const {
     // toward the main pipe (-z of the work frame). A positive bevel leans the torch that way,
     // which leaves a V-groove edge on the part that is kept.
     Vec3 side = c.normal_work.cross(c.tangent_work).normalized();
-    const Vec3 toScrap = target_ == CutTarget::Main ? Vec3(holeCentreWork_ - c.p_work)
-                                                     : Vec3(-Vec3::UnitZ());
+    const Vec3 toScrap =
+        target_ == CutTarget::Main ? Vec3(holeCentreWork_ - c.p_work) : Vec3(-Vec3::UnitZ());
     if (side.dot(toScrap) < 0) side = -side;
     const double bev = deg2rad(bevelDeg_);
     c.approach_work = (std::cos(bev) * c.normal_work + std::sin(bev) * side).normalized();
@@ -129,14 +130,16 @@ std::vector<CutPoint> CutGeometry::sampleEqualArcLength(double spacing_mm) const
     const int n = std::max(8, static_cast<int>(std::ceil(length() / spacing_mm)));
     std::vector<CutPoint> pts;
     pts.reserve(static_cast<size_t>(n) + 1);
-    for (int i = 0; i <= n; ++i) pts.push_back(atArcLength(length() * i / n));
+    for (int i = 0; i <= n; ++i)
+        pts.push_back(atArcLength(length() * i / n));
     return pts;
 }
 
 std::vector<CutPoint> CutGeometry::sampleByPhi(int count) const {
     std::vector<CutPoint> pts;
     pts.reserve(static_cast<size_t>(count) + 1);
-    for (int i = 0; i <= count; ++i) pts.push_back(atPhi(phi0_ + 2 * kPi * i / count));
+    for (int i = 0; i <= count; ++i)
+        pts.push_back(atPhi(phi0_ + 2 * kPi * i / count));
     return pts;
 }
 

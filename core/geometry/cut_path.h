@@ -18,11 +18,11 @@ namespace cutcell {
 
 struct CutPoint {
     double phi_rad = 0;
-    double s_mm = 0;   // arc length from the start of the cut
-    Vec3 p_main;       // on both pipes, main pipe frame
-    Vec3 p_work;       // same point, work frame
-    Vec3 tangent_work; // unit, direction of travel
-    Vec3 normal_work;  // unit inward normal of the work pipe's surface
+    double s_mm = 0;    // arc length from the start of the cut
+    Vec3 p_main;        // on both pipes, main pipe frame
+    Vec3 p_work;        // same point, work frame
+    Vec3 tangent_work;  // unit, direction of travel
+    Vec3 normal_work;   // unit inward normal of the work pipe's surface
     Vec3 approach_work; // unit torch direction (into the material), bevel applied
 };
 

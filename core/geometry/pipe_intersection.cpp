@@ -29,7 +29,8 @@ double PipeIntersection::branchAxial(double phi) const {
 }
 
 bool PipeIntersection::generatrixMeetsMain(double phi) const {
-    return std::fabs(spec_.eccentricity_mm + spec_.branch_radius_mm * std::sin(phi)) <= spec_.main_radius_mm;
+    return std::fabs(spec_.eccentricity_mm + spec_.branch_radius_mm * std::sin(phi)) <=
+           spec_.main_radius_mm;
 }
 
 Vec3 PipeIntersection::derivative(double phi) const {

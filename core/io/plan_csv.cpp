@@ -6,18 +6,18 @@
 namespace cutcell {
 
 std::string pathCsv(const CutPlan& plan) {
-    std::string out =
-        "index,t_s,s_mm,phi_deg,x_mm,y_mm,z_mm,chuck_deg,tip_x_mm,tip_y_mm,tip_z_mm,"
-        "axis_x,axis_y,axis_z,direction_deviation_deg,ik_status\n";
+    std::string out = "index,t_s,s_mm,phi_deg,x_mm,y_mm,z_mm,chuck_deg,tip_x_mm,tip_y_mm,tip_z_mm,"
+                      "axis_x,axis_y,axis_z,direction_deviation_deg,ik_status\n";
     char buf[512];
     for (size_t i = 0; i < plan.knots.size(); ++i) {
         const PlannedPoint& p = plan.knots[i];
-        std::snprintf(buf, sizeof buf,
-                      "%zu,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%s\n", i,
-                      p.t_s, p.cut.s_mm, rad2deg(p.cut.phi_rad), p.cut.p_main.x(), p.cut.p_main.y(),
-                      p.cut.p_main.z(), rad2deg(p.chuck_rad), p.tip_base.x(), p.tip_base.y(), p.tip_base.z(),
-                      p.approach_base.x(), p.approach_base.y(), p.approach_base.z(), p.deviation_deg,
-                      toString(p.ik.status));
+        std::snprintf(
+            buf, sizeof buf,
+            "%zu,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.6f,%s\n", i,
+            p.t_s, p.cut.s_mm, rad2deg(p.cut.phi_rad), p.cut.p_main.x(), p.cut.p_main.y(),
+            p.cut.p_main.z(), rad2deg(p.chuck_rad), p.tip_base.x(), p.tip_base.y(), p.tip_base.z(),
+            p.approach_base.x(), p.approach_base.y(), p.approach_base.z(), p.deviation_deg,
+            toString(p.ik.status));
         out += buf;
     }
     return out;

@@ -2,12 +2,18 @@
 
 namespace cutcell {
 
-const char* toString(CutTarget t) { return t == CutTarget::Branch ? "branch" : "main"; }
+const char* toString(CutTarget t) {
+    return t == CutTarget::Branch ? "branch" : "main";
+}
 const char* toString(CutMethod m) {
     return m == CutMethod::StaticPipe ? "static_pipe" : "rotating_pipe";
 }
-const char* toString(DeviceKind k) { return k == DeviceKind::Simulated ? "simulated" : "canopen"; }
-const char* toString(StopCategory c) { return c == StopCategory::Cat0 ? "cat0" : "cat1"; }
+const char* toString(DeviceKind k) {
+    return k == DeviceKind::Simulated ? "simulated" : "canopen";
+}
+const char* toString(StopCategory c) {
+    return c == StopCategory::Cat0 ? "cat0" : "cat1";
+}
 
 std::array<DhRow, kAxisCount> seedDhTable() {
     // alpha_deg, a_mm, d_mm, theta_offset_deg, min_deg, max_deg (seed Table 1).

@@ -74,7 +74,7 @@ struct SimSpec {
 
 struct EngineSpec {
     StopCategory estop_category = StopCategory::Cat0;
-    double feed_hold_decel_s = 0.5;      // time to stop along the path on feed hold
+    double feed_hold_decel_s = 0.5; // time to stop along the path on feed hold
     bool torch_on_during_feed_hold = false;
     double following_error_limit_deg = 2.0;
     double home_speed_deg_s = 20.0;
@@ -107,12 +107,12 @@ struct OtherBranch {
 // The 2-axis NC pipe profile cutter of seed 002: torch on a linear X axis over the rotating
 // pipe (A axis), both driven by stepper motors through a pulse card.
 struct ProfileCutterSpec {
-    int steps_per_rev_a = 400;        // the seed's n: interpolation steps per pipe revolution
-    int pulses_per_step_a = 16;       // A-axis pulses per step (pulses/rev = n * this)
-    double mm_per_pulse_x = 0.005;    // X-axis travel per pulse
+    int steps_per_rev_a = 400;         // the seed's n: interpolation steps per pipe revolution
+    int pulses_per_step_a = 16;        // A-axis pulses per step (pulses/rev = n * this)
+    double mm_per_pulse_x = 0.005;     // X-axis travel per pulse
     double max_pulse_rate_hz = 200000; // pulse card limit per axis (PCL-839+: 1 Hz .. 200 kHz)
-    double pierce_s = 1.0;            // dwell after torch on, before moving
-    double x_travel_mm = 3000;        // X carriage travel from 0 (the fixed end) to here
+    double pierce_s = 1.0;             // dwell after torch on, before moving
+    double x_travel_mm = 3000;         // X carriage travel from 0 (the fixed end) to here
     // Hole cut: X of the branch axis crossing (the seed's S); absent = middle of the main pipe.
     bool branch_position_auto = true;
     double branch_position_mm = 0;

@@ -43,8 +43,7 @@ class Reader {
     std::string string(const std::string& k, const std::string& fallback) const {
         const json::Value* m = v_.find(k);
         if (!m) return fallback;
-        if (!m->isString())
-            throw JobError(key(k) + " must be a string, found " + m->typeName());
+        if (!m->isString()) throw JobError(key(k) + " must be a string, found " + m->typeName());
         return m->asString();
     }
     bool boolean(const std::string& k, bool fallback) const {
@@ -97,7 +96,8 @@ PipeSpec readPipe(const Reader& r, double defaultLength) {
 }
 
 template <typename T, typename F>
-void readTable(const Reader& parent, const std::string& k, std::array<T, kAxisCount>& out, F readRow) {
+void readTable(const Reader& parent, const std::string& k, std::array<T, kAxisCount>& out,
+               F readRow) {
     const json::Value* m = parent.get(k);
     if (!m) return;
     if (!m->isArray())
@@ -155,11 +155,13 @@ bool isDefault(const ProfileCutterSpec& p) {
     const ProfileCutterSpec d;
     return p.steps_per_rev_a == d.steps_per_rev_a && p.pulses_per_step_a == d.pulses_per_step_a &&
            p.mm_per_pulse_x == d.mm_per_pulse_x && p.max_pulse_rate_hz == d.max_pulse_rate_hz &&
-           p.pierce_s == d.pierce_s && p.x_travel_mm == d.x_travel_mm && p.branch_position_auto == d.branch_position_auto;
+           p.pierce_s == d.pierce_s && p.x_travel_mm == d.x_travel_mm &&
+           p.branch_position_auto == d.branch_position_auto;
 }
 
 json::Value pipeJson(const PipeSpec& p) {
-    return json::Object{{"radius_mm", p.radius_mm}, {"wall_mm", p.wall_mm}, {"length_mm", p.length_mm}};
+    return json::Object{
+        {"radius_mm", p.radius_mm}, {"wall_mm", p.wall_mm}, {"length_mm", p.length_mm}};
 }
 
 } // namespace
@@ -169,7 +171,8 @@ Job jobFromJson(const json::Value& doc) {
     Job job;
     const double schema = r.number("schema", "(version number)");
     if (schema != 1)
-        throw JobError("schema = " + num(schema) + " is not supported; this CutCell reads schema 1");
+        throw JobError("schema = " + num(schema) +
+                       " is not supported; this CutCell reads schema 1");
     job.machine = r.string("machine", job.machine);
     job.name = r.string("name", "");
     job.description = r.string("description", "");
@@ -178,12 +181,13 @@ Job jobFromJson(const json::Value& doc) {
     job.angle_deg = r.number("angle_deg", "deg");
     job.eccentricity_mm = r.number("eccentricity_mm", "mm", 0);
     job.method = r.choice<CutMethod>(
-        "method", {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
+        "method",
+        {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
         CutMethod::RotatingPipe);
 
     const Reader cut = r.child("cut");
-    job.cut.target = cut.choice<CutTarget>("target", {{"branch", CutTarget::Branch}, {"main", CutTarget::Main}},
-                                           CutTarget::Main);
+    job.cut.target = cut.choice<CutTarget>(
+        "target", {{"branch", CutTarget::Branch}, {"main", CutTarget::Main}}, CutTarget::Main);
     job.cut.bevel_deg = cut.number("bevel_deg", "deg", 0);
     job.cut.speed_mm_s = cut.number("speed_mm_s", "mm/s");
     job.cut.ramp_s = cut.number("ramp_s", "s", job.cut.ramp_s);
@@ -235,12 +239,14 @@ Job jobFromJson(const json::Value& doc) {
         job.engine.estop_category = e.choice<StopCategory>(
             "estop_category", {{"cat0", StopCategory::Cat0}, {"cat1", StopCategory::Cat1}},
             job.engine.estop_category);
-        job.engine.feed_hold_decel_s = e.number("feed_hold_decel_s", "s", job.engine.feed_hold_decel_s);
+        job.engine.feed_hold_decel_s =
+            e.number("feed_hold_decel_s", "s", job.engine.feed_hold_decel_s);
         job.engine.torch_on_during_feed_hold =
             e.boolean("torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold);
         job.engine.following_error_limit_deg =
             e.number("following_error_limit_deg", "deg", job.engine.following_error_limit_deg);
-        job.engine.home_speed_deg_s = e.number("home_speed_deg_s", "deg/s", job.engine.home_speed_deg_s);
+        job.engine.home_speed_deg_s =
+            e.number("home_speed_deg_s", "deg/s", job.engine.home_speed_deg_s);
         job.engine.runs_dir = e.string("runs_dir", job.engine.runs_dir);
     }
     if (r.has("devices")) {
@@ -250,7 +256,8 @@ Job jobFromJson(const json::Value& doc) {
             job.devices.kind);
         job.devices.can_plugin = d.string("can_plugin", job.devices.can_plugin);
         job.devices.can_interface = d.string("can_interface", job.devices.can_interface);
-        job.devices.bitrate_bps = static_cast<int>(d.number("bitrate_bps", "bit/s", job.devices.bitrate_bps));
+        job.devices.bitrate_bps =
+            static_cast<int>(d.number("bitrate_bps", "bit/s", job.devices.bitrate_bps));
         job.devices.heartbeat_timeout_ms =
             d.number("heartbeat_timeout_ms", "ms", job.devices.heartbeat_timeout_ms);
         if (const json::Value* ids = d.get("node_ids")) {
@@ -264,7 +271,8 @@ Job jobFromJson(const json::Value& doc) {
         }
         if (const json::Value* cpu = d.get("counts_per_unit")) {
             if (!cpu->isArray() || cpu->asArray().size() != kAxisCount)
-                throw JobError(d.key("counts_per_unit") + " must be an array of 6 numbers (counts/deg)");
+                throw JobError(d.key("counts_per_unit") +
+                               " must be an array of 6 numbers (counts/deg)");
             for (int i = 0; i < kAxisCount; ++i) {
                 const auto& v = cpu->asArray()[static_cast<size_t>(i)];
                 if (!v.isNumber()) throw JobError(d.key("counts_per_unit") + " must hold numbers");
@@ -288,18 +296,25 @@ json::Value jobToJson(const Job& job) {
     if (!job.cut.start_phi_auto) cut.emplace_back("start_phi_deg", job.cut.start_phi_deg);
     json::Array dh, ctrl, plant, ids, cpu;
     for (const auto& d : job.dh)
-        dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg}, {"a_mm", d.a_mm}, {"d_mm", d.d_mm},
-                                     {"theta_offset_deg", d.theta_offset_deg}, {"min_deg", d.min_deg},
+        dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg},
+                                     {"a_mm", d.a_mm},
+                                     {"d_mm", d.d_mm},
+                                     {"theta_offset_deg", d.theta_offset_deg},
+                                     {"min_deg", d.min_deg},
                                      {"max_deg", d.max_deg}});
     for (const auto& g : job.controller)
-        ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp}, {"ki_nm_per_rad_s", g.ki},
-                                       {"kd_nm_s_per_rad", g.kd}, {"tau_f_s", g.tau_f}});
+        ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp},
+                                       {"ki_nm_per_rad_s", g.ki},
+                                       {"kd_nm_s_per_rad", g.kd},
+                                       {"tau_f_s", g.tau_f}});
     for (const auto& p : job.plant)
         plant.emplace_back(json::Object{{"inertia_kg_m2", p.inertia_kg_m2},
                                         {"viscous_nm_s_per_rad", p.viscous_nm_s_per_rad},
                                         {"torque_limit_nm", p.torque_limit_nm}});
-    for (int id : job.devices.node_ids) ids.emplace_back(id);
-    for (double c : job.devices.counts_per_unit) cpu.emplace_back(c);
+    for (int id : job.devices.node_ids)
+        ids.emplace_back(id);
+    for (double c : job.devices.counts_per_unit)
+        cpu.emplace_back(c);
     json::Object doc{
         {"schema", job.schema},
         {"machine", job.machine},
@@ -333,9 +348,11 @@ json::Value jobToJson(const Job& job) {
     if (!job.other_branches.empty()) {
         json::Array others;
         for (const auto& o : job.other_branches)
-            others.emplace_back(json::Object{{"radius_mm", o.radius_mm}, {"angle_deg", o.angle_deg},
+            others.emplace_back(json::Object{{"radius_mm", o.radius_mm},
+                                             {"angle_deg", o.angle_deg},
                                              {"eccentricity_mm", o.eccentricity_mm},
-                                             {"position_mm", o.position_mm}, {"phase_deg", o.phase_deg}});
+                                             {"position_mm", o.position_mm},
+                                             {"phase_deg", o.phase_deg}});
         doc.emplace_back("other_branches", others);
     }
     const ProfileCutterSpec& pc = job.profile_cutter;

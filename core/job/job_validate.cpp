@@ -21,7 +21,8 @@ class Checker {
     void add(const std::string& key, const std::string& msg) { issues.push_back({key, msg}); }
 
     void finite(const std::string& key, double v, const char* unit) {
-        if (!std::isfinite(v)) add(key, key + " = " + num(v) + " " + unit + " is not a finite number");
+        if (!std::isfinite(v))
+            add(key, key + " = " + num(v) + " " + unit + " is not a finite number");
     }
     void positive(const std::string& key, double v, const char* unit) {
         if (!(v > 0)) add(key, key + " = " + num(v) + " " + unit + " must be > 0 " + unit);
@@ -31,8 +32,8 @@ class Checker {
     }
     void range(const std::string& key, double v, double lo, double hi, const char* unit) {
         if (!(v >= lo && v <= hi))
-            add(key, key + " = " + num(v) + " " + unit + " is outside [" + num(lo) + ", " + num(hi) +
-                         "] " + unit);
+            add(key, key + " = " + num(v) + " " + unit + " is outside [" + num(lo) + ", " +
+                         num(hi) + "] " + unit);
     }
 };
 
@@ -61,16 +62,19 @@ void checkProfileCutter(Checker& c, const Job& job) {
         c.finite(k + ".phase_deg", o.phase_deg, "deg");
         const double fit = std::fabs(o.eccentricity_mm) + o.radius_mm;
         if (R > 0 && o.radius_mm > 0 && fit > R)
-            c.add(k + ".radius_mm", k + ".radius_mm = " + num(o.radius_mm) +
-                                        " mm does not fit: |eccentricity_mm| + radius = " + num(fit) +
-                                        " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
+            c.add(k + ".radius_mm",
+                  k + ".radius_mm = " + num(o.radius_mm) +
+                      " mm does not fit: |eccentricity_mm| + radius = " + num(fit) +
+                      " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
         // Axes must not be parallel to the cut branch's: the crossing would be undefined.
         const double aj = deg2rad(o.angle_deg), ph = deg2rad(o.phase_deg);
-        const double cosAxes = std::sin(a) * std::cos(ph) * std::sin(aj) + std::cos(a) * std::cos(aj);
+        const double cosAxes =
+            std::sin(a) * std::cos(ph) * std::sin(aj) + std::cos(a) * std::cos(aj);
         const double between = rad2deg(std::acos(std::min(1.0, std::fabs(cosAxes))));
         if (std::isfinite(between) && between < 1.0)
-            c.add(k + ".angle_deg", k + ": its axis is " + num(between) +
-                                        " deg from the cut branch's axis; it must differ by >= 1 deg");
+            c.add(k + ".angle_deg",
+                  k + ": its axis is " + num(between) +
+                      " deg from the cut branch's axis; it must differ by >= 1 deg");
     }
     if (job.machine != "profile_cutter_2axis") return;
     const ProfileCutterSpec& p = job.profile_cutter;
@@ -81,7 +85,8 @@ void checkProfileCutter(Checker& c, const Job& job) {
     c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
     c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
     if (!p.branch_position_auto)
-        c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0, job.main_pipe.length_mm, "mm");
+        c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0,
+                job.main_pipe.length_mm, "mm");
     // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
     if (job.cut.bevel_deg != 0)
         c.add("cut.bevel_deg", "cut.bevel_deg = " + num(job.cut.bevel_deg) +
@@ -102,7 +107,8 @@ std::vector<JobIssue> validateJob(const Job& job) {
                                " deg is outside (0, 90] deg (angle between the pipe axes)");
     c.finite("eccentricity_mm", job.eccentricity_mm, "mm");
     const double fit = std::fabs(job.eccentricity_mm) + job.branch_pipe.radius_mm;
-    if (job.main_pipe.radius_mm > 0 && job.branch_pipe.radius_mm > 0 && fit > job.main_pipe.radius_mm)
+    if (job.main_pipe.radius_mm > 0 && job.branch_pipe.radius_mm > 0 &&
+        fit > job.main_pipe.radius_mm)
         c.add("branch_pipe.radius_mm",
               "branch_pipe.radius_mm = " + num(job.branch_pipe.radius_mm) +
                   " mm does not fit: |eccentricity_mm| + branch radius = " + num(fit) +
@@ -116,7 +122,8 @@ std::vector<JobIssue> validateJob(const Job& job) {
     c.range("cut.ramp_s", job.cut.ramp_s, 0.01, 10, "s");
     c.range("cut.max_direction_deviation_deg", job.cut.max_direction_deviation_deg, 0, 90, "deg");
     c.range("cut.knot_spacing_mm", job.cut.knot_spacing_mm, 0.05, 20, "mm");
-    if (!job.cut.start_phi_auto) c.range("cut.start_phi_deg", job.cut.start_phi_deg, -360, 360, "deg");
+    if (!job.cut.start_phi_auto)
+        c.range("cut.start_phi_deg", job.cut.start_phi_deg, -360, 360, "deg");
     c.range("cut.static_chuck_deg", job.cut.static_chuck_deg, -180, 180, "deg");
 
     for (int i = 0; i < kAxisCount; ++i) {
@@ -138,19 +145,28 @@ std::vector<JobIssue> validateJob(const Job& job) {
         if (std::fabs(d.alpha_deg - structure[i]) > 1e-9)
             c.add("robot.dh[" + std::to_string(i) + "].alpha_deg",
                   "robot.dh[" + std::to_string(i) + "].alpha_deg = " + num(d.alpha_deg) +
-                      " deg: the pipe robot's inverse kinematics needs " + num(structure[i]) + " deg");
+                      " deg: the pipe robot's inverse kinematics needs " + num(structure[i]) +
+                      " deg");
     }
     // ... and for its offsets: these lengths are zero on the seed's arm.
-    const struct { int row; const char* field; double value; } zeros[] = {
-        {1, "a_mm", job.dh[1].a_mm}, {2, "d_mm", job.dh[2].d_mm}, {3, "d_mm", job.dh[3].d_mm},
-        {4, "d_mm", job.dh[4].d_mm}, {5, "a_mm", job.dh[5].a_mm}};
+    const struct {
+        int row;
+        const char* field;
+        double value;
+    } zeros[] = {{1, "a_mm", job.dh[1].a_mm},
+                 {2, "d_mm", job.dh[2].d_mm},
+                 {3, "d_mm", job.dh[3].d_mm},
+                 {4, "d_mm", job.dh[4].d_mm},
+                 {5, "a_mm", job.dh[5].a_mm}};
     for (const auto& z : zeros)
         if (std::fabs(z.value) > 1e-9) {
             const std::string k = "robot.dh[" + std::to_string(z.row) + "]." + z.field;
-            c.add(k, k + " = " + num(z.value) + " mm: the pipe robot's inverse kinematics needs 0 mm");
+            c.add(k,
+                  k + " = " + num(z.value) + " mm: the pipe robot's inverse kinematics needs 0 mm");
         }
     if (job.dh[2].a_mm <= 0 || job.dh[3].a_mm <= 0)
-        c.add("robot.dh[2].a_mm", "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)");
+        c.add("robot.dh[2].a_mm",
+              "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)");
 
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& g = job.controller[static_cast<size_t>(i)];
@@ -174,24 +190,27 @@ std::vector<JobIssue> validateJob(const Job& job) {
         if (g.tau_f > 0 && job.sim.period_s > 0 && g.tau_f < job.sim.period_s / 2)
             c.add("controller[" + std::to_string(i) + "].tau_f_s",
                   "controller[" + std::to_string(i) + "].tau_f_s = " + num(g.tau_f) +
-                      " s must be >= half the control period (" + num(job.sim.period_s / 2) + " s)");
+                      " s must be >= half the control period (" + num(job.sim.period_s / 2) +
+                      " s)");
     }
 
     c.range("engine.feed_hold_decel_s", job.engine.feed_hold_decel_s, 0.01, 10, "s");
-    c.range("engine.following_error_limit_deg", job.engine.following_error_limit_deg, 0.001, 90, "deg");
+    c.range("engine.following_error_limit_deg", job.engine.following_error_limit_deg, 0.001, 90,
+            "deg");
     c.range("engine.home_speed_deg_s", job.engine.home_speed_deg_s, 0.1, 360, "deg/s");
     if (job.devices.bitrate_bps <= 0)
-        c.add("devices.bitrate_bps", "devices.bitrate_bps = " + std::to_string(job.devices.bitrate_bps) +
-                                         " bit/s must be > 0 bit/s");
+        c.add("devices.bitrate_bps",
+              "devices.bitrate_bps = " + std::to_string(job.devices.bitrate_bps) +
+                  " bit/s must be > 0 bit/s");
     for (int i = 0; i < kAxisCount; ++i) {
         const int id = job.devices.node_ids[static_cast<size_t>(i)];
         if (id < 1 || id > 127)
-            c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) + "] = " +
-                                          std::to_string(id) + " is outside [1, 127]");
+            c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) +
+                                          "] = " + std::to_string(id) + " is outside [1, 127]");
         for (int j = 0; j < i; ++j)
             if (job.devices.node_ids[static_cast<size_t>(j)] == id)
-                c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) + "] = " +
-                                              std::to_string(id) + " is used twice");
+                c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) +
+                                              "] = " + std::to_string(id) + " is used twice");
         c.positive("devices.counts_per_unit[" + std::to_string(i) + "]",
                    job.devices.counts_per_unit[static_cast<size_t>(i)], "counts/deg");
     }

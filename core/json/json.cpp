@@ -82,14 +82,25 @@ class Parser {
     Value parseValue(int depth) {
         if (depth > kMaxDepth) fail("nesting deeper than 64 levels");
         switch (peek()) {
-        case '{': return parseObject(depth);
-        case '[': return parseArray(depth);
-        case '"': return Value(parseString());
-        case 't': literal("true"); return Value(true);
-        case 'f': literal("false"); return Value(false);
-        case 'n': literal("null"); return Value(nullptr);
-        case '\0': fail("unexpected end of input");
-        default: return Value(parseNumber());
+        case '{':
+            return parseObject(depth);
+        case '[':
+            return parseArray(depth);
+        case '"':
+            return Value(parseString());
+        case 't':
+            literal("true");
+            return Value(true);
+        case 'f':
+            literal("false");
+            return Value(false);
+        case 'n':
+            literal("null");
+            return Value(nullptr);
+        case '\0':
+            fail("unexpected end of input");
+        default:
+            return Value(parseNumber());
         }
     }
 
@@ -173,10 +184,14 @@ class Parser {
             char c = peek();
             ++pos_;
             v <<= 4;
-            if (c >= '0' && c <= '9') v |= static_cast<unsigned>(c - '0');
-            else if (c >= 'a' && c <= 'f') v |= static_cast<unsigned>(c - 'a' + 10);
-            else if (c >= 'A' && c <= 'F') v |= static_cast<unsigned>(c - 'A' + 10);
-            else fail("invalid \\u escape");
+            if (c >= '0' && c <= '9')
+                v |= static_cast<unsigned>(c - '0');
+            else if (c >= 'a' && c <= 'f')
+                v |= static_cast<unsigned>(c - 'a' + 10);
+            else if (c >= 'A' && c <= 'F')
+                v |= static_cast<unsigned>(c - 'A' + 10);
+            else
+                fail("invalid \\u escape");
         }
         return v;
     }
@@ -196,14 +211,30 @@ class Parser {
             char e = peek();
             ++pos_;
             switch (e) {
-            case '"': out += '"'; break;
-            case '\\': out += '\\'; break;
-            case '/': out += '/'; break;
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
+            case '"':
+                out += '"';
+                break;
+            case '\\':
+                out += '\\';
+                break;
+            case '/':
+                out += '/';
+                break;
+            case 'b':
+                out += '\b';
+                break;
+            case 'f':
+                out += '\f';
+                break;
+            case 'n':
+                out += '\n';
+                break;
+            case 'r':
+                out += '\r';
+                break;
+            case 't':
+                out += '\t';
+                break;
             case 'u': {
                 unsigned cp = parseHex4();
                 if (cp >= 0xD800 && cp < 0xDC00 && peek() == '\\') {
@@ -215,7 +246,9 @@ class Parser {
                 appendUtf8(out, cp);
                 break;
             }
-            default: --pos_; fail("invalid escape in string");
+            default:
+                --pos_;
+                fail("invalid escape in string");
             }
         }
     }
@@ -224,17 +257,20 @@ class Parser {
         size_t start = pos_;
         if (peek() == '-') ++pos_;
         if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid value");
-        while (std::isdigit(static_cast<unsigned char>(peek()))) ++pos_;
+        while (std::isdigit(static_cast<unsigned char>(peek())))
+            ++pos_;
         if (peek() == '.') {
             ++pos_;
             if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid number");
-            while (std::isdigit(static_cast<unsigned char>(peek()))) ++pos_;
+            while (std::isdigit(static_cast<unsigned char>(peek())))
+                ++pos_;
         }
         if (peek() == 'e' || peek() == 'E') {
             ++pos_;
             if (peek() == '+' || peek() == '-') ++pos_;
             if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid exponent");
-            while (std::isdigit(static_cast<unsigned char>(peek()))) ++pos_;
+            while (std::isdigit(static_cast<unsigned char>(peek())))
+                ++pos_;
         }
         const std::string token = s_.substr(start, pos_ - start);
         double v = std::strtod(token.c_str(), nullptr);
@@ -247,11 +283,21 @@ void writeString(std::ostringstream& os, const std::string& s) {
     os << '"';
     for (char c : s) {
         switch (c) {
-        case '"': os << "\\\""; break;
-        case '\\': os << "\\\\"; break;
-        case '\n': os << "\\n"; break;
-        case '\r': os << "\\r"; break;
-        case '\t': os << "\\t"; break;
+        case '"':
+            os << "\\\"";
+            break;
+        case '\\':
+            os << "\\\\";
+            break;
+        case '\n':
+            os << "\\n";
+            break;
+        case '\r':
+            os << "\\r";
+            break;
+        case '\t':
+            os << "\\t";
+            break;
         default:
             if (static_cast<unsigned char>(c) < 0x20) {
                 char buf[8];
@@ -280,10 +326,14 @@ void writeNumber(std::ostringstream& os, double d) {
 void writeValue(std::ostringstream& os, const Value& v, int indent, int level) {
     const std::string pad(static_cast<size_t>(indent * (level + 1)), ' ');
     const std::string padEnd(static_cast<size_t>(indent * level), ' ');
-    if (v.isNull()) os << "null";
-    else if (v.isBool()) os << (v.asBool() ? "true" : "false");
-    else if (v.isNumber()) writeNumber(os, v.asNumber());
-    else if (v.isString()) writeString(os, v.asString());
+    if (v.isNull())
+        os << "null";
+    else if (v.isBool())
+        os << (v.asBool() ? "true" : "false");
+    else if (v.isNumber())
+        writeNumber(os, v.asNumber());
+    else if (v.isString())
+        writeString(os, v.asString());
     else if (v.isArray()) {
         const auto& a = v.asArray();
         if (a.empty()) {
@@ -292,7 +342,8 @@ void writeValue(std::ostringstream& os, const Value& v, int indent, int level) {
         }
         // Arrays of scalars stay on one line: tables of numbers read better that way.
         bool flat = true;
-        for (const auto& e : a) flat = flat && !e.isArray() && !e.isObject();
+        for (const auto& e : a)
+            flat = flat && !e.isArray() && !e.isObject();
         os << '[';
         for (size_t i = 0; i < a.size(); ++i) {
             if (i) os << (flat ? ", " : ",");
@@ -321,7 +372,9 @@ void writeValue(std::ostringstream& os, const Value& v, int indent, int level) {
 
 } // namespace
 
-Value parse(const std::string& text) { return Parser(text).parseDocument(); }
+Value parse(const std::string& text) {
+    return Parser(text).parseDocument();
+}
 
 std::string write(const Value& v, int indent) {
     std::ostringstream os;

@@ -16,13 +16,15 @@ Pose dhTransform(const DhLink& l, double theta) {
 
 Pose DhChain::forward(const double* q) const {
     Pose T = Pose::Identity();
-    for (size_t i = 0; i < links_.size(); ++i) T = T * dhTransform(links_[i], q[i]);
+    for (size_t i = 0; i < links_.size(); ++i)
+        T = T * dhTransform(links_[i], q[i]);
     return T;
 }
 
 void DhChain::frames(const double* q, Pose* out) const {
     out[0] = Pose::Identity();
-    for (size_t i = 0; i < links_.size(); ++i) out[i + 1] = out[i] * dhTransform(links_[i], q[i]);
+    for (size_t i = 0; i < links_.size(); ++i)
+        out[i + 1] = out[i] * dhTransform(links_[i], q[i]);
 }
 
 } // namespace cutcell

@@ -8,11 +8,16 @@ namespace cutcell {
 
 const char* toString(IkStatus s) {
     switch (s) {
-    case IkStatus::Ok: return "ok";
-    case IkStatus::OutOfReach: return "out of reach";
-    case IkStatus::JointLimit: return "joint limit";
-    case IkStatus::Singular: return "singular";
-    case IkStatus::OrientationUnreachable: return "orientation out of reach";
+    case IkStatus::Ok:
+        return "ok";
+    case IkStatus::OutOfReach:
+        return "out of reach";
+    case IkStatus::JointLimit:
+        return "joint limit";
+    case IkStatus::Singular:
+        return "singular";
+    case IkStatus::OrientationUnreachable:
+        return "orientation out of reach";
     }
     return "?";
 }
@@ -20,17 +25,20 @@ const char* toString(IkStatus s) {
 std::string describe(const IkResult& r) {
     char buf[256];
     switch (r.status) {
-    case IkStatus::Ok: return "ok";
+    case IkStatus::Ok:
+        return "ok";
     case IkStatus::OutOfReach:
-        std::snprintf(buf, sizeof buf, "out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)",
+        std::snprintf(buf, sizeof buf,
+                      "out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)",
                       r.residual);
         return buf;
     case IkStatus::JointLimit:
-        std::snprintf(buf, sizeof buf, "joint %d = %.3f deg is past its limit %.3f deg by %.3f deg", r.axis,
-                      rad2deg(r.value), rad2deg(r.limit), rad2deg(r.residual));
+        std::snprintf(buf, sizeof buf, "joint %d = %.3f deg is past its limit %.3f deg by %.3f deg",
+                      r.axis, rad2deg(r.value), rad2deg(r.limit), rad2deg(r.residual));
         return buf;
     case IkStatus::Singular:
-        std::snprintf(buf, sizeof buf, "singular at joint %d (its angle is undefined here)", r.axis);
+        std::snprintf(buf, sizeof buf, "singular at joint %d (its angle is undefined here)",
+                      r.axis);
         return buf;
     case IkStatus::OrientationUnreachable:
         std::snprintf(buf, sizeof buf,
@@ -76,9 +84,13 @@ Pose PipeRobot::baseFromWork(double theta0) const {
     return T;
 }
 
-Pose PipeRobot::forward(const ArmVector& q) const { return arm_.forward(q.data()); }
+Pose PipeRobot::forward(const ArmVector& q) const {
+    return arm_.forward(q.data());
+}
 
-void PipeRobot::armFrames(const ArmVector& q, Pose* out6) const { arm_.frames(q.data(), out6); }
+void PipeRobot::armFrames(const ArmVector& q, Pose* out6) const {
+    arm_.frames(q.data(), out6);
+}
 
 IkResult PipeRobot::solve(const Vec3& tip, const Vec3& approach, double roll,
                           const ArmVector* previous) const {
@@ -133,9 +145,9 @@ IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, dou
     // Candidates: shoulder facing the tip or reaching over backwards, elbow either way.
     IkResult best;
     double bestCost = 1e300;
-    IkResult reachFailure;   // out of reach, facing the tip preferred
+    IkResult reachFailure; // out of reach, facing the tip preferred
     bool haveReachFailure = false;
-    IkResult limitFailure;   // reachable but past a limit or singular, nearest candidate
+    IkResult limitFailure; // reachable but past a limit or singular, nearest candidate
     double limitCost = 1e300;
     for (int shoulder = 0; shoulder < 2; ++shoulder) {
         const double th1 = t1 + shoulder * kPi;
@@ -182,8 +194,8 @@ IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, dou
             for (int j = 0; j < kArmJointCount; ++j) {
                 const int axis = j + 1;
                 bool ok = true;
-                const double q = nearestWithinLimits(axis, geom[j] - offset_[static_cast<size_t>(axis)],
-                                                     ref[j], &ok);
+                const double q = nearestWithinLimits(
+                    axis, geom[j] - offset_[static_cast<size_t>(axis)], ref[j], &ok);
                 cand.q[j] = q;
                 cost += (q - ref[j]) * (q - ref[j]);
                 if (!ok && allOk) {
@@ -191,7 +203,8 @@ IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, dou
                     cand.status = IkStatus::JointLimit;
                     cand.axis = axis;
                     cand.value = q;
-                    const double lo = min_[static_cast<size_t>(axis)], hi = max_[static_cast<size_t>(axis)];
+                    const double lo = min_[static_cast<size_t>(axis)],
+                                 hi = max_[static_cast<size_t>(axis)];
                     cand.limit = q < lo ? lo : hi;
                     cand.residual = q < lo ? lo - q : q - hi;
                 }

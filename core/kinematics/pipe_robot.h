@@ -31,10 +31,10 @@ struct IkResult {
     IkStatus status = IkStatus::Ok;
     ArmVector q = ArmVector::Zero(); // theta1..theta5, rad
     int axis = -1;                   // offending axis (1..5), -1 if none
-    double residual = 0;   // OutOfReach: mm beyond reach; JointLimit: rad past the limit;
-                           // OrientationUnreachable: rad off the joint-1 plane
-    double value = 0;      // JointLimit: the joint value (rad)
-    double limit = 0;      // JointLimit: the limit that was broken (rad)
+    double residual = 0;             // OutOfReach: mm beyond reach; JointLimit: rad past the limit;
+                                     // OrientationUnreachable: rad off the joint-1 plane
+    double value = 0;                // JointLimit: the joint value (rad)
+    double limit = 0;                // JointLimit: the limit that was broken (rad)
     bool ok() const { return status == IkStatus::Ok; }
 };
 

@@ -38,7 +38,8 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     for (long k = 0; k <= steps; ++k) {
         const double t = static_cast<double>(k) * T;
         const JointSample ref = plan.spline.evaluate(t);
-        for (int i = 0; i < kAxisCount; ++i) actual[i] = plant[static_cast<size_t>(i)].position();
+        for (int i = 0; i < kAxisCount; ++i)
+            actual[i] = plant[static_cast<size_t>(i)].position();
         stats.add(ref.q, actual);
         if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref.q, actual);
         for (int i = 0; i < kAxisCount; ++i) {

@@ -23,8 +23,8 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
     if (!robot_ && !model_) return;
     const Vec3 tipCmd = robot_ ? robot_->forward(commanded.tail<kArmJointCount>()).translation()
                                : model_->tip(commanded);
-    const Vec3 tipAct = robot_ ? robot_->forward(actual.tail<kArmJointCount>()).translation()
-                               : model_->tip(actual);
+    const Vec3 tipAct =
+        robot_ ? robot_->forward(actual.tail<kArmJointCount>()).translation() : model_->tip(actual);
     lastCart_ = tipAct - tipCmd;
     cartMin_ = cartMin_.cwiseMin(lastCart_);
     cartMax_ = cartMax_.cwiseMax(lastCart_);
@@ -39,7 +39,8 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
 void TrackingStats::fill(TrackingReport& r) const {
     for (int i = 0; i < kAxisCount; ++i) {
         r.joints[static_cast<size_t>(i)].max_abs_deg = rad2deg(maxAbs_[i]);
-        r.joints[static_cast<size_t>(i)].rms_deg = n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
+        r.joints[static_cast<size_t>(i)].rms_deg =
+            n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
     }
     r.cartesian_min_mm = cartMin_;
     r.cartesian_max_mm = cartMax_;
@@ -58,21 +59,23 @@ void TrackingStats::fillCruise(TrackingReport& r) const {
 }
 
 namespace {
-json::Value xyz(const Vec3& v) { return json::Object{{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; }
+json::Value xyz(const Vec3& v) {
+    return json::Object{{"x", v.x()}, {"y", v.y()}, {"z", v.z()}};
+}
 } // namespace
 
 json::Value reportToJson(const TrackingReport& r) {
     json::Array joints, cruise;
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& j = r.joints[static_cast<size_t>(i)];
-        joints.emplace_back(json::Object{{"axis", i},
-                                         {"name", i == 0 ? "chuck (theta0)" : "theta" + std::to_string(i)},
-                                         {"max_abs_error_deg", j.max_abs_deg},
-                                         {"rms_error_deg", j.rms_deg}});
+        joints.emplace_back(
+            json::Object{{"axis", i},
+                         {"name", i == 0 ? "chuck (theta0)" : "theta" + std::to_string(i)},
+                         {"max_abs_error_deg", j.max_abs_deg},
+                         {"rms_error_deg", j.rms_deg}});
         const auto& c = r.cruise_joints[static_cast<size_t>(i)];
-        cruise.emplace_back(json::Object{{"axis", i},
-                                         {"max_abs_error_deg", c.max_abs_deg},
-                                         {"rms_error_deg", c.rms_deg}});
+        cruise.emplace_back(json::Object{
+            {"axis", i}, {"max_abs_error_deg", c.max_abs_deg}, {"rms_error_deg", c.rms_deg}});
     }
     return json::Object{
         {"method", r.method},
@@ -91,10 +94,11 @@ json::Value reportToJson(const TrackingReport& r) {
                       {"min_error_mm", xyz(r.cartesian_min_mm)},
                       {"max_error_mm", xyz(r.cartesian_max_mm)},
                       {"on_pipe_max_abs_error_mm", xyz(r.on_pipe_max_abs_mm)}}},
-        {"cruise", json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
-                                {"joints", cruise},
-                                {"cartesian_max_abs_error_mm", xyz(r.cruise_cartesian_max_abs_mm)},
-                                {"on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm)}}},
+        {"cruise",
+         json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
+                      {"joints", cruise},
+                      {"cartesian_max_abs_error_mm", xyz(r.cruise_cartesian_max_abs_mm)},
+                      {"on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm)}}},
     };
 }
 

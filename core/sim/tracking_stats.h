@@ -32,8 +32,8 @@ struct TrackingReport {
     Vec3 cartesian_max_abs_mm = Vec3::Zero(); // tip, base frame
     Vec3 cartesian_min_mm = Vec3::Zero();
     Vec3 cartesian_max_mm = Vec3::Zero();
-    Vec3 on_pipe_max_abs_mm = Vec3::Zero();   // tip relative to the work pipe (chuck error included)
-    double max_torque_fraction = 0;           // peak |u| / torque limit over all axes
+    Vec3 on_pipe_max_abs_mm = Vec3::Zero(); // tip relative to the work pipe (chuck error included)
+    double max_torque_fraction = 0;         // peak |u| / torque limit over all axes
     // The same figures over the constant-speed part of the cut only (ramps excluded).
     std::array<AxisErrorStats, kAxisCount> cruise_joints{};
     Vec3 cruise_cartesian_max_abs_mm = Vec3::Zero();

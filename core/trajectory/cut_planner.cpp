@@ -23,7 +23,9 @@ double SpeedProfile::speed(double t) const {
 double SpeedProfile::distance(double t) const {
     if (t <= 0) return 0;
     if (t >= duration_) return length_;
-    const auto ramp = [&](double u) { return v_ / 2 * (u - ramp_ / kPi * std::sin(kPi * u / ramp_)); };
+    const auto ramp = [&](double u) {
+        return v_ / 2 * (u - ramp_ / kPi * std::sin(kPi * u / ramp_));
+    };
     if (t < ramp_) return ramp(t);
     if (t > duration_ - ramp_) return length_ - ramp(duration_ - t);
     return v_ * ramp_ / 2 + v_ * (t - ramp_);
@@ -33,8 +35,10 @@ namespace {
 
 std::string describePoint(size_t index, const PlannedPoint& p) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)", index,
-                  rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(), p.cut.p_main.z());
+    std::snprintf(buf, sizeof buf,
+                  "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)", index,
+                  rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
+                  p.cut.p_main.z());
     return buf;
 }
 
@@ -78,7 +82,8 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         }
         const double mid = (robot.minRad(0) + robot.maxRad(0)) / 2;
         const double shift = 2 * kPi * std::round((mid - (lo + hi) / 2) / (2 * kPi));
-        for (auto& p : plan.knots) p.chuck_rad += shift;
+        for (auto& p : plan.knots)
+            p.chuck_rad += shift;
     }
 
     const double maxDev = job.cut.max_direction_deviation_deg;
@@ -93,7 +98,8 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
             plan.problem = "planning cancelled";
             return plan;
         }
-        if (options.progress && k % 64 == 0) options.progress(static_cast<double>(k) / static_cast<double>(plan.knots.size()));
+        if (options.progress && k % 64 == 0)
+            options.progress(static_cast<double>(k) / static_cast<double>(plan.knots.size()));
         PlannedPoint& p = plan.knots[k];
         const double chuck = p.chuck_rad;
         const Pose baseFromWork = robot.baseFromWork(chuck);
@@ -125,17 +131,19 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
             std::string why;
             if (!robot.withinLimits(0, chuck)) {
                 char buf[160];
-                std::snprintf(buf, sizeof buf, "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
+                std::snprintf(buf, sizeof buf,
+                              "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
                               rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
                 why = buf;
             } else if (!p.ik.ok()) {
                 why = describe(p.ik);
             } else if (p.deviation_deg > maxDev + 1e-9) {
                 char buf[200];
-                std::snprintf(buf, sizeof buf,
-                              "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more "
-                              "than cut.max_direction_deviation_deg = %.2f deg",
-                              p.deviation_deg, maxDev);
+                std::snprintf(
+                    buf, sizeof buf,
+                    "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more "
+                    "than cut.max_direction_deviation_deg = %.2f deg",
+                    p.deviation_deg, maxDev);
                 why = buf;
             }
             if (!why.empty()) {

@@ -26,10 +26,10 @@ namespace cutcell {
 
 struct PlannedPoint {
     double t_s = 0;
-    CutPoint cut;         // on the pipes (main and work frames)
-    double chuck_rad = 0; // axis 0
-    Vec3 tip_base;        // torch tip in the robot base frame {0}
-    Vec3 approach_base;   // torch axis actually commanded (in the plane of joint 1)
+    CutPoint cut;             // on the pipes (main and work frames)
+    double chuck_rad = 0;     // axis 0
+    Vec3 tip_base;            // torch tip in the robot base frame {0}
+    Vec3 approach_base;       // torch axis actually commanded (in the plane of joint 1)
     double deviation_deg = 0; // angle between the desired and the commanded torch axis
     IkResult ik;
     JointVector q = JointVector::Zero(); // axis 0 = chuck, 1..5 = arm
@@ -43,8 +43,8 @@ struct CutPlan {
     std::vector<PlannedPoint> knots;
     JointSpline spline;
     bool reachable = false;
-    int first_bad = -1;   // index into knots of the first unreachable point
-    std::string problem;  // one sentence naming the point, the joint and the limit
+    int first_bad = -1;  // index into knots of the first unreachable point
+    std::string problem; // one sentence naming the point, the joint and the limit
     double max_deviation_deg = 0;
     bool cancelled = false;
 };

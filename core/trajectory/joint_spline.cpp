@@ -6,7 +6,8 @@
 
 namespace cutcell {
 
-JointSpline::JointSpline(std::vector<JointVector> knots, double dt) : knots_(std::move(knots)), dt_(dt) {
+JointSpline::JointSpline(std::vector<JointVector> knots, double dt)
+    : knots_(std::move(knots)), dt_(dt) {
     const size_t n = knots_.size();
     if (n < 2 || !(dt > 0)) throw std::invalid_argument("JointSpline needs >= 2 knots and dt > 0");
     m_.assign(n, JointVector::Zero());
@@ -33,7 +34,8 @@ JointSpline::JointSpline(std::vector<JointVector> knots, double dt) : knots_(std
         rhs[i] -= w * rhs[i - 1];
     }
     m_[n - 1] = rhs[n - 1] / diag[n - 1];
-    for (size_t i = n - 1; i-- > 0;) m_[i] = (rhs[i] - upper[i] * m_[i + 1]) / diag[i];
+    for (size_t i = n - 1; i-- > 0;)
+        m_[i] = (rhs[i] - upper[i] * m_[i + 1]) / diag[i];
 }
 
 JointSample JointSpline::evaluateSegment(size_t i, double u) const {

@@ -22,7 +22,9 @@ class JointSpline {
     JointSpline(std::vector<JointVector> knots, double dt);
 
     bool empty() const { return knots_.empty(); }
-    double duration() const { return knots_.empty() ? 0 : dt_ * static_cast<double>(knots_.size() - 1); }
+    double duration() const {
+        return knots_.empty() ? 0 : dt_ * static_cast<double>(knots_.size() - 1);
+    }
     double dt() const { return dt_; }
     size_t knotCount() const { return knots_.size(); }
     const JointVector& knot(size_t i) const { return knots_[i]; }

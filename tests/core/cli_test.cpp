@@ -22,11 +22,13 @@ struct Result {
 };
 
 Result runCli(const std::string& args, bool withStderr = true) {
-    const std::string cmd = std::string(CUTCELL_CLI) + " " + args + (withStderr ? " 2>&1" : " 2>/dev/null");
+    const std::string cmd =
+        std::string(CUTCELL_CLI) + " " + args + (withStderr ? " 2>&1" : " 2>/dev/null");
     FILE* p = popen(cmd.c_str(), "r");
     std::string out;
     char buf[4096];
-    while (p && fgets(buf, sizeof buf, p)) out += buf;
+    while (p && fgets(buf, sizeof buf, p))
+        out += buf;
     const int status = p ? pclose(p) : -1;
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
@@ -38,7 +40,9 @@ fs::path tempDir(const std::string& name) {
     return d;
 }
 
-std::string defaultJobPath() { return std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/default_job.json"; }
+std::string defaultJobPath() {
+    return std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/default_job.json";
+}
 
 } // namespace
 
@@ -70,7 +74,8 @@ TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
     job.method = CutMethod::StaticPipe;
     job.cut.target = CutTarget::Branch;
     saveJobFile(job, (dir / "job.json").string());
-    const Result r = runCli("plan " + (dir / "job.json").string() + " --out " + (dir / "out").string());
+    const Result r =
+        runCli("plan " + (dir / "job.json").string() + " --out " + (dir / "out").string());
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("point "), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out" / "path.csv"));
@@ -91,7 +96,8 @@ TEST(Cli, PlanWritesPathAndJointsCsv) {
         std::stringstream ss(line);
         std::string cell;
         std::vector<double> v;
-        while (std::getline(ss, cell, ',')) v.push_back(std::atof(cell.c_str()));
+        while (std::getline(ss, cell, ','))
+            v.push_back(std::atof(cell.c_str()));
         // Main pipe frame: x^2 + y^2 = R1^2 (columns x_mm, y_mm).
         ASSERT_NEAR(std::hypot(v[4], v[5]), job.main_pipe.radius_mm, 1e-6) << line;
         ++rows;
@@ -116,7 +122,8 @@ TEST(Cli, PlanWritesPathAndJointsCsv) {
 
 TEST(Cli, SimulateWritesTheReport) {
     const fs::path dir = tempDir("simulate");
-    const Result r = runCli("simulate " + defaultJobPath() + " --report " + (dir / "report.json").string());
+    const Result r =
+        runCli("simulate " + defaultJobPath() + " --report " + (dir / "report.json").string());
     ASSERT_EQ(r.code, 0) << r.output;
     const json::Value v = json::parse(readTextFile((dir / "report.json").string()));
     EXPECT_EQ(v.find("joints")->asArray().size(), 6u);

@@ -32,7 +32,9 @@ Job randomJob(std::mt19937& rng, CutTarget target) {
 }
 
 // Independent of the library: distance from the main cylinder and from the branch cylinder.
-double mainDistance(const Job& job, const Vec3& p) { return std::fabs(std::hypot(p.x(), p.y()) - job.main_pipe.radius_mm); }
+double mainDistance(const Job& job, const Vec3& p) {
+    return std::fabs(std::hypot(p.x(), p.y()) - job.main_pipe.radius_mm);
+}
 double branchDistance(const Job& job, const Vec3& p, double radius) {
     const double a = deg2rad(job.angle_deg);
     const Vec3 axis(0, std::sin(a), std::cos(a));
@@ -47,14 +49,16 @@ TEST(Geometry, EveryPointLiesOnBothPipesForRandomGeometries) {
     for (int trial = 0; trial < 200; ++trial) {
         const CutTarget target = trial % 2 ? CutTarget::Main : CutTarget::Branch;
         const Job job = randomJob(rng, target);
-        const double r = target == CutTarget::Main ? job.branch_pipe.radius_mm - job.branch_pipe.wall_mm
-                                                   : job.branch_pipe.radius_mm;
+        const double r = target == CutTarget::Main
+                             ? job.branch_pipe.radius_mm - job.branch_pipe.wall_mm
+                             : job.branch_pipe.radius_mm;
         const CutGeometry geo(job);
         for (const CutPoint& c : geo.sampleEqualArcLength(geo.length() / 97)) {
             ASSERT_LE(mainDistance(job, c.p_main), 1e-6) << "trial " << trial;
             ASSERT_LE(branchDistance(job, c.p_main, r), 1e-6) << "trial " << trial;
             // The work frame is rigid: the point is on the work pipe's surface there too.
-            const double workR = target == CutTarget::Main ? job.main_pipe.radius_mm : job.branch_pipe.radius_mm;
+            const double workR =
+                target == CutTarget::Main ? job.main_pipe.radius_mm : job.branch_pipe.radius_mm;
             ASSERT_NEAR(std::hypot(c.p_work.x(), c.p_work.y()), workR, 1e-6);
         }
     }
@@ -93,7 +97,8 @@ TEST(Geometry, SamplesAreEquallySpacedInArcLength) {
             const double u = (samples[k].phi_rad - phi0) / (2 * kPi) * dense;
             const size_t i = std::min<size_t>(static_cast<size_t>(std::max(0.0, u)), dense - 1);
             const double s = cum[i] + (cum[i + 1] - cum[i]) * (u - static_cast<double>(i));
-            ASSERT_NEAR(s, step * static_cast<double>(k), 1e-3) << "trial " << trial << " sample " << k;
+            ASSERT_NEAR(s, step * static_cast<double>(k), 1e-3)
+                << "trial " << trial << " sample " << k;
         }
     }
 }
@@ -105,7 +110,8 @@ TEST(Geometry, TorchDirectionHasTheBevelAndCrossesTheCut) {
         const CutGeometry geo(job);
         for (const CutPoint& c : geo.sampleByPhi(90)) {
             EXPECT_NEAR(c.approach_work.norm(), 1, 1e-12);
-            const double angle = rad2deg(std::acos(std::clamp(c.approach_work.dot(c.normal_work), -1.0, 1.0)));
+            const double angle =
+                rad2deg(std::acos(std::clamp(c.approach_work.dot(c.normal_work), -1.0, 1.0)));
             EXPECT_NEAR(angle, std::fabs(job.cut.bevel_deg), 1e-6);
             // The bevel tilts across the cut, never along it.
             EXPECT_NEAR(c.approach_work.dot(c.tangent_work), 0, 1e-9);
@@ -114,7 +120,8 @@ TEST(Geometry, TorchDirectionHasTheBevelAndCrossesTheCut) {
 }
 
 TEST(Geometry, NinetyDegreeCentredBranchMatchesTheSeedsClosedForm) {
-    // Seed 000 Eq. (6)-(8) for ar = 90 deg, e = 0: x = r sin(phi), y = sqrt(R^2 - x^2), z = -r cos(phi).
+    // Seed 000 Eq. (6)-(8) for ar = 90 deg, e = 0: x = r sin(phi), y = sqrt(R^2 - x^2), z = -r
+    // cos(phi).
     Job job = defaultJob();
     job.cut.target = CutTarget::Branch;
     const CutGeometry geo(job);

@@ -11,14 +11,17 @@ using namespace cutcell;
 
 namespace {
 
-json::Value defaultDoc() { return json::parse(defaultJobText()); }
+json::Value defaultDoc() {
+    return json::parse(defaultJobText());
+}
 
 json::Value* member(json::Value& v, const std::string& dotted) {
     json::Value* cur = &v;
     size_t start = 0;
     while (true) {
         const size_t dot = dotted.find('.', start);
-        const std::string key = dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+        const std::string key =
+            dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
         json::Value* next = nullptr;
         for (auto& [k, val] : cur->asObject())
             if (k == key) next = &val;
@@ -75,7 +78,8 @@ TEST(Job, AtomicSaveLeavesNoTemporaryAndReloads) {
     saveJobFile(job, path);
     EXPECT_EQ(loadJobFile(path).name, "saved again");
     int files = 0;
-    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir))
+        ++files;
     EXPECT_EQ(files, 1);
     EXPECT_THROW(saveJobFile(job, (dir / "missing" / "job.json").string()), JobError);
     std::filesystem::remove_all(dir);
@@ -97,18 +101,27 @@ TEST_P(JobRejects, MessageNamesKeyValueUnitAndLimit) {
         *m = json::Value(b.value);
     });
     ASSERT_FALSE(msg.empty()) << b.key << " = " << b.value << " was accepted";
-    for (const auto& frag : b.expected) EXPECT_NE(msg.find(frag), std::string::npos) << msg << "\n  missing: " << frag;
+    for (const auto& frag : b.expected)
+        EXPECT_NE(msg.find(frag), std::string::npos) << msg << "\n  missing: " << frag;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Table, JobRejects,
     ::testing::Values(
-        BadValue{"branch_pipe.radius_mm", 70, {"branch_pipe.radius_mm = 70 mm", "|eccentricity_mm| + branch radius", "main_pipe.radius_mm = 57.15 mm"}},
-        BadValue{"eccentricity_mm", 40, {"|eccentricity_mm| + branch radius = 64.15 mm", "<= main_pipe.radius_mm = 57.15 mm"}},
+        BadValue{"branch_pipe.radius_mm",
+                 70,
+                 {"branch_pipe.radius_mm = 70 mm", "|eccentricity_mm| + branch radius",
+                  "main_pipe.radius_mm = 57.15 mm"}},
+        BadValue{
+            "eccentricity_mm",
+            40,
+            {"|eccentricity_mm| + branch radius = 64.15 mm", "<= main_pipe.radius_mm = 57.15 mm"}},
         BadValue{"angle_deg", 0, {"angle_deg = 0 deg", "(0, 90] deg"}},
         BadValue{"angle_deg", 95, {"angle_deg = 95 deg", "(0, 90] deg"}},
         BadValue{"main_pipe.wall_mm", -1, {"main_pipe.wall_mm = -1 mm", "> 0 mm"}},
-        BadValue{"branch_pipe.wall_mm", 30, {"branch_pipe.wall_mm = 30 mm", "less than branch_pipe.radius_mm = 24.15 mm"}},
+        BadValue{"branch_pipe.wall_mm",
+                 30,
+                 {"branch_pipe.wall_mm = 30 mm", "less than branch_pipe.radius_mm = 24.15 mm"}},
         BadValue{"cut.speed_mm_s", 0, {"cut.speed_mm_s = 0 mm/s", "> 0 mm/s"}},
         BadValue{"cut.bevel_deg", 75, {"cut.bevel_deg = 75 deg", "[-60, 60] deg"}},
         BadValue{"sim.period_s", 0.5, {"sim.period_s = 0.5 s", "[0.0001, 0.02] s"}},
@@ -123,24 +136,32 @@ TEST(Job, TableRowsAreCheckedWithTheirIndex) {
         auto& row = member(doc, "robot.dh")->asArray()[2];
         row.set("min_deg", json::Value(50));
     });
-    EXPECT_NE(lim.find("robot.dh[2].min_deg = 50 deg must be below robot.dh[2].max_deg = 45 deg"), std::string::npos)
+    EXPECT_NE(lim.find("robot.dh[2].min_deg = 50 deg must be below robot.dh[2].max_deg = 45 deg"),
+              std::string::npos)
         << lim;
-    const std::string rows = rejection([](json::Value& doc) { member(doc, "plant")->asArray().pop_back(); });
+    const std::string rows =
+        rejection([](json::Value& doc) { member(doc, "plant")->asArray().pop_back(); });
     EXPECT_NE(rows.find("plant has 5 rows; it needs 6"), std::string::npos) << rows;
 }
 
 TEST(Job, StructuralErrorsAreNamed) {
-    EXPECT_NE(rejection([](json::Value& d) { d.set("method", json::Value("sideways")); })
-                  .find("method = \"sideways\" is not one of \"static_pipe\", \"rotating_pipe\""),
+    EXPECT_NE(rejection([](json::Value& d) {
+                  d.set("method", json::Value("sideways"));
+              }).find("method = \"sideways\" is not one of \"static_pipe\", \"rotating_pipe\""),
               std::string::npos);
-    EXPECT_NE(rejection([](json::Value& d) { member(d, "main_pipe")->set("radius_mm", json::Value("big")); })
-                  .find("main_pipe.radius_mm must be a number in mm, found string"),
+    EXPECT_NE(rejection([](json::Value& d) {
+                  member(d, "main_pipe")->set("radius_mm", json::Value("big"));
+              }).find("main_pipe.radius_mm must be a number in mm, found string"),
               std::string::npos);
-    EXPECT_NE(rejection([](json::Value& d) { d.set("schema", json::Value(2)); }).find("schema = 2 is not supported"),
+    EXPECT_NE(rejection([](json::Value& d) {
+                  d.set("schema", json::Value(2));
+              }).find("schema = 2 is not supported"),
               std::string::npos);
     json::Value doc = defaultDoc();
     auto& obj = doc.asObject();
-    obj.erase(std::remove_if(obj.begin(), obj.end(), [](const auto& kv) { return kv.first == "cut"; }), obj.end());
+    obj.erase(
+        std::remove_if(obj.begin(), obj.end(), [](const auto& kv) { return kv.first == "cut"; }),
+        obj.end());
     try {
         parseJob(json::write(doc));
         FAIL();

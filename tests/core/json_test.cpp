@@ -5,7 +5,8 @@
 using namespace cutcell;
 
 TEST(Json, RoundTripKeepsValuesAndOrder) {
-    const std::string text = R"({"b": 1.5, "a": [1, 2, {"x": "y\n\"q\""}], "t": true, "n": null, "u": "\u00e9"})";
+    const std::string text =
+        R"({"b": 1.5, "a": [1, 2, {"x": "y\n\"q\""}], "t": true, "n": null, "u": "\u00e9"})";
     const json::Value v = json::parse(text);
     const json::Value back = json::parse(json::write(v));
     ASSERT_TRUE(back.isObject());

@@ -15,7 +15,8 @@ namespace {
 ArmVector randomInLimits(const PipeRobot& robot, std::mt19937& rng, double margin = 0.02) {
     ArmVector q;
     for (int j = 0; j < kArmJointCount; ++j) {
-        std::uniform_real_distribution<double> d(robot.minRad(j + 1) + margin, robot.maxRad(j + 1) - margin);
+        std::uniform_real_distribution<double> d(robot.minRad(j + 1) + margin,
+                                                 robot.maxRad(j + 1) - margin);
         q[j] = d(rng);
     }
     return q;
@@ -29,7 +30,8 @@ TEST(Kinematics, ChainMatchesTheSeedsClosedFormPosition) {
     std::mt19937 rng(1);
     for (int i = 0; i < 500; ++i) {
         const ArmVector q = randomInLimits(robot, rng);
-        const double c1 = std::cos(q[0]), s1 = std::sin(q[0]), c2 = std::cos(q[1]), s2 = std::sin(q[1]);
+        const double c1 = std::cos(q[0]), s1 = std::sin(q[0]), c2 = std::cos(q[1]),
+                     s2 = std::sin(q[1]);
         const double c23 = std::cos(q[1] + q[2]), s23 = std::sin(q[1] + q[2]);
         const double c234 = std::cos(q[1] + q[2] + q[3]), s234 = std::sin(q[1] + q[2] + q[3]);
         const double d1 = 371, a2 = 157, a3 = 120, a4 = 50, d5 = 210;
@@ -69,7 +71,8 @@ TEST(Kinematics, ForwardOfInverseGivesBackThePose) {
         // Without a reference any in-limit branch may come back; its pose must be the same.
         const IkResult r = robot.solve(T);
         ASSERT_TRUE(r.ok()) << describe(r);
-        for (int j = 0; j < kArmJointCount; ++j) ASSERT_TRUE(robot.withinLimits(j + 1, r.q[j]));
+        for (int j = 0; j < kArmJointCount; ++j)
+            ASSERT_TRUE(robot.withinLimits(j + 1, r.q[j]));
         const Pose back = robot.forward(r.q);
         ASSERT_LE((back.translation() - T.translation()).norm(), 1e-6);
         ASSERT_LE((back.linear() - T.linear()).cwiseAbs().maxCoeff(), 1e-9);

@@ -16,7 +16,8 @@ struct ContinuousPid {
     PidGains g;
     double x1 = 0, x2 = 0;
     double output(double e) const {
-        return (g.kp / g.tau_f - g.kd / (g.tau_f * g.tau_f)) * x1 + g.ki / g.tau_f * x2 + g.kd / g.tau_f * e;
+        return (g.kp / g.tau_f - g.kd / (g.tau_f * g.tau_f)) * x1 + g.ki / g.tau_f * x2 +
+               g.kd / g.tau_f * e;
     }
     void advance(double e, double T, int substeps) {
         const double h = T / substeps;
@@ -35,7 +36,8 @@ struct ContinuousPid {
 } // namespace
 
 TEST(Pid, DiscreteStepResponseMatchesTheContinuousController) {
-    const PidGains gains[] = {{3240, 64800, 53, 0.002}, {10, 2, 0.5, 0.05}, {1, 0, 0, 0.01}, {0, 5, 0, 0.001}};
+    const PidGains gains[] = {
+        {3240, 64800, 53, 0.002}, {10, 2, 0.5, 0.05}, {1, 0, 0, 0.01}, {0, 5, 0, 0.001}};
     for (const PidGains& g : gains) {
         const double T = 0.001;
         PidFilter pid(g, T);
@@ -54,7 +56,8 @@ TEST(Pid, DiscreteStepResponseMatchesTheContinuousController) {
 }
 
 TEST(Pid, StepResponseHasTheAnalyticForm) {
-    // Inverse Laplace of C(s)/s: V(t) = Ki t + (Kp - Ki tau) (1 - e^{-t/tau}) + (Kd/tau) e^{-t/tau}.
+    // Inverse Laplace of C(s)/s: V(t) = Ki t + (Kp - Ki tau) (1 - e^{-t/tau}) + (Kd/tau)
+    // e^{-t/tau}.
     const PidGains g{12, 30, 0.4, 0.02};
     PidFilter pid(g, 0.001);
     for (int k = 0; k < 500; ++k) {
@@ -75,7 +78,9 @@ TEST(Plant, ExactStepMatchesTheOde) {
         plant.step(u);
         const double h = 0.001 / 100;
         for (int i = 0; i < 100; ++i) { // RK4 on q' = v, v' = (u - b v) / J
-            auto acc = [&](double vv) { return (u - p.viscous_nm_s_per_rad * vv) / p.inertia_kg_m2; };
+            auto acc = [&](double vv) {
+                return (u - p.viscous_nm_s_per_rad * vv) / p.inertia_kg_m2;
+            };
             const double k1v = acc(v), k1q = v;
             const double k2v = acc(v + h / 2 * k1v), k2q = v + h / 2 * k1v;
             const double k3v = acc(v + h / 2 * k2v), k3q = v + h / 2 * k2v;
@@ -99,6 +104,7 @@ TEST(Pid, ClosedLoopSettlesOnAStepWithoutSteadyError) {
     const PidGains g{3240, 64800, 53, 0.002};
     PidFilter pid(g, 0.001);
     JointPlant plant({0.3, 1.0, 1e6}, 0.001);
-    for (int k = 0; k < 3000; ++k) plant.step(pid.step(0.01 - plant.position()));
+    for (int k = 0; k < 3000; ++k)
+        plant.step(pid.step(0.01 - plant.position()));
     EXPECT_NEAR(plant.position(), 0.01, 1e-7);
 }

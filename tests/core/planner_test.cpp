@@ -25,7 +25,8 @@ TEST(Planner, RotatingMethodKeepsTheTorchOnItsLine) {
         const CutPlan plan = planCut(job);
         ASSERT_TRUE(plan.reachable) << plan.problem;
         const PipeRobot robot(job.dh);
-        const double workR = target == CutTarget::Main ? job.main_pipe.radius_mm : job.branch_pipe.radius_mm;
+        const double workR =
+            target == CutTarget::Main ? job.main_pipe.radius_mm : job.branch_pipe.radius_mm;
         for (const PlannedPoint& p : plan.knots) {
             // The chuck angle brings the cut point to the top of the pipe ...
             const Vec3 onPipe = robot.baseFromWork(p.chuck_rad) * p.cut.p_work;
@@ -58,7 +59,8 @@ TEST(Planner, CutPointMovesAtTheCuttingSpeedOnThePipe) {
         if (a.t_s < job.cut.ramp_s || b.t_s > plan.cut_time_s - job.cut.ramp_s) continue;
         // Chord on the pipe surface over one knot step, against speed x time.
         const double chord = (b.cut.p_main - a.cut.p_main).norm();
-        EXPECT_NEAR(chord / plan.knot_dt_s, job.cut.speed_mm_s, 1e-3 * job.cut.speed_mm_s) << "knot " << k;
+        EXPECT_NEAR(chord / plan.knot_dt_s, job.cut.speed_mm_s, 1e-3 * job.cut.speed_mm_s)
+            << "knot " << k;
         ++cruising;
     }
     EXPECT_GT(cruising, 100);
@@ -90,9 +92,11 @@ TEST(Planner, UnreachablePathNamesThePointAndTheReason) {
     const CutPlan plan = planCut(job);
     ASSERT_FALSE(plan.reachable);
     ASSERT_GE(plan.first_bad, 0);
-    EXPECT_NE(plan.problem.find("point " + std::to_string(plan.first_bad)), std::string::npos) << plan.problem;
+    EXPECT_NE(plan.problem.find("point " + std::to_string(plan.first_bad)), std::string::npos)
+        << plan.problem;
     EXPECT_NE(plan.problem.find("phi = "), std::string::npos);
-    EXPECT_TRUE(plan.problem.find("joint") != std::string::npos || plan.problem.find("torch") != std::string::npos)
+    EXPECT_TRUE(plan.problem.find("joint") != std::string::npos ||
+                plan.problem.find("torch") != std::string::npos)
         << plan.problem;
 
     Job far = defaultJob();

@@ -20,7 +20,8 @@ TrackingReport run(CutMethod m) {
 
 double maxJoint(const TrackingReport& r, int from = 0) {
     double m = 0;
-    for (int i = from; i < kAxisCount; ++i) m = std::max(m, r.joints[static_cast<size_t>(i)].max_abs_deg);
+    for (int i = from; i < kAxisCount; ++i)
+        m = std::max(m, r.joints[static_cast<size_t>(i)].max_abs_deg);
     return m;
 }
 
@@ -59,7 +60,8 @@ TEST(Simulation, RotatingPipeTracksBetterThanStaticPipe) {
     // And it holds the torch where the process wants it: no tilt into the joint-1 plane.
     EXPECT_LT(rot.max_direction_deviation_deg, 1e-6);
     EXPECT_GT(stat.max_direction_deviation_deg, 1.0);
-    // Seed: with the static pipe the chuck does not move; with the rotating pipe joint 1 stays still.
+    // Seed: with the static pipe the chuck does not move; with the rotating pipe joint 1 stays
+    // still.
     EXPECT_EQ(stat.joints[0].max_abs_deg, 0);
     EXPECT_LT(rot.joints[1].max_abs_deg, 1e-9);
 }
@@ -72,7 +74,8 @@ TEST(Simulation, ReportJsonHasTheDocumentedKeys) {
         EXPECT_TRUE(j.find("rms_error_deg")->isNumber());
     }
     const json::Value* cart = v.find("cartesian")->find("max_abs_error_mm");
-    for (const char* axis : {"x", "y", "z"}) EXPECT_TRUE(cart->find(axis)->isNumber());
+    for (const char* axis : {"x", "y", "z"})
+        EXPECT_TRUE(cart->find(axis)->isNumber());
     EXPECT_EQ(v.find("method")->asString(), "rotating_pipe");
     EXPECT_TRUE(v.find("reachable")->asBool());
 }

@@ -13,13 +13,15 @@ TEST(Spline, IsC2AtEveryKnotAndInterpolates) {
     std::vector<JointVector> knots(60);
     JointVector acc = JointVector::Zero();
     for (auto& k : knots) {
-        for (int i = 0; i < kAxisCount; ++i) acc[i] += n(rng);
+        for (int i = 0; i < kAxisCount; ++i)
+            acc[i] += n(rng);
         k = acc;
     }
     const double dt = 0.05;
     const JointSpline s(knots, dt);
     for (size_t i = 0; i < knots.size(); ++i) {
-        EXPECT_LE((s.evaluate(dt * static_cast<double>(i)).q - knots[i]).cwiseAbs().maxCoeff(), 1e-9);
+        EXPECT_LE((s.evaluate(dt * static_cast<double>(i)).q - knots[i]).cwiseAbs().maxCoeff(),
+                  1e-9);
     }
     for (size_t i = 1; i + 1 < knots.size(); ++i) {
         const JointSample left = s.evaluateSegment(i - 1, dt);
@@ -35,7 +37,8 @@ TEST(Spline, IsC2AtEveryKnotAndInterpolates) {
 
 TEST(Spline, DerivativesAreConsistentWithinASegment) {
     std::vector<JointVector> knots;
-    for (int i = 0; i < 10; ++i) knots.push_back(JointVector::Constant(std::sin(0.7 * i)));
+    for (int i = 0; i < 10; ++i)
+        knots.push_back(JointVector::Constant(std::sin(0.7 * i)));
     const JointSpline s(knots, 0.1);
     const double h = 1e-6;
     for (double t = 0.013; t < 0.85; t += 0.077) {
@@ -46,7 +49,8 @@ TEST(Spline, DerivativesAreConsistentWithinASegment) {
 }
 
 TEST(Spline, ClampsOutsideItsDuration) {
-    std::vector<JointVector> knots{JointVector::Zero(), JointVector::Ones(), JointVector::Constant(3)};
+    std::vector<JointVector> knots{JointVector::Zero(), JointVector::Ones(),
+                                   JointVector::Constant(3)};
     const JointSpline s(knots, 1.0);
     EXPECT_EQ(s.evaluate(-1).q, knots.front());
     EXPECT_EQ(s.evaluate(5).q, knots.back());
