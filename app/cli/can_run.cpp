@@ -276,16 +276,8 @@ int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
     if (o.realtime) doc.asObject().back().second.set("sync_jitter_us_p99", r.sync_jitter_us_p99);
     const std::string text = json::write(doc);
     const std::string reportFile = option(args, "--report");
-    if (reportFile.empty()) {
-        std::fputs(text.c_str(), stdout);
-        return kOk;
-    }
-    try {
-        writeFileAtomically(reportFile, text);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "cutcell-cli simulate: %s\n", e.what());
-        return kFailure;
-    }
+    if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
+        return rc;
     std::printf("%s method over CANopen (%s, period %.1f ms): report written to %s\n",
                 r.report.method.c_str(), o.realtime ? "real time" : "lock-step", T * 1e3,
                 reportFile.c_str());

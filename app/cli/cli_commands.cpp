@@ -41,11 +41,8 @@ std::vector<std::string> positionals(const Args& args,
     return out;
 }
 
-namespace {
-
-// Loads the job named by the first positional argument; prints the reason and sets *code on
-// failure.
-bool loadJob(const Args& args, const std::vector<std::string>& valueOptions, Job& job, int* code) {
+bool loadJobArg(const Args& args, const std::vector<std::string>& valueOptions, Job& job,
+                int* code) {
     const auto pos = positionals(args, valueOptions);
     if (pos.empty()) {
         std::fprintf(stderr, "cutcell-cli: missing JOB file argument\n");
@@ -62,6 +59,22 @@ bool loadJob(const Args& args, const std::vector<std::string>& valueOptions, Job
     }
 }
 
+int emitReport(const std::string& reportFile, const std::string& text, const char* command) {
+    if (reportFile.empty()) {
+        std::fputs(text.c_str(), stdout);
+        return kOk;
+    }
+    try {
+        writeFileAtomically(reportFile, text);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "cutcell-cli %s: %s\n", command, e.what());
+        return kFailure;
+    }
+    return kOk;
+}
+
+namespace {
+
 void printUnreachable(const CutPlan& plan) {
     std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method),
                  plan.problem.c_str());
@@ -72,7 +85,7 @@ void printUnreachable(const CutPlan& plan) {
 int runValidate(const Args& args) {
     Job job;
     int code = kOk;
-    if (!loadJob(args, {}, job, &code)) return code;
+    if (!loadJobArg(args, {}, job, &code)) return code;
     if (job.machine == "profile_cutter_2axis") return runProfileValidate(job);
     const CutPlan plan = planCut(job);
     std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n",
@@ -90,7 +103,7 @@ int runValidate(const Args& args) {
 int runPlan(const Args& args) {
     Job job;
     int code = kOk;
-    if (!loadJob(args, {"--out"}, job, &code)) return code;
+    if (!loadJobArg(args, {"--out"}, job, &code)) return code;
     const std::string out = option(args, "--out");
     if (out.empty()) {
         std::fprintf(stderr, "cutcell-cli plan: --out DIR is required\n");
@@ -123,7 +136,7 @@ int runSimulate(const Args& args) {
     const std::vector<std::string> valueOptions{"--report",     "--method",        "--devices",
                                                 "--can-plugin", "--can-interface", "--period-ms",
                                                 "--clock"};
-    if (!loadJob(args, valueOptions, job, &code)) return code;
+    if (!loadJobArg(args, valueOptions, job, &code)) return code;
     if (job.machine != "pipe_robot_6axis") {
         std::fprintf(stderr,
                      "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
@@ -164,16 +177,8 @@ int runSimulate(const Args& args) {
     const TrackingReport report = simulateCut(job, plan);
     const std::string text = json::write(reportToJson(report));
     const std::string reportFile = option(args, "--report");
-    if (reportFile.empty()) {
-        std::fputs(text.c_str(), stdout);
-        return kOk;
-    }
-    try {
-        writeFileAtomically(reportFile, text);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "cutcell-cli simulate: %s\n", e.what());
-        return kFailure;
-    }
+    if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
+        return rc;
     std::printf("%s method, %.1f s simulated at %.4f s: report written to %s\n",
                 report.method.c_str(), report.simulated_s, job.sim.period_s, reportFile.c_str());
     std::printf("%-16s %14s %14s\n", "axis", "max |e| (deg)", "rms (deg)");

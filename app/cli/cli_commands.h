@@ -35,5 +35,12 @@ bool flag(const Args& args, const std::string& name);
 // Positional arguments (not options or their values).
 std::vector<std::string> positionals(const Args& args,
                                      const std::vector<std::string>& valueOptions);
+// Loads the job named by the first positional argument; on failure prints the reason and sets
+// *code (kUsage: no argument, kInvalidJob: a bad job file, kFailure: it cannot be read).
+bool loadJobArg(const Args& args, const std::vector<std::string>& valueOptions, Job& job,
+                int* code);
+// Prints a JSON report on stdout when reportFile is empty, else writes it atomically there.
+// Returns kOk, or kFailure with the reason on stderr ("cutcell-cli <command>: ...").
+int emitReport(const std::string& reportFile, const std::string& text, const char* command);
 
 } // namespace cutcell::cli

@@ -17,24 +17,6 @@ namespace {
 
 constexpr const char* kProfileMachine = "profile_cutter_2axis";
 
-bool loadJobArg(const Args& args, const std::vector<std::string>& valueOptions, Job& job,
-                int* code) {
-    const auto pos = positionals(args, valueOptions);
-    if (pos.empty()) {
-        std::fprintf(stderr, "cutcell-cli: missing JOB file argument\n");
-        *code = kUsage;
-        return false;
-    }
-    try {
-        job = loadJobFile(pos.front());
-        return true;
-    } catch (const JobError& e) {
-        std::fprintf(stderr, "invalid job: %s\n", e.what());
-        *code = std::filesystem::exists(pos.front()) ? kInvalidJob : kFailure;
-        return false;
-    }
-}
-
 void write(const std::string& path, const std::string& text, const char* what) {
     writeFileAtomically(path, text);
     std::printf("wrote %s (%s, %zu bytes)\n", path.c_str(), what, text.size());

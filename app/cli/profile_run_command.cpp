@@ -104,16 +104,8 @@ int runProfileRun(const Job& job, const std::string& jobText, const Args& args) 
                                                         rig.x().rateLimitedCycles())}});
     const std::string out = json::write(doc);
     const std::string reportFile = option(args, "--report");
-    if (reportFile.empty()) {
-        std::fputs(out.c_str(), stdout);
-        return kOk;
-    }
-    try {
-        writeFileAtomically(reportFile, out);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "cutcell-cli run: %s\n", e.what());
-        return kFailure;
-    }
+    if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
+        return rc;
     return kOk;
 }
 

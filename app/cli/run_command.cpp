@@ -169,16 +169,8 @@ int runRun(const Args& args) {
                  static_cast<unsigned long long>(cs.telemetry_dropped));
     const std::string out = json::write(reportToJson(report));
     const std::string reportFile = option(args, "--report");
-    if (reportFile.empty()) {
-        std::fputs(out.c_str(), stdout);
-        return kOk;
-    }
-    try {
-        writeFileAtomically(reportFile, out);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "cutcell-cli run: %s\n", e.what());
-        return kFailure;
-    }
+    if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
+        return rc;
     return kOk;
 }
 
