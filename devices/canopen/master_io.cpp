@@ -284,6 +284,9 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.heartbeat_ns.store(now, std::memory_order_release);
         s.nmt.store(static_cast<std::uint8_t>(nmt), std::memory_order_release);
         if (nmt == NmtState::BootUp) {
+            // A node that (re)booted has no power stage state yet: forget the statusword it sent
+            // before (e.g. Operation Enabled before a bus loss) until its first new TPDO.
+            s.statusword.store(0, std::memory_order_release);
             if (r.phase == StartupPhase::WaitBoot) {
                 r.phase = StartupPhase::Sdo;
                 r.ops.clear();
