@@ -5,8 +5,7 @@
 
 namespace cutcell {
 
-namespace {
-IntersectionSpec specFor(const Job& job) {
+IntersectionSpec intersectionSpecFor(const Job& job) {
     IntersectionSpec s;
     s.main_radius_mm = job.main_pipe.radius_mm;
     // The hole must pass the branch's bore; the branch end lies on its outer surface.
@@ -18,7 +17,6 @@ IntersectionSpec specFor(const Job& job) {
     s.side = +1;
     return s;
 }
-} // namespace
 
 double startPhi(const Job& job) {
     if (!job.cut.start_phi_auto) return deg2rad(job.cut.start_phi_deg);
@@ -69,7 +67,7 @@ double ArcLengthTable::phiAt(double s) const {
 }
 
 CutGeometry::CutGeometry(const Job& job)
-    : curve_(specFor(job)), table_(curve_, startPhi(job)), target_(job.cut.target),
+    : curve_(intersectionSpecFor(job)), table_(curve_, startPhi(job)), target_(job.cut.target),
       workRadius_(job.cut.target == CutTarget::Main ? job.main_pipe.radius_mm
                                                     : job.branch_pipe.radius_mm),
       bevelDeg_(job.cut.bevel_deg), phi0_(startPhi(job)) {

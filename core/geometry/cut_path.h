@@ -41,6 +41,10 @@ class ArcLengthTable {
     double length_ = 0;
 };
 
+// The surfaces that meet at the cut: the main pipe's outer surface and the branch's outer
+// surface (branch end) or bore (hole in the main pipe).
+IntersectionSpec intersectionSpecFor(const Job& job);
+
 // The curve parameter at which the cut starts (see CutSpec::start_phi_deg).
 double startPhi(const Job& job);
 

@@ -1,22 +1,14 @@
 #include "core/machines/profile_cutter.h"
 
+#include "core/geometry/cut_path.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace cutcell {
 
-IntersectionSpec profileIntersectionSpec(const Job& job) {
-    IntersectionSpec s;
-    s.main_radius_mm = job.main_pipe.radius_mm;
-    s.branch_radius_mm = job.cut.target == CutTarget::Main
-                             ? job.branch_pipe.radius_mm - job.branch_pipe.wall_mm
-                             : job.branch_pipe.radius_mm;
-    s.angle_deg = job.angle_deg;
-    s.eccentricity_mm = job.eccentricity_mm;
-    s.side = +1;
-    return s;
-}
+IntersectionSpec profileIntersectionSpec(const Job& job) { return intersectionSpecFor(job); }
 
 std::vector<JointPipe> jointPipes(const Job& job) {
     std::vector<JointPipe> out;
