@@ -29,7 +29,6 @@ const QColor kTraceColours[TrackingPlotsWidget::kMaxAxes] = {
     QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(127, 127, 127)};
 const QColor kCartColours[kCartTraces] = {QColor(220, 50, 47), QColor(40, 160, 60),
                                           QColor(38, 110, 210)};
-const char* const kCartNames[kCartTraces] = {"x", "y", "z"};
 
 QString defaultAxisName(int i) {
     return i == 0 ? QStringLiteral("A0 chuck") : QStringLiteral("J%1").arg(i);
@@ -55,11 +54,17 @@ void softReplot(QCustomPlot* p) {
 
 struct TrackingPlotsWidget::Impl {
     TrackingPlotsWidget* self;
+    QVBoxLayout* layout = nullptr;
     int axes = 6;
-    QStringList names;
+    QStringList names; // kMaxAxes axis names
+    QStringList units; // kMaxAxes axis units
+    QStringList tipNames{"x", "y", "z"};
+    QString tipTitle; // set in the constructor (translated)
     BoundedSeries ring{6 + kCartTraces, kDefaultCapacity};
-    QCustomPlot* jointPlot = nullptr;
-    QCustomPlot* cartPlot = nullptr;
+    std::vector<QCustomPlot*> plots; // pool; plots[0..shown) are in use, the rest hidden
+    int shown = 0;
+    std::vector<QCPGraph*> graphs; // one per trace: axes, then tip traces
+    std::vector<int> plotOf;       // the plot index of each trace
     QAction* pauseAction = nullptr;
     QLabel* status = nullptr;
     QTimer tick;
@@ -67,36 +72,36 @@ struct TrackingPlotsWidget::Impl {
     bool paused = false;
     bool autoscale = true;
     bool fullResync = true;
-    bool viewChanged = false;
-    bool hostDriven = false;  // new data is drawn by redrawPending() only // one plot's time range
-                              // moved: redraw both at the next tick
+    bool viewChanged = false; // one plot's time range moved: redraw all at the next tick
+    bool hostDriven = false;  // new data is drawn by redrawPending() only
     std::uint64_t synced = 0; // ring.appended() at the last sync
 
     explicit Impl(TrackingPlotsWidget* s) : self(s) {
-        for (int i = 0; i < kMaxAxes; ++i)
+        for (int i = 0; i < kMaxAxes; ++i) {
             names << defaultAxisName(i);
+            units << QStringLiteral("deg");
+        }
     }
 
+    int tipCount() const { return static_cast<int>(tipNames.size()); }
+    int traceCount() const { return axes + tipCount(); }
     QCPGraph* graphFor(int trace) const {
-        if (trace < axes)
-            return trace < jointPlot->graphCount() ? jointPlot->graph(trace) : nullptr;
-        const int k = trace - axes;
-        return k < cartPlot->graphCount() ? cartPlot->graph(k) : nullptr;
+        return trace >= 0 && trace < static_cast<int>(graphs.size()) ? graphs[size_t(trace)]
+                                                                     : nullptr;
     }
-    int traceCount() const { return axes + kCartTraces; }
+    QCustomPlot* plotFor(int trace) const { return plots[size_t(plotOf[size_t(trace)])]; }
 
-    QCustomPlot* makePlot(const QString& yLabel) {
+    QCustomPlot* makePlot() {
         auto* p = new QCustomPlot(self);
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->setNoAntialiasingOnDrag(true);
         p->xAxis->setLabel(QStringLiteral("t (s)"));
-        p->yAxis->setLabel(yLabel);
         p->legend->setVisible(true);
         p->legend->setBrush(QColor(255, 255, 255, 210));
         p->legend->setFont(QFont(self->font().family(), 8));
         p->legend->setSelectableParts(QCPLegend::spNone);
         p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-        p->setMinimumHeight(140);
+        p->setMinimumHeight(110);
         QObject::connect(p, &QCustomPlot::legendClick, self,
                          [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
                              auto* pli = qobject_cast<QCPPlottableLegendItem*>(item);
@@ -114,34 +119,81 @@ struct TrackingPlotsWidget::Impl {
         QObject::connect(p, &QCustomPlot::mousePress, self, manual);
         QObject::connect(p, &QCustomPlot::mouseWheel, self,
                          [this](QWheelEvent*) { autoscale = false; });
+        // One time axis for every plot; the others follow at the next tick (a queued replot
+        // would repaint on its own).
+        for (QCustomPlot* other : plots) {
+            QObject::connect(p->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
+                             other->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
+            QObject::connect(other->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
+                             p->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
+        }
+        QObject::connect(p->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), self,
+                         [this] { viewChanged = true; });
+        layout->addWidget(p, 1);
+        plots.push_back(p);
         return p;
     }
 
+    QCustomPlot* usePlot(const QString& yLabel) {
+        if (shown == static_cast<int>(plots.size())) makePlot();
+        QCustomPlot* p = plots[size_t(shown++)];
+        p->yAxis->setLabel(yLabel);
+        p->setVisible(true);
+        return p;
+    }
+
+    // One plot per axis unit (in order of first appearance), then the tip plot.
     void rebuildGraphs() {
-        jointPlot->clearGraphs();
-        cartPlot->clearGraphs();
-        for (int i = 0; i < axes; ++i) {
-            QCPGraph* g = jointPlot->addGraph();
-            g->setPen(QPen(kTraceColours[i])); // width 0/1 cosmetic: thick pens are ~50x slower
-            g->setName(names.value(i, defaultAxisName(i)));
-            g->setAdaptiveSampling(true);
+        for (QCustomPlot* p : plots)
+            p->clearGraphs();
+        shown = 0;
+        graphs.assign(size_t(traceCount()), nullptr);
+        plotOf.assign(size_t(traceCount()), 0);
+        QStringList unitOrder;
+        for (int i = 0; i < axes; ++i)
+            if (!unitOrder.contains(units[i])) unitOrder << units[i];
+        for (const QString& unit : unitOrder) {
+            const int plot = shown;
+            QCustomPlot* p = usePlot(TrackingPlotsWidget::tr("axis error (%1)").arg(unit));
+            for (int i = 0; i < axes; ++i) {
+                if (units[i] != unit) continue;
+                QCPGraph* g = p->addGraph();
+                g->setPen(QPen(kTraceColours[i])); // width 0/1 cosmetic: thick pens are ~50x slower
+                g->setName(names[i]);
+                g->setAdaptiveSampling(true);
+                graphs[size_t(i)] = g;
+                plotOf[size_t(i)] = plot;
+            }
         }
-        for (int k = 0; k < kCartTraces; ++k) {
-            QCPGraph* g = cartPlot->addGraph();
-            g->setPen(QPen(kCartColours[k]));
-            g->setName(QString::fromLatin1(kCartNames[k]));
-            g->setAdaptiveSampling(true);
+        if (tipCount() > 0) {
+            const int plot = shown;
+            QCustomPlot* p = usePlot(tipTitle);
+            for (int k = 0; k < tipCount(); ++k) {
+                QCPGraph* g = p->addGraph();
+                g->setPen(QPen(kCartColours[k % kCartTraces]));
+                g->setName(tipNames[k]);
+                g->setAdaptiveSampling(true);
+                graphs[size_t(axes + k)] = g;
+                plotOf[size_t(axes + k)] = plot;
+            }
         }
+        for (size_t i = size_t(shown); i < plots.size(); ++i)
+            plots[i]->setVisible(false);
         fullResync = true;
         dirty = true;
+    }
+
+    void resetChannels() {
+        ring.setChannels(traceCount());
+        synced = 0;
+        rebuildGraphs();
     }
 
     void setVisible(int trace, bool visible) {
         QCPGraph* g = graphFor(trace);
         if (!g) return;
         g->setVisible(visible);
-        QCustomPlot* p = trace < axes ? jointPlot : cartPlot;
-        if (auto* item = p->legend->itemWithPlottable(g))
+        if (auto* item = plotFor(trace)->legend->itemWithPlottable(g))
             item->setTextColor(visible ? Qt::black : QColor(170, 170, 170));
         dirty = true;
     }
@@ -173,13 +225,14 @@ struct TrackingPlotsWidget::Impl {
         const double pad = std::max(1e-6, y.size() * 0.06);
         p->yAxis->setRange(y.lower - pad, y.upper + pad);
     }
+    void rescaleAll() {
+        for (int i = 0; i < shown; ++i)
+            rescale(plots[size_t(i)]);
+    }
 
     void refresh() {
         sync();
-        if (autoscale) {
-            rescale(jointPlot);
-            rescale(cartPlot);
-        }
+        if (autoscale) rescaleAll();
         status->setText(
             QStringLiteral("%1 samples, %2 dropped").arg(ring.size()).arg(ring.dropped()));
         dirty = false;
@@ -192,20 +245,27 @@ struct TrackingPlotsWidget::Impl {
             refresh();
         else if (!viewChanged)
             return;
-        softReplot(jointPlot);
-        softReplot(cartPlot);
+        for (int i = 0; i < shown; ++i)
+            softReplot(plots[size_t(i)]);
         viewChanged = false;
     }
 
     QImage render() {
-        const int w = std::max(jointPlot->width(), 800);
-        const int hj = std::max(jointPlot->height(), 300);
-        const int hc = std::max(cartPlot->height(), 300);
-        QImage img(w, hj + hc, QImage::Format_ARGB32);
+        const int w = std::max(plots[0]->width(), 800);
+        std::vector<int> heights;
+        int total = 0;
+        for (int i = 0; i < shown; ++i) {
+            heights.push_back(std::max(plots[size_t(i)]->height(), 300));
+            total += heights.back();
+        }
+        QImage img(w, std::max(total, 1), QImage::Format_ARGB32);
         img.fill(Qt::white);
         QPainter painter(&img);
-        painter.drawPixmap(0, 0, jointPlot->toPixmap(w, hj));
-        painter.drawPixmap(0, hj, cartPlot->toPixmap(w, hc));
+        int y = 0;
+        for (int i = 0; i < shown; ++i) {
+            painter.drawPixmap(0, y, plots[size_t(i)]->toPixmap(w, heights[size_t(i)]));
+            y += heights[size_t(i)];
+        }
         return img;
     }
 };
@@ -246,20 +306,8 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     bar->addWidget(d->status);
     layout->addWidget(bar);
 
-    d->jointPlot = d->makePlot(tr("joint error (deg)"));
-    d->cartPlot = d->makePlot(tr("Cartesian error (mm)"));
-    // One time axis for both plots.
-    connect(d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
-            d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
-    connect(d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
-            d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::setRange));
-    // The partner plot follows at the next tick (a queued replot would repaint on its own).
-    connect(d->jointPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
-            [this] { d->viewChanged = true; });
-    connect(d->cartPlot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
-            [this] { d->viewChanged = true; });
-    layout->addWidget(d->jointPlot, 1);
-    layout->addWidget(d->cartPlot, 1);
+    d->layout = layout;
+    d->tipTitle = tr("Cartesian error (mm)");
     d->rebuildGraphs();
     d->refresh();
 
@@ -274,8 +322,47 @@ void TrackingPlotsWidget::setAxisNames(const QStringList& names) {
     for (int i = 0; i < std::min<int>(static_cast<int>(names.size()), kMaxAxes); ++i)
         d->names[i] = names[i];
     for (int i = 0; i < d->axes; ++i)
-        d->jointPlot->graph(i)->setName(d->names[i]);
+        d->graphs[size_t(i)]->setName(d->names[i]);
     d->dirty = true;
+}
+
+void TrackingPlotsWidget::setAxes(const QStringList& names, const QStringList& units) {
+    d->axes = std::clamp(static_cast<int>(names.size()), 1, kMaxAxes);
+    for (int i = 0; i < d->axes; ++i) {
+        d->names[i] = names.value(i, defaultAxisName(i));
+        d->units[i] = units.value(i, QStringLiteral("deg"));
+    }
+    d->resetChannels();
+}
+
+QStringList TrackingPlotsWidget::axisUnits() const {
+    return d->units.mid(0, d->axes);
+}
+
+void TrackingPlotsWidget::setTipTraces(const QStringList& names, const QString& title) {
+    d->tipNames = names.mid(0, kCartTraces);
+    d->tipTitle = title;
+    d->resetChannels();
+}
+
+QStringList TrackingPlotsWidget::tipTraceNames() const {
+    return d->tipNames;
+}
+
+QStringList TrackingPlotsWidget::plotTitles() const {
+    QStringList titles;
+    for (int i = 0; i < d->shown; ++i)
+        titles << d->plots[size_t(i)]->yAxis->label();
+    return titles;
+}
+
+QStringList TrackingPlotsWidget::plotTraceNames(int plot) const {
+    QStringList traces;
+    if (plot < 0 || plot >= d->shown) return traces;
+    const QCustomPlot* p = d->plots[size_t(plot)];
+    for (int g = 0; g < p->graphCount(); ++g)
+        traces << p->graph(g)->name();
+    return traces;
 }
 
 QStringList TrackingPlotsWidget::axisNames() const {
@@ -284,9 +371,7 @@ QStringList TrackingPlotsWidget::axisNames() const {
 
 void TrackingPlotsWidget::setAxisCount(int n) {
     d->axes = std::clamp(n, 1, kMaxAxes);
-    d->ring.setChannels(d->axes + kCartTraces);
-    d->synced = 0;
-    d->rebuildGraphs();
+    d->resetChannels();
 }
 
 int TrackingPlotsWidget::axisCount() const {
@@ -304,16 +389,16 @@ int TrackingPlotsWidget::capacity() const {
     return d->ring.capacity();
 }
 
-void TrackingPlotsWidget::append(double t_s, const double* jointErrorsDeg, int n,
-                                 const double cartErrMm[3]) {
+void TrackingPlotsWidget::append(double t_s, const double* axisErrors, int n,
+                                 const double* tipErrMm) {
     double row[kMaxAxes + kCartTraces];
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < d->axes; ++i)
-        row[i] = (jointErrorsDeg && i < n) ? jointErrorsDeg[i] : nan;
-    for (int k = 0; k < kCartTraces; ++k)
-        row[d->axes + k] = cartErrMm ? cartErrMm[k] : nan;
+        row[i] = (axisErrors && i < n) ? axisErrors[i] : nan;
+    for (int k = 0; k < d->tipCount(); ++k)
+        row[d->axes + k] = tipErrMm ? tipErrMm[k] : nan;
     if (!d->ring.empty() && t_s < d->ring.lastTime()) d->fullResync = true;
-    d->ring.append(t_s, row, d->axes + kCartTraces);
+    d->ring.append(t_s, row, d->traceCount());
     d->dirty = true;
 }
 
@@ -347,10 +432,9 @@ void TrackingPlotsWidget::fit() {
     d->autoscale = true;
     d->dirty = true;
     if (d->paused) { // a paused view still fits what it shows
-        d->rescale(d->jointPlot);
-        d->rescale(d->cartPlot);
-        d->jointPlot->replot(QCustomPlot::rpQueuedReplot);
-        d->cartPlot->replot(QCustomPlot::rpQueuedReplot);
+        d->rescaleAll();
+        for (int i = 0; i < d->shown; ++i)
+            d->plots[size_t(i)]->replot(QCustomPlot::rpQueuedReplot);
     } else {
         d->onTick();
     }
@@ -386,12 +470,13 @@ bool TrackingPlotsWidget::exportCsv(const QString& path, QString* error) {
         return false;
     }
     QByteArray out = "t_s";
+    // Each column names its unit: an axis's own (deg or mm), the tip's mm.
     for (int i = 0; i < d->axes; ++i)
-        out += ',' + csvName(d->names[i]).toUtf8() + "_err_deg";
-    for (const char* c : kCartNames)
-        out += QByteArray(",") + c + "_err_mm";
+        out += ',' + csvName(d->names[i]).toUtf8() + "_err_" + csvName(d->units[i]).toUtf8();
+    for (const QString& c : d->tipNames)
+        out += ',' + csvName(c).toUtf8() + "_err_mm";
     out += '\n';
-    const int channels = d->axes + kCartTraces;
+    const int channels = d->traceCount();
     for (int i = 0; i < d->ring.size(); ++i) {
         out += QByteArray::number(d->ring.time(i), 'g', 10);
         for (int c = 0; c < channels; ++c) {
@@ -422,7 +507,7 @@ std::uint64_t TrackingPlotsWidget::droppedCount() const {
 }
 
 int TrackingPlotsWidget::plottedPointCount() const {
-    return d->jointPlot->graphCount() ? d->jointPlot->graph(0)->dataCount() : 0;
+    return d->graphs.empty() ? 0 : d->graphs[0]->dataCount();
 }
 
 void TrackingPlotsWidget::redrawPending() {
@@ -437,8 +522,8 @@ double TrackingPlotsWidget::replotNow() {
     d->refresh();
     QElapsedTimer timer;
     timer.start();
-    d->jointPlot->replot(QCustomPlot::rpImmediateRefresh);
-    d->cartPlot->replot(QCustomPlot::rpImmediateRefresh);
+    for (int i = 0; i < d->shown; ++i)
+        d->plots[size_t(i)]->replot(QCustomPlot::rpImmediateRefresh);
     return static_cast<double>(timer.nsecsElapsed()) / 1e6;
 }
 

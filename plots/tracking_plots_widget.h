@@ -1,6 +1,8 @@
 #pragma once
-// Live tracking-error plots: joint errors (deg, one trace per axis) above Cartesian errors
-// (mm, x/y/z), with a small toolbar (Pause, Fit, Export PNG..., Export CSV...).
+// Live tracking-error plots: the axis errors, one plot per unit (e.g. rotary axes in deg, linear
+// axes in mm: never millimetres on a degree scale), above the tool tip's error (mm; by default
+// Cartesian x/y/z, or the machine's own traces, or none), with a small toolbar (Pause, Fit,
+// Export PNG..., Export CSV...). The machine's axis names and units come from its MachineUi.
 //
 // Data path: append() only stores into a bounded ring (no replot, no allocation); one 30 Hz
 // QTimer moves what is new into the plots and asks for a queued replot, and only when
@@ -28,19 +30,31 @@ class TrackingPlotsWidget : public QWidget {
     explicit TrackingPlotsWidget(QWidget* parent = nullptr);
     ~TrackingPlotsWidget() override;
 
-    // Names of the joint traces, e.g. {"A0 chuck", "J1", ...}; shorter lists keep defaults.
+    // The axis traces with their units ("deg", "mm", ...): one plot per unit, in order of first
+    // appearance. Clears the data.
+    void setAxes(const QStringList& names, const QStringList& units);
+    QStringList axisUnits() const;
+    // The tip error traces (unit mm) and their plot's title; no names: no tip plot. Default
+    // {"x", "y", "z"}, "Cartesian error (mm)". Clears the data.
+    void setTipTraces(const QStringList& names, const QString& title);
+    QStringList tipTraceNames() const;
+    // The y-axis titles of the plots shown, top to bottom, and the trace names of each.
+    QStringList plotTitles() const;
+    QStringList plotTraceNames(int plot) const;
+
+    // Names of the axis traces, e.g. {"A0 chuck", "J1", ...}; shorter lists keep defaults.
     void setAxisNames(const QStringList& names);
     QStringList axisNames() const;
-    // Number of joint traces (1..kMaxAxes); clears the data.
+    // Number of axis traces (1..kMaxAxes), new ones in deg; clears the data.
     void setAxisCount(int n);
     int axisCount() const;
     // Ring capacity in samples; clears the data.
     void setCapacity(int samples);
     int capacity() const;
 
-    // Cheap: copies into the ring. jointErrorsDeg has n values (extra ones are ignored,
-    // missing ones are NaN); cartErrMm may be null (NaN).
-    void append(double t_s, const double* jointErrorsDeg, int n, const double cartErrMm[3]);
+    // Cheap: copies into the ring. axisErrors has n values, each in its axis's unit (extra ones
+    // are ignored, missing ones are NaN); tipErrMm has one value per tip trace or is null (NaN).
+    void append(double t_s, const double* axisErrors, int n, const double* tipErrMm);
     void clear();
 
     void setPaused(bool paused);
@@ -48,7 +62,7 @@ class TrackingPlotsWidget : public QWidget {
     // Autoscale both plots and follow the data again.
     void fit();
     bool autoscale() const;
-    void setTraceVisible(int trace, bool visible); // traces: joints 0..n-1, then x, y, z
+    void setTraceVisible(int trace, bool visible); // traces: axes 0..n-1, then the tip's
     bool traceVisible(int trace) const;
 
     // Both plots stacked into one PNG / all kept samples as CSV; written atomically.

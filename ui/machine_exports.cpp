@@ -1,17 +1,17 @@
 #include "ui/machine_exports.h"
 
-#include "core/io/gcode_export.h"
 #include "core/io/template_layout.h"
 #include "core/io/template_pdf.h"
 #include "core/io/template_svg.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
 #include "ui/forms/job_editor.h"
-#include "ui/machine_plan.h"
+#include "ui/machine/machine_ui_registry.h"
 #include "ui/panels/event_log_panel.h"
 
 #include <QFileDialog>
 #include <QMenu>
+
+#include <algorithm>
 
 namespace CutCell::ui {
 
@@ -21,23 +21,18 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
         if (error) *error = QObject::tr("Export to %1 failed: %2").arg(path, why);
         return false;
     };
+    const MachineUi* machine = machineUiFor(job);
+    if (!machine)
+        return fail(QObject::tr("no machine module for machine = \"%1\"")
+                        .arg(QString::fromStdString(job.machine)));
+    const auto offered = machine->exports();
+    if (std::find(offered.begin(), offered.end(), kind) == offered.end())
+        return fail(QObject::tr("the %1 offers no \"%2\" export")
+                        .arg(machine->title(), exportLabel(kind).remove('&').remove("...")));
     try {
         std::string text;
         QString what;
-        if (kind == ExportKind::Gcode) {
-            if (!isProfileCutterJob(job))
-                return fail(QObject::tr("G-code needs machine = \"%1\"; this job has \"%2\"")
-                                .arg(kProfileCutterMachine, QString::fromStdString(job.machine)));
-            const cutcell::ProfileCut cut = cutcell::computeProfileCut(job);
-            if (const std::string travel = cutcell::travelProblem(job, cut); !travel.empty())
-                return fail(QString::fromStdString(travel));
-            cutcell::GcodeStats st;
-            text = cutcell::profileGcode(job, cut, &st);
-            what = QObject::tr("G-code (X/A): %1 moves, %2 mm developed, %3 s")
-                       .arg(st.moves)
-                       .arg(st.length_mm, 0, 'f', 1)
-                       .arg(st.time_s, 0, 'f', 1);
-        } else {
+        if (kind == ExportKind::TemplateSvg || kind == ExportKind::TemplatePdf) {
             const cutcell::TemplateDrawing drawing = cutcell::buildTemplate(job);
             const bool svg = kind == ExportKind::TemplateSvg;
             text = svg ? cutcell::templateSvg(drawing) : cutcell::templatePdf(drawing);
@@ -45,6 +40,8 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
                        .arg(svg ? "SVG" : "PDF")
                        .arg(drawing.width_mm, 0, 'f', 1)
                        .arg(drawing.height_mm, 0, 'f', 1);
+        } else {
+            text = machine->exportText(kind, job, &what);
         }
         cutcell::writeFileAtomically(path.toStdString(), text);
         if (summary) *summary = QObject::tr("Exported %1 to %2").arg(what, path);
@@ -54,32 +51,48 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
     }
 }
 
-void addCutExportActions(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log) {
-    struct Item {
-        ExportKind kind;
-        QString label, filter;
-    };
-    const Item items[] = {
-        {ExportKind::Gcode, QObject::tr("Export &G-code..."),
-         QObject::tr("G-code (*.ngc *.nc *.gcode)")},
-        {ExportKind::TemplateSvg, QObject::tr("Export template (SVG)..."), "SVG (*.svg)"},
-        {ExportKind::TemplatePdf, QObject::tr("Export template (PDF)..."), "PDF (*.pdf)"},
-    };
-    for (const Item& it : items)
-        menu->addAction(it.label, parent, [=] {
-            const QString p = QFileDialog::getSaveFileName(parent, it.label, {}, it.filter);
+namespace {
+
+void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log) {
+    menu->clear();
+    const MachineUi* machine = machineUiFor(editor->job());
+    menu->setEnabled(machine != nullptr);
+    if (!machine) return;
+    for (const ExportKind kind : machine->exports()) {
+        const QString label = exportLabel(kind);
+        QAction* a = menu->addAction(label, parent, [=] {
+            const QString p = QFileDialog::getSaveFileName(parent, label, {}, exportFilter(kind));
             if (p.isEmpty()) return;
-            QString err, summary;
             if (!editor->valid()) {
                 log->add(cutcell::Severity::Error,
                          QObject::tr("Export to %1 refused: the job has invalid fields.").arg(p));
                 return;
             }
-            if (exportCut(it.kind, editor->job(), p, &err, &summary))
+            QString err, summary;
+            if (exportCut(kind, editor->job(), p, &err, &summary))
                 log->add(cutcell::Severity::Info, summary);
             else
                 log->add(cutcell::Severity::Error, err);
         });
+        a->setData(static_cast<int>(kind));
+    }
+}
+
+} // namespace
+
+QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log) {
+    QMenu* exports = menu->addMenu(QObject::tr("&Export cut"));
+    exports->setObjectName("exportMenu");
+    const auto refresh = [=] {
+        const QString machine = QString::fromStdString(editor->job().machine);
+        if (exports->property("cutcellMachine").toString() == machine) return;
+        exports->setProperty("cutcellMachine", machine);
+        fillExportMenu(exports, parent, editor, log);
+    };
+    QObject::connect(editor, &JobEditor::jobReset, exports, refresh);
+    QObject::connect(editor, &JobEditor::edited, exports, refresh);
+    refresh();
+    return exports;
 }
 
 } // namespace CutCell::ui

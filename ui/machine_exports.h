@@ -1,11 +1,12 @@
 #pragma once
-// File exports of the cut for the shop floor, as `cutcell-cli export`: the profile cutter's
-// G-code (X/A, machine "profile_cutter_2axis" only) and the wrap-around cutting template
-// (SVG or PDF, 1:1, any machine). Files are written atomically (writeFileAtomically); errors
-// name the file.
+// File exports of the cut for the shop floor, as `cutcell-cli export`: the exports the job's
+// machine offers (MachineUi::exports(): G-code only where the machine runs an NC program) and
+// the wrap-around cutting template (SVG or PDF, 1:1, common to the pipe machines). Files are
+// written atomically (writeFileAtomically); errors name the file.
 //
 // Threading contract: GUI thread only (the computations are short, closed-form).
 #include "core/job/job.h"
+#include "ui/machine/machine_ui.h"
 
 #include <QString>
 
@@ -17,15 +18,16 @@ namespace CutCell::ui {
 class EventLogPanel;
 class JobEditor;
 
-enum class ExportKind { Gcode, TemplateSvg, TemplatePdf };
-
 // Writes the export; on success *summary says what was written, on failure *error names the
-// file and the reason (an invalid job, a cut off the carriage, an I/O error).
+// file and the reason (a machine without this export, an invalid job, a cut off the carriage,
+// an I/O error).
 bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QString* error,
                QString* summary = nullptr);
 
-// Adds "Export G-code...", "Export template (SVG)..." and "Export template (PDF)..." to a
-// menu: each asks for a file, exports the editor's current job and logs the outcome.
-void addCutExportActions(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log);
+// Adds the "Export cut" submenu (object name "exportMenu") to a menu. Its entries are the
+// exports of the editor's job's machine, rebuilt when the machine changes: each asks for a
+// file, exports the editor's current job and logs the outcome. Each action's data() is its
+// ExportKind (int).
+QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log);
 
 } // namespace CutCell::ui

@@ -1,7 +1,6 @@
 #pragma once
-// Adapts the monitor views to the planned job's machine: the 3D scene, the plots' axes (the
-// robot's six joints in deg, or the profile cutter's A in deg and X in mm) and the progress
-// totals.
+// Adapts the monitor views to the planned job's machine (MachineUi): the 3D scene, the plots'
+// channels (the machine's axis names and units, its tip error plot) and the progress totals.
 //
 // Threading contract: GUI thread only.
 #include "core/job/job.h"

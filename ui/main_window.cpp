@@ -5,6 +5,8 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
+#include "ui/machine/machine_choice.h"
+#include "ui/machine/machine_ui_registry.h"
 #include "ui/machine_exports.h"
 #include "ui/machine_views.h"
 #include "ui/panels/control_panel.h"
@@ -58,7 +60,6 @@ void MainWindow::buildLayout() {
     params_->setMinimumWidth(420);
     cell_ = new CellViewPanel(this);
     plots_ = new PlotsPanel(this);
-    plots_->setAxisNames({"q0 chuck", "q1 base", "q2 shoulder", "q3 elbow", "q4 wrist", "q5 roll"});
     controls_ = new ControlPanel(this);
     lamps_ = new StateLamps(this);
     progress_ = new ProgressPanel(this);
@@ -134,9 +135,8 @@ void MainWindow::buildLayout() {
 
 void MainWindow::buildMenus() {
     auto* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
-        if (maybeSave()) newJob();
-    });
+    file->addAction(tr("&New..."), QKeySequence::New, this, &MainWindow::newJobFromMenu)
+        ->setObjectName("actionNew");
     file->addAction(tr("&Open..."), QKeySequence::Open, this, [this] {
         if (!maybeSave()) return;
         const QString p = QFileDialog::getOpenFileName(this, tr("Open job"), {},
@@ -157,7 +157,7 @@ void MainWindow::buildMenus() {
         QString err;
         if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
-    addCutExportActions(file, this, editor_, log_);
+    addCutExportMenu(file, this, editor_, log_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -297,9 +297,30 @@ bool MainWindow::openJob(const QString& path, QString* error) {
     return true;
 }
 
-void MainWindow::newJob() {
-    document_->newJob(cutcell::defaultJob());
-    log_->add(Severity::Info, tr("New job from the default job."));
+void MainWindow::newJobFromMenu() {
+    if (!maybeSave()) return;
+    const std::string current = editor_->job().machine;
+    const std::string id = machinePrompt_ ? machinePrompt_() : askMachine(this, current);
+    if (!id.empty()) newJob(id);
+}
+
+bool MainWindow::newJob(const std::string& machineId) {
+    const MachineUi* machine = findMachineUi(machineId);
+    if (!machine) {
+        log_->add(Severity::Error,
+                  tr("No machine \"%1\" in this build.").arg(QString::fromStdString(machineId)));
+        return false;
+    }
+    try {
+        document_->newJob(machine->defaultJob());
+    } catch (const std::exception& e) {
+        log_->add(
+            Severity::Error,
+            tr("No default job for the %1: %2").arg(machine->title(), QString::fromUtf8(e.what())));
+        return false;
+    }
+    log_->add(Severity::Info, tr("New job for the %1.").arg(machine->title()));
+    return true;
 }
 
 bool MainWindow::save() {

@@ -44,13 +44,20 @@ class MainWindow : public QMainWindow {
 
     // Opens a job file; on failure the message is logged and returned.
     bool openJob(const QString& path, QString* error = nullptr);
-    void newJob();
+    // A new job from that machine's default job; false (logged) for an unknown machine.
+    bool newJob(const std::string& machineId);
     bool save();
     bool saveAs(const QString& path = {});
     // Asks whether to save unsaved changes; false when the user cancels.
     bool maybeSave();
     // Replaces the Save/Discard/Cancel dialog (tests): returns a QMessageBox::StandardButton.
     void setSavePrompt(std::function<int()> prompt) { savePrompt_ = std::move(prompt); }
+    // Replaces File -> New's machine list (tests): returns a machine id, empty = cancel.
+    void setMachinePrompt(std::function<std::string()> prompt) {
+        machinePrompt_ = std::move(prompt);
+    }
+    // File -> New as the menu does it: unsaved changes, the machine, the new job.
+    void newJobFromMenu();
 
     JobEditor* editor() const { return editor_; }
     JobDocument* document() const { return document_; }
@@ -98,6 +105,7 @@ class MainWindow : public QMainWindow {
     QProgressBar* planBar_ = nullptr;
     QPushButton* planCancel_ = nullptr;
     std::function<int()> savePrompt_;
+    std::function<std::string()> machinePrompt_;
     // Display frames: the panels follow the telemetry at most every kDisplayFrameMs.
     static constexpr int kDisplayFrameMs = 60;
     QElapsedTimer sinceDisplayFrame_;

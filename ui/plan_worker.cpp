@@ -1,6 +1,6 @@
 #include "ui/plan_worker.h"
 
-#include "ui/machine_plan.h"
+#include "ui/machine/machine_ui_registry.h"
 
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
@@ -72,10 +72,13 @@ void PlanWorker::launch() {
                 Qt::QueuedConnection);
         };
         try {
-            // The profile cutter has its own (fast, closed-form) cut computation.
-            run->plan = std::make_shared<cutcell::CutPlan>(isProfileCutterJob(run->job)
-                                                               ? planProfileCutter(run->job)
-                                                               : cutcell::planCut(run->job, opt));
+            // Each machine plans its own way (the robot's IK and spline, the profile cutter's
+            // closed-form cut).
+            const MachineUi* machine = machineUiFor(run->job);
+            if (!machine)
+                throw std::invalid_argument("no machine module for machine = \"" +
+                                            run->job.machine + "\"");
+            run->plan = std::make_shared<cutcell::CutPlan>(machine->plan(run->job, opt));
         } catch (const std::exception& e) {
             run->error = e.what();
         }

@@ -3,8 +3,8 @@
 // cancels the one in flight; only the result of the latest request is delivered, on the GUI
 // thread, through planned().
 //
-// Threading contract: the public API and the signals are GUI-thread only; planCut runs on a
-// pool thread with its own copy of the job and touches nothing else.
+// Threading contract: the public API and the signals are GUI-thread only; the job's machine plans
+// (MachineUi::plan) on a pool thread with its own copy of the job and touches nothing else.
 #include "core/job/job.h"
 #include "core/trajectory/cut_planner.h"
 

@@ -5,8 +5,7 @@
 #include "ui/forms/job_editor.h"
 #include "ui/plan_worker.h"
 
-#include "ui/machine_plan.h"
-#define CUTCELL_HAVE_PROGRAM_BUILDER 1
+#include "ui/machine/machine_ui_registry.h"
 
 #include <QTimer>
 
@@ -123,17 +122,8 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
         }
         return;
     }
-    const QString summary = isProfileCutterJob(job)
-                                ? tr("Profile cutter: %1 points, %2 mm in %3 s.")
-                                      .arg(plannedPointCount(job, *plan_))
-                                      .arg(plan_->length_mm, 0, 'f', 1)
-                                      .arg(plan_->cut_time_s, 0, 'f', 1)
-                                : tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
-                                      .arg(plan_->knots.size())
-                                      .arg(plan_->length_mm, 0, 'f', 1)
-                                      .arg(plan_->cut_time_s, 0, 'f', 1)
-                                      .arg(plan_->max_deviation_deg, 0, 'f', 1);
-    emit message(Severity::Info, summary);
+    if (const MachineUi* machine = machineUiFor(job))
+        emit message(Severity::Info, machine->planSummary(job, *plan_));
     programPending_ = true;
     loadProgram();
 }
@@ -161,10 +151,11 @@ void RunController::loadProgram() {
         bridge_->setEngine(&rig_->engine());
         emit rigChanged(QString::fromStdString(rig_->description()));
     }
-#ifdef CUTCELL_HAVE_PROGRAM_BUILDER
     try {
+        const MachineUi* machine = machineUiFor(planJob_);
+        if (!machine) throw std::invalid_argument("no machine module for this job");
         const auto text = cutcell::json::write(cutcell::jobToJson(planJob_));
-        auto program = buildMachineProgram(planJob_, *plan_, text);
+        auto program = machine->buildProgram(planJob_, *plan_, text);
         if (!rig_->engine().load(std::move(program)))
             throw std::runtime_error("the engine's command queue is full");
         programLoaded_ = true;
@@ -172,9 +163,6 @@ void RunController::loadProgram() {
         programError_ = tr("cannot load the program: %1").arg(QString::fromUtf8(e.what()));
         emit message(Severity::Error, programError_);
     }
-#else
-    programError_ = tr("this build has no motion program builder");
-#endif
     updateBlocked();
     if (autoRun_) stepAutoRun();
 }

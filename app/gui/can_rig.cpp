@@ -4,6 +4,7 @@
 
 #include "devices/canopen/engine_tuning.h"
 #include "devices/sim/simulated_torch.h"
+#include "ui/machine/machine_ui_registry.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
@@ -20,6 +21,10 @@ class CanRig : public CutCell::ui::EngineRig {
     explicit CanRig(const Job& job)
         : period_(job.sim.period_s), config_(masterConfigFromJob(job, period_, kAxisCount)) {
         config_.sync = SyncSource::LastDriveWrite;
+        // The device panel names each node's axis as the machine does.
+        if (const auto* machine = CutCell::ui::machineUiFor(job))
+            for (const auto& axis : machine->axes())
+                axisNames_.push_back(axis.name);
     }
     ~CanRig() override {
         if (engine_) engine_->stopThread();
@@ -80,8 +85,7 @@ class CanRig : public CutCell::ui::EngineRig {
   private:
     double period_;
     CanOpenMasterConfig config_;
-    const std::vector<QString> axisNames_{"q0 chuck", "q1 base",  "q2 shoulder",
-                                          "q3 elbow", "q4 wrist", "q5 roll"};
+    std::vector<QString> axisNames_;
     std::unique_ptr<CanOpenMaster> master_;
     SimulatedTorch torch_;
     std::unique_ptr<MotionEngine> engine_; // declared last: destroyed before the devices

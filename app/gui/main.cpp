@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
         "seconds; prints JSON.",
         "S");
     const QCommandLineOption tabOpt(
-        "tab", "Show parameter tab N (0 = Pipes ... 5 = Cycle & devices).", "N", "0");
+        "tab", "Show parameter tab N of the job's machine (0 = Pipes, 1 = Cut, ...).", "N", "0");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt});
     cli.process(app);
 
@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
             if (cli.isSet(runOpt) || bench) return 1;
         }
     }
-    window.parameters()->tabs()->setCurrentIndex(cli.value(tabOpt).toInt());
+    window.parameters()->showVisibleTab(cli.value(tabOpt).toInt());
     window.show();
     if (bench) {
         bool ok = false;

@@ -1,12 +1,10 @@
 #pragma once
-// The simulated cell behind the GUI: six simulated drives (the job's PID and joint plant) and
-// a simulated torch wired into a motion engine whose thread is started here.
+// The factory the main window uses: the job's machine's simulated rig (machines/sim_rigs.h),
+// or the CANopen cell (can_rig.h) for a job with devices.kind = "canopen".
 #include "ui/engine_rig.h"
 
 namespace cutcell::app {
 
-// The factory the main window uses: the simulated cell, or the CANopen cell (can_rig.h) for a
-// job with devices.kind = "canopen".
 std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                                                 std::string* error);
 

@@ -1,12 +1,9 @@
 #include "ui/forms/parameter_tabs.h"
 
-#include "ui/forms/controller_form.h"
 #include "ui/forms/cut_form.h"
 #include "ui/forms/cycle_devices_form.h"
-#include "ui/forms/method_form.h"
 #include "ui/forms/pipes_form.h"
-#include "ui/forms/profile_cutter_form.h"
-#include "ui/forms/robot_dh_table_form.h"
+#include "ui/machine/machine_ui_registry.h"
 
 #include <QIcon>
 #include <QLabel>
@@ -51,22 +48,24 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     otherIssues_->hide();
     v->addWidget(otherIssues_);
 
-    const auto add = [this](JobForm* form, const QString& title) {
+    const auto add = [this](JobForm* form, const QString& title, const MachineUi* owner) {
         auto* scroll = new QScrollArea(tabs_);
         scroll->setWidgetResizable(true);
         scroll->setFrameShape(QFrame::NoFrame);
         scroll->setWidget(form);
         tabs_->addTab(scroll, title);
         forms_.push_back(form);
+        owners_.push_back(owner);
         titles_ << title;
     };
-    add(new PipesForm(editor), tr("Pipes"));
-    add(new CutForm(editor), tr("Cut"));
-    add(new MethodForm(editor), tr("Method"));
-    add(new RobotDhTableForm(editor), tr("Robot"));
-    add(new ControllerForm(editor), tr("Controller"));
-    add(new CycleDevicesForm(editor), tr("Cycle && devices"));
-    add(new ProfileCutterForm(editor), tr("Profile cutter"));
+    // Common pages first, then every machine's own pages (shown while the job is for that
+    // machine), then the cycle and devices.
+    add(new PipesForm(editor), tr("Pipes"), nullptr);
+    add(new CutForm(editor), tr("Cut"), nullptr);
+    for (const MachineUi* machine : machineUis())
+        for (const FormPage& page : machine->formPages())
+            add(page.make(editor), page.title, machine);
+    add(new CycleDevicesForm(editor), tr("Cycle && devices"), nullptr);
     connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyMachine);
     connect(editor, &JobEditor::edited, this, &ParameterTabs::applyMachine);
     applyMachine();
@@ -75,15 +74,30 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     refreshTitles();
 }
 
+bool ParameterTabs::formActive(size_t i) const {
+    return owners_[i] == nullptr || owners_[i] == machine_;
+}
+
 QWidget* ParameterTabs::fieldFor(const std::string& key) const {
-    for (auto* f : forms_)
-        if (auto* w = f->fieldFor(key)) return w;
+    for (size_t i = 0; i < forms_.size(); ++i)
+        if (formActive(i))
+            if (auto* w = forms_[i]->fieldFor(key)) return w;
     return nullptr;
+}
+
+void ParameterTabs::showVisibleTab(int n) {
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (tabs_->isTabVisible(i) && n-- == 0) {
+            tabs_->setCurrentIndex(i);
+            return;
+        }
 }
 
 void ParameterTabs::revealField(const std::string& key) {
     for (size_t i = 0; i < forms_.size(); ++i)
-        if (auto* w = forms_[i]->fieldFor(key)) {
+        if (!formActive(i))
+            continue;
+        else if (auto* w = forms_[i]->fieldFor(key)) {
             tabs_->setCurrentIndex(static_cast<int>(i));
             w->setFocus(Qt::OtherFocusReason);
             return;
@@ -96,21 +110,26 @@ bool ParameterTabs::tabShown(const QString& title) const {
 }
 
 void ParameterTabs::applyMachine() {
-    // Robot-only pages (how the robot cuts, its DH table) give way to the profile cutter's.
-    const bool profile = editor_->job().machine == "profile_cutter_2axis";
-    const auto show = [this](const QString& title, bool on) {
-        const int i = static_cast<int>(titles_.indexOf(title));
-        if (i >= 0) tabs_->setTabVisible(i, on);
-    };
-    show(tr("Method"), !profile);
-    show(tr("Robot"), !profile);
-    show(tr("Profile cutter"), profile);
-    if (auto* bevel = fieldFor("cut.bevel_deg")) {
-        bevel->setEnabled(!profile);
-        bevel->setToolTip(profile ? tr("The profile cutter's torch stands radial: no bevel.")
-                                  : QString());
+    const MachineUi* machine = machineUiFor(editor_->job());
+    if (machine == machine_ && machineApplied_) return;
+    machine_ = machine;
+    machineApplied_ = true;
+    // Only this machine's pages; an unknown machine (its issue is listed under the tabs) keeps
+    // the common pages only.
+    for (size_t i = 0; i < forms_.size(); ++i)
+        tabs_->setTabVisible(static_cast<int>(i), formActive(i));
+    for (auto* field : disabledFields_) {
+        field->setEnabled(true);
+        field->setToolTip(QString());
     }
-    if (auto* tilt = fieldFor("cut.max_direction_deviation_deg")) tilt->setEnabled(!profile);
+    disabledFields_.clear();
+    if (!machine) return;
+    for (const auto& [key, reason] : machine->unusedCommonFields())
+        if (auto* field = fieldFor(key)) {
+            field->setEnabled(false);
+            field->setToolTip(reason);
+            disabledFields_.push_back(field);
+        }
 }
 
 void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
@@ -127,7 +146,7 @@ void ParameterTabs::refreshTitles() {
     otherIssues_->setVisible(!other.isEmpty());
     otherIssues_->setText(other.join('\n'));
     for (size_t i = 0; i < forms_.size(); ++i) {
-        const int n = forms_[i]->markedCount();
+        const int n = formActive(i) ? forms_[i]->markedCount() : 0;
         const int idx = static_cast<int>(i);
         tabs_->setTabText(idx,
                           n ? QStringLiteral("%1 (%2)").arg(titles_[idx]).arg(n) : titles_[idx]);

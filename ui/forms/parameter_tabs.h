@@ -1,7 +1,9 @@
 #pragma once
-// The parameter forms grouped as an engineer thinks (Pipes, Cut, Method, Robot, Controller,
-// Cycle & devices), each in a scrollable tab whose title counts its invalid fields. Issues no
-// form shows (e.g. an unknown machine) are listed under the tabs.
+// The parameter forms grouped as an engineer thinks: the common pages (Pipes, Cut), the pages
+// of the job's machine (MachineUi::formPages, e.g. Method, Robot, Controller for the robot),
+// then Cycle & devices; each in a scrollable tab whose title counts its invalid fields. Every
+// registered machine's pages are built once and shown while the job is for that machine.
+// Issues no form shows (e.g. an unknown machine) are listed under the tabs.
 //
 // Threading contract: GUI thread only.
 #include "ui/forms/job_editor.h"
@@ -16,6 +18,7 @@ class QTabWidget;
 namespace CutCell::ui {
 
 class JobForm;
+class MachineUi;
 
 class ParameterTabs : public QWidget {
     Q_OBJECT
@@ -29,17 +32,25 @@ class ParameterTabs : public QWidget {
     void setEditingLocked(bool locked, const QString& reason);
     // Whether the tab with this (untranslated-count) title is shown for the current machine.
     bool tabShown(const QString& title) const;
+    // Shows the n-th visible tab (the tab list depends on the machine).
+    void showVisibleTab(int n);
 
   private:
     void refreshTitles();
-    // Shows the pages of the job's machine (robot or profile cutter), hides the others.
+    // Shows the pages of the job's machine, hides the others; disables the common fields the
+    // machine does not use.
     void applyMachine();
+    bool formActive(size_t i) const; // a common page or a page of the job's machine
 
     JobEditor* editor_;
     QTabWidget* tabs_;
     QLabel* otherIssues_;
     QLabel* lockNote_;
     std::vector<JobForm*> forms_;
+    std::vector<const MachineUi*> owners_; // null: common page
+    const MachineUi* machine_ = nullptr;
+    bool machineApplied_ = false;
+    std::vector<QWidget*> disabledFields_;
     QStringList titles_;
 };
 

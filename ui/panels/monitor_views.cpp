@@ -5,7 +5,6 @@
 
 #ifdef CUTCELL_HAVE_VIEW3D
 #include "ui/view3d/cell_view.h"
-#include "ui/view3d/profile_scene.h"
 #include "ui/view3d/scene_model.h"
 #endif
 #ifdef CUTCELL_HAVE_PLOTS
@@ -40,19 +39,16 @@ bool CellViewPanel::rendering() const {
 #endif
 }
 
-void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
+void CellViewPanel::setPlan(const MachineUi& machine,
+                            const std::shared_ptr<const cutcell::CutPlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
     if (!view_ || !plan) return;
-    if (job.machine == "profile_cutter_2axis") {
-        try {
-            view_->setScene(cutcell::view3d::buildProfileCutterScene(job));
-        } catch (const std::exception&) {
-            // No cut to draw; the plan's problem is reported by the run controller.
-        }
-    } else
-        view_->setScene(cutcell::view3d::buildRobotScene(job, *plan));
+    cutcell::view3d::SceneModel model;
+    QString why; // no cut to draw: the plan's problem is reported by the run controller
+    if (machine.buildScene(job, *plan, &model, &why)) view_->setScene(model);
 #else
+    (void)machine;
     (void)plan;
     (void)job;
 #endif
@@ -89,12 +85,36 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
 #endif
 }
 
-void PlotsPanel::setAxisNames(const QStringList& names) {
+void PlotsPanel::setMachine(const MachineUi& machine) {
+    if (machine.id() == machine_) return;
+    machine_ = machine.id();
+    setChannels(machine.axes(), machine.tipErrorPlot());
+}
+
+void PlotsPanel::setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot tip) {
+    axes_ = axes;
+    if (axes_.size() > size_t(cutcell::kAxisCount)) axes_.resize(size_t(cutcell::kAxisCount));
+    tip_ = tip;
+    appended_ = 0;
+    lastPlottedS_ = -1;
 #ifdef CUTCELL_HAVE_PLOTS
-    plots_->setAxisNames(names);
-    plots_->setAxisCount(static_cast<int>(names.size()));
-#else
-    (void)names;
+    QStringList names, units;
+    for (const AxisLabel& a : axes_) {
+        names << a.name;
+        units << a.unit;
+    }
+    plots_->setAxes(names, units);
+    switch (tip_) {
+    case TipErrorPlot::None:
+        plots_->setTipTraces({}, {});
+        break;
+    case TipErrorPlot::BaseXyz:
+        plots_->setTipTraces({"x", "y", "z"}, tr("Cartesian error, base frame (mm)"));
+        break;
+    case TipErrorPlot::MissOnPipe:
+        plots_->setTipTraces({tr("miss")}, tr("torch miss on the pipe (mm)"));
+        break;
+    }
 #endif
 }
 
@@ -111,11 +131,13 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
         lastPlottedS_ = s.elapsed_s;
 #ifdef CUTCELL_HAVE_PLOTS
         double err[cutcell::kAxisCount];
-        for (int i = 0; i < cutcell::kAxisCount; ++i)
-            err[i] = linear_[size_t(i)] ? s.error[i] : cutcell::rad2deg(s.error[i]);
-        const double cart[3] = {s.cartesian_error_mm.x(), s.cartesian_error_mm.y(),
-                                s.cartesian_error_mm.z()};
-        plots_->append(s.elapsed_s, err, cutcell::kAxisCount, cart);
+        const int n = static_cast<int>(axes_.size());
+        for (int i = 0; i < n; ++i)
+            err[i] = axes_[size_t(i)].linear() ? s.error[i] : cutcell::rad2deg(s.error[i]);
+        double tip[3] = {s.cartesian_error_mm.x(), s.cartesian_error_mm.y(),
+                         s.cartesian_error_mm.z()};
+        if (tip_ == TipErrorPlot::MissOnPipe) tip[0] = s.cartesian_error_mm.norm();
+        plots_->append(s.elapsed_s, err, n, tip_ == TipErrorPlot::None ? nullptr : tip);
 #endif
         ++appended_;
     }

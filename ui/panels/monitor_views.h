@@ -8,6 +8,7 @@
 #include "core/engine/engine_types.h"
 #include "core/job/job.h"
 #include "core/trajectory/cut_planner.h"
+#include "ui/machine/machine_ui.h"
 
 #include <QElapsedTimer>
 #include <QWidget>
@@ -33,7 +34,9 @@ class CellViewPanel : public QWidget {
   public:
     explicit CellViewPanel(QWidget* parent = nullptr);
 
-    void setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan, const cutcell::Job& job);
+    // The machine's scene for the plan (nothing changes when the machine cannot draw it).
+    void setPlan(const MachineUi& machine, const std::shared_ptr<const cutcell::CutPlan>& plan,
+                 const cutcell::Job& job);
     void setSample(const cutcell::TelemetrySample& s);
     bool rendering() const;
     cutcell::view3d::CellView* view() const { return view_; }
@@ -54,9 +57,12 @@ class PlotsPanel : public QWidget {
   public:
     explicit PlotsPanel(QWidget* parent = nullptr);
 
-    void setAxisNames(const QStringList& names);
-    // Axes whose error is a length (mm, plotted as is); the others are rad, plotted in deg.
-    void setLinearAxes(const std::array<bool, cutcell::kAxisCount>& linear) { linear_ = linear; }
+    // The machine's channels: one trace per axis with its name, grouped by unit (deg: the
+    // engine's rad converted; mm: as is), and its tip error plot. Clears the data, so only
+    // when the machine differs from the last one set.
+    void setMachine(const MachineUi& machine);
+    void setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot tip);
+    const std::vector<AxisLabel>& axes() const { return axes_; }
     // Cheap: copies into the plots' ring; redraw() draws what was appended.
     void append(const std::vector<cutcell::TelemetrySample>& batch);
     void redraw();
@@ -74,7 +80,9 @@ class PlotsPanel : public QWidget {
   private:
     cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
     std::uint64_t appended_ = 0;
-    std::array<bool, cutcell::kAxisCount> linear_{};
+    std::string machine_;
+    std::vector<AxisLabel> axes_;
+    TipErrorPlot tip_ = TipErrorPlot::BaseXyz;
     double lastPlottedS_ = -1;
 };
 

@@ -1,17 +1,11 @@
-#include "ui/machine_plan.h"
+#include "ui/machines/profile_cutter_2axis/profile_cutter_plan.h"
 
-#include "core/machines/pipe_robot_program.h"
 #include "core/machines/profile_cutter.h"
 #include "core/machines/profile_cutter_program.h"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace CutCell::ui {
-
-bool isProfileCutterJob(const cutcell::Job& job) {
-    return job.machine == kProfileCutterMachine;
-}
 
 cutcell::CutPlan planProfileCutter(const cutcell::Job& job) {
     cutcell::CutPlan plan;
@@ -32,15 +26,7 @@ cutcell::CutPlan planProfileCutter(const cutcell::Job& job) {
     return plan;
 }
 
-std::shared_ptr<const cutcell::MotionProgram> buildMachineProgram(const cutcell::Job& job,
-                                                                  const cutcell::CutPlan& plan,
-                                                                  const std::string& text) {
-    if (isProfileCutterJob(job)) return cutcell::buildProfileCutterProgram(job, text);
-    return cutcell::buildPipeRobotProgram(job, plan, text);
-}
-
-std::size_t plannedPointCount(const cutcell::Job& job, const cutcell::CutPlan& plan) {
-    if (!isProfileCutterJob(job)) return plan.knots.size();
+std::size_t profileCutterPointCount(const cutcell::CutPlan& plan) {
     if (plan.knot_dt_s <= 0) return 0;
     return static_cast<std::size_t>(std::lround(plan.cut_time_s / plan.knot_dt_s));
 }

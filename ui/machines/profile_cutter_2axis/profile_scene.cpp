@@ -1,4 +1,4 @@
-#include "ui/view3d/profile_scene.h"
+#include "ui/machines/profile_cutter_2axis/profile_scene.h"
 
 #include "core/job/job.h"
 #include "core/machines/profile_cutter.h"

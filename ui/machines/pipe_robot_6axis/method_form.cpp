@@ -1,4 +1,4 @@
-#include "ui/forms/method_form.h"
+#include "ui/machines/pipe_robot_6axis/method_form.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

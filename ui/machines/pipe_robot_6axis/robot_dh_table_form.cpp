@@ -1,4 +1,4 @@
-#include "ui/forms/robot_dh_table_form.h"
+#include "ui/machines/pipe_robot_6axis/robot_dh_table_form.h"
 
 #include <QDoubleSpinBox>
 #include <QGroupBox>

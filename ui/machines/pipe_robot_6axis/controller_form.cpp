@@ -1,4 +1,4 @@
-#include "ui/forms/controller_form.h"
+#include "ui/machines/pipe_robot_6axis/controller_form.h"
 
 #include <QDoubleSpinBox>
 #include <QGroupBox>

@@ -1,4 +1,4 @@
-#include "profile_sim_rig.h"
+#include "sim_rig.h"
 
 #include "core/machines/profile_cutter_program.h"
 #include "devices/sim/profile_cutter_rig.h"

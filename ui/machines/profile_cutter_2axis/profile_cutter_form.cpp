@@ -1,4 +1,4 @@
-#include "ui/forms/profile_cutter_form.h"
+#include "ui/machines/profile_cutter_2axis/profile_cutter_form.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

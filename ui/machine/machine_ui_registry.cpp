@@ -1,0 +1,63 @@
+#include "ui/machine/machine_ui_registry.h"
+
+#include <QObject>
+
+#include <mutex>
+#include <stdexcept>
+
+namespace CutCell::ui {
+
+void MachineUiRegistry::add(std::unique_ptr<MachineUi> machine) {
+    for (const MachineUi* m : list_)
+        if (m->id() == machine->id())
+            throw std::logic_error("machine ui registered twice: " + machine->id());
+    list_.push_back(machine.get());
+    owned_.push_back(std::move(machine));
+}
+
+const std::vector<const MachineUi*>& machineUis() {
+    static MachineUiRegistry registry;
+    static std::once_flag once;
+    std::call_once(once, [] { registerMachineUis(registry); });
+    return registry.list_;
+}
+
+const MachineUi* findMachineUi(std::string_view id) {
+    for (const MachineUi* m : machineUis())
+        if (m->id() == id) return m;
+    return nullptr;
+}
+
+const MachineUi* machineUiFor(const cutcell::Job& job) {
+    return findMachineUi(job.machine);
+}
+
+std::string MachineUi::exportText(ExportKind, const cutcell::Job&, QString*) const {
+    throw std::invalid_argument("this machine writes no such file");
+}
+
+QString exportLabel(ExportKind kind) {
+    switch (kind) {
+    case ExportKind::Gcode:
+        return QObject::tr("Export &G-code...");
+    case ExportKind::TemplateSvg:
+        return QObject::tr("Export template (SVG)...");
+    case ExportKind::TemplatePdf:
+        return QObject::tr("Export template (PDF)...");
+    }
+    return {};
+}
+
+QString exportFilter(ExportKind kind) {
+    switch (kind) {
+    case ExportKind::Gcode:
+        return QObject::tr("G-code (*.ngc *.nc *.gcode)");
+    case ExportKind::TemplateSvg:
+        return QStringLiteral("SVG (*.svg)");
+    case ExportKind::TemplatePdf:
+        return QStringLiteral("PDF (*.pdf)");
+    }
+    return {};
+}
+
+} // namespace CutCell::ui

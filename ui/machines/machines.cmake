@@ -1,0 +1,18 @@
+# The operator station's machines: each machine's ui folder (form pages, 3D scene, plot
+# channels, exports) and the registry (register_machine_uis.cpp). Adding a machine: its folder,
+# its lines here, its line in register_machine_uis.cpp.
+set(_m ${CMAKE_CURRENT_LIST_DIR})
+set(CUTCELL_MACHINE_UI_SOURCES
+  ${_m}/register_machine_uis.cpp
+  ${_m}/pipe_robot_6axis/pipe_robot_ui.cpp
+  ${_m}/pipe_robot_6axis/method_form.cpp
+  ${_m}/pipe_robot_6axis/robot_dh_table_form.cpp
+  ${_m}/pipe_robot_6axis/controller_form.cpp
+  ${_m}/profile_cutter_2axis/profile_cutter_ui.cpp
+  ${_m}/profile_cutter_2axis/profile_cutter_plan.cpp
+  ${_m}/profile_cutter_2axis/profile_cutter_form.cpp
+)
+# Scenes for the 3D view (plain data, built only with CutCell::view3d).
+set(CUTCELL_MACHINE_UI_VIEW3D_SOURCES
+  ${_m}/profile_cutter_2axis/profile_scene.cpp
+)

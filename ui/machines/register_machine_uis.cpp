@@ -1,0 +1,13 @@
+// The machines of the operator station: one line per machine (README, "Adding a machine").
+#include "ui/machine/machine_ui_registry.h"
+#include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
+#include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
+
+namespace CutCell::ui {
+
+void registerMachineUis(MachineUiRegistry& registry) {
+    registry.add(std::make_unique<PipeRobotUi>());
+    registry.add(std::make_unique<ProfileCutterUi>());
+}
+
+} // namespace CutCell::ui
