@@ -5,6 +5,8 @@
 #include <QPointer>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <stdexcept>
+
 namespace CutCell::ui {
 
 struct PlanWorker::Run {

@@ -9,6 +9,8 @@
 
 #include <QTimer>
 
+#include <stdexcept>
+
 namespace CutCell::ui {
 
 using cutcell::EngineState;

@@ -81,7 +81,7 @@ class TestGuiProfile : public QObject {
         auto* plots = w.plots()->plots();
         QCOMPARE(plots->axisCount(), 2);
         QVERIFY(plots->axisNames().at(0).contains("A"));
-        QVERIFY(plots->axisNames().at(1).contains("mm"));
+        QCOMPARE(plots->axisUnits(), QStringList({"deg", "mm"}));
         QVERIFY(w.plots()->samplesAppended() > 0);
         QVERIFY(plots->sampleCount() > 0);
         plots->replotNow();
@@ -93,10 +93,15 @@ class TestGuiProfile : public QObject {
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QByteArray text = csv.readAll();
         QVERIFY(text.count('\n') > 10);
-        // Cartesian columns carry numbers (the torch's miss on the pipe), not only NaN.
+        // Each column in its unit; the tip column is the torch's miss on the pipe and carries
+        // numbers (an empty cell is a NaN).
         const QList<QByteArray> rows = text.split('\n');
         QVERIFY(rows.size() > 3);
-        QVERIFY(!rows.at(rows.size() / 2).contains("nan"));
+        QVERIFY2(rows.at(0).contains("_err_deg") && rows.at(0).contains("_err_mm"),
+                 rows.at(0).constData());
+        const QList<QByteArray> mid = rows.at(rows.size() / 2).split(',');
+        QCOMPARE(mid.size(), 4); // t, A, X, miss
+        QVERIFY(!mid.at(3).trimmed().isEmpty());
     }
 
     void emergencyStopLatchesInTheCut() {
@@ -155,7 +160,7 @@ class TestGuiProfile : public QObject {
         QVERIFY(named);
         QVERIFY(!w.controls()->startButton()->isEnabled());
         // Back to a robot job: the robot's pages return.
-        w.newJob();
+        QVERIFY(w.newJob("pipe_robot_6axis"));
         QVERIFY(params->tabShown("Robot"));
         QVERIFY(!params->tabShown("Profile cutter"));
         QVERIFY(params->fieldFor("cut.bevel_deg")->isEnabled());
@@ -184,7 +189,7 @@ class TestGuiProfile : public QObject {
         // A robot job has no G-code; a directory that does not exist cannot be written.
         const QString robotNgc = dir.filePath("robot.ngc");
         QVERIFY(!CutCell::ui::exportCut(ExportKind::Gcode, cutcell::defaultJob(), robotNgc, &err));
-        QVERIFY(err.contains(robotNgc) && err.contains("profile_cutter_2axis"));
+        QVERIFY2(err.contains(robotNgc) && err.contains("G-code"), qPrintable(err));
         QVERIFY(!QFile::exists(robotNgc));
         const QString bad = dir.filePath("missing/dir/t.svg");
         QVERIFY(!CutCell::ui::exportCut(ExportKind::TemplateSvg, job, bad, &err));

@@ -31,6 +31,7 @@ class TstTrackingPlots : public QObject {
     void pausedViewStaysFrozen();
     void csvRoundTrip();
     void csvOfTwoAxisMachine();
+    void oneUnitPerPlot();
     void pngIsAValidImage();
     void exportToBadPathNamesThePath();
     void traceVisibilityToggles();
@@ -148,6 +149,34 @@ void TstTrackingPlots::csvOfTwoAxisMachine() {
     const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
     QCOMPARE(lines[0], QByteArray("t_s,X_err_deg,A_err_deg,x_err_mm,y_err_mm,z_err_mm"));
     QCOMPARE(lines[1], QByteArray("0,0.5,-0.5,,,"));
+}
+
+void TstTrackingPlots::oneUnitPerPlot() {
+    // A rotary and a linear axis: each on a plot of its unit; no tip plot when none is set.
+    QTemporaryDir dir;
+    TrackingPlotsWidget w;
+    w.show();
+    w.setAxes({"A", "X", "B"}, {"deg", "mm", "deg"});
+    w.setTipTraces({}, {});
+    QCOMPARE(w.plotTitles(), QStringList({"axis error (deg)", "axis error (mm)"}));
+    QCOMPARE(w.plotTraceNames(0), QStringList({"A", "B"}));
+    QCOMPARE(w.plotTraceNames(1), QStringList({"X"}));
+    const double e[3] = {0.25, -1.5, 0.125};
+    w.append(0.0, e, 3, nullptr);
+    w.replotNow();
+    QCOMPARE(w.plottedPointCount(), 1);
+    QString err;
+    QVERIFY2(w.exportCsv(dir.filePath("u.csv"), &err), qPrintable(err));
+    QFile f(dir.filePath("u.csv"));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines[0], QByteArray("t_s,A_err_deg,X_err_mm,B_err_deg"));
+    QCOMPARE(lines[1], QByteArray("0,0.25,-1.5,0.125"));
+    // A tip trace of its own: a third plot, its column in mm.
+    w.setTipTraces({"miss"}, "torch miss (mm)");
+    QCOMPARE(w.plotTitles().size(), 3);
+    QCOMPARE(w.plotTraceNames(2), QStringList({"miss"}));
+    QCOMPARE(w.sampleCount(), 0); // new channels clear the data
 }
 
 void TstTrackingPlots::pngIsAValidImage() {

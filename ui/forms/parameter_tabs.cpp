@@ -105,8 +105,9 @@ void ParameterTabs::revealField(const std::string& key) {
 }
 
 bool ParameterTabs::tabShown(const QString& title) const {
-    const int i = static_cast<int>(titles_.indexOf(title));
-    return i >= 0 && tabs_->isTabVisible(i);
+    for (int i = 0; i < static_cast<int>(titles_.size()); ++i)
+        if (titles_[i] == title && tabs_->isTabVisible(i)) return true;
+    return false;
 }
 
 void ParameterTabs::applyMachine() {
