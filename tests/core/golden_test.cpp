@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -163,7 +164,8 @@ TEST(GoldenCompare, TokenizerSeesNumbersAndText) {
 }
 
 TEST(Golden, ShippedJobsGiveTheCapturedOutputs) {
-    const fs::path dir = fs::temp_directory_path() / "cutcell_golden";
+    const fs::path dir =
+        fs::temp_directory_path() / ("cutcell_golden_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     const auto files = generate(dir);
