@@ -16,6 +16,7 @@ packages=(
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
   poppler-utils linuxcnc-uspace
+  nlohmann-json3-dev locales
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -30,6 +31,12 @@ if ((${#missing[@]})); then
   fi
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The locale tests run the writers under a decimal-comma locale (skipped without it).
+if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
+  echo "== generating the de_DE.UTF-8 locale"
+  ${sudo:-$([ "$(id -u)" -ne 0 ] && echo sudo)} localedef -i de_DE -f UTF-8 de_DE.UTF-8
 fi
 
 jobs=2

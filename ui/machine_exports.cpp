@@ -1,8 +1,8 @@
 #include "ui/machine_exports.h"
 
-#include "core/io/template_layout.h"
-#include "core/io/template_pdf.h"
-#include "core/io/template_svg.h"
+#include "core/machines/profile_cutter/template_layout.h"
+#include "core/machines/profile_cutter/template_pdf.h"
+#include "core/machines/profile_cutter/template_svg.h"
 #include "core/job/job_io.h"
 #include "ui/forms/job_editor.h"
 #include "ui/machine/machine_ui_registry.h"

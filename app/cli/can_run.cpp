@@ -1,5 +1,7 @@
 #include "can_run.h"
 
+#include "core/common/c_format.h"
+
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 
@@ -224,9 +226,8 @@ int parseCanOptions(const Args& args, CanRunOptions& o) {
     o.interface = option(args, "--can-interface");
     o.in_process_simulator = flag(args, "--drivesim");
     if (const std::string p = option(args, "--period-ms"); !p.empty()) {
-        char* end = nullptr;
-        const double ms = std::strtod(p.c_str(), &end);
-        if (*end != '\0' || !(ms >= 0.1 && ms <= 100)) {
+        const double ms = parseDouble(p).value_or(-1);
+        if (!(ms >= 0.1 && ms <= 100)) {
             std::fprintf(stderr, "--period-ms = \"%s\" ms is outside [0.1, 100] ms\n", p.c_str());
             return kUsage;
         }

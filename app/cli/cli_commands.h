@@ -20,14 +20,9 @@ int runPlan(const Args& args);
 int runSimulate(const Args& args);
 int runBench(const Args& args);
 int runExport(const Args& args);
-// validate / plan of a job with machine = "profile_cutter_2axis" (app/cli/export_command.cpp).
-int runProfileValidate(const Job& job);
-int runProfilePlan(const Job& job, const std::string& outDir);
 int runRun(const Args& args);      // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const Args& args); // drivesim_command.cpp
 int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args); // can_run.cpp
-int runProfileRun(const Job& job, const std::string& jobText,
-                  const Args& args); // profile_run_command.cpp
 
 // Value of "--name VALUE" (or "--name=VALUE"); empty when absent.
 std::string option(const Args& args, const std::string& name);

@@ -2,6 +2,8 @@
 // devices/canopen/drive_simulator.h) for tests and demos, with fault injection by flags.
 #include "cli_commands.h"
 
+#include "core/common/c_format.h"
+
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "devices/canopen/drive_simulator.h"
@@ -49,9 +51,8 @@ bool parseNodes(const std::string& text, std::vector<int>& out, std::string& err
 bool parseSeconds(const Args& args, const std::string& name, double& out, std::string& error) {
     const std::string v = option(args, name);
     if (v.empty()) return true;
-    char* end = nullptr;
-    out = std::strtod(v.c_str(), &end);
-    if (*end != '\0' || !(out >= 0) || out > 1e6) {
+    out = parseDouble(v).value_or(-1);
+    if (!(out >= 0) || out > 1e6) {
         error = name + " = \"" + v + "\" s is not a time in [0, 1e6] s";
         return false;
     }

@@ -6,9 +6,8 @@
 #include "core/engine/run_log.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "core/machines/pipe_robot_program.h"
-#include "core/trajectory/cut_planner.h"
-#include "devices/sim/simulated_drive.h"
+#include "core/machine/machine_registry.h"
+#include "devices/machines/sim_rig_registry.h"
 #include "devices/sim/simulated_torch.h"
 
 #include "can_devices.h"
@@ -87,58 +86,68 @@ int runRun(const Args& args) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
         return kInvalidJob;
     }
-    if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, args);
     bool realtime = flag(args, "--realtime");
     const bool quiet = flag(args, "--quiet");
     if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");
 
-    const CutPlan plan = planCut(job);
-    if (!plan.reachable) {
-        std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method),
-                     plan.problem.c_str());
+    // Every machine goes the same way: its module plans, its rig (or CANopen) drives.
+    const MachineModule& module = machineFor(job);
+    MachinePlan plan;
+    try {
+        plan = module.plan(job, text);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "invalid job: %s\n", e.what());
+        return kInvalidJob;
+    }
+    if (!plan.ok()) {
+        std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
-    const auto program = buildPipeRobotProgram(job, plan, text);
+    const auto program = plan.program;
 
-    std::vector<std::unique_ptr<SimulatedDrive>> drives;
     EngineDevices devices;
+    EngineConfig config;
+    config.period_s = job.sim.period_s;
     // CANopen drives (the job's devices section or --devices canopen): always real time.
     const int overCan = usesCanOpen(args, job);
     if (overCan < 0) return kUsage;
+    std::string why;
+    if (overCan && !module.supportsCanOpen(&why)) {
+        std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", why.c_str());
+        return kInvalidJob;
+    }
     CanRunOptions canOptions;
     if (const int code = overCan ? parseCanOptions(args, canOptions) : 0) return code;
     CanEngineDevices can;
+    SimulatedTorch canTorch; // the torch is simulated on the CAN path as well
+    std::unique_ptr<MachineSimRig> rig;
     std::string canError;
-    if (overCan && !can.start(job, canOptions, &canError)) {
-        std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
-        return kFailure;
-    }
-    for (int i = 0; overCan && i < kAxisCount; ++i)
-        devices.axes[static_cast<size_t>(i)] = can.axis(i);
-    for (int i = 0; !overCan && i < kAxisCount; ++i) {
-        SimulatedDriveConfig dc;
-        dc.gains = job.controller[static_cast<size_t>(i)];
-        dc.plant = job.plant[static_cast<size_t>(i)];
-        dc.period_s = job.sim.period_s;
-        dc.initial_position = program->reference[i];
-        drives.push_back(std::make_unique<SimulatedDrive>(dc));
-        devices.axes[static_cast<size_t>(i)] = drives.back().get();
-    }
-    SimulatedTorch torch;
-    devices.torch = &torch;
-
-    EngineConfig config;
-    config.period_s = job.sim.period_s;
     if (overCan) {
+        if (!can.start(job, canOptions, &canError)) {
+            std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
+            return kFailure;
+        }
+        for (int i = 0; i < kAxisCount; ++i)
+            devices.axes[static_cast<size_t>(i)] = can.axis(i);
+        devices.torch = &canTorch;
         can.tune(config, job);
         realtime = true;
+    } else {
+        std::string error;
+        rig = makeSimulatedRig(job, *program, &error);
+        if (!rig) {
+            std::fprintf(stderr, "cutcell-cli run: %s\n", error.c_str());
+            return kFailure;
+        }
+        devices = rig->devices();
+        rig->configure(config);
     }
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
     MotionEngine engine(devices, config);
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.
-    const double budget_s = 60 + 2 * plan.cut_time_s;
+    const double budget_s = 60 + 2 * program->cut_time_s;
     const auto step = [&](EngineState target) {
         return runUntil(engine, realtime, target, budget_s, quiet);
     };
@@ -157,17 +166,17 @@ int runRun(const Args& args) {
                      toString(engine.state()));
         return kFailure;
     }
-    report.method = toString(job.method);
-    report.max_direction_deviation_deg = plan.max_deviation_deg;
     const CycleStats cs = engine.cycleStats();
     const std::string dir = engine.lastRunDirectory();
     if (!dir.empty()) std::fprintf(stderr, "run log: %s\n", dir.c_str());
-    std::fprintf(stderr,
-                 "%s: %llu cycles, %llu overruns, jitter p99 %.1f us, telemetry dropped %llu\n",
-                 outcome.c_str(), static_cast<unsigned long long>(cs.cycles),
-                 static_cast<unsigned long long>(cs.overruns), cs.jitter_us_p99,
-                 static_cast<unsigned long long>(cs.telemetry_dropped));
-    const std::string out = json::write(reportToJson(report));
+    std::fprintf(
+        stderr, "%s: %llu cycles, %llu overruns, jitter p99 %.1f us, telemetry dropped %llu\n",
+        rig ? rig->summary(outcome).c_str() : outcome.c_str(),
+        static_cast<unsigned long long>(cs.cycles), static_cast<unsigned long long>(cs.overruns),
+        cs.jitter_us_p99, static_cast<unsigned long long>(cs.telemetry_dropped));
+    json::Value doc = module.runReport(job, plan, report);
+    if (rig) rig->addToReport(doc);
+    const std::string out = json::write(doc);
     const std::string reportFile = option(args, "--report");
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
         return rc;

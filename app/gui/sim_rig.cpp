@@ -1,4 +1,5 @@
 #include "sim_rig.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include "can_rig.h"
 #include "machines/sim_rigs.h"

@@ -1,7 +1,7 @@
 // Profile-cutter job keys (round trip, validation messages) and the CLI over them.
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 #include "ui/panels/monitor_views.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include <QLabel>
 #include <QVBoxLayout>

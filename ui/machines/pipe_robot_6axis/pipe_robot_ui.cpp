@@ -1,7 +1,7 @@
 #include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
 
 #include "core/job/default_job.h"
-#include "core/machines/pipe_robot_program.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "ui/machines/pipe_robot_6axis/controller_form.h"
 #include "ui/machines/pipe_robot_6axis/method_form.h"
 #include "ui/machines/pipe_robot_6axis/robot_dh_table_form.h"

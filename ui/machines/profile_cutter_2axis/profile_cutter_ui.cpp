@@ -1,9 +1,9 @@
 #include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
 
-#include "core/io/gcode_export.h"
+#include "core/machines/profile_cutter/gcode_export.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
-#include "core/machines/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_form.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_plan.h"
 

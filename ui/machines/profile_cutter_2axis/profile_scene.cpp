@@ -1,7 +1,7 @@
 #include "ui/machines/profile_cutter_2axis/profile_scene.h"
 
 #include "core/job/job.h"
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 
 #include <algorithm>
 #include <cmath>
