@@ -1,5 +1,7 @@
 #include "ui/machine/machine_ui_registry.h"
 
+#include "core/machine/machine_registry.h"
+
 #include <QObject>
 
 #include <mutex>
@@ -29,7 +31,12 @@ const MachineUi* findMachineUi(std::string_view id) {
 }
 
 const MachineUi* machineUiFor(const cutcell::Job& job) {
-    return findMachineUi(job.machine);
+    // The core module decides which machine a job is for (schema-1 jobs without a machine key
+    // get the default machine); the MachineUi is found by the module's id.
+    const cutcell::MachineModule* module = job.machine.empty()
+                                               ? cutcell::findMachine(cutcell::schema1DefaultMachine())
+                                               : cutcell::findMachine(job.machine);
+    return module ? findMachineUi(module->id()) : nullptr;
 }
 
 std::string MachineUi::exportText(ExportKind, const cutcell::Job&, QString*) const {
