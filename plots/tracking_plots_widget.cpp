@@ -154,7 +154,7 @@ struct TrackingPlotsWidget::Impl {
             if (!unitOrder.contains(units[i])) unitOrder << units[i];
         for (const QString& unit : unitOrder) {
             const int plot = shown;
-            QCustomPlot* p = usePlot(TrackingPlotsWidget::tr("axis error (%1)").arg(unit));
+            QCustomPlot* p = usePlot(TrackingPlotsWidget::tr("error (%1)").arg(unit));
             for (int i = 0; i < axes; ++i) {
                 if (units[i] != unit) continue;
                 QCPGraph* g = p->addGraph();

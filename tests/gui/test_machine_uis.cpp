@@ -137,7 +137,7 @@ class TestMachineUis : public QObject {
         int degPlot = -1, mmPlot = -1;
         for (int i = 0; i < titles.size(); ++i) {
             if (titles[i].contains("(deg)")) degPlot = i;
-            if (titles[i].startsWith("axis error (mm)")) mmPlot = i;
+            if (titles[i] == "error (mm)") mmPlot = i;
             const QStringList traces = plots->plotTraceNames(i);
             QVERIFY2(!(traces.contains("x") || traces.contains("y") || traces.contains("z")),
                      qPrintable(titles[i]));

@@ -158,7 +158,7 @@ void TstTrackingPlots::oneUnitPerPlot() {
     w.show();
     w.setAxes({"A", "X", "B"}, {"deg", "mm", "deg"});
     w.setTipTraces({}, {});
-    QCOMPARE(w.plotTitles(), QStringList({"axis error (deg)", "axis error (mm)"}));
+    QCOMPARE(w.plotTitles(), QStringList({"error (deg)", "error (mm)"}));
     QCOMPARE(w.plotTraceNames(0), QStringList({"A", "B"}));
     QCOMPARE(w.plotTraceNames(1), QStringList({"X"}));
     const double e[3] = {0.25, -1.5, 0.125};

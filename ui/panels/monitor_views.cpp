@@ -110,10 +110,10 @@ void PlotsPanel::setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot ti
         plots_->setTipTraces({}, {});
         break;
     case TipErrorPlot::BaseXyz:
-        plots_->setTipTraces({"x", "y", "z"}, tr("Cartesian error, base frame (mm)"));
+        plots_->setTipTraces({"x", "y", "z"}, tr("Cartesian error (mm)"));
         break;
     case TipErrorPlot::MissOnPipe:
-        plots_->setTipTraces({tr("miss")}, tr("torch miss on the pipe (mm)"));
+        plots_->setTipTraces({tr("torch miss on the pipe")}, tr("miss (mm)"));
         break;
     }
 #endif
