@@ -90,13 +90,30 @@ struct TrackingPlotsWidget::Impl {
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->setNoAntialiasingOnDrag(true);
         p->xAxis->setLabel(QStringLiteral("t (s)"));
-        p->yAxis->setLabel(yLabel);
+        // The plot's name and its legend sit in a row above the axes: a legend inside the axis
+        // rect covered the newest data and was cut in short plots, and a vertical y label
+        // ("Cartesian error (mm)") was cut when the plot was shorter than the text.
+        auto* head = new QCPLayoutGrid;
+        p->plotLayout()->insertRow(0);
+        p->plotLayout()->setRowStretchFactor(0, 0.001);
+        p->plotLayout()->addElement(0, 0, head);
+        auto* title = new QCPTextElement(p, yLabel, QFont(self->font().family(), 9, QFont::Bold));
+        title->setObjectName(QStringLiteral("plotTitle"));
+        head->addElement(0, 0, title);
         p->legend->setVisible(true);
-        p->legend->setBrush(QColor(255, 255, 255, 210));
+        p->legend->setBrush(Qt::NoBrush);
+        p->legend->setBorderPen(Qt::NoPen);
         p->legend->setFont(QFont(self->font().family(), 8));
         p->legend->setSelectableParts(QCPLegend::spNone);
-        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-        p->setMinimumHeight(140);
+        p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+        p->legend->setWrap(3);
+        p->legend->setRowSpacing(0);
+        p->legend->setColumnSpacing(6);
+        head->addElement(0, 1, p->legend); // takes it out of the axis rect's inset layout
+        head->setColumnStretchFactor(0, 1);
+        head->setColumnStretchFactor(1, 2);
+        head->setMargins(QMargins(0, 0, 0, 0));
+        p->setMinimumHeight(90); // short screens: the 3D view needs the height more
         QObject::connect(p, &QCustomPlot::legendClick, self,
                          [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
                              auto* pli = qobject_cast<QCPPlottableLegendItem*>(item);
@@ -108,7 +125,8 @@ struct TrackingPlotsWidget::Impl {
                          });
         // Zooming or panning by hand means the user wants that range: stop autoscaling.
         const auto manual = [this, p](QMouseEvent* e) {
-            if (p->legend->visible() && p->legend->selectTest(e->position(), false) >= 0) return;
+            if (p->legend->visible() && p->legend->outerRect().contains(e->position().toPoint()))
+                return;
             autoscale = false;
         };
         QObject::connect(p, &QCustomPlot::mousePress, self, manual);
