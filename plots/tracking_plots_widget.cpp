@@ -104,6 +104,7 @@ struct TrackingPlotsWidget::Impl {
         p->legend->setBrush(Qt::NoBrush);
         p->legend->setBorderPen(Qt::NoPen);
         p->legend->setFont(QFont(self->font().family(), 8));
+        p->legend->setTextColor(Qt::black);
         p->legend->setSelectableParts(QCPLegend::spNone);
         p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
         p->legend->setWrap(3);
@@ -149,6 +150,13 @@ struct TrackingPlotsWidget::Impl {
             g->setPen(QPen(kCartColours[k]));
             g->setName(QString::fromLatin1(kCartNames[k]));
             g->setAdaptiveSampling(true);
+        }
+        // The legend's row is as tall as its rows of three entries (a nested layout grid did not
+        // grow by itself and cut the entries' text).
+        for (QCustomPlot* p : {jointPlot, cartPlot}) {
+            const int rows = (p->graphCount() + 2) / 3;
+            const int line = QFontMetrics(p->legend->font()).height() + 3;
+            if (auto* head = p->legend->layout()) head->setMinimumSize(0, rows * line + 4);
         }
         fullResync = true;
         dirty = true;

@@ -28,6 +28,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -73,6 +74,7 @@ void MainWindow::buildLayout() {
     alarms_ = new AlarmPanel(this);
 
     auto* centre = new QSplitter(Qt::Vertical, this);
+    centre->setObjectName("centreSplitter");
     centre->addWidget(cell_);
     centre->addWidget(plots_);
     centre->setStretchFactor(0, 3);
@@ -115,6 +117,7 @@ void MainWindow::buildLayout() {
     top->setSizes({440, 900});
 
     auto* main = new QSplitter(Qt::Vertical, this);
+    main->setObjectName("mainSplitter");
     main->addWidget(top);
     bottomTabs_ = new QTabWidget(this);
     bottomTabs_->setObjectName("bottomTabs");
@@ -424,6 +427,18 @@ bool MainWindow::maybeSave() {
                                    QMessageBox::Save);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (splitSet_) return;
+    splitSet_ = true;
+    // The first show decides the split for the window's real size (1280x720 as well as
+    // 1600x1000): the 3D view gets most of the centre, the log a fifth of the height.
+    auto* main = findChild<QSplitter*>(QStringLiteral("mainSplitter"));
+    auto* centre = findChild<QSplitter*>(QStringLiteral("centreSplitter"));
+    if (main) main->setSizes({main->height() * 4 / 5, main->height() / 5});
+    if (centre) centre->setSizes({centre->height() * 3 / 5, centre->height() * 2 / 5});
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -76,6 +76,7 @@ class MainWindow : public QMainWindow {
 
   protected:
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
 
   private:
     void buildLayout();
@@ -119,6 +120,7 @@ class MainWindow : public QMainWindow {
     QElapsedTimer sinceDisplayFrame_;
     cutcell::EngineState shownState_ = cutcell::EngineState::Idle;
     bool shownTorch_ = false;
+    bool splitSet_ = false;
 };
 
 } // namespace CutCell::ui

@@ -5,6 +5,7 @@
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
 #include "ui/view3d/view_style.h"
+#include "ui/view3d/vtk_gl_window.h"
 
 #include <QApplication>
 #include <QMouseEvent>

@@ -55,15 +55,15 @@ DroPanel::DroPanel(QWidget* parent)
     }
     // One jog row: axis, - / +, step.
     auto* jog = new QHBoxLayout;
-    jog->addWidget(new QLabel(tr("Jog"), this));
     axis_->setObjectName("jogAxis");
+    axis_->setToolTip(tr("The axis to jog"));
     axis_->setMinimumWidth(60);
     axis_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     axis_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    axis_->setMinimumContentsLength(6);
+    axis_->setMinimumContentsLength(4);
     jog->addWidget(axis_, 1);
     for (QPushButton* b : {minus_, plus_}) {
-        b->setFixedSize(40, 30);
+        b->setFixedSize(36, 30);
         b->setFocusPolicy(Qt::NoFocus);
         b->setAutoRepeat(false);
         jog->addWidget(b);
@@ -75,6 +75,8 @@ DroPanel::DroPanel(QWidget* parent)
     connect(minus_, &QPushButton::released, this, &DroPanel::onReleased);
     connect(plus_, &QPushButton::released, this, &DroPanel::onReleased);
     step_->setObjectName("jogStep");
+    step_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    step_->setMinimumContentsLength(4);
     for (double st : kSteps)
         step_->addItem(st == 0 ? tr("cont.") : QLocale().toString(st, 'g', 3), st);
     step_->setCurrentIndex(3);
