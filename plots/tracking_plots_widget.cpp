@@ -90,9 +90,8 @@ struct TrackingPlotsWidget::Impl {
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->setNoAntialiasingOnDrag(true);
         p->xAxis->setLabel(QStringLiteral("t (s)"));
-        // The plot's name and its legend sit in a row above the axes: a legend inside the axis
-        // rect covered the newest data and was cut in short plots, and a vertical y label
-        // ("Cartesian error (mm)") was cut when the plot was shorter than the text.
+        // The plot's name sits in a row above the axes: a vertical y label ("Cartesian error
+        // (mm)") was cut when the plot was shorter than the text.
         auto* head = new QCPLayoutGrid;
         p->plotLayout()->insertRow(0);
         p->plotLayout()->setRowStretchFactor(0, 0.001);
@@ -101,18 +100,18 @@ struct TrackingPlotsWidget::Impl {
         title->setObjectName(QStringLiteral("plotTitle"));
         head->addElement(0, 0, title);
         p->legend->setVisible(true);
-        p->legend->setBrush(Qt::NoBrush);
-        p->legend->setBorderPen(Qt::NoPen);
+        p->legend->setBrush(QColor(255, 255, 255, 200));
         p->legend->setFont(QFont(self->font().family(), 8));
         p->legend->setTextColor(Qt::black);
         p->legend->setSelectableParts(QCPLegend::spNone);
+        // Entries in rows of three at the top left: the newest data is at the right edge, and a
+        // column of six entries no longer outgrows a short plot (its last entry was cut).
         p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
         p->legend->setWrap(3);
         p->legend->setRowSpacing(0);
         p->legend->setColumnSpacing(6);
-        head->addElement(0, 1, p->legend); // takes it out of the axis rect's inset layout
+        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
         head->setColumnStretchFactor(0, 1);
-        head->setColumnStretchFactor(1, 2);
         head->setMargins(QMargins(0, 0, 0, 0));
         p->setMinimumHeight(90); // short screens: the 3D view needs the height more
         QObject::connect(p, &QCustomPlot::legendClick, self,
@@ -150,13 +149,6 @@ struct TrackingPlotsWidget::Impl {
             g->setPen(QPen(kCartColours[k]));
             g->setName(QString::fromLatin1(kCartNames[k]));
             g->setAdaptiveSampling(true);
-        }
-        // The legend's row is as tall as its rows of three entries (a nested layout grid did not
-        // grow by itself and cut the entries' text).
-        for (QCustomPlot* p : {jointPlot, cartPlot}) {
-            const int rows = (p->graphCount() + 2) / 3;
-            const int line = QFontMetrics(p->legend->font()).height() + 3;
-            if (auto* head = p->legend->layout()) head->setMinimumSize(0, rows * line + 4);
         }
         fullResync = true;
         dirty = true;
