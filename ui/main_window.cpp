@@ -211,7 +211,7 @@ void MainWindow::connectRun() {
     connect(controls_, &ControlPanel::releaseEStopRequested, run_,
             &RunController::releaseEmergencyStop);
     connect(run_, &RunController::eStopPressedChanged, controls_, &ControlPanel::setEStopPressed);
-    connect(run_, &RunController::runStarted, this, [this] {
+    connect(run_, &RunController::runStarting, this, [this] {
         // The previous run's data goes at Start, whoever started it (button, key, auto run).
         plots_->clear();
         progress_->beginRun();

@@ -276,7 +276,9 @@ void RunController::home() {
     if (rig_) rig_->engine().home();
 }
 void RunController::start() {
-    if (rig_ && blocked_.isEmpty()) rig_->engine().start();
+    if (!rig_ || !blocked_.isEmpty()) return;
+    emit runStarting();
+    rig_->engine().start();
 }
 void RunController::feedHold() {
     if (rig_) rig_->engine().feedHold();
@@ -371,6 +373,7 @@ void RunController::stepAutoRun() {
         if (!bridge_->last().homed) {
             if (!autoHomeSent_) autoHomeSent_ = engine.home();
         } else if (!autoStartSent_) {
+            emit runStarting();
             autoStartSent_ = engine.start();
         }
         break;

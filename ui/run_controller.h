@@ -78,6 +78,9 @@ class RunController : public QObject {
     void autoRunFinished(bool ok, const QString& reason);
     void programLoaded(std::shared_ptr<const cutcell::MotionProgram> program);
     void eStopPressedChanged(bool pressed);
+    // Start is being sent (button, key or auto run): the previous run's data can go now (a
+    // fast run may be over before its first state change is seen).
+    void runStarting();
     // A cut began (Ready -> Running) / ended short of its end (emergency stop, fault, abort).
     void runStarted();
     void runStopped(cutcell::EngineState state, const QString& how);
