@@ -61,7 +61,8 @@ struct TrackingPlotsWidget::Impl {
     QStringList tipNames{"x", "y", "z"};
     QString tipTitle; // set in the constructor (translated)
     BoundedSeries ring{6 + kCartTraces, kDefaultCapacity};
-    std::vector<QCustomPlot*> plots; // pool; plots[0..shown) are in use, the rest hidden
+    std::vector<QCustomPlot*> plots;     // pool; plots[0..shown) are in use, the rest hidden
+    std::vector<QCPTextElement*> titles; // the title row of each plot in the pool
     int shown = 0;
     std::vector<QCPGraph*> graphs; // one per trace: axes, then tip traces
     std::vector<int> plotOf;       // the plot index of each trace
@@ -96,12 +97,31 @@ struct TrackingPlotsWidget::Impl {
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->setNoAntialiasingOnDrag(true);
         p->xAxis->setLabel(QStringLiteral("t (s)"));
+        // The plot's name sits in a row above the axes: a vertical y label ("Cartesian error
+        // (mm)") was cut when the plot was shorter than the text. usePlot() sets its text.
+        auto* head = new QCPLayoutGrid;
+        p->plotLayout()->insertRow(0);
+        p->plotLayout()->setRowStretchFactor(0, 0.001);
+        p->plotLayout()->addElement(0, 0, head);
+        auto* title =
+            new QCPTextElement(p, QString(), QFont(self->font().family(), 9, QFont::Bold));
+        title->setObjectName(QStringLiteral("plotTitle"));
+        head->addElement(0, 0, title);
         p->legend->setVisible(true);
-        p->legend->setBrush(QColor(255, 255, 255, 210));
+        p->legend->setBrush(QColor(255, 255, 255, 200));
         p->legend->setFont(QFont(self->font().family(), 8));
+        p->legend->setTextColor(Qt::black);
         p->legend->setSelectableParts(QCPLegend::spNone);
-        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-        p->setMinimumHeight(110);
+        // Entries in rows of three at the top left: the newest data is at the right edge, and a
+        // column of six entries no longer outgrows a short plot (its last entry was cut).
+        p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+        p->legend->setWrap(3);
+        p->legend->setRowSpacing(0);
+        p->legend->setColumnSpacing(6);
+        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+        head->setColumnStretchFactor(0, 1);
+        head->setMargins(QMargins(0, 0, 0, 0));
+        p->setMinimumHeight(90); // short screens: the 3D view needs the height more
         QObject::connect(p, &QCustomPlot::legendClick, self,
                          [this, p](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
                              auto* pli = qobject_cast<QCPPlottableLegendItem*>(item);
@@ -113,7 +133,8 @@ struct TrackingPlotsWidget::Impl {
                          });
         // Zooming or panning by hand means the user wants that range: stop autoscaling.
         const auto manual = [this, p](QMouseEvent* e) {
-            if (p->legend->visible() && p->legend->selectTest(e->position(), false) >= 0) return;
+            if (p->legend->visible() && p->legend->outerRect().contains(e->position().toPoint()))
+                return;
             autoscale = false;
         };
         QObject::connect(p, &QCustomPlot::mousePress, self, manual);
@@ -131,13 +152,14 @@ struct TrackingPlotsWidget::Impl {
                          [this] { viewChanged = true; });
         layout->addWidget(p, 1);
         plots.push_back(p);
+        titles.push_back(title);
         return p;
     }
 
     QCustomPlot* usePlot(const QString& yLabel) {
         if (shown == static_cast<int>(plots.size())) makePlot();
+        titles[size_t(shown)]->setText(yLabel);
         QCustomPlot* p = plots[size_t(shown++)];
-        p->yAxis->setLabel(yLabel);
         p->setVisible(true);
         return p;
     }
@@ -352,7 +374,7 @@ QStringList TrackingPlotsWidget::tipTraceNames() const {
 QStringList TrackingPlotsWidget::plotTitles() const {
     QStringList titles;
     for (int i = 0; i < d->shown; ++i)
-        titles << d->plots[size_t(i)]->yAxis->label();
+        titles << d->titles[size_t(i)]->text();
     return titles;
 }
 

@@ -9,7 +9,9 @@
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machine_exports.h"
 #include "ui/machine_views.h"
+#include "ui/panels/alarm_panel.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/dro_panel.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
@@ -27,6 +29,8 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -67,24 +71,44 @@ void MainWindow::buildLayout() {
     devices_ = new cutcell::ui::DevicePanel(this);
     devices_->setObjectName("devicePanel");
     devices_->setChoiceVisible(false); // chosen in the "Cycle & devices" parameter tab
+    dro_ = new DroPanel(this);
+    alarms_ = new AlarmPanel(this);
 
     auto* centre = new QSplitter(Qt::Vertical, this);
+    centre->setObjectName("centreSplitter");
     centre->addWidget(cell_);
     centre->addWidget(plots_);
     centre->setStretchFactor(0, 3);
     centre->setStretchFactor(1, 2);
-    centre->setSizes({560, 360});
+    centre->setSizes({600, 360});
+    centre->setChildrenCollapsible(false);
 
-    // The operator column: E-STOP first, always on screen.
+    // The operator column: E-STOP and the buttons first, always on screen; lamps, progress and
+    // the position readout below them scroll when the window is short (1280x720), so nothing
+    // is ever cut.
     auto* column = new QFrame(this);
+    column_ = column;
     column->setObjectName("operatorColumn");
     column->setFixedWidth(320);
     auto* cv = new QVBoxLayout(column);
     cv->setContentsMargins(0, 0, 0, 0);
+    cv->setSpacing(0);
     cv->addWidget(controls_);
-    cv->addWidget(lamps_);
-    cv->addWidget(progress_);
-    cv->addStretch(1);
+    auto* status = new QWidget;
+    status->setObjectName("operatorStatus");
+    auto* sv = new QVBoxLayout(status);
+    sv->setContentsMargins(0, 0, 0, 0);
+    sv->addWidget(lamps_);
+    sv->addWidget(progress_);
+    sv->addWidget(dro_);
+    sv->addStretch(1);
+    auto* statusScroll = new QScrollArea(column);
+    statusScroll->setObjectName("operatorStatusScroll");
+    statusScroll->setWidget(status);
+    statusScroll->setWidgetResizable(true);
+    statusScroll->setFrameShape(QFrame::NoFrame);
+    statusScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    cv->addWidget(statusScroll, 1);
 
     auto* top = new QSplitter(Qt::Horizontal, this);
     top->addWidget(params_);
@@ -94,10 +118,12 @@ void MainWindow::buildLayout() {
     top->setSizes({440, 900});
 
     auto* main = new QSplitter(Qt::Vertical, this);
+    main->setObjectName("mainSplitter");
     main->addWidget(top);
     bottomTabs_ = new QTabWidget(this);
     bottomTabs_->setObjectName("bottomTabs");
     bottomTabs_->addTab(log_, tr("Event log"));
+    bottomTabs_->addTab(alarms_, tr("Alarms"));
     bottomTabs_->addTab(devices_, tr("Devices"));
     main->addWidget(bottomTabs_);
     main->setStretchFactor(0, 4);
@@ -157,16 +183,19 @@ void MainWindow::buildMenus() {
         QString err;
         if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
+    file->addAction(tr("Export alarms as CSV..."), this, [this] {
+        const QString p =
+            QFileDialog::getSaveFileName(this, tr("Export alarms"), {}, "CSV (*.csv)");
+        QString err;
+        if (!p.isEmpty() && !alarms_->exportCsv(p, &err)) log_->add(Severity::Error, err);
+    });
     addCutExportMenu(file, this, editor_, log_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     auto* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keys"), this, [this] {
-        QMessageBox::information(
-            this, tr("Keys"),
-            tr("%1: EMERGENCY STOP (works from any field)\nCtrl+N / Ctrl+O / Ctrl+S: job files")
-                .arg(ControlPanel::kEStopKey));
+        QMessageBox::information(this, tr("Keys"), ControlPanel::keysHelp());
     });
 }
 
@@ -174,14 +203,41 @@ void MainWindow::connectRun() {
     connect(controls_, &ControlPanel::emergencyStopRequested, run_, &RunController::emergencyStop);
     connect(controls_, &ControlPanel::enableRequested, run_, &RunController::enable);
     connect(controls_, &ControlPanel::homeRequested, run_, &RunController::home);
-    connect(controls_, &ControlPanel::startRequested, this, [this] {
-        plots_->clear();
-        run_->start();
-    });
+    connect(controls_, &ControlPanel::startRequested, run_, &RunController::start);
     connect(controls_, &ControlPanel::feedHoldRequested, run_, &RunController::feedHold);
     connect(controls_, &ControlPanel::resumeRequested, run_, &RunController::resume);
     connect(controls_, &ControlPanel::abortRequested, run_, &RunController::abort);
     connect(controls_, &ControlPanel::resetRequested, run_, &RunController::reset);
+    connect(controls_, &ControlPanel::releaseEStopRequested, run_,
+            &RunController::releaseEmergencyStop);
+    connect(run_, &RunController::eStopPressedChanged, controls_, &ControlPanel::setEStopPressed);
+    connect(run_, &RunController::runStarting, this, [this] {
+        // The previous run's data goes at Start, whoever started it (button, key, auto run).
+        plots_->clear();
+        progress_->beginRun();
+        if (controls_->overridePercent() != 100)
+            log_->add(Severity::Warning, tr("This run starts at a speed override of %1 %.")
+                                             .arg(controls_->overridePercent()));
+    });
+    connect(run_, &RunController::runStopped, this, &MainWindow::onRunStopped);
+    connect(run_, &RunController::countersChanged, progress_, &ProgressPanel::setCycleFigures);
+    connect(run_, &RunController::programLoaded, this,
+            [this](std::shared_ptr<const cutcell::MotionProgram> program) {
+                const MachineUi* machine = run_->programMachine();
+                dro_->setProgram(program, machine ? machine->axes() : std::vector<AxisLabel>{});
+                if (program && !program->spline.empty())
+                    progress_->setApproachTarget(program->spline.evaluate(0).q,
+                                                 program->axis_count);
+                if (program) progress_->setPathLength(program->length_mm);
+            });
+    connect(dro_, &DroPanel::jogRequested, run_, &RunController::jog);
+    connect(dro_, &DroPanel::jogContinuousRequested, run_, &RunController::jogContinuous);
+    connect(dro_, &DroPanel::jogStopRequested, run_, &RunController::stopJog);
+    connect(alarms_, &AlarmPanel::raised, this, [this] { bottomTabs_->setCurrentWidget(alarms_); });
+    connect(alarms_, &AlarmPanel::changed, this, [this](int active, int) {
+        bottomTabs_->setTabText(bottomTabs_->indexOf(alarms_),
+                                active ? tr("Alarms (%1)").arg(active) : tr("Alarms"));
+    });
     connect(controls_, &ControlPanel::overrideChanged, run_, &RunController::setOverride);
     connect(run_, &RunController::startBlockedChanged, controls_, &ControlPanel::setStartBlocked);
     controls_->setStartBlocked(run_->startBlockedReason());
@@ -220,6 +276,13 @@ void MainWindow::connectRun() {
     auto* bridge = run_->bridge();
     connect(bridge, &EngineBridge::samples, this, &MainWindow::onSamples);
     connect(bridge, &EngineBridge::event, log_, &EventLogPanel::addEngineEvent);
+    connect(bridge, &EngineBridge::event, alarms_, &AlarmPanel::addEngineEvent);
+    connect(bridge, &EngineBridge::event, this, [this](const cutcell::EngineEvent& e) {
+        // The run's log folder gets the run's alarms (alarms.json beside summary.json).
+        if (e.kind != cutcell::EventKind::RunEnded || !run_->rig()) return;
+        alarms_->setRunDirectory(e.run_id,
+                                 QString::fromStdString(run_->rig()->engine().lastRunDirectory()));
+    });
     connect(bridge, &EngineBridge::stateChanged, this, &MainWindow::onState);
     connect(bridge, &EngineBridge::cycleStats, this, [this](const cutcell::CycleStats& c) {
         QString text = tr("cycle %1 ms, jitter p99 %2 us, overruns %3")
@@ -248,6 +311,7 @@ void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {
     shownTorch_ = last.torch_on;
     plots_->redraw();
     progress_->setSample(last);
+    dro_->setSample(last);
     cell_->setSample(last);
     lamps_->setTorch(last.torch_on);
     controls_->setState(last.state, last.homed);
@@ -255,6 +319,8 @@ void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {
 
 void MainWindow::onState(EngineState s) {
     lamps_->setState(s);
+    dro_->setState(s);
+    alarms_->setState(s);
     controls_->setState(s, run_->bridge()->last().homed);
     plots_->setPaused(s == EngineState::Paused);
     stateLabel_->setText(QString::fromLatin1(cutcell::toString(s)));
@@ -286,10 +352,30 @@ void MainWindow::refreshRecentMenu() {
     }
 }
 
+void MainWindow::onRunStopped(EngineState state, const QString& how) {
+    (void)state;
+    progress_->markStopped(how);
+    // A stop is a deliberate break: the next run does not inherit a forgotten 150 %.
+    if (controls_->overridePercent() != 100) {
+        log_->add(Severity::Warning, tr("Speed override set back to 100 % after the %1 (was %2 %).")
+                                         .arg(how)
+                                         .arg(controls_->overridePercent()));
+        controls_->setOverridePercent(100);
+    }
+}
+
+void MainWindow::showFileError(const QString& title, const QString& message) {
+    if (errorPrompt_)
+        errorPrompt_(title, message);
+    else if (isVisible())
+        QMessageBox::critical(this, title, message);
+}
+
 bool MainWindow::openJob(const QString& path, QString* error) {
     QString err;
     if (!document_->open(path, &err)) {
         log_->add(Severity::Error, err);
+        showFileError(tr("Cannot open the job"), err);
         if (error) *error = err;
         return false;
     }
@@ -328,6 +414,7 @@ bool MainWindow::save() {
     QString err;
     if (!document_->save(&err)) {
         log_->add(Severity::Error, err);
+        showFileError(tr("Cannot save the job"), err);
         return false;
     }
     log_->add(Severity::Info, tr("Saved %1").arg(document_->path()));
@@ -343,6 +430,7 @@ bool MainWindow::saveAs(const QString& path) {
     QString err;
     if (!document_->saveAs(p, &err)) {
         log_->add(Severity::Error, err);
+        showFileError(tr("Cannot save the job"), err);
         return false;
     }
     log_->add(Severity::Info, tr("Saved %1").arg(document_->path()));
@@ -361,6 +449,18 @@ bool MainWindow::maybeSave() {
                                    QMessageBox::Save);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (splitSet_) return;
+    splitSet_ = true;
+    // The first show decides the split for the window's real size (1280x720 as well as
+    // 1600x1000): the 3D view gets most of the centre, the log a fifth of the height.
+    auto* main = findChild<QSplitter*>(QStringLiteral("mainSplitter"));
+    auto* centre = findChild<QSplitter*>(QStringLiteral("centreSplitter"));
+    if (main) main->setSizes({main->height() * 4 / 5, main->height() / 5});
+    if (centre) centre->setSizes({centre->height() * 3 / 5, centre->height() * 2 / 5});
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -25,7 +25,9 @@ class DevicePanel;
 
 namespace CutCell::ui {
 
+class AlarmPanel;
 class CellViewPanel;
+class DroPanel;
 class ControlPanel;
 class EventLogPanel;
 class JobDocument;
@@ -58,6 +60,11 @@ class MainWindow : public QMainWindow {
     }
     // File -> New as the menu does it: unsaved changes, the machine, the new job.
     void newJobFromMenu();
+    // Replaces the file error dialog (tests, unattended runs): gets the title and the message.
+    // Without it the dialog is shown while the window is on screen (the log always has it).
+    void setErrorPrompt(std::function<void(const QString&, const QString&)> prompt) {
+        errorPrompt_ = std::move(prompt);
+    }
 
     JobEditor* editor() const { return editor_; }
     JobDocument* document() const { return document_; }
@@ -70,9 +77,13 @@ class MainWindow : public QMainWindow {
     CellViewPanel* cellView() const { return cell_; }
     PlotsPanel* plots() const { return plots_; }
     cutcell::ui::DevicePanel* devicePanel() const { return devices_; }
+    DroPanel* dro() const { return dro_; }
+    AlarmPanel* alarms() const { return alarms_; }
+    QWidget* operatorColumn() const { return column_; }
 
   protected:
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
 
   private:
     void buildLayout();
@@ -83,6 +94,8 @@ class MainWindow : public QMainWindow {
     void onSamples(const std::vector<cutcell::TelemetrySample>& batch);
     void onState(cutcell::EngineState s);
     void refreshDevicePanel();
+    void showFileError(const QString& title, const QString& message);
+    void onRunStopped(cutcell::EngineState state, const QString& how);
 
     JobEditor* editor_;
     JobDocument* document_;
@@ -93,6 +106,9 @@ class MainWindow : public QMainWindow {
     ProgressPanel* progress_ = nullptr;
     EventLogPanel* log_ = nullptr;
     cutcell::ui::DevicePanel* devices_ = nullptr;
+    DroPanel* dro_ = nullptr;
+    AlarmPanel* alarms_ = nullptr;
+    QWidget* column_ = nullptr;
     QTimer* deviceTimer_ = nullptr;
     QTabWidget* bottomTabs_ = nullptr; // event log, devices
     bool showingBus_ = false;
@@ -106,11 +122,13 @@ class MainWindow : public QMainWindow {
     QPushButton* planCancel_ = nullptr;
     std::function<int()> savePrompt_;
     std::function<std::string()> machinePrompt_;
+    std::function<void(const QString&, const QString&)> errorPrompt_;
     // Display frames: the panels follow the telemetry at most every kDisplayFrameMs.
     static constexpr int kDisplayFrameMs = 60;
     QElapsedTimer sinceDisplayFrame_;
     cutcell::EngineState shownState_ = cutcell::EngineState::Idle;
     bool shownTorch_ = false;
+    bool splitSet_ = false;
 };
 
 } // namespace CutCell::ui

@@ -9,6 +9,9 @@
 
 #include <QTimer>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace CutCell::ui {
@@ -47,6 +50,11 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
         updateBlocked();
     });
     connect(editor_, &JobEditor::jobReset, this, &RunController::replanNow);
+    connect(editor_, &JobEditor::jobReset, this, [this] { // a part counter per job
+        parts_ = 0;
+        lastCycleS_ = 0;
+        emit countersChanged(parts_, lastCycleS_);
+    });
     connect(planner_, &PlanWorker::started, this, [this] {
         emit planStarted();
         updateBlocked();
@@ -158,9 +166,12 @@ void RunController::loadProgram() {
         if (!machine) throw std::invalid_argument("no machine module for this job");
         const auto text = cutcell::json::write(cutcell::jobToJson(planJob_));
         auto program = machine->buildProgram(planJob_, *plan_, text);
-        if (!rig_->engine().load(std::move(program)))
+        if (!rig_->engine().load(program))
             throw std::runtime_error("the engine's command queue is full");
         programLoaded_ = true;
+        program_ = std::move(program);
+        programMachine_ = machine;
+        emit programLoaded(program_);
     } catch (const std::exception& e) {
         programError_ = tr("cannot load the program: %1").arg(QString::fromUtf8(e.what()));
         emit message(Severity::Error, programError_);
@@ -170,6 +181,22 @@ void RunController::loadProgram() {
 }
 
 void RunController::onState(EngineState s) {
+    const EngineState was = lastState_;
+    lastState_ = s;
+    const bool wasCutting = was == EngineState::Running || was == EngineState::Paused;
+    if (s == EngineState::Running && !wasCutting) emit runStarted();
+    if (s == EngineState::Completed && wasCutting) {
+        ++parts_;
+        lastCycleS_ = bridge_->last().elapsed_s;
+        emit countersChanged(parts_, lastCycleS_);
+    }
+    if (s == EngineState::EmergencyStop && was != s)
+        emit runStopped(s, tr("emergency stop"));
+    else if (s == EngineState::Fault && was != s)
+        emit runStopped(s, tr("fault"));
+    else if (s == EngineState::Ready && wasCutting)
+        emit runStopped(s, tr("abort"));
+    if (s != EngineState::Jogging) jogging_ = false;
     if (programPending_ && !busyState(s)) loadProgram();
     updateBlocked();
     if (autoRun_) stepAutoRun();
@@ -218,7 +245,8 @@ void RunController::updateBlocked() {
             r = tr("cut completed - press Home to cut again");
             break;
         case EngineState::EmergencyStop:
-            r = tr("EMERGENCY STOP latched - press Reset");
+            r = estopPressed_ ? tr("EMERGENCY STOP pressed - release it, then press Reset")
+                              : tr("EMERGENCY STOP latched - press Reset");
             break;
         case EngineState::Fault:
             r = tr("fault - see the event log, then press Reset");
@@ -238,7 +266,9 @@ void RunController::home() {
     if (rig_) rig_->engine().home();
 }
 void RunController::start() {
-    if (rig_ && blocked_.isEmpty()) rig_->engine().start();
+    if (!rig_ || !blocked_.isEmpty()) return;
+    emit runStarting();
+    rig_->engine().start();
 }
 void RunController::feedHold() {
     if (rig_) rig_->engine().feedHold();
@@ -255,14 +285,60 @@ void RunController::setOverride(double fraction) {
 
 void RunController::reset() {
     if (!rig_) return;
-    // The operator has pulled the mushroom button back out and acknowledges.
-    if (bridge_->state() == EngineState::EmergencyStop) rig_->engine().releaseEmergencyStop();
+    if (estopPressed_) {
+        emit message(Severity::Warning,
+                     tr("Reset refused: the EMERGENCY STOP is still pressed (Release E-STOP "
+                        "first)."));
+        return;
+    }
     rig_->engine().reset();
 }
 
 void RunController::emergencyStop() {
     emit message(Severity::Error, tr("EMERGENCY STOP pressed by the operator."));
     if (rig_) rig_->engine().emergencyStop();
+    if (!estopPressed_) {
+        estopPressed_ = true;
+        emit eStopPressedChanged(true);
+        updateBlocked();
+    }
+}
+
+void RunController::releaseEmergencyStop() {
+    if (!estopPressed_) return;
+    // The operator has pulled the mushroom button back out; Reset is a second, separate step.
+    if (rig_) rig_->engine().releaseEmergencyStop();
+    estopPressed_ = false;
+    emit message(Severity::Info, tr("EMERGENCY STOP released: press Reset to clear the latch."));
+    emit eStopPressedChanged(false);
+    updateBlocked();
+}
+
+void RunController::jog(int axis, double delta) {
+    if (rig_) rig_->engine().jog(axis, delta);
+}
+
+void RunController::jogContinuous(int axis, int direction) {
+    if (!rig_ || !program_ || axis < 0 || axis >= program_->axis_count || direction == 0) return;
+    const auto& last = bridge_->last();
+    const double at = last.setpoint[axis];
+    // Toward the axis limit, at most one turn (rotary) or a metre (linear) per press; the
+    // release stops the move (stopJog) along its ramp.
+    const double reach =
+        program_->axis_linear[static_cast<size_t>(axis)] ? 1000.0 : 2 * std::numbers::pi;
+    const double limit =
+        direction > 0 ? program_->max_position[axis] : program_->min_position[axis];
+    const double delta = direction > 0 ? std::min(reach, limit - at) : std::max(-reach, limit - at);
+    if (std::abs(delta) < 1e-9) {
+        emit message(Severity::Warning, tr("Jog refused: axis %1 is at its limit.").arg(axis));
+        return;
+    }
+    jogging_ = rig_->engine().jog(axis, delta);
+}
+
+void RunController::stopJog() {
+    if (rig_ && jogging_) rig_->engine().abort();
+    jogging_ = false;
 }
 
 void RunController::startAutoRun() {
@@ -287,6 +363,7 @@ void RunController::stepAutoRun() {
         if (!bridge_->last().homed) {
             if (!autoHomeSent_) autoHomeSent_ = engine.home();
         } else if (!autoStartSent_) {
+            emit runStarting();
             autoStartSent_ = engine.start();
         }
         break;

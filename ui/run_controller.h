@@ -19,6 +19,7 @@ class QTimer;
 namespace CutCell::ui {
 
 class JobEditor;
+class MachineUi;
 class PlanWorker;
 
 class RunController : public QObject {
@@ -37,6 +38,17 @@ class RunController : public QObject {
     // Plans the current job now (after an open or a New; edits replan after a short pause).
     void replanNow();
 
+    // The program the engine runs (null before the first load): axis names, units, limits.
+    std::shared_ptr<const cutcell::MotionProgram> program() const { return program_; }
+    // The machine UI of the loaded program (null before the first load): axis labels.
+    const MachineUi* programMachine() const { return programMachine_; }
+    // Whether the emergency stop request is pressed (until releaseEmergencyStop()).
+    bool eStopPressed() const { return estopPressed_; }
+    // Runs that reached Completed since this job was opened, and the last one's cycle time
+    // (Start to Completed, s; 0 before the first).
+    int partsCompleted() const { return parts_; }
+    double lastCycleS() const { return lastCycleS_; }
+
     // Operator commands (non-blocking requests to the engine).
     void enable();
     void home();
@@ -44,8 +56,14 @@ class RunController : public QObject {
     void feedHold();
     void resume();
     void abort();
-    void reset();
+    void reset(); // clears a fault, or an emergency stop that was released
     void emergencyStop();
+    void releaseEmergencyStop();
+    // Jog one axis while Ready: by `delta` (rad or mm), or continuously toward `direction`
+    // (+1/-1, up to the axis limit) until stopJog().
+    void jog(int axis, double delta);
+    void jogContinuous(int axis, int direction);
+    void stopJog();
     void setOverride(double fraction);
     void cancelPlanning();
 
@@ -61,6 +79,15 @@ class RunController : public QObject {
     void message(cutcell::Severity severity, const QString& text);
     void rigChanged(const QString& description);
     void autoRunFinished(bool ok, const QString& reason);
+    void programLoaded(std::shared_ptr<const cutcell::MotionProgram> program);
+    void eStopPressedChanged(bool pressed);
+    // Start is being sent (button, key or auto run): the previous run's data can go now (a
+    // fast run may be over before its first state change is seen).
+    void runStarting();
+    // A cut began (Ready -> Running) / ended short of its end (emergency stop, fault, abort).
+    void runStarted();
+    void runStopped(cutcell::EngineState state, const QString& how);
+    void countersChanged(int parts, double lastCycleS);
 
   private:
     void onPlanned(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
@@ -85,6 +112,13 @@ class RunController : public QObject {
     bool programLoaded_ = false;
     QString programError_;
     QString blocked_;
+    std::shared_ptr<const cutcell::MotionProgram> program_;
+    const MachineUi* programMachine_ = nullptr;
+    cutcell::EngineState lastState_ = cutcell::EngineState::Idle;
+    bool estopPressed_ = false;
+    bool jogging_ = false;
+    int parts_ = 0;
+    double lastCycleS_ = 0;
     bool autoRun_ = false;
     bool userCancelled_ = false;
     bool autoEnableSent_ = false, autoHomeSent_ = false, autoStartSent_ = false;

@@ -8,6 +8,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QPixmap>
 #include <QTimer>
 
@@ -63,7 +64,8 @@ namespace {
 
 void saveAndExit(MainWindow& window, const QString& path) {
     window.run()->bridge()->poll();
-    const QPixmap shot = window.grab();
+    QImage shot = window.grab().toImage();
+    if (!shot.isNull()) window.cellView()->paintFrameInto(shot, &window);
     if (shot.isNull() || !shot.save(path)) {
         std::fprintf(stderr, "cutcell: cannot write the screenshot %s\n",
                      path.toUtf8().constData());

@@ -12,7 +12,9 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QMessageBox>
 #include <QTabWidget>
+#include <QTimer>
 
 #include <cstdio>
 #include <cstdlib>
@@ -93,17 +95,24 @@ int main(int argc, char** argv) {
     CutCell::ui::MainWindow window(&cutcell::app::makeRig);
     window.resize(size[0].toInt(), size[1].toInt());
     const bool bench = cli.isSet(benchOpt);
+    const bool unattended = bench || cli.isSet(runOpt) || cli.isSet(shotOpt);
+    // Unattended runs report on stderr and exit codes; never wait on a dialog.
+    if (unattended) window.setErrorPrompt([](const QString&, const QString&) {});
+    QString openError;
     if (cli.isSet(runOpt) && !cli.isSet(realTimeOpt) && !bench)
         window.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
     if (cli.isSet(jobOpt)) {
-        QString error;
-        if (!window.openJob(cli.value(jobOpt), &error)) {
-            std::fprintf(stderr, "cutcell: %s\n", error.toUtf8().constData());
+        if (!window.openJob(cli.value(jobOpt), &openError)) {
+            std::fprintf(stderr, "cutcell: %s\n", openError.toUtf8().constData());
             if (cli.isSet(runOpt) || bench) return 1;
         }
     }
     window.parameters()->showVisibleTab(cli.value(tabOpt).toInt());
     window.show();
+    if (!openError.isEmpty() && !unattended) // the window was not on screen when it failed
+        QTimer::singleShot(0, &window, [&window, openError] {
+            QMessageBox::critical(&window, QObject::tr("Cannot open the job"), openError);
+        });
     if (bench) {
         bool ok = false;
         const double seconds = cli.value(benchOpt).toDouble(&ok);

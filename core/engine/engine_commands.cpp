@@ -3,6 +3,7 @@
 #include "core/common/c_format.h"
 #include "core/engine/engine_impl.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -152,6 +153,8 @@ void MotionEngine::Impl::endRun(const char* outcome) {
     r.report.cut_time_s = program ? program->cut_time_s : 0;
     r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;
     r.run_id = runId;
+    r.stop = stopPoint;
+    stopPoint = RunStopPoint{};
     snprintfC(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
     snprintfC(r.outcome.data(), r.outcome.size(), "%s", outcome);
     resultGeneration.store(g + 1, std::memory_order_release);
@@ -159,7 +162,23 @@ void MotionEngine::Impl::endRun(const char* outcome) {
           runId, outcome, samples);
 }
 
+void MotionEngine::Impl::captureStop() {
+    if (!runActive || !program) return;
+    const bool onPath =
+        traj == TrajectoryKind::Path || phase == RunPhase::Finish || phase == RunPhase::Close;
+    const double t = onPath ? std::min(tau, program->cut_time_s) : 0;
+    stopPoint.valid = true;
+    stopPoint.path_time_s = t;
+    stopPoint.progress = program->cut_time_s > 0 ? t / program->cut_time_s : 0;
+    stopPoint.length_mm = stopPoint.progress * program->length_mm;
+    stopPoint.elapsed_s = now - runStartTime;
+    stopPoint.point_count = static_cast<std::uint32_t>(program->point_count);
+    stopPoint.point_index = static_cast<std::uint32_t>(
+        std::min<double>(t / program->spline.dt(), static_cast<double>(program->point_count)));
+}
+
 void MotionEngine::Impl::enterEmergencyStop() {
+    captureStop();
     estopLatched = true;
     latchPress = estopPresses.load(std::memory_order_acquire);
     estopRequestSeen = estopRequestNs.load(std::memory_order_relaxed);
@@ -188,6 +207,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
               wasStopping ? " (controlled stop cut short: drives disabled)" : "");
         return;
     }
+    captureStop();
     stopDevices(cfg.spec.estop_category, StopReason::FaultCat1);
     char outcome[120];
     snprintfC(outcome, sizeof outcome, "fault: %.110s", reason);

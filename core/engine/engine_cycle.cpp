@@ -95,6 +95,7 @@ void MotionEngine::Impl::advance() {
         stopping = StopReason::None;
         holding = false;
         if (why == StopReason::Abort) {
+            captureStop(); // at rest on the path, before the hold resets the path time
             holdAt(setpoint);
             setState(EngineState::Ready, EventKind::Transition,
                      "Aborted: stopped on the path at %.3f s", tau);

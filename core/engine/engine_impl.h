@@ -6,6 +6,7 @@
 #include "core/engine/joint_move.h"
 #include "core/engine/motion_engine.h"
 #include "core/engine/mpsc_queue.h"
+#include "core/engine/run_log.h"
 #include "core/engine/spsc_ring.h"
 #include "core/sim/tracking_stats.h"
 
@@ -38,6 +39,7 @@ struct RunResult {
     std::array<char, 120> outcome{};
     std::array<char, 40> method{};
     std::uint32_t run_id = 0;
+    RunStopPoint stop; // where a run that ended short stopped (summary.json "stop")
 };
 
 struct MotionEngine::Impl {
@@ -150,6 +152,9 @@ struct MotionEngine::Impl {
     void stopDevices(StopCategory category, StopReason reason);
     void disableAll();
     void endRun(const char* outcome);
+    // Notes where the current run is on its path, before a stop resets the trajectory.
+    void captureStop();
+    RunStopPoint stopPoint;
     void beginMove(const JointVector& target, EngineState moveState);
     void beginCut();
 

@@ -75,7 +75,8 @@ void RunLog::event(const EngineEvent& e) {
     std::fflush(file_); // nothing is lost if the program dies after this line
 }
 
-void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c) {
+void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c,
+                    const RunStopPoint& stop) {
     if (runsDir_.empty() || dir_.empty()) return;
     json::Object cycle{{"period_s", c.period_s},
                        {"cycles", static_cast<double>(c.cycles)},
@@ -88,8 +89,16 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                        {"telemetry_dropped", static_cast<double>(c.telemetry_dropped)},
                        {"events_dropped", static_cast<double>(c.events_dropped)},
                        {"last_estop_latency_us", c.last_estop_latency_us}};
-    const json::Value doc(
-        json::Object{{"outcome", outcome}, {"tracking", reportToJson(report)}, {"cycle", cycle}});
+    json::Object top{{"outcome", outcome}, {"tracking", reportToJson(report)}, {"cycle", cycle}};
+    if (stop.valid)
+        top.emplace_back("stop",
+                         json::Object{{"path_time_s", stop.path_time_s},
+                                      {"progress", stop.progress},
+                                      {"length_mm", stop.length_mm},
+                                      {"elapsed_s", stop.elapsed_s},
+                                      {"point_index", static_cast<double>(stop.point_index)},
+                                      {"point_count", static_cast<double>(stop.point_count)}});
+    const json::Value doc(std::move(top));
     try {
         writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));
     } catch (const std::exception&) {

@@ -13,6 +13,17 @@
 
 namespace cutcell {
 
+// Where a run that ended short (emergency stop, fault, abort) stopped on its path: summary.json's
+// "stop" object. Not valid for a completed run.
+struct RunStopPoint {
+    bool valid = false;
+    double path_time_s = 0; // s of the path's time (at 100 %)
+    double progress = 0;    // 0..1 of the path
+    double length_mm = 0;   // cut length done
+    double elapsed_s = 0;   // since Start
+    std::uint32_t point_index = 0, point_count = 0;
+};
+
 class RunLog {
   public:
     explicit RunLog(std::string runsDir) : runsDir_(std::move(runsDir)) {}
@@ -24,7 +35,8 @@ class RunLog {
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
     void event(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
-    void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle);
+    void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle,
+                const RunStopPoint& stop = {});
     std::string runDirectory() const { return dir_; }
     // One event as a log line (also used by the CLI to print events).
     static std::string formatEvent(const EngineEvent& e);

@@ -138,6 +138,7 @@ TEST(RunLog, EachRunWritesJobEventsAndSummary) {
         // summary.json: the engine's own figures.
         const json::Value summary = json::parse(slurp(run / "summary.json"));
         EXPECT_EQ(at(summary, "outcome").asString(), "completed");
+        EXPECT_EQ(summary.find("stop"), nullptr); // a completed run did not stop short
         TrackingReport r;
         ASSERT_TRUE(cell.engine().lastRunReport(r));
         const json::Value& joints = at(at(summary, "tracking"), "joints");
@@ -168,6 +169,20 @@ TEST(RunLog, AFaultedRunStillHasItsSummary) {
         EXPECT_NE(at(summary, "outcome").asString().find("axis 1 (theta1): drive fault 0x2310"),
                   std::string::npos);
         EXPECT_NE(slurp(run / "events.log").find("Fault: axis 1"), std::string::npos);
+        // Where it stopped: about 1 s into the path (the fault comes within a few cycles of
+        // the injection), its length and point consistent with the program's.
+        const json::Value& stop = at(summary, "stop");
+        const double t = at(stop, "path_time_s").asNumber();
+        EXPECT_GE(t, 1.0 - 1e-9);
+        EXPECT_LT(t, 1.0 + 0.05);
+        const double cutTime = at(at(summary, "tracking"), "cut_time_s").asNumber();
+        EXPECT_NEAR(at(stop, "progress").asNumber(), t / cutTime, 1e-12);
+        EXPECT_NEAR(at(stop, "length_mm").asNumber(),
+                    at(stop, "progress").asNumber() *
+                        at(at(summary, "tracking"), "length_mm").asNumber(),
+                    1e-9);
+        EXPECT_GT(at(stop, "elapsed_s").asNumber(), t); // the approach came first
+        EXPECT_LE(at(stop, "point_index").asNumber(), at(stop, "point_count").asNumber());
     }
     fs::remove_all(dir);
 }

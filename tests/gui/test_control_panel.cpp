@@ -79,10 +79,24 @@ class TestControlPanel : public QObject {
         QVERIFY(p.holdButton()->isEnabled());
         QVERIFY(!p.resumeButton()->isEnabled());
         QVERIFY(p.abortButton()->isEnabled());
+        // Abort is confirmed by a second press, not by a dialog.
+        QSignalSpy abort(&p, &ControlPanel::abortRequested);
+        p.abortButton()->click();
+        QCOMPARE(abort.count(), 0);
+        QVERIFY(p.abortArmed());
+        p.abortButton()->click();
+        QCOMPARE(abort.count(), 1);
+        QVERIFY(!p.abortArmed());
         p.setState(EngineState::Paused, true);
         QVERIFY(!p.holdButton()->isEnabled());
         QVERIFY(p.resumeButton()->isEnabled());
         p.setState(EngineState::EmergencyStop, true);
+        // Pressed: only Release is offered; released: only Reset (two deliberate actions).
+        p.setEStopPressed(true);
+        QVERIFY(p.releaseButton()->isEnabled());
+        QVERIFY(!p.resetButton()->isEnabled());
+        p.setEStopPressed(false);
+        QVERIFY(!p.releaseButton()->isEnabled());
         QVERIFY(p.resetButton()->isEnabled());
         QVERIFY(!p.enableButton()->isEnabled());
         p.setState(EngineState::Idle, false);

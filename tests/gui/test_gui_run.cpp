@@ -1,6 +1,7 @@
 // Runs on the simulated cell through the main window, as the operator would: a full run
 // reaches 100 % and Completed with data in the plots; EMERGENCY STOP (button and F1 from a
-// focused field) latches, turns the torch off and disables the drives, and Reset clears it;
+// focused field) latches, turns the torch off and disables the drives, and Release E-STOP then
+// Reset clear it;
 // feed hold stops the progress and Resume continues the run to its end.
 #include "sim_rig.h"
 
@@ -120,6 +121,10 @@ class TestGuiRun : public QObject {
         QVERIFY(!w.controls()->startButton()->isEnabled());
         QVERIFY(w.controls()->startBlockedReason().contains("EMERGENCY STOP"));
         QVERIFY(w.controls()->eStopButton()->isEnabled());
+        // Release and Reset are two actions.
+        QVERIFY(!w.controls()->resetButton()->isEnabled());
+        QVERIFY(w.controls()->releaseButton()->isEnabled());
+        QTest::mouseClick(w.controls()->releaseButton(), Qt::LeftButton);
         QVERIFY(w.controls()->resetButton()->isEnabled());
 
         QTest::mouseClick(w.controls()->resetButton(), Qt::LeftButton);

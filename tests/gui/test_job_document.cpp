@@ -130,6 +130,39 @@ class TestJobDocument : public QObject {
         QVERIFY(!w.openJob(dir.filePath("missing.json"), &err));
     }
 
+    // Broken JSON and wrong types: the operator gets a dialog (here the test's hook) with the
+    // file's message, and the log has it too.
+    void fileErrorsGoToADialogAndTheLog_data() {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("broken JSON") << QByteArray("{ \"schema\": 1, ") << QString("broken.json");
+        QTest::newRow("wrong type")
+            << QByteArray(text(cutcell::defaultJob()).c_str())
+                   .replace("\"angle_deg\": 90", "\"angle_deg\": \"ninety\"")
+            << QString("angle_deg");
+    }
+    void fileErrorsGoToADialogAndTheLog() {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("broken.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(content);
+        f.close();
+        MainWindow w(nullptr);
+        w.show();
+        QStringList shown;
+        w.setErrorPrompt([&shown](const QString& title, const QString& message) {
+            shown << title + ": " + message;
+        });
+        QString err;
+        QVERIFY(!w.openJob(path, &err));
+        QCOMPARE(shown.size(), 1);
+        QVERIFY2(shown[0].contains(expected), qPrintable(shown[0]));
+        QVERIFY2(shown[0].contains(err), qPrintable(shown[0]));
+    }
+
     void invalidJobOpensWithFieldsMarked() {
         QTemporaryDir dir;
         auto job = cutcell::defaultJob();

@@ -5,12 +5,14 @@
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
 #include "ui/view3d/view_style.h"
+#include "ui/view3d/vtk_gl_window.h"
 
 #include <QApplication>
 #include <QMouseEvent>
 #include <QOpenGLWidget>
 #include <QTest>
 #include <QWheelEvent>
+#include <QWindow>
 
 #include <cmath>
 
@@ -69,11 +71,20 @@ class TstCellViewPixels : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase();
+    void pipeAndTorchAtTheirProjections_data() { surfaces(); }
     void pipeAndTorchAtTheirProjections();
+    void donePartTurnsGreen_data() { surfaces(); }
     void donePartTurnsGreen();
     void mouseOrbitsAndWheelZooms();
+    void nativeWindowMouseOrbits();
 
   private:
+    // Both drawing surfaces of the view draw the same frame.
+    static void surfaces() {
+        QTest::addColumn<int>("surface");
+        QTest::newRow("QOpenGLWidget") << int(CellView::Surface::Widget);
+        QTest::newRow("native window") << int(CellView::Surface::NativeWindow);
+    }
     Job job_ = defaultJob();
     CutPlan plan_;
 };
@@ -86,7 +97,9 @@ void TstCellViewPixels::initTestCase() {
 }
 
 void TstCellViewPixels::pipeAndTorchAtTheirProjections() {
-    CellView view;
+    QFETCH(int, surface);
+    CellView view(nullptr, CellView::Surface(surface));
+    QCOMPARE(int(view.surface()), surface);
     view.resize(900, 700);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -136,7 +149,9 @@ void TstCellViewPixels::pipeAndTorchAtTheirProjections() {
 }
 
 void TstCellViewPixels::donePartTurnsGreen() {
-    CellView view;
+    QFETCH(int, surface);
+    CellView view(nullptr, CellView::Surface(surface));
+    QCOMPARE(int(view.surface()), surface);
     view.resize(900, 700);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -197,6 +212,31 @@ void TstCellViewPixels::mouseOrbitsAndWheelZooms() {
     // Reset view brings the iso framing back.
     view.resetView();
     QVERIFY((position() - p0).norm() < 1e-6);
+}
+
+// The native window gets the mouse itself (no QOpenGLWidget in between).
+void TstCellViewPixels::nativeWindowMouseOrbits() {
+    CellView view(nullptr, CellView::Surface::NativeWindow);
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setScene(buildRobotScene(job_, plan_));
+    QWindow* win = view.nativeWindow();
+    QVERIFY(win);
+    QVERIFY(view.findChild<QOpenGLWidget*>() == nullptr);
+    QVERIFY(QTest::qWaitForWindowExposed(win));
+    QVERIFY(!view.grabFrame().isNull());
+    vtkCamera* cam = view.scene().renderer()->GetActiveCamera();
+    double p[3];
+    cam->GetPosition(p);
+    const Vec3 p0(p[0], p[1], p[2]);
+    const QPoint c(win->width() / 2, win->height() / 2);
+    QTest::mousePress(win, Qt::LeftButton, {}, c);
+    for (int i = 1; i <= 5; ++i)
+        QTest::mouseMove(win, c + QPoint(12 * i, 4 * i));
+    QTest::mouseRelease(win, Qt::LeftButton, {}, c + QPoint(60, 20));
+    cam->GetPosition(p);
+    QVERIFY((Vec3(p[0], p[1], p[2]) - p0).norm() > 1.0);
 }
 
 int main(int argc, char** argv) {

@@ -84,24 +84,27 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
                       [](Job& j) -> double& { return j.devices.heartbeat_timeout_ms; }),
            "ms");
 
+    // One row per axis (a row of six columns was wider than the form's column).
     auto* axes = new QWidget(dev);
     auto* g = new QGridLayout(axes);
     g->setContentsMargins(0, 0, 0, 0);
     g->addWidget(new QLabel(tr("Axis"), axes), 0, 0);
-    g->addWidget(new QLabel(tr("Node ID"), axes), 1, 0);
-    g->addWidget(new QLabel(tr("Counts/unit"), axes), 2, 0);
+    g->addWidget(new QLabel(tr("Node ID"), axes), 0, 1);
+    g->addWidget(new QLabel(tr("Counts/unit"), axes), 0, 2);
+    g->setColumnStretch(1, 1);
+    g->setColumnStretch(2, 2);
     for (int i = 0; i < cutcell::kAxisCount; ++i) {
         const auto a = static_cast<size_t>(i);
         auto* head = new QLabel(QString::number(i), axes);
         head->setAlignment(Qt::AlignCenter);
-        g->addWidget(head, 0, i + 1);
+        g->addWidget(head, i + 1, 0);
         auto* id = bindInt("devices.node_ids[" + std::to_string(i) + "]",
                            [a](Job& j) -> int& { return j.devices.node_ids[a]; });
         alsoMark("devices.node_ids", id);
-        g->addWidget(id, 1, i + 1);
+        g->addWidget(id, i + 1, 1);
         auto* counts = bindDouble("devices.counts_per_unit[" + std::to_string(i) + "]", 0,
                                   [a](Job& j) -> double& { return j.devices.counts_per_unit[a]; });
-        g->addWidget(counts, 2, i + 1);
+        g->addWidget(counts, i + 1, 2);
     }
     d->addRow(axes);
     auto* unit = new QLabel(tr("Counts per degree (rotary axes) or per mm (linear axes)."), dev);

@@ -1,9 +1,14 @@
 #pragma once
-// The operator's controls: Enable, Home, Start, Feed hold / Resume, Abort, Reset, the speed
-// override slider and the EMERGENCY STOP. The E-STOP button is never disabled and its shortcut
-// (F1, Qt::ApplicationShortcut) works whatever widget has the focus, also inside a modal
-// dialog (an application event filter takes the key there). The panel only emits
-// requests; RunController decides what is allowed and says why Start is not.
+// The operator's controls: Enable, Home, Start, Feed hold / Resume, Abort, Release E-STOP,
+// Reset, the speed override slider and the EMERGENCY STOP. The E-STOP button is never
+// disabled and its shortcut (F1, Qt::ApplicationShortcut) works whatever widget has the focus,
+// also inside a modal dialog (an application event filter takes the key there). The panel only
+// emits requests; RunController decides what is allowed and says why Start is not.
+//
+// Deliberate stops: Abort asks for a second press within kAbortConfirmMs (the button says so)
+// instead of a modal dialog, so E-STOP and Feed hold never wait behind a question. Releasing
+// the E-STOP and resetting the latch are two buttons. The override slider shows in amber when
+// it is not 100 %.
 //
 // Threading contract: GUI thread only.
 #include "core/engine/engine_types.h"
@@ -12,8 +17,10 @@
 
 class QLabel;
 class QPushButton;
+class QScrollArea;
 class QShortcut;
 class QSlider;
+class QTimer;
 
 namespace CutCell::ui {
 
@@ -21,13 +28,26 @@ class ControlPanel : public QWidget {
     Q_OBJECT
   public:
     static constexpr const char* kEStopKey = "F1";
+    static constexpr const char* kStartKey = "F5";
+    static constexpr const char* kHoldKey = "F6";
+    static constexpr const char* kResumeKey = "F7";
+    static constexpr const char* kAbortKey = "F8";
+    static constexpr const char* kOverrideDownKey = "F9";
+    static constexpr const char* kOverrideUpKey = "F10";
+    static constexpr int kAbortConfirmMs = 4000;
+    static constexpr int kOverrideStep = 10; // percent per key press
+    // The operator's keys and what they do (Help -> Keys).
+    static QString keysHelp();
 
     explicit ControlPanel(QWidget* parent = nullptr);
 
     // Buttons follow the engine state; Start also needs `startBlocked` to be empty.
     void setState(cutcell::EngineState state, bool homed);
     void setStartBlocked(const QString& reason);
+    // Whether the emergency stop request is still pressed (Release E-STOP is offered).
+    void setEStopPressed(bool pressed);
     void setOverridePercent(int percent);
+    int overridePercent() const;
 
     QPushButton* eStopButton() const { return eStop_; }
     QPushButton* startButton() const { return start_; }
@@ -36,9 +56,11 @@ class ControlPanel : public QWidget {
     QPushButton* holdButton() const { return hold_; }
     QPushButton* resumeButton() const { return resume_; }
     QPushButton* abortButton() const { return abort_; }
+    QPushButton* releaseButton() const { return release_; }
     QPushButton* resetButton() const { return reset_; }
     QSlider* overrideSlider() const { return override_; }
     QString startBlockedReason() const { return blocked_; }
+    bool abortArmed() const;
 
   signals:
     void enableRequested();
@@ -46,7 +68,8 @@ class ControlPanel : public QWidget {
     void startRequested();
     void feedHoldRequested();
     void resumeRequested();
-    void abortRequested();
+    void abortRequested(); // only after the confirming second press
+    void releaseEStopRequested();
     void resetRequested();
     void emergencyStopRequested();
     void overrideChanged(double fraction);
@@ -57,15 +80,21 @@ class ControlPanel : public QWidget {
 
   private:
     void refresh();
+    void onAbortPressed();
+    void addShortcut(const char* key, QPushButton* button, void (ControlPanel::*slot)());
+    void stepOverride(int delta);
 
     QPushButton* eStop_;
-    QPushButton *enable_, *home_, *start_, *hold_, *resume_, *abort_, *reset_;
+    QPushButton *enable_, *home_, *start_, *hold_, *resume_, *abort_, *release_, *reset_;
     QSlider* override_;
     QLabel* overrideLabel_;
     QLabel* reason_;
+    QScrollArea* reasonBox_;
     QShortcut* eStopShortcut_;
+    QTimer* abortArm_;
     cutcell::EngineState state_ = cutcell::EngineState::Idle;
     bool homed_ = false;
+    bool estopPressed_ = false;
     QString blocked_;
 };
 

@@ -2,6 +2,7 @@
 #include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include <QLabel>
+#include <QPainter>
 #include <QVBoxLayout>
 
 #ifdef CUTCELL_HAVE_VIEW3D
@@ -22,7 +23,8 @@ CellViewPanel::CellViewPanel(QWidget* parent) : QWidget(parent) {
     v->setContentsMargins(0, 0, 0, 0);
 #ifdef CUTCELL_HAVE_VIEW3D
     // The view brings its own preset toolbar and, without OpenGL, its own placeholder.
-    view_ = new cutcell::view3d::CellView(this);
+    // A native GL window: the operator column and the plots never wait on a 3D composition.
+    view_ = new cutcell::view3d::CellView(this, cutcell::view3d::CellView::Surface::NativeWindow);
     v->addWidget(view_, 1);
 #else
     auto* note = new QLabel(tr("3D view not built in this configuration."), this);
@@ -37,6 +39,20 @@ bool CellViewPanel::rendering() const {
     return view_ && view_->rendering();
 #else
     return false;
+#endif
+}
+
+void CellViewPanel::paintFrameInto(QImage& shot, const QWidget* grabbed) {
+#ifdef CUTCELL_HAVE_VIEW3D
+    QWidget* area = view_ ? view_->renderArea() : nullptr;
+    if (!area || !area->isVisible()) return;
+    const QImage frame = view_->grabFrame();
+    if (frame.isNull()) return;
+    QPainter painter(&shot);
+    painter.drawImage(QRect(area->mapTo(grabbed, QPoint(0, 0)), area->size()), frame);
+#else
+    (void)shot;
+    (void)grabbed;
 #endif
 }
 

@@ -40,6 +40,9 @@ class CellViewPanel : public QWidget {
     void setSample(const cutcell::TelemetrySample& s);
     bool rendering() const;
     cutcell::view3d::CellView* view() const { return view_; }
+    // Paints the current 3D frame over its place in `shot`, an image of `grabbed` taken with
+    // QWidget::grab() (which does not see the native GL window).
+    void paintFrameInto(QImage& shot, const QWidget* grabbed);
 
     // The view follows the machine at most this often: each frame costs a render and, with
     // software OpenGL, a composition of the whole window. (The main window feeds it at its

@@ -9,18 +9,20 @@
 
 namespace CutCell::ui {
 
+using cutcell::EngineState;
+
 ProgressPanel::ProgressPanel(QWidget* parent)
     : QWidget(parent), state_(new QLabel(this)), bar_(new QProgressBar(this)),
       percent_(new QLabel(this)), elapsed_(new QLabel(this)), remaining_(new QLabel(this)),
-      points_(new QLabel(this)) {
+      points_(new QLabel(this)), stop_(new QLabel(this)), cycle_(new QLabel(this)) {
     setObjectName("progressPanel");
     auto* g = new QGridLayout(this);
     g->setContentsMargins(6, 6, 6, 6);
     state_->setObjectName("stateText");
-    g->addWidget(state_, 0, 0, 1, 2);
+    g->addWidget(state_, 0, 0, 1, 3);
     percent_->setObjectName("percentText");
     percent_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    g->addWidget(percent_, 0, 2, 1, 2);
+    g->addWidget(percent_, 0, 3);
     bar_->setRange(0, 1000);
     bar_->setTextVisible(false);
     bar_->setMinimumHeight(22);
@@ -38,7 +40,17 @@ ProgressPanel::ProgressPanel(QWidget* parent)
     g->addWidget(elapsed_, 3, 0);
     g->addWidget(remaining_, 3, 1);
     g->addWidget(points_, 3, 2, 1, 2);
+    // The detail line (approach phase, or where a run stopped) keeps its place (two lines)
+    // whether shown or not: nothing jumps.
+    stop_->setObjectName("stopText");
+    stop_->setWordWrap(true);
+    stop_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    stop_->setFixedHeight(QFontMetrics(stop_->font()).lineSpacing() * 2 + 6);
+    g->addWidget(stop_, 4, 0, 1, 4);
+    cycle_->setObjectName("cycleText");
+    g->addWidget(cycle_, 5, 0, 1, 4);
     clear();
+    setCycleFigures(0, 0);
 }
 
 QString ProgressPanel::formatDuration(double s) {
@@ -51,14 +63,68 @@ QString ProgressPanel::formatDuration(double s) {
         .arg(tenths);
 }
 
+void ProgressPanel::setApproachTarget(const cutcell::JointVector& q, int axisCount) {
+    approachTarget_ = q;
+    axisCount_ = std::clamp(axisCount, 0, cutcell::kAxisCount);
+}
+
+void ProgressPanel::beginRun() {
+    stopped_ = false;
+    lastCut_.reset();
+    approachStart_.reset();
+    stop_->clear();
+    stop_->setToolTip({});
+}
+
+void ProgressPanel::markStopped(const QString& how) {
+    if (!lastCut_) return; // nothing ran
+    stopped_ = true;
+    const auto& s = *lastCut_;
+    const double p = std::clamp(s.progress, 0.0, 1.0);
+    const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
+    const QString text = tr("Stopped (%1) at point %2 / %3, %4 of %5 mm, %6 after Start")
+                             .arg(how)
+                             .arg(shown)
+                             .arg(s.point_count)
+                             .arg(p * pathLengthMm_, 0, 'f', 1)
+                             .arg(pathLengthMm_, 0, 'f', 1)
+                             .arg(formatDuration(s.elapsed_s));
+    stop_->setText(text);
+    stop_->setToolTip(text);
+}
+
+void ProgressPanel::setCycleFigures(int parts, double lastCycleS) {
+    cycle_->setText(tr("Last cycle %1   Parts %2")
+                        .arg(lastCycleS > 0 ? formatDuration(lastCycleS) : QStringLiteral("--"))
+                        .arg(parts));
+}
+
 void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
+    const bool inRun = s.state == EngineState::Running || s.state == EngineState::Paused ||
+                       s.state == EngineState::Completed;
+    if (inRun) {
+        if (stopped_) beginRun(); // a new run after a stop
+        lastCut_ = s;
+        show(s);
+        return;
+    }
+    // After a run (the telemetry reads 0 there): its figures stay until the next Start.
+    if (lastCut_) {
+        state_->setText(QString::fromLatin1(cutcell::toString(s.state)));
+        if (!stopped_ && lastCut_->state == EngineState::Completed)
+            stop_->setText(tr("Last run completed."));
+        return;
+    }
+    show(s);
+}
+
+void ProgressPanel::show(const cutcell::TelemetrySample& s) {
     const double p = std::clamp(s.progress, 0.0, 1.0);
     const int value = static_cast<int>(std::lround(p * 1000));
     if (value != bar_->value()) {
-        // QProgressBar::setValue() repaints synchronously when the fill moves a pixel; with the
-        // 3D view's QOpenGLWidget in the window that is a whole-window GL composition (~20 ms on
-        // llvmpipe) inside the telemetry tick. With updates off it is a no-op; re-enabling
-        // schedules an update() that joins the tick's single composition.
+        // QProgressBar::setValue() repaints synchronously when the fill moves a pixel: with
+        // updates off it is a no-op; re-enabling schedules an update() that joins the tick's
+        // single composition.
         bar_->setUpdatesEnabled(false);
         bar_->setValue(value);
         bar_->setUpdatesEnabled(true);
@@ -70,14 +136,31 @@ void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
     const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
     points_->setText(QStringLiteral("%1 / %2").arg(shown).arg(s.point_count));
     state_->setText(QString::fromLatin1(cutcell::toString(s.state)));
+    // Before the path begins: the approach move, then settling and the arc (the line below
+    // the figures says which; the cut's own progress is still 0).
+    QString phase;
+    if (s.state == EngineState::Running && s.progress <= 0 && axisCount_ > 0) {
+        const double d = (s.setpoint.head(axisCount_) - approachTarget_.head(axisCount_)).norm();
+        if (!approachStart_ || d > *approachStart_) approachStart_ = d;
+        const double f = *approachStart_ > 1e-9 ? 1.0 - d / *approachStart_ : 1.0;
+        phase = f < 0.999 ? tr("Approach to the first cut point: %1 %").arg(f * 100, 0, 'f', 0)
+                          : (s.torch_on ? tr("Arc on: the cut starts")
+                                        : tr("At the first cut point: settling, then the arc"));
+    }
+    if (!stopped_) {
+        stop_->setText(phase);
+        stop_->setToolTip(phase);
+    }
 }
 
 void ProgressPanel::setPlannedTotals(std::uint32_t points, double duration_s) {
+    if (stopped_) return; // the stop stays until the next Start
     points_->setText(QStringLiteral("0 / %1").arg(points));
     remaining_->setText(formatDuration(duration_s));
 }
 
 void ProgressPanel::clear() {
+    beginRun();
     bar_->setValue(0);
     percent_->setText(QStringLiteral("0.0 %"));
     elapsed_->setText(formatDuration(0));
@@ -91,6 +174,15 @@ QString ProgressPanel::percentText() const {
 }
 QString ProgressPanel::pointsText() const {
     return points_->text();
+}
+QString ProgressPanel::stateText() const {
+    return state_->text();
+}
+QString ProgressPanel::stopText() const {
+    return stop_->text();
+}
+QString ProgressPanel::cycleText() const {
+    return cycle_->text();
 }
 
 } // namespace CutCell::ui

@@ -1,11 +1,18 @@
 #pragma once
-// Cut progress: bar, percent, elapsed and remaining time, current point / total, and the
-// engine state in words.
+// Cut progress: bar, percent, elapsed and remaining time, current point / total, the engine
+// state in words, the last cycle time and the parts cut for this job.
+//
+// A run that ends short (emergency stop, fault, abort) keeps its figures on screen with a
+// "stopped at" line (point, path length, time) until the next Start: the engine's telemetry
+// reads 0 there, the operator needs to know where the torch stopped. During the approach to the
+// first cut point the state line says how far the approach is (the cut's own progress is 0).
 //
 // Threading contract: GUI thread only.
 #include "core/engine/engine_types.h"
 
 #include <QWidget>
+
+#include <optional>
 
 class QLabel;
 class QProgressBar;
@@ -19,20 +26,42 @@ class ProgressPanel : public QWidget {
 
     void setSample(const cutcell::TelemetrySample& s);
     void setPlannedTotals(std::uint32_t points, double duration_s);
+    // The path's length (mm) for the stop line, and the first set-point of the cut (the
+    // approach's target, in the engine's units).
+    void setPathLength(double mm) { pathLengthMm_ = mm; }
+    void setApproachTarget(const cutcell::JointVector& q, int axisCount);
+    // A new run: the previous run's figures and stop line go.
+    void beginRun();
+    // The run ended short: freeze the last figures and show where it stopped.
+    void markStopped(const QString& how);
+    void setCycleFigures(int parts, double lastCycleS);
     void clear();
 
     QProgressBar* bar() const { return bar_; }
     QString percentText() const;
     QString pointsText() const;
+    QString stateText() const;
+    QString stopText() const; // empty when no stop is shown
+    QString cycleText() const;
     static QString formatDuration(double seconds);
 
   private:
+    void show(const cutcell::TelemetrySample& s);
+
     QLabel* state_;
     QProgressBar* bar_;
     QLabel* percent_;
     QLabel* elapsed_;
     QLabel* remaining_;
     QLabel* points_;
+    QLabel* stop_;
+    QLabel* cycle_;
+    double pathLengthMm_ = 0;
+    cutcell::JointVector approachTarget_ = cutcell::JointVector::Zero();
+    int axisCount_ = 0;
+    std::optional<double> approachStart_; // distance to the target when the approach began
+    std::optional<cutcell::TelemetrySample> lastCut_; // the last sample of the current run
+    bool stopped_ = false;
 };
 
 } // namespace CutCell::ui

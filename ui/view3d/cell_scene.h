@@ -37,6 +37,8 @@ class CellScene {
     void resetView();
     // Called before each render: keeps the near/far planes around what is visible.
     void prepareRender();
+    // The job title is drawn only in views at least this tall (device pixels).
+    static constexpr int kTitleMinViewHeightPx = 360;
 
     // Scene-graph queries (world frame, mm), read back from the actors' matrices.
     Vec3 torchTipWorld() const;

@@ -86,6 +86,12 @@ void CellScene::resetView() {
 }
 
 void CellScene::prepareRender() {
+    // A short view (1280x720 screens) has no room for the job title above the machine: the
+    // window title names the job; the title comes back when the view is tall enough.
+    if (d->title) {
+        const int* size = d->renderer->GetSize();
+        d->title->SetVisibility(size[1] >= kTitleMinViewHeightPx ? 1 : 0);
+    }
     double b[6];
     d->renderer->ComputeVisiblePropBounds(b);
     if (b[0] > b[1]) return;

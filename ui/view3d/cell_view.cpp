@@ -2,6 +2,7 @@
 
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/vtk_gl_widget.h"
+#include "ui/view3d/vtk_gl_window.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -50,7 +51,11 @@ bool CellView::openGlAvailable() {
     return available;
 }
 
-CellView::CellView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<CellScene>()) {
+CellView::CellView(QWidget* parent, Surface surface)
+    : QWidget(parent), scene_(std::make_unique<CellScene>()) {
+    const QByteArray forced = qgetenv("CUTCELL_VIEW3D_SURFACE");
+    if (forced == "widget") surface = Surface::Widget;
+    if (forced == "native") surface = Surface::NativeWindow;
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
@@ -77,7 +82,16 @@ CellView::CellView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<C
     connect(reset, &QAction::triggered, this, &CellView::resetView);
     layout->addWidget(bar);
 
-    if (openGlAvailable()) {
+    if (openGlAvailable() && surface == Surface::NativeWindow) {
+        glWindow_ = new VtkGlWindow;
+        glWindow_->renderWindow()->AddRenderer(scene_->renderer());
+        glWindow_->setBeforeRender([this] { scene_->prepareRender(); });
+        container_ = QWidget::createWindowContainer(glWindow_, this); // takes ownership
+        container_->setObjectName(QStringLiteral("view3dNativeWindow"));
+        container_->setMinimumSize(160, 120);
+        container_->setFocusPolicy(Qt::StrongFocus);
+        layout->addWidget(container_, 1);
+    } else if (openGlAvailable()) {
         gl_ = new VtkGlWidget(this);
         gl_->renderWindow()->AddRenderer(scene_->renderer());
         gl_->setBeforeRender([this] { scene_->prepareRender(); });
@@ -98,14 +112,22 @@ CellView::CellView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<C
 CellView::~CellView() {
     delete gl_; // releases VTK's GL resources while the scene still exists
     gl_ = nullptr;
+    delete container_; // and the native window with it
+    container_ = nullptr;
+    glWindow_ = nullptr;
 }
 
 bool CellView::rendering() const {
-    return gl_ != nullptr;
+    return gl_ != nullptr || glWindow_ != nullptr;
+}
+
+QWidget* CellView::renderArea() const {
+    return gl_ ? static_cast<QWidget*>(gl_) : container_;
 }
 
 void CellView::requestRender() {
     if (gl_) gl_->update();
+    if (glWindow_) glWindow_->requestFrame();
 }
 
 void CellView::setScene(const SceneModel& model) {
@@ -115,7 +137,10 @@ void CellView::setScene(const SceneModel& model) {
 
 void CellView::setMachineState(const JointVector& q, double progressFraction, bool torchOn) {
     scene_->setMachineState(q, progressFraction, torchOn);
-    requestRender();
+    if (glWindow_)
+        glWindow_->requestFrame(true); // moving: half resolution until it rests
+    else
+        requestRender();
 }
 
 void CellView::setPreset(ViewPreset preset) {
@@ -136,18 +161,21 @@ void CellView::resetView() {
 
 void CellView::setMultiSamples(int samples) {
     if (gl_) gl_->setMultiSamples(samples);
+    if (glWindow_) glWindow_->setMultiSamples(samples);
 }
 
 QImage CellView::grabFrame() {
+    if (glWindow_) return glWindow_->grabFrame();
     return gl_ ? gl_->grabFramebuffer() : QImage();
 }
 
 double CellView::renderFrameMs() {
+    if (glWindow_) return glWindow_->renderNow();
     return gl_ ? gl_->renderNow() : -1.0;
 }
 
 bool CellView::projectToImage(const Vec3& world, QPointF* pixel) const {
-    if (!gl_) return false;
+    if (!rendering()) return false;
     vtkRenderer* r = scene_->renderer();
     r->SetWorldPoint(world.x(), world.y(), world.z(), 1.0);
     r->WorldToView();
@@ -157,7 +185,7 @@ bool CellView::projectToImage(const Vec3& world, QPointF* pixel) const {
     r->WorldToDisplay();
     double dpt[3];
     r->GetDisplayPoint(dpt);
-    const int* size = gl_->renderWindow()->GetSize();
+    const int* size = (gl_ ? gl_->renderWindow() : glWindow_->renderWindow())->GetSize();
     *pixel = QPointF(dpt[0], size[1] - 1 - dpt[1]); // VTK's display origin is bottom-left
     return true;
 }

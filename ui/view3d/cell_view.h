@@ -30,10 +30,19 @@ namespace cutcell::view3d {
 class CellScene;
 class VtkGlWidget;
 
+class VtkGlWindow;
+
 class CellView : public QWidget {
     Q_OBJECT
   public:
-    explicit CellView(QWidget* parent = nullptr);
+    // Where the 3D frames are drawn: a QOpenGLWidget (composed with the whole window through
+    // OpenGL at every update of any widget), or a native OpenGL child window with a frame budget
+    // (VtkGlWindow: the rest of the window stays on the raster backing store). The operator
+    // station uses NativeWindow; the environment variable CUTCELL_VIEW3D_SURFACE=widget|native
+    // overrides the choice (benchmarks compare the two).
+    enum class Surface { Widget, NativeWindow };
+
+    explicit CellView(QWidget* parent = nullptr, Surface surface = Surface::Widget);
     ~CellView() override;
 
     // Call before constructing QApplication: OpenGL 3.2 core, depth 24, alpha 8.
@@ -43,6 +52,13 @@ class CellView : public QWidget {
     static bool openGlAvailable();
     // Whether this instance renders (false: the placeholder label is shown).
     bool rendering() const;
+    Surface surface() const { return glWindow_ ? Surface::NativeWindow : Surface::Widget; }
+    // The widget that shows the frames (the QOpenGLWidget or the native window's container);
+    // null without OpenGL. Screenshots of the main window paint grabFrame() over it: a native
+    // window is not part of QWidget::grab().
+    QWidget* renderArea() const;
+    // The native window (Surface::NativeWindow only), e.g. to send it mouse events in tests.
+    VtkGlWindow* nativeWindow() const { return glWindow_; }
 
     void setScene(const SceneModel& model);
     void setMachineState(const JointVector& q, double progressFraction, bool torchOn);
@@ -76,6 +92,8 @@ class CellView : public QWidget {
 
     std::unique_ptr<CellScene> scene_;
     VtkGlWidget* gl_ = nullptr;
+    VtkGlWindow* glWindow_ = nullptr;
+    QWidget* container_ = nullptr; // hosts glWindow_
     QLabel* placeholder_ = nullptr;
     QActionGroup* presets_ = nullptr;
 };
