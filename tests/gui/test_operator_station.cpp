@@ -394,7 +394,7 @@ class TestOperatorStation : public QObject {
         QVERIFY2(w.progress()->cycleText().contains("Parts 1"),
                  qPrintable(w.progress()->cycleText()));
         // A new job starts its own count.
-        w.newJob();
+        QVERIFY(w.newJob("pipe_robot_6axis")); // the default job's machine
         QCOMPARE(w.run()->partsCompleted(), 0);
     }
 
