@@ -4,6 +4,7 @@
 #ifdef CUTCELL_HAVE_DEVICES
 #include "bench_can.h"
 #include "bench_engine.h"
+#include "realtime_options.h"
 #endif
 
 #include "core/job/default_job.h"
@@ -66,6 +67,10 @@ int runBench(const Args& args) {
         }
     }
     job.sim.period_s = 0.001;
+#ifdef CUTCELL_HAVE_DEVICES
+    RealtimeSettings realtime; // --rt-priority, --rt-cpu, --rt-dma-latency, --no-mlock
+    if (const int rc = parseRealtimeOptions(args, realtime, "bench")) return rc;
+#endif
 
     json::Object out;
     out.emplace_back("ik_ns_per_solve", benchIk(job, 2000, quick ? 20 : 200));
@@ -83,7 +88,7 @@ int runBench(const Args& args) {
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
 #ifdef CUTCELL_HAVE_DEVICES
-    if (!flag(args, "--no-engine")) benchEngine(job, quick, out);
+    if (!flag(args, "--no-engine")) benchEngine(job, quick, realtime, out);
 #endif
 
 #ifdef CUTCELL_HAVE_DEVICES

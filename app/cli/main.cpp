@@ -12,13 +12,16 @@ usage:
   cutcell-cli validate JOB                  check a job file
   cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
   cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
-  cutcell-cli bench [--json] [--quick]      measure speed figures
+  cutcell-cli bench [--json] [--quick] [RT]  measure speed figures, the host's wake-up
+                                            latency and what the engine adds to it
   cutcell-cli export JOB [--gcode FILE] [--template-svg FILE] [--template-pdf FILE] [--path-csv FILE]
                                             profile cutter G-code (LinuxCNC X/A), 1:1 cutting
                                             template, path with stepper pulses
-  cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
+  cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet] [RT]
                                             run the job through the motion engine on
                                             simulated drives; writes a run log
+     RT (engine thread, real-time clock): [--rt-priority 0-99 (80; 0 = normal scheduler)]
+                 [--rt-cpu N] [--rt-dma-latency] [--no-mlock]
   cutcell-cli simulate JOB --devices canopen [--can-plugin P] [--can-interface I]
                  [--period-ms T] [--clock realtime|fast] [--drivesim]
                                             run the cut over CANopen drives (--drivesim: start

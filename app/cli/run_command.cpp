@@ -12,6 +12,7 @@
 #include "devices/sim/simulated_torch.h"
 
 #include "can_devices.h"
+#include "realtime_options.h"
 
 #include <chrono>
 #include <cstdio>
@@ -72,7 +73,7 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 int runRun(const Args& args) {
     const std::vector<std::string> valueOptions{"--report",     "--runs",          "--devices",
                                                 "--can-plugin", "--can-interface", "--period-ms",
-                                                "--clock"};
+                                                "--clock",      "--rt-priority",   "--rt-cpu"};
     const auto pos = positionals(args, valueOptions);
     if (pos.empty()) {
         std::fprintf(stderr, "cutcell-cli run: missing JOB file argument\n");
@@ -90,6 +91,8 @@ int runRun(const Args& args) {
     if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, args);
     bool realtime = flag(args, "--realtime");
     const bool quiet = flag(args, "--quiet");
+    RealtimeSettings rtSettings; // the engine thread's set-up (with --realtime or CANopen)
+    if (const int rc = parseRealtimeOptions(args, rtSettings, "run")) return rc;
     if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");
 
     const CutPlan plan = planCut(job);
@@ -135,6 +138,7 @@ int runRun(const Args& args) {
     }
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
+    config.realtime = rtSettings;
     MotionEngine engine(devices, config);
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.

@@ -287,8 +287,11 @@ void MotionEngine::Impl::track() {
     if (samples > 0)
         for (int i = 0; i < axisCount(); ++i)
             stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
-    stats.add(setpoint, actual);
-    if (tau >= program->cruise_from_s && tau <= program->cruise_to_s) cruise.add(setpoint, actual);
+    // One tip computation per cycle for the overall figures, the cruise figures and telemetry.
+    const TipSample& tips = tipsThisCycle(program->tip_model.get());
+    stats.add(setpoint, actual, tips);
+    if (tau >= program->cruise_from_s && tau <= program->cruise_to_s)
+        cruise.add(setpoint, actual, tips);
     if (pathDone && samples >= minRunSteps) phase = RunPhase::Close;
     ++samples;
 }
@@ -313,8 +316,7 @@ void MotionEngine::Impl::publishTelemetry() {
     t.actual = actualPositions();
     t.error = t.setpoint - t.actual;
     if (program && program->tip_model)
-        t.cartesian_error_mm =
-            program->tip_model->tip(t.actual) - program->tip_model->tip(t.setpoint);
+        t.cartesian_error_mm = tipsThisCycle(program->tip_model.get()).error();
     if (program && (state == EngineState::Running || state == EngineState::Paused ||
                     state == EngineState::Completed)) {
         const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
@@ -338,6 +340,16 @@ void MotionEngine::Impl::publishTelemetry() {
     t.arc_ok = torchFb.arc_ok;
     t.homed = homed;
     if (!telemetry.push(t)) telemetryDropped.fetch_add(1, std::memory_order_relaxed);
+}
+
+// The tips of (set-point, actual) for this cycle: computed on first use, then shared.
+const TipSample& MotionEngine::Impl::tipsThisCycle(const TipModel* model) {
+    if (tipsCycle != cycle || tipsModel != model) {
+        cycleTips = tipSample(model, setpoint, actualPositions());
+        tipsCycle = cycle;
+        tipsModel = model;
+    }
+    return cycleTips;
 }
 
 // Path time: tau advances by rate * T. While the rate is steady tau is computed from an

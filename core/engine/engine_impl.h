@@ -3,6 +3,7 @@
 // (engine thread) and its run logger (logger thread). Members are grouped by the thread that
 // writes them; cross-thread members are atomics or lock-free rings.
 #include "core/engine/cycle_clock.h"
+#include "core/engine/realtime_thread.h"
 #include "core/engine/joint_move.h"
 #include "core/engine/motion_engine.h"
 #include "core/engine/mpsc_queue.h"
@@ -79,6 +80,8 @@ struct MotionEngine::Impl {
     // ---- threads
     std::thread engineThread, loggerThread;
     std::atomic<bool> stopRequested{false}, threadRunning{false};
+    RealtimeStatus realtime;              // written by the engine thread before its first cycle
+    std::atomic<bool> realtimeKnown{false}; // ... and published by this flag
     std::mutex logMutex;                  // logger side only: one drainer at a time
     std::unique_ptr<class RunLog> runLog; // under logMutex
     void loggerDrain();
@@ -121,6 +124,11 @@ struct MotionEngine::Impl {
     bool torchWritten = false;
     TrackingStats stats{static_cast<const TipModel*>(nullptr)};
     TrackingStats cruise{static_cast<const TipModel*>(nullptr)};
+    // The tips of (set-point, actual) of the current cycle, shared by track() and telemetry.
+    TipSample cycleTips{};
+    std::uint64_t tipsCycle = ~std::uint64_t{0};
+    const TipModel* tipsModel = nullptr;
+    const TipSample& tipsThisCycle(const TipModel* model);
     // supervision
     std::array<double, kAxisCount> lastSensed{}, travelSinceChange{};
     bool arcWasOk = false;

@@ -6,8 +6,6 @@
 #include "core/engine/run_log.h"
 
 #include <chrono>
-#include <pthread.h>
-#include <sched.h>
 
 namespace cutcell {
 
@@ -132,6 +130,12 @@ CycleStats MotionEngine::Impl::snapshot() const {
     return s;
 }
 
+RealtimeStatus MotionEngine::realtimeStatus() const {
+    // Written by the engine thread once before its first cycle, published by the flag.
+    return impl_->realtimeKnown.load(std::memory_order_acquire) ? impl_->realtime
+                                                                 : RealtimeStatus{};
+}
+
 bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) const {
     const Impl& m = *impl_;
     for (int attempt = 0; attempt < 100; ++attempt) {
@@ -194,11 +198,16 @@ void MotionEngine::startThread() {
     if (m.threadRunning.exchange(true)) return;
     m.stopRequested.store(false);
     m.engineThread = std::thread([&m] {
-        // Best effort: a real-time priority needs CAP_SYS_NICE or an rtprio limit.
+        // Priority, memory lock, CPU, DMA latency: each checked, the outcome an event (a
+        // warning when something asked for was refused) and realtimeStatus().
+        int dmaFd = -1;
         if (m.cfg.clock == ClockMode::RealTime) {
-            sched_param sp{};
-            sp.sched_priority = 80;
-            pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp);
+            m.realtime = applyRealtime(m.cfg.realtime, &dmaFd);
+            m.realtimeKnown.store(true, std::memory_order_release);
+            char text[240];
+            const bool allGranted = describeRealtime(m.cfg.realtime, m.realtime, text, sizeof text);
+            m.emitf(EventKind::Info, allGranted ? Severity::Info : Severity::Warning, m.state,
+                    m.state, "%s", text);
         }
         const std::int64_t periodNs = static_cast<std::int64_t>(m.T * 1e9 + 0.5);
         std::int64_t next = monotonicNowNs() + periodNs;
@@ -227,6 +236,7 @@ void MotionEngine::startThread() {
                 m.runCycle();
             }
         }
+        releaseRealtime(dmaFd);
     });
     m.loggerThread = std::thread([&m] {
         while (!m.stopRequested.load(std::memory_order_acquire)) {

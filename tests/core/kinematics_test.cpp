@@ -148,3 +148,53 @@ TEST(Kinematics, ChuckFrameMapsThePipeAxisOntoX0) {
     // At theta0 = 0 the work pipe's +y side is on top (Z0 up), seed Eq. (9).
     EXPECT_LE((robot.baseFromWork(0) * Vec3(0, 10, 0) - Vec3(260, 0, 10)).norm(), 1e-12);
 }
+
+// The position-only FK (link constants precomputed, no 4x4 algebra) is the full FK's
+// translation, on random configurations anywhere in (-2 pi, 2 pi) and on non-seed DH tables.
+TEST(Kinematics, TipOnlyForwardEqualsTheFullForwardTranslation) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> angle(-2 * kPi, 2 * kPi), len(-400, 400),
+        alpha(-180, 180);
+    for (int table = 0; table < 20; ++table) {
+        auto dh = seedDhTable();
+        if (table > 0)
+            for (int i = 1; i < kAxisCount; ++i) {
+                auto& r = dh[static_cast<size_t>(i)];
+                r.alpha_deg = alpha(rng);
+                r.a_mm = len(rng);
+                r.d_mm = len(rng);
+                r.theta_offset_deg = alpha(rng);
+            }
+        const PipeRobot robot(dh);
+        for (int k = 0; k < 5000; ++k) {
+            ArmVector q;
+            for (int j = 0; j < kArmJointCount; ++j)
+                q[j] = angle(rng);
+            const Vec3 full = robot.forward(q).translation();
+            const Vec3 tip = robot.tip(q);
+            ASSERT_LE((tip - full).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, full.norm()))
+                << "table " << table << " q " << q.transpose();
+        }
+    }
+}
+
+// The chuck frame inverted as R^T (p - t) is the 4x4 inverse applied to the point.
+TEST(Kinematics, WorkFromBaseEqualsTheInverseChuckFrame) {
+    auto dh = seedDhTable();
+    dh[0].theta_offset_deg = 17;
+    const PipeRobot robot(dh);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> angle(-4 * kPi, 4 * kPi), coord(-1000, 1000);
+    for (int k = 0; k < 20000; ++k) {
+        const double th = angle(rng);
+        const Vec3 p(coord(rng), coord(rng), coord(rng));
+        const Vec3 viaInverse = robot.baseFromWork(th).inverse() * p;
+        const Vec3 viaMatrix = robot.baseFromWork(th).matrix().inverse().topLeftCorner<3, 3>() * p +
+                               robot.baseFromWork(th).matrix().inverse().topRightCorner<3, 1>();
+        const Vec3 w = robot.workFromBase(th, p);
+        ASSERT_LE((w - viaInverse).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+        ASSERT_LE((w - viaMatrix).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+        // And back: the base frame maps it onto p again.
+        ASSERT_LE((robot.baseFromWork(th) * w - p).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+    }
+}
