@@ -1,7 +1,7 @@
 #pragma once
 // The motion engine's part of `cutcell-cli bench` (bench_engine.cpp).
-#include "core/job/job.h"
 #include "core/engine/realtime_thread.h"
+#include "core/job/job.h"
 #include "core/json/json.h"
 
 namespace cutcell::cli {

@@ -3,10 +3,10 @@
 // (engine thread) and its run logger (logger thread). Members are grouped by the thread that
 // writes them; cross-thread members are atomics or lock-free rings.
 #include "core/engine/cycle_clock.h"
-#include "core/engine/realtime_thread.h"
 #include "core/engine/joint_move.h"
 #include "core/engine/motion_engine.h"
 #include "core/engine/mpsc_queue.h"
+#include "core/engine/realtime_thread.h"
 #include "core/engine/spsc_ring.h"
 #include "core/sim/tracking_stats.h"
 
@@ -80,10 +80,10 @@ struct MotionEngine::Impl {
     // ---- threads
     std::thread engineThread, loggerThread;
     std::atomic<bool> stopRequested{false}, threadRunning{false};
-    RealtimeStatus realtime;              // written by the engine thread before its first cycle
+    RealtimeStatus realtime;                // written by the engine thread before its first cycle
     std::atomic<bool> realtimeKnown{false}; // ... and published by this flag
-    std::mutex logMutex;                  // logger side only: one drainer at a time
-    std::unique_ptr<class RunLog> runLog; // under logMutex
+    std::mutex logMutex;                    // logger side only: one drainer at a time
+    std::unique_ptr<class RunLog> runLog;   // under logMutex
     void loggerDrain();
     CycleStats snapshot() const; // any thread
 

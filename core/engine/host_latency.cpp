@@ -15,22 +15,29 @@ HostLatency measureHostWakeupLatency(double period_s, double duration_s,
         int dmaFd = -1;
         out.realtime = applyRealtime(settings, &dmaFd);
         const std::int64_t periodNs = static_cast<std::int64_t>(period_s * 1e9 + 0.5);
-        const auto count = static_cast<std::uint64_t>(duration_s / period_s + 0.5);
-        timespec next{};
-        clock_gettime(CLOCK_MONOTONIC, &next);
-        for (std::uint64_t k = 0; k < count; ++k) {
-            next.tv_nsec += periodNs;
-            while (next.tv_nsec >= 1000000000L) {
-                next.tv_nsec -= 1000000000L;
-                ++next.tv_sec;
+        const auto toNs = [](const timespec& t) { return t.tv_sec * 1000000000LL + t.tv_nsec; };
+        const auto toTs = [](std::int64_t ns) {
+            timespec t{};
+            t.tv_sec = static_cast<time_t>(ns / 1000000000LL);
+            t.tv_nsec = static_cast<long>(ns % 1000000000LL);
+            return t;
+        };
+        timespec ts{};
+        clock_gettime(CLOCK_MONOTONIC, &ts);
+        const std::int64_t end = toNs(ts) + static_cast<std::int64_t>(duration_s * 1e9);
+        std::int64_t next = toNs(ts) + periodNs;
+        while (next < end) {
+            const timespec deadline = toTs(next);
+            while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline, nullptr) != 0) {
             }
-            while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) != 0) {
-            }
-            timespec now{};
-            clock_gettime(CLOCK_MONOTONIC, &now);
-            const std::int64_t lateNs = (now.tv_sec - next.tv_sec) * 1000000000LL +
-                                        (now.tv_nsec - next.tv_nsec);
-            histogram.add(static_cast<double>(lateNs) / 1000.0);
+            clock_gettime(CLOCK_MONOTONIC, &ts);
+            const std::int64_t now = toNs(ts);
+            histogram.add(static_cast<double>(now - next) / 1000.0);
+            next += periodNs;
+            // Like cyclictest (and the engine): deadlines already missed are skipped, not
+            // measured as a burst of late wake-ups.
+            while (next < now)
+                next += periodNs;
         }
         releaseRealtime(dmaFd);
     });

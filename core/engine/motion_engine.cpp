@@ -133,7 +133,7 @@ CycleStats MotionEngine::Impl::snapshot() const {
 RealtimeStatus MotionEngine::realtimeStatus() const {
     // Written by the engine thread once before its first cycle, published by the flag.
     return impl_->realtimeKnown.load(std::memory_order_acquire) ? impl_->realtime
-                                                                 : RealtimeStatus{};
+                                                                : RealtimeStatus{};
 }
 
 bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) const {

@@ -46,8 +46,8 @@ RealtimeStatus applyRealtime(const RealtimeSettings& s, int* dmaFd) {
         // under a finite limit it would make later allocations of the whole process fail.
         // The engine's own buffers are allocated before its thread starts (MCL_CURRENT).
         rlimit lim{};
-        const bool unbounded = ::geteuid() == 0 ||
-                               (::getrlimit(RLIMIT_MEMLOCK, &lim) == 0 && lim.rlim_cur == RLIM_INFINITY);
+        const bool unbounded = ::geteuid() == 0 || (::getrlimit(RLIMIT_MEMLOCK, &lim) == 0 &&
+                                                    lim.rlim_cur == RLIM_INFINITY);
         if (mlockall(MCL_CURRENT | (unbounded ? MCL_FUTURE : 0)) == 0) {
             st.memory_locked = true;
             prefaultStack();

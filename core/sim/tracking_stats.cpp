@@ -16,7 +16,7 @@ void TrackingStats::reset() {
 }
 
 TipSample tipSample(const TipModel* model, const JointVector& commanded,
-                     const JointVector& actual) {
+                    const JointVector& actual) {
     TipSample s;
     if (!model) return s;
     s.commanded = model->tip(commanded);

@@ -195,6 +195,7 @@ TEST(Kinematics, WorkFromBaseEqualsTheInverseChuckFrame) {
         ASSERT_LE((w - viaInverse).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
         ASSERT_LE((w - viaMatrix).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
         // And back: the base frame maps it onto p again.
-        ASSERT_LE((robot.baseFromWork(th) * w - p).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+        ASSERT_LE((robot.baseFromWork(th) * w - p).cwiseAbs().maxCoeff(),
+                  1e-12 * std::max(1.0, p.norm()));
     }
 }
