@@ -197,6 +197,7 @@ void MotionEngine::startThread() {
     Impl& m = *impl_;
     if (m.threadRunning.exchange(true)) return;
     m.stopRequested.store(false);
+    m.realtimeKnown.store(false); // the new thread writes m.realtime, then sets it again
     m.engineThread = std::thread([&m] {
         // Priority, memory lock, CPU, DMA latency: each checked, the outcome an event (a
         // warning when something asked for was refused) and realtimeStatus().
