@@ -1,6 +1,7 @@
 #include "core/engine/realtime_thread.h"
 
 #include <cerrno>
+#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -23,6 +24,7 @@
 namespace cutcell {
 namespace {
 
+#ifndef CUTCELL_SANITIZED
 // Touches this much of the thread's stack once, so the cycle never faults a stack page in.
 constexpr std::size_t kStackPrefaultBytes = 256 * 1024;
 
@@ -31,6 +33,22 @@ constexpr std::size_t kStackPrefaultBytes = 256 * 1024;
     for (std::size_t i = 0; i < sizeof buf; i += 4096)
         buf[i] = 0;
 }
+#endif
+
+// Appends to a fixed buffer (truncates, never overflows).
+struct Line {
+    char* out;
+    unsigned long size;
+    unsigned long n = 0;
+    __attribute__((format(printf, 2, 3))) void put(const char* fmt, ...) {
+        if (n >= size) return;
+        va_list ap;
+        va_start(ap, fmt);
+        const int k = std::vsnprintf(out + n, size - n, fmt, ap);
+        va_end(ap);
+        if (k > 0) n += static_cast<unsigned long>(k);
+    }
+};
 
 } // namespace
 
@@ -108,45 +126,43 @@ void releaseRealtime(int dmaFd) {
 bool describeRealtime(const RealtimeSettings& s, const RealtimeStatus& st, char* out,
                       unsigned long size) {
     bool allOk = true;
-    int n = 0;
-    auto put = [&](const char* fmt, auto... a) {
-        if (n >= 0 && static_cast<unsigned long>(n) < size)
-            n += std::snprintf(out + n, size - static_cast<unsigned long>(n), fmt, a...);
-    };
-    put("Real-time:");
+    Line line{out, size};
+    if (size > 0) out[0] = '\0';
+    line.put("Real-time:");
     if (s.priority <= 0) {
-        put(" normal scheduler (no SCHED_FIFO asked)");
+        line.put(" normal scheduler (no SCHED_FIFO asked)");
     } else if (st.rt_priority_granted) {
-        put(" SCHED_FIFO %d granted", st.priority);
+        line.put(" SCHED_FIFO %d granted", st.priority);
     } else {
         allOk = false;
-        put(" SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio limit; jitter follows "
+        line.put(
+            " SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio limit; jitter follows "
             "the normal scheduler)",
             s.priority, std::strerror(st.priority_error));
     }
     if (!s.lock_memory)
-        put(", memory not locked (not asked)");
+        line.put(", memory not locked (not asked)");
     else if (st.memory_locked)
-        put(", memory locked");
+        line.put(", memory locked");
     else {
         allOk = false;
-        put(", memory NOT locked (%s)",
-            st.lock_error == ENOTSUP ? "sanitizer build" : std::strerror(st.lock_error));
+        line.put(", memory NOT locked (%s)",
+                 st.lock_error == ENOTSUP ? "sanitizer build" : std::strerror(st.lock_error));
     }
     if (s.cpu >= 0) {
         if (st.cpu_pinned)
-            put(", pinned to CPU %d", s.cpu);
+            line.put(", pinned to CPU %d", s.cpu);
         else {
             allOk = false;
-            put(", NOT pinned to CPU %d (%s)", s.cpu, std::strerror(st.cpu_error));
+            line.put(", NOT pinned to CPU %d (%s)", s.cpu, std::strerror(st.cpu_error));
         }
     }
     if (s.cpu_dma_latency) {
         if (st.dma_latency_held)
-            put(", /dev/cpu_dma_latency held at 0 us");
+            line.put(", /dev/cpu_dma_latency held at 0 us");
         else {
             allOk = false;
-            put(", /dev/cpu_dma_latency NOT held (%s)", std::strerror(st.dma_latency_error));
+            line.put(", /dev/cpu_dma_latency NOT held (%s)", std::strerror(st.dma_latency_error));
         }
     }
     return allOk;
