@@ -194,6 +194,8 @@ int main(int argc, char** argv) {
     CLI::App app("cutcell-cli - headless CutCell: plan, simulate, export and run cutting jobs",
                  "cutcell-cli");
     app.require_subcommand(1);
+    // An option given twice takes the later value, so a script can append overrides.
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     app.footer(kExitCodes); // inherited by the commands
     app.get_formatter()->column_width(32);
     AllOptions options;

@@ -261,6 +261,14 @@ TEST(CliOptions, OptionsTakeTheirValueWithEqualsSignAndUnderAGermanLocale) {
     EXPECT_TRUE(fs::exists(report));
     EXPECT_EQ(
         runCli("simulate " + defaultJob() + " --devices canopen --period-ms 2,5", german).code, 64);
+    // Given twice, the later value counts (a script appends its overrides).
+    const std::string twice = (dir / "twice.json").string();
+    const Result t = runCli("simulate " + defaultJob() +
+                            " --method rotating_pipe --method static_pipe --report " + twice);
+    EXPECT_EQ(t.code, 0) << t.all;
+    std::ifstream in(twice);
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    EXPECT_TRUE(contains(text, "\"method\": \"static_pipe\"")) << text.substr(0, 200);
 }
 
 // The parser reads numbers in C notation even after the process has taken a decimal-comma
