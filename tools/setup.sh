@@ -12,6 +12,7 @@ case "$mode" in run | test) ;; *) echo "usage: tools/setup.sh run|test" >&2; exi
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libgtest-dev libgmock-dev
+  libcli11-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-serialbus-dev libqt6serialbus6-bin
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2

@@ -219,43 +219,13 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
 
 namespace cutcell::cli {
 
-int parseCanOptions(const Args& args, CanRunOptions& o) {
-    o.plugin = option(args, "--can-plugin");
-    o.interface = option(args, "--can-interface");
-    o.in_process_simulator = flag(args, "--drivesim");
-    if (const std::string p = option(args, "--period-ms"); !p.empty()) {
-        char* end = nullptr;
-        const double ms = std::strtod(p.c_str(), &end);
-        if (*end != '\0' || !(ms >= 0.1 && ms <= 100)) {
-            std::fprintf(stderr, "--period-ms = \"%s\" ms is outside [0.1, 100] ms\n", p.c_str());
-            return kUsage;
-        }
-        o.period_s = ms * 1e-3;
-    }
-    const std::string clock = option(args, "--clock");
-    if (clock == "fast")
-        o.realtime = false;
-    else if (!clock.empty() && clock != "realtime") {
-        std::fprintf(stderr, "--clock = \"%s\" is not one of \"realtime\", \"fast\"\n",
-                     clock.c_str());
-        return kUsage;
-    }
-    return kOk;
+bool usesCanOpen(const std::string& devices, const Job& job) {
+    if (devices.empty()) return job.devices.kind == DeviceKind::CanOpen;
+    return devices == "canopen";
 }
 
-int usesCanOpen(const Args& args, const Job& job) {
-    const std::string devices = option(args, "--devices");
-    if (devices.empty()) return job.devices.kind == DeviceKind::CanOpen ? 1 : 0;
-    if (devices == "canopen") return 1;
-    if (devices == "simulated") return 0;
-    std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
-                 devices.c_str());
-    return -1;
-}
-
-int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
-    CanRunOptions o;
-    if (const int code = parseCanOptions(args, o)) return code;
+int runSimulateCan(const Job& job, const CutPlan& plan, const SimulateOptions& options) {
+    const CanRunOptions& o = options.devices.can;
     const CanRunResult r = runCutOverCan(job, plan, o);
     if (!r.ok) {
         std::fprintf(stderr, "cutcell-cli simulate over CANopen: %s\n", r.error.c_str());
@@ -275,7 +245,7 @@ int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
                 {"wall_s", r.wall_s}});
     if (o.realtime) doc.asObject().back().second.set("sync_jitter_us_p99", r.sync_jitter_us_p99);
     const std::string text = json::write(doc);
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = options.report;
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc;
     std::printf("%s method over CANopen (%s, period %.1f ms): report written to %s\n",

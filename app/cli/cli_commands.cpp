@@ -12,49 +12,13 @@
 
 namespace cutcell::cli {
 
-std::string option(const Args& args, const std::string& name) {
-    for (size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == name && i + 1 < args.size()) return args[i + 1];
-        if (args[i].rfind(name + "=", 0) == 0) return args[i].substr(name.size() + 1);
-    }
-    return {};
-}
-
-bool flag(const Args& args, const std::string& name) {
-    for (const auto& a : args)
-        if (a == name) return true;
-    return false;
-}
-
-std::vector<std::string> positionals(const Args& args,
-                                     const std::vector<std::string>& valueOptions) {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a.rfind("--", 0) == 0) {
-            for (const auto& o : valueOptions)
-                if (a == o) ++i;
-            continue;
-        }
-        out.push_back(a);
-    }
-    return out;
-}
-
-bool loadJobArg(const Args& args, const std::vector<std::string>& valueOptions, Job& job,
-                int* code) {
-    const auto pos = positionals(args, valueOptions);
-    if (pos.empty()) {
-        std::fprintf(stderr, "cutcell-cli: missing JOB file argument\n");
-        *code = kUsage;
-        return false;
-    }
+bool loadJobArg(const std::string& file, Job& job, int* code) {
     try {
-        job = loadJobFile(pos.front());
+        job = loadJobFile(file);
         return true;
     } catch (const JobError& e) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
-        *code = std::filesystem::exists(pos.front()) ? kInvalidJob : kFailure;
+        *code = std::filesystem::exists(file) ? kInvalidJob : kFailure;
         return false;
     }
 }
@@ -82,10 +46,10 @@ void printUnreachable(const CutPlan& plan) {
 
 } // namespace
 
-int runValidate(const Args& args) {
+int runValidate(const ValidateOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, {}, job, &code)) return code;
+    if (!loadJobArg(o.job, job, &code)) return code;
     if (job.machine == "profile_cutter_2axis") return runProfileValidate(job);
     const CutPlan plan = planCut(job);
     std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n",
@@ -100,15 +64,11 @@ int runValidate(const Args& args) {
     return kOk;
 }
 
-int runPlan(const Args& args) {
+int runPlan(const PlanOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, {"--out"}, job, &code)) return code;
-    const std::string out = option(args, "--out");
-    if (out.empty()) {
-        std::fprintf(stderr, "cutcell-cli plan: --out DIR is required\n");
-        return kUsage;
-    }
+    if (!loadJobArg(o.job, job, &code)) return code;
+    const std::string& out = o.out;
     if (job.machine == "profile_cutter_2axis") return runProfilePlan(job, out);
     const CutPlan plan = planCut(job);
     if (!plan.reachable) {
@@ -130,13 +90,10 @@ int runPlan(const Args& args) {
     return kOk;
 }
 
-int runSimulate(const Args& args) {
+int runSimulate(const SimulateOptions& o) {
     Job job;
     int code = kOk;
-    const std::vector<std::string> valueOptions{"--report",     "--method",        "--devices",
-                                                "--can-plugin", "--can-interface", "--period-ms",
-                                                "--clock"};
-    if (!loadJobArg(args, valueOptions, job, &code)) return code;
+    if (!loadJobArg(o.job, job, &code)) return code;
     if (job.machine != "pipe_robot_6axis") {
         std::fprintf(stderr,
                      "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
@@ -144,30 +101,20 @@ int runSimulate(const Args& args) {
                      job.machine.c_str());
         return kUsage;
     }
-    const std::string method = option(args, "--method");
-    if (method == "static_pipe")
+    // main.cpp has checked --method and --devices against their choices.
+    if (o.method == "static_pipe")
         job.method = CutMethod::StaticPipe;
-    else if (method == "rotating_pipe")
+    else if (o.method == "rotating_pipe")
         job.method = CutMethod::RotatingPipe;
-    else if (!method.empty()) {
-        std::fprintf(stderr, "--method = \"%s\" is not one of \"static_pipe\", \"rotating_pipe\"\n",
-                     method.c_str());
-        return kUsage;
-    }
     const CutPlan plan = planCut(job);
     if (!plan.reachable) {
         printUnreachable(plan);
         return kUnreachable;
     }
-    const std::string devices = option(args, "--devices");
-    if (!devices.empty() && devices != "simulated" && devices != "canopen") {
-        std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
-                     devices.c_str());
-        return kUsage;
-    }
+    const std::string& devices = o.devices.devices;
     if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
 #ifdef CUTCELL_HAVE_DEVICES
-        return runSimulateCan(job, plan, args);
+        return runSimulateCan(job, plan, o);
 #else
         std::fprintf(stderr,
                      "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
@@ -176,7 +123,7 @@ int runSimulate(const Args& args) {
     }
     const TrackingReport report = simulateCut(job, plan);
     const std::string text = json::write(reportToJson(report));
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc;
     std::printf("%s method, %.1f s simulated at %.4f s: report written to %s\n",

@@ -62,14 +62,12 @@ int runProfilePlan(const Job& job, const std::string& outDir) {
     return kOk;
 }
 
-int runExport(const Args& args) {
-    const std::vector<std::string> valueOptions{"--gcode", "--template-svg", "--template-pdf",
-                                                "--path-csv"};
+int runExport(const ExportOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, valueOptions, job, &code)) return code;
-    const std::string gcode = option(args, "--gcode"), svg = option(args, "--template-svg"),
-                      pdf = option(args, "--template-pdf"), csv = option(args, "--path-csv");
+    if (!loadJobArg(o.job, job, &code)) return code;
+    const std::string &gcode = o.gcode, &svg = o.template_svg, &pdf = o.template_pdf,
+                      &csv = o.path_csv;
     if (gcode.empty() && svg.empty() && pdf.empty() && csv.empty()) {
         std::fprintf(stderr,
                      "cutcell-cli export: give at least one of --gcode FILE, --template-svg FILE, "

@@ -49,7 +49,7 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 
 } // namespace
 
-int runProfileRun(const Job& job, const std::string& jobText, const Args& args) {
+int runProfileRun(const Job& job, const std::string& jobText, const RunOptions& o) {
     std::shared_ptr<const MotionProgram> program;
     try {
         program = buildProfileCutterProgram(job, jobText);
@@ -57,13 +57,13 @@ int runProfileRun(const Job& job, const std::string& jobText, const Args& args) 
         std::fprintf(stderr, "invalid job: %s\n", e.what());
         return kInvalidJob;
     }
-    const bool realtime = flag(args, "--realtime"), quiet = flag(args, "--quiet");
+    const bool realtime = o.realtime, quiet = o.quiet;
     ProfileCutterRig rig(job, *program);
     EngineConfig config;
     rig.configure(config);
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
-    if (!option(args, "--runs").empty()) config.spec.runs_dir = option(args, "--runs");
+    if (!o.runs.empty()) config.spec.runs_dir = o.runs;
     MotionEngine engine(rig.devices(), config);
     if (realtime) engine.startThread();
     const double budget_s = 60 + 2 * program->cut_time_s;
@@ -103,7 +103,7 @@ int runProfileRun(const Job& job, const std::string& jobText, const Args& args) 
                                     static_cast<double>(rig.a().rateLimitedCycles() +
                                                         rig.x().rateLimitedCycles())}});
     const std::string out = json::write(doc);
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
         return rc;
     return kOk;

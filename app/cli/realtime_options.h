@@ -4,14 +4,14 @@
 //   --rt-cpu N        pin the engine thread to CPU N (default: not pinned)
 //   --rt-dma-latency  hold /dev/cpu_dma_latency at 0 us while the engine runs
 //   --no-mlock        do not lock memory
-#include "cli_commands.h"
 #include "core/engine/realtime_thread.h"
+
+#include <CLI/CLI.hpp>
 
 namespace cutcell::cli {
 
-inline const std::vector<std::string> kRealtimeValueOptions{"--rt-priority", "--rt-cpu"};
-
-// kOk, or kUsage with the flag, the value and the limit on stderr.
-int parseRealtimeOptions(const Args& args, RealtimeSettings& s, const char* command);
+// Declares the four options on `cmd`; CLI11 checks the ranges (priority 0..99, an existing CPU)
+// and refuses anything else with exit 64.
+void addRealtimeOptions(CLI::App& cmd, RealtimeSettings& s);
 
 } // namespace cutcell::cli

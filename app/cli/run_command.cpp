@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -70,30 +71,21 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 
 } // namespace
 
-int runRun(const Args& args) {
-    const std::vector<std::string> valueOptions{"--report",     "--runs",          "--devices",
-                                                "--can-plugin", "--can-interface", "--period-ms",
-                                                "--clock",      "--rt-priority",   "--rt-cpu"};
-    const auto pos = positionals(args, valueOptions);
-    if (pos.empty()) {
-        std::fprintf(stderr, "cutcell-cli run: missing JOB file argument\n");
-        return kUsage;
-    }
+int runRun(const RunOptions& o) {
     Job job;
     std::string text;
     try {
-        text = readTextFile(pos.front());
+        text = readTextFile(o.job);
         job = parseJob(text);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
-        return kInvalidJob;
+        return std::filesystem::exists(o.job) ? kInvalidJob : kFailure; // 1: cannot be read
     }
-    if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, args);
-    bool realtime = flag(args, "--realtime");
-    const bool quiet = flag(args, "--quiet");
-    RealtimeSettings rtSettings; // the engine thread's set-up (with --realtime or CANopen)
-    if (const int rc = parseRealtimeOptions(args, rtSettings, "run")) return rc;
-    if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");
+    if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, o);
+    bool realtime = o.realtime;
+    const bool quiet = o.quiet;
+    if (!o.runs.empty()) job.engine.runs_dir = o.runs;
+    RealtimeSettings rtSettings = o.rt; // the engine thread's set-up (with --realtime or CANopen)
 
     const CutPlan plan = planCut(job);
     if (!plan.reachable) {
@@ -106,10 +98,8 @@ int runRun(const Args& args) {
     std::vector<std::unique_ptr<SimulatedDrive>> drives;
     EngineDevices devices;
     // CANopen drives (the job's devices section or --devices canopen): always real time.
-    const int overCan = usesCanOpen(args, job);
-    if (overCan < 0) return kUsage;
-    CanRunOptions canOptions;
-    if (const int code = overCan ? parseCanOptions(args, canOptions) : 0) return code;
+    const bool overCan = usesCanOpen(o.devices.devices, job);
+    const CanRunOptions& canOptions = o.devices.can;
     CanEngineDevices can;
     std::string canError;
     if (overCan && !can.start(job, canOptions, &canError)) {
@@ -172,7 +162,7 @@ int runRun(const Args& args) {
                  static_cast<unsigned long long>(cs.overruns), cs.jitter_us_p99,
                  static_cast<unsigned long long>(cs.telemetry_dropped));
     const std::string out = json::write(reportToJson(report));
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
         return rc;
     return kOk;
