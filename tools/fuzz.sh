@@ -25,6 +25,12 @@ mkdir -p "$build/corpus"
 rm -rf "$build/findings"
 mkdir -p "$build/findings"
 
+# The seeds first, each once: they hold no known crasher (those are in tests/fuzz/findings/),
+# so any failure here is a regression. (Fork mode below drops a crashing seed silently.)
+echo "== seeds: tests/fuzz/corpus"
+"$fuzzer" -runs=0 "${limits[@]}" -artifact_prefix="$build/findings/seed-" tests/fuzz/corpus \
+  >"$build/seeds.log" 2>&1 || { tail -30 "$build/seeds.log" >&2; echo "a seed input fails" >&2; exit 1; }
+
 # Fork mode keeps fuzzing after a finding, so a known defect does not end the run early.
 echo "== fuzzing cutcell::parseJob for $seconds s"
 "$fuzzer" "$build/corpus" tests/fuzz/corpus -dict=tests/fuzz/job.dict "${limits[@]}" \

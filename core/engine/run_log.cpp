@@ -3,6 +3,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -24,8 +25,9 @@ void RunLog::openFile(const std::string& path) {
 }
 
 void RunLog::problem(const std::string& what) {
-    if (what == lastProblem_) return; // once, not once per event
-    lastProblem_ = what;
+    // Once each, not once per event.
+    if (std::find(reported_.begin(), reported_.end(), what) != reported_.end()) return;
+    reported_.push_back(what);
     problem_ = what + " (runs are not logged)";
     std::fprintf(stderr, "warning: run log: %s\n", problem_.c_str());
 }

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace cutcell {
 
@@ -37,7 +38,8 @@ class RunLog {
     void openFile(const std::string& path);
     void problem(const std::string& what);
     std::string runsDir_;
-    std::string problem_, lastProblem_;
+    std::string problem_;
+    std::vector<std::string> reported_;
     std::string dir_;
     std::FILE* file_ = nullptr;
 };
