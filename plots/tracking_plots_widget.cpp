@@ -63,6 +63,7 @@ struct TrackingPlotsWidget::Impl {
     QAction* pauseAction = nullptr;
     QLabel* status = nullptr;
     QTimer tick;
+    std::uint64_t ticks = 0; // timer ticks so far (tests wait for ticks, not for time)
     bool dirty = false;
     bool paused = false;
     bool autoscale = true;
@@ -264,7 +265,10 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     d->refresh();
 
     d->tick.setInterval(kTickMs);
-    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(true); });
+    connect(&d->tick, &QTimer::timeout, this, [this] {
+        d->onTick(true);
+        ++d->ticks;
+    });
     d->tick.start();
 }
 
@@ -423,6 +427,10 @@ std::uint64_t TrackingPlotsWidget::droppedCount() const {
 
 int TrackingPlotsWidget::plottedPointCount() const {
     return d->jointPlot->graphCount() ? d->jointPlot->graph(0)->dataCount() : 0;
+}
+
+std::uint64_t TrackingPlotsWidget::timerTicks() const {
+    return d->ticks;
 }
 
 void TrackingPlotsWidget::redrawPending() {

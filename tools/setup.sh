@@ -2,7 +2,8 @@
 # CutCell set-up on Debian 12: installs what is missing (apt-get), configures, builds, then
 #   tools/setup.sh run    starts the GUI on the simulated cell with the default job
 #                         (no display: says so and runs a headless demo instead)
-#   tools/setup.sh test   runs the whole test suite (also under ASan+UBSan)
+#   tools/setup.sh test   runs the whole test suite (also under ASan+UBSan), then fuzzes the
+#                         job parser for 60 s (tools/fuzz.sh: fails on a new finding)
 # Works as root and through sudo. Re-running it is cheap: only missing packages are installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,6 +18,7 @@ packages=(
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
   poppler-utils linuxcnc-uspace
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -67,3 +69,6 @@ cmake -S . -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUTCELL_SANITI
 cmake --build "$san" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$san" --output-on-failure -j "$jobs" --timeout 900
+
+echo "== fuzzing the job parser (libFuzzer, 60 s)"
+tools/fuzz.sh 60

@@ -13,6 +13,10 @@ void MotionEngine::Impl::runCycle() {
     readDevices();
     checkEstopComplete();
     processCommands();
+    if (logProblemPending.load(std::memory_order_acquire)) {
+        emitf(EventKind::Info, Severity::Warning, state, state, "Run log: %s", logProblem.data());
+        logProblemPending.store(false, std::memory_order_release);
+    }
     superviseEnabling();
     advance();
     computeSetpoint();
@@ -156,7 +160,12 @@ void MotionEngine::Impl::stepRunning() {
     }
     case RunPhase::Ignite:
         torchCommand = true;
-        if (!dev.torch || torchFb.arc_ok) {
+        if (dev.torch && torchFb.arc_ok && tau <= 0 && program->pierce_s > 0) {
+            // At the first cut point the arc must go through the material before it moves.
+            phase = RunPhase::Pierce;
+            phaseSince = now;
+            note("Arc established: piercing for %.3f s", program->pierce_s);
+        } else if (!dev.torch || torchFb.arc_ok) {
             phase = RunPhase::Cut;
             traj = TrajectoryKind::Path;
             if (tau <= 0) {
@@ -169,6 +178,21 @@ void MotionEngine::Impl::stepRunning() {
             note(tau <= 0 ? "Arc established: cutting" : "Arc established: resuming the cut");
         } else if (now - phaseSince > cfg.ignition_timeout_s) {
             enterFault("torch: arc not established within %.1f s", cfg.ignition_timeout_s);
+        }
+        break;
+    case RunPhase::Pierce:
+        torchCommand = true;
+        if (!torchFb.arc_ok) { // the torch went out on a feed hold: light it again
+            phase = RunPhase::Ignite;
+            phaseSince = now;
+        } else if (now - phaseSince >= program->pierce_s - 0.5 * T) {
+            phase = RunPhase::Cut;
+            traj = TrajectoryKind::Path;
+            rate = overrideTarget; // the path starts at rest: full rate at once
+            anchorTau = tau = 0;
+            anchorCycles = 0;
+            cutStartTime = now;
+            note("Pierced: cutting");
         }
         break;
     case RunPhase::Cut:

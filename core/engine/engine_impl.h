@@ -10,6 +10,7 @@
 #include "core/engine/spsc_ring.h"
 #include "core/sim/tracking_stats.h"
 
+#include <array>
 #include <atomic>
 #include <cstdarg>
 #include <mutex>
@@ -29,7 +30,7 @@ struct EngineCommand {
 // What the engine is moving along (all time-scaled by the path rate).
 enum class TrajectoryKind : std::uint8_t { Hold, Move, Path };
 // Steps of a Running job.
-enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Cut, Finish, Close };
+enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Pierce, Cut, Finish, Close };
 // Why the path rate is being brought to zero.
 enum class StopReason : std::uint8_t { None, Abort, EmergencyCat1, FaultCat1 };
 
@@ -84,6 +85,10 @@ struct MotionEngine::Impl {
     std::atomic<bool> realtimeKnown{false}; // ... and published by this flag
     std::mutex logMutex;                    // logger side only: one drainer at a time
     std::unique_ptr<class RunLog> runLog;   // under logMutex
+    // Logger -> engine thread: a run-log problem the cycle reports as a Warning event (the
+    // text is written before the flag is set, read after it is seen; no lock, no allocation).
+    std::array<char, 200> logProblem{};
+    std::atomic<bool> logProblemPending{false};
     void loggerDrain();
     CycleStats snapshot() const; // any thread
 

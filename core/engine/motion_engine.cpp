@@ -6,6 +6,7 @@
 #include "core/engine/run_log.h"
 
 #include <chrono>
+#include <cstdio>
 
 namespace cutcell {
 
@@ -181,6 +182,11 @@ void MotionEngine::Impl::loggerDrain() {
                              p ? p->source_text : std::string());
         }
         runLog->event(e);
+        if (const std::string p = runLog->takeProblem();
+            !p.empty() && !logProblemPending.load(std::memory_order_acquire)) {
+            std::snprintf(logProblem.data(), logProblem.size(), "%s", p.c_str());
+            logProblemPending.store(true, std::memory_order_release);
+        }
         if (e.kind == EventKind::RunEnded) {
             const std::uint64_t g = resultGeneration.load(std::memory_order_acquire);
             if (g != 0) {

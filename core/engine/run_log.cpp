@@ -3,7 +3,10 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 
@@ -18,6 +21,15 @@ RunLog::~RunLog() {
 void RunLog::openFile(const std::string& path) {
     if (file_) std::fclose(file_);
     file_ = std::fopen(path.c_str(), "a");
+    if (!file_) problem("cannot open " + path + ": " + std::strerror(errno));
+}
+
+void RunLog::problem(const std::string& what) {
+    // Once each, not once per event.
+    if (std::find(reported_.begin(), reported_.end(), what) != reported_.end()) return;
+    reported_.push_back(what);
+    problem_ = what + " (runs are not logged)";
+    std::fprintf(stderr, "warning: run log: %s\n", problem_.c_str());
 }
 
 std::string RunLog::formatEvent(const EngineEvent& e) {
@@ -49,7 +61,7 @@ void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std
               (std::string(stamp) + "-run" + std::to_string(runId) + "-" + std::to_string(k));
     std::error_code ec;
     fs::create_directories(dir, ec);
-    if (ec) return;
+    if (ec) return problem("cannot create " + dir.string() + ": " + ec.message());
     dir_ = dir.string();
     try {
         writeFileAtomically((dir / "job.json").string(), jobText);
@@ -65,6 +77,7 @@ void RunLog::event(const EngineEvent& e) {
     if (!file_) {
         std::error_code ec;
         fs::create_directories(runsDir_, ec);
+        if (ec) return problem("cannot create " + runsDir_ + ": " + ec.message());
         openFile((fs::path(runsDir_) / "engine.log").string());
         if (!file_) return;
     }

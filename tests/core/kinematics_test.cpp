@@ -50,7 +50,8 @@ TEST(Kinematics, ChainMatchesTheSeedsClosedFormPosition) {
 TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
     const PipeRobot robot(seedDhTable());
     std::mt19937 rng(2);
-    int solved = 0;
+    // Configurations per IK branch: [tip behind joint 1][elbow down (theta3 < 0)].
+    int branch[2][2] = {{0, 0}, {0, 0}};
     for (int i = 0; i < 5000; ++i) {
         const ArmVector q = randomInLimits(robot, rng);
         const Pose T = robot.forward(q);
@@ -58,9 +59,15 @@ TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
         const IkResult r = robot.solve(T, &q);
         ASSERT_TRUE(r.ok()) << describe(r);
         ASSERT_LE((r.q - q).cwiseAbs().maxCoeff(), 1e-7) << "i = " << i;
-        ++solved;
+        // The tip is behind joint 1 when its reach along the arm's plane is negative.
+        const Vec3 armDir(std::cos(q[0]), std::sin(q[0]), 0);
+        ++branch[T.translation().dot(armDir) < 0][q[2] < 0];
     }
-    EXPECT_EQ(solved, 5000);
+    // The round trip covers all four branches of the solver (shoulder facing the tip or
+    // reaching over backwards, either elbow), so none of them can break unnoticed.
+    for (int behind = 0; behind < 2; ++behind)
+        for (int down = 0; down < 2; ++down)
+            EXPECT_GE(branch[behind][down], 10) << "behind " << behind << ", elbow down " << down;
 }
 
 TEST(Kinematics, ForwardOfInverseGivesBackThePose) {
@@ -109,20 +116,27 @@ TEST(Kinematics, UnreachablePosesSayWhyNeverWrongAngles) {
     EXPECT_EQ(r.status, IkStatus::OrientationUnreachable);
     EXPECT_NEAR(rad2deg(r.residual), rad2deg(std::asin(0.3 / std::hypot(0.3, 1.0))), 1e-9);
 
-    // Reachable geometrically but only past a joint limit: theta2 in [-45, 45] deg.
+    // Reachable geometrically but only past a joint limit, on every branch: theta2 = 70 deg
+    // (limit [-45, 45]); the other elbow needs theta2 = 61.3 deg, the shoulder reaching over
+    // backwards needs theta1 = 185.7 deg (limit [-140, 140]).
     ArmVector q;
-    q << 0.1, deg2rad(60), deg2rad(-30), deg2rad(10), 0;
+    q << 0.1, deg2rad(70), deg2rad(-10), deg2rad(10), 0;
     const Pose beyond = robot.forward(q);
     r = robot.solve(beyond, &q);
-    if (!r.ok()) {
-        EXPECT_EQ(r.status, IkStatus::JointLimit);
-        EXPECT_GE(r.axis, 1);
-        EXPECT_GT(r.residual, 0);
-        EXPECT_NE(describe(r).find("past its limit"), std::string::npos);
-    } else {
-        // Another in-limit branch reaches the same pose: that is a correct answer too.
-        EXPECT_LE((robot.forward(r.q).translation() - beyond.translation()).norm(), 1e-6);
-    }
+    ASSERT_EQ(r.status, IkStatus::JointLimit) << describe(r);
+    EXPECT_EQ(r.axis, 2);
+    EXPECT_NEAR(rad2deg(r.value), 70, 1e-7);
+    EXPECT_NEAR(rad2deg(r.limit), 45, 1e-12);
+    EXPECT_NEAR(rad2deg(r.residual), 25, 1e-7);
+    EXPECT_NE(describe(r).find("joint 2 = 70.000 deg is past its limit 45.000 deg by 25.000 deg"),
+              std::string::npos)
+        << describe(r);
+    // Without a reference the nearest failing branch is reported: still joint 2 past 45 deg.
+    r = robot.solve(beyond);
+    EXPECT_EQ(r.status, IkStatus::JointLimit) << describe(r);
+    EXPECT_EQ(r.axis, 2);
+    EXPECT_NEAR(rad2deg(r.limit), 45, 1e-12);
+    EXPECT_GT(r.residual, 0);
 
     // On the joint-1 axis with a vertical torch, theta1 is undefined.
     r = robot.solve(Vec3(0, 0, 100), Vec3(0, 0, -1), 0);

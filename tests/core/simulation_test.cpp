@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <cstdio>
 
 using namespace cutcell;
 
@@ -42,12 +43,18 @@ TEST(Simulation, DefaultJobIsAThirtySecondCut) {
 TEST(Simulation, BothMethodsStayWithinTheSeedsFigures) {
     const TrackingReport stat = run(CutMethod::StaticPipe);
     const TrackingReport rot = run(CutMethod::RotatingPipe);
-    // Seed 000 Section 4: static joint <= 0.04 deg, Cartesian within +-0.026 mm;
-    // rotating joint <= 0.009 deg, Cartesian within +-0.021 mm.
-    EXPECT_LE(maxJoint(stat), 0.04);
-    EXPECT_LE(stat.cartesian_max_abs_mm.maxCoeff(), 0.026);
-    EXPECT_LE(maxJoint(rot), 0.009);
-    EXPECT_LE(rot.cartesian_max_abs_mm.maxCoeff(), 0.021);
+    // Seed 000 Section 4: static joint <= 0.04 deg, Cartesian within +-0.026 mm; rotating
+    // joint <= 0.009 deg, Cartesian within +-0.021 mm. Ours are far below (README, "Results"):
+    // measured static 0.000457 deg / 0.000689 mm, rotating 0.000436 deg / 0.000679 mm. The
+    // bounds sit about 2.5x above those, so a controller or plant regression fails here long
+    // before it would reach the seed's figures.
+    std::printf("static: %.6f deg, %.6f mm; rotating: %.6f deg, %.6f mm\n", maxJoint(stat),
+                stat.cartesian_max_abs_mm.maxCoeff(), maxJoint(rot),
+                rot.cartesian_max_abs_mm.maxCoeff());
+    EXPECT_LE(maxJoint(stat), 0.0012);
+    EXPECT_LE(stat.cartesian_max_abs_mm.maxCoeff(), 0.0017);
+    EXPECT_LE(maxJoint(rot), 0.0011);
+    EXPECT_LE(rot.cartesian_max_abs_mm.maxCoeff(), 0.0017);
     // The actuators are not saturated: the figures are the controller's, not the torque limit's.
     EXPECT_LT(stat.max_torque_fraction, 1.0);
     EXPECT_LT(rot.max_torque_fraction, 1.0);
