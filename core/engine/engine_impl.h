@@ -81,7 +81,10 @@ struct MotionEngine::Impl {
     std::atomic<bool> stopRequested{false}, threadRunning{false};
     std::mutex logMutex;                  // logger side only: one drainer at a time
     std::unique_ptr<class RunLog> runLog; // under logMutex
+    std::mutex externalMutex;             // never taken by the cycle
+    std::vector<EngineEvent> external;    // logExternalEvent(), under externalMutex
     void loggerDrain();
+    void drainExternal();        // under logMutex
     CycleStats snapshot() const; // any thread
 
     // ---- engine thread only
