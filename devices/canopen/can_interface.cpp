@@ -6,6 +6,13 @@
 #include <QTcpSocket>
 #include <QUrl>
 
+#include <arpa/inet.h>
+#include <cstdlib>
+#include <dirent.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+
 namespace cutcell::canopen {
 
 bool checkCanInterface(const QString& plugin, const QString& interface, std::string* error) {
@@ -34,12 +41,45 @@ bool checkCanInterface(const QString& plugin, const QString& interface, std::str
     return false;
 }
 
-int setLowDelay(QCanBusDevice* device) {
+namespace {
+
+// Every TCP socket of this process bound to 127.0.0.1:port (the bus server's side).
+int setNoDelayOnLocalPort(int port) {
+    int n = 0;
+    DIR* dir = ::opendir("/proc/self/fd");
+    if (!dir) return 0;
+    while (const dirent* e = ::readdir(dir)) {
+        char* end = nullptr;
+        const long fd = std::strtol(e->d_name, &end, 10);
+        if (end == e->d_name || *end != '\0') continue;
+        sockaddr_in local{};
+        socklen_t len = sizeof local;
+        if (::getsockname(static_cast<int>(fd), reinterpret_cast<sockaddr*>(&local), &len) != 0 ||
+            local.sin_family != AF_INET || ntohs(local.sin_port) != port)
+            continue;
+        const int one = 1;
+        if (::setsockopt(static_cast<int>(fd), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one) == 0)
+            ++n;
+    }
+    ::closedir(dir);
+    return n;
+}
+
+} // namespace
+
+int setLowDelay(QCanBusDevice* device, const QString& plugin, const QString& interface) {
     if (!device) return 0;
     int n = 0;
     for (QTcpSocket* s : device->findChildren<QTcpSocket*>()) {
         s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         ++n;
+    }
+    if (plugin == QLatin1String("virtualcan")) {
+        constexpr int kVirtualCanDefaultPort = 35468; // Qt's virtualcan server
+        const int port = interface.contains(QLatin1Char('/'))
+                             ? QUrl(interface).port(kVirtualCanDefaultPort)
+                             : kVirtualCanDefaultPort;
+        n += setNoDelayOnLocalPort(port);
     }
     return n;
 }

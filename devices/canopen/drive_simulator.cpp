@@ -144,7 +144,7 @@ void DriveSimulator::openOnThread() {
     QObject::connect(device_, &QCanBusDevice::stateChanged, context_,
                      [this](QCanBusDevice::CanBusDeviceState s) {
                          if (s != QCanBusDevice::ConnectedState) return;
-                         setLowDelay(device_);
+                         setLowDelay(device_, config_.plugin, config_.interface);
                          std::vector<CanFrame> boot;
                          for (DriveNode& n : nodes_)
                              n.boot(now(), boot);

@@ -128,7 +128,7 @@ void CanOpenMaster::Impl::closeDevice() {
 
 void CanOpenMaster::Impl::onStateChanged(QCanBusDevice::CanBusDeviceState s) {
     if (s == QCanBusDevice::ConnectedState) {
-        setLowDelay(device);
+        setLowDelay(device, cfg.plugin, cfg.interface);
         {
             std::lock_guard lock(mutex);
             connected = true;
