@@ -362,7 +362,7 @@ class CanOpenCliTest : public QObject {
         QVERIFY(bus.connectTo(interface_));
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, dir_.filePath("runs-kill"), err), err.constData());
+        QVERIFY2(startRunUntilCut(run, dir_.filePath("runs-kill"), err), err.right(1500).constData());
         QVERIFY(QTest::qWaitFor([&] { return bus.allEnabled(6); }, 2000));
         ::kill(static_cast<pid_t>(run.processId()), SIGKILL); // no code of the master runs
         const double killedAt = bus.now();
@@ -441,7 +441,7 @@ class CanOpenCliTest : public QObject {
         QProcess run;
         QByteArray err;
         const QString runs = dir_.filePath("runs-term");
-        QVERIFY2(startRunUntilCut(run, runs, err), err.constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
         const size_t from = bus.heard.size();
         run.terminate(); // SIGTERM
         QVERIFY(waitForExit(run, err, 5000));
@@ -570,7 +570,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-emcy");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
         ::kill(static_cast<pid_t>(sim.processId()), SIGUSR1); // node 3 faults now
         QVERIFY(waitForExit(run, err, 10000));
         stop(sim);
@@ -586,7 +586,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-heartbeat");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
         ::kill(static_cast<pid_t>(sim.processId()), SIGUSR2); // node 2's heartbeats stop
         QVERIFY(waitForExit(run, err, 10000));
         stop(sim);
@@ -601,7 +601,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-bus");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
         sim.kill();
         sim.waitForFinished();
         QVERIFY(waitForExit(run, err, 10000));
