@@ -325,7 +325,9 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
 
 void CanOpenMaster::Impl::onFrames() {
     const std::int64_t now = steadyNs();
-    while (device && device->framesAvailable()) {
+    // Not connected (closing, refused the bus): readFrame() fails and leaves the frame queued.
+    while (device && device->state() == QCanBusDevice::ConnectedState &&
+           device->framesAvailable()) {
         const QCanBusFrame q = device->readFrame();
         framesRx.fetch_add(1, std::memory_order_relaxed);
         if (q.frameType() == QCanBusFrame::ErrorFrame) {

@@ -362,7 +362,8 @@ class CanOpenCliTest : public QObject {
         QVERIFY(bus.connectTo(interface_));
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, dir_.filePath("runs-kill"), err), err.right(1500).constData());
+        QVERIFY2(startRunUntilCut(run, dir_.filePath("runs-kill"), err),
+                 err.right(1500).constData());
         QVERIFY(QTest::qWaitFor([&] { return bus.allEnabled(6); }, 2000));
         ::kill(static_cast<pid_t>(run.processId()), SIGKILL); // no code of the master runs
         const double killedAt = bus.now();
@@ -491,7 +492,7 @@ class CanOpenCliTest : public QObject {
         second.start(cli_, {"run", job_, "--devices", "canopen", "--can-plugin", "virtualcan",
                             "--can-interface", interface_, "--period-ms", "4", "--quiet"});
         QByteArray err;
-        QVERIFY(waitForExit(second, err, 20000));
+        QVERIFY2(waitForExit(second, err, 20000), err.right(1500).constData());
         QCOMPARE(second.exitCode(), 1);
         QVERIFY2(err.contains("another CANopen master is active") && err.contains("SYNC (0x080)"),
                  err.constData());
@@ -565,8 +566,8 @@ class CanOpenCliTest : public QObject {
     void runLogNamesTheNodeAndTheReasonOfAnEmcy() {
         QProcess sim;
         // The fault comes by SIGUSR1 at the moment chosen below (its timer: never).
-        QVERIFY(startDriveSim(sim, {"--fault-node", "3", "--fault-code", "0x2310",
-                                    "--fault-after", "1000000"}));
+        QVERIFY(startDriveSim(
+            sim, {"--fault-node", "3", "--fault-code", "0x2310", "--fault-after", "1000000"}));
         const QString runs = dir_.filePath("runs-emcy");
         QProcess run;
         QByteArray err;
