@@ -19,7 +19,10 @@ packages=(
   xvfb xauth libsocketcan2
   poppler-utils linuxcnc-uspace
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
+  nodejs
 )
+# npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
+command -v npm >/dev/null || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -60,6 +63,8 @@ if [ "$mode" = run ]; then
 fi
 
 echo "== test suite"
+# The independent CANopen peer's npm packages (pinned by tests/peer/package-lock.json).
+tools/peer_deps.sh tests/peer || echo "(no npm packages: the CANopen peer test reports skipped)"
 export QT_LOGGING_RULES="qt.canbus.plugins.virtualcan.info=false"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 

@@ -59,7 +59,12 @@ int runDriveSim(const DriveSimOptions& o) {
     sigemptyset(&stopSignals);
     sigaddset(&stopSignals, SIGINT);
     sigaddset(&stopSignals, SIGTERM);
+    // SIGUSR1: the fault node raises --fault-code (0x1000 generic if none) now; SIGUSR2: it
+    // stops its heartbeats now. For tests that need a fault at a given moment of a run.
+    sigaddset(&stopSignals, SIGUSR1);
+    sigaddset(&stopSignals, SIGUSR2);
     pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
+    const std::uint16_t signalledFault = faults.fault_code ? faults.fault_code : 0x1000;
 
     const auto app = ensureQCoreApplication();
     DriveSimulatorConfig config;
@@ -84,7 +89,14 @@ int runDriveSim(const DriveSimOptions& o) {
     timespec start{};
     clock_gettime(CLOCK_MONOTONIC, &start);
     for (;;) {
-        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0) break;
+        const int sig = sigtimedwait(&stopSignals, nullptr, &poll);
+        if (sig == SIGUSR1) {
+            sim.injectFault(faultNode, signalledFault);
+        } else if (sig == SIGUSR2) {
+            sim.stopHeartbeat(faultNode);
+        } else if (sig > 0) {
+            break;
+        }
         for (const SimNodeSnapshot& s : sim.snapshot()) {
             auto& [nmt, state] = last[s.node];
             if (nmt == s.nmt && state == s.state) continue;

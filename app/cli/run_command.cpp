@@ -8,6 +8,7 @@
 #include "core/json/json.h"
 #include "core/machines/pipe_robot_program.h"
 #include "core/trajectory/cut_planner.h"
+#include "devices/process/safe_shutdown.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
 
@@ -58,7 +59,8 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
         while (engine.popTelemetry(t)) {
         }
         printEvents(engine, quiet);
-        if (!realtime) engine.flushRunLog(); // the thread mode has its own logger
+        if (!realtime) engine.flushRunLog();               // the thread mode has its own logger
+        if (SafeShutdown::requestedSignal()) return false; // the safe stop has run: end
         const EngineState s = engine.state();
         if (s == target) return true;
         if (latched(s)) return false;
@@ -100,6 +102,8 @@ int runRun(const RunOptions& o) {
     // CANopen drives (the job's devices section or --devices canopen): always real time.
     const bool overCan = usesCanOpen(o.devices.devices, job);
     const CanRunOptions& canOptions = o.devices.can;
+    // Any ending (signal, std::terminate) first stops the torch and disables the drives.
+    SafeShutdown::install();
     CanEngineDevices can;
     std::string canError;
     if (overCan && !can.start(job, canOptions, &canError)) {
@@ -130,6 +134,21 @@ int runRun(const RunOptions& o) {
     config.spec = job.engine;
     config.realtime = rtSettings;
     MotionEngine engine(devices, config);
+    struct EngineAttachment { // detached before the engine goes
+        CanEngineDevices& can;
+        ~EngineAttachment() { can.attachEngine(nullptr); }
+    } attachment{can};
+    can.attachEngine(&engine);
+    const SafeShutdown::Registration safeStop = SafeShutdown::add([&](const std::string& why) {
+        if (overCan) {
+            can.safeStop(why);
+            return;
+        }
+        engine.emergencyStop(); // simulated drives: the engine stops torch and drives
+        const std::string line = "program ending (" + why + "): emergency stop";
+        std::fprintf(stderr, "cutcell-cli: %s\n", line.c_str());
+        engine.logExternalEvent(Severity::Error, line);
+    });
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.
     const double budget_s = 60 + 2 * plan.cut_time_s;
@@ -143,6 +162,10 @@ int runRun(const RunOptions& o) {
     (void)ok;
     engine.flushRunLog();
     printEvents(engine, quiet);
+    if (const int sig = SafeShutdown::requestedSignal()) {
+        std::fprintf(stderr, "cutcell-cli run: stopped by %s\n", SafeShutdown::signalName(sig));
+        return 128 + sig;
+    }
 
     TrackingReport report;
     std::string outcome;

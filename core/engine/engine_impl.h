@@ -89,7 +89,10 @@ struct MotionEngine::Impl {
     // text is written before the flag is set, read after it is seen; no lock, no allocation).
     std::array<char, 200> logProblem{};
     std::atomic<bool> logProblemPending{false};
+    std::mutex externalMutex;          // never taken by the cycle
+    std::vector<EngineEvent> external; // logExternalEvent(), under externalMutex
     void loggerDrain();
+    void drainExternal();        // under logMutex
     CycleStats snapshot() const; // any thread
 
     // ---- engine thread only

@@ -164,11 +164,38 @@ void MotionEngine::flushRunLog() {
     impl_->loggerDrain();
 }
 
+void MotionEngine::logExternalEvent(Severity severity, const std::string& text) {
+    Impl& m = *impl_;
+    EngineEvent e;
+    e.severity = severity;
+    e.kind = severity == Severity::Error ? EventKind::Fault : EventKind::Info;
+    e.from = e.to = m.publicState.load(std::memory_order_acquire);
+    e.time_s = static_cast<double>(m.cycles.load(std::memory_order_relaxed)) * m.T;
+    e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                    std::chrono::system_clock::now().time_since_epoch())
+                    .count();
+    std::snprintf(e.text.data(), e.text.size(), "%s", text.c_str());
+    std::lock_guard<std::mutex> lock(m.externalMutex);
+    if (m.external.size() < 1000) m.external.push_back(e);
+}
+
+void MotionEngine::Impl::drainExternal() {
+    std::vector<EngineEvent> pending;
+    {
+        std::lock_guard<std::mutex> lock(externalMutex);
+        pending.swap(external);
+    }
+    for (const EngineEvent& e : pending)
+        runLog->eventForLastRun(e);
+}
+
 // Logger side: events to files; opens a run on RunStarted, writes the summary on RunEnded.
+// Events from outside the cycle go first: they happened before the cycle reacted to them.
 void MotionEngine::Impl::loggerDrain() {
     // One drainer at a time (the logger thread, flushRunLog()); the ring has one consumer.
     std::lock_guard<std::mutex> logLock(logMutex);
     EngineEvent e;
+    drainExternal();
     while (logEvents.pop(e)) {
         if (e.kind == EventKind::RunStarted) {
             const std::uint64_t seq = runProgramSeq.load(std::memory_order_acquire);
@@ -181,6 +208,7 @@ void MotionEngine::Impl::loggerDrain() {
             runLog->beginRun(e.run_id, p ? p->name : std::string(),
                              p ? p->source_text : std::string());
         }
+        if (e.kind == EventKind::RunEnded) drainExternal(); // a device's reason, still in this run
         runLog->event(e);
         if (const std::string p = runLog->takeProblem();
             !p.empty() && !logProblemPending.load(std::memory_order_acquire)) {

@@ -126,6 +126,10 @@ class MotionEngine {
     std::string lastRunDirectory() const;
     // Writes pending run-log events now (runCycles() mode; the thread mode has a logger thread).
     void flushRunLog();
+    // An event from outside the cycle (a device's decoded fault, e.g. "node 3: EMCY 0x2310
+    // over-current"; a shutdown) for the run log, written by the log's drainer before the
+    // cycle's pending events. Any thread but the cycle's: it locks and allocates.
+    void logExternalEvent(Severity severity, const std::string& text);
 
   private:
     bool pushCommand(CommandType type, int axis = 0, double value = 0);

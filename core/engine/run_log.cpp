@@ -87,6 +87,20 @@ void RunLog::event(const EngineEvent& e) {
     std::fflush(file_); // nothing is lost if the program dies after this line
 }
 
+void RunLog::eventForLastRun(const EngineEvent& e) {
+    if (file_ || dir_.empty()) {
+        event(e);
+        return;
+    }
+    std::FILE* f = std::fopen((fs::path(dir_) / "events.log").string().c_str(), "a");
+    if (!f) {
+        event(e);
+        return;
+    }
+    std::fputs((formatEvent(e) + "\n").c_str(), f);
+    std::fclose(f);
+}
+
 void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c) {
     if (runsDir_.empty() || dir_.empty()) return;
     json::Object cycle{{"period_s", c.period_s},

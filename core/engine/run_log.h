@@ -25,6 +25,9 @@ class RunLog {
     // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
     void event(const EngineEvent& e);
+    // An event about the current run, or, when none is open, the last one (e.g. why the program
+    // ended right after a run stopped): appended to that run's events.log.
+    void eventForLastRun(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
     void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle);
     std::string runDirectory() const { return dir_; }
