@@ -88,7 +88,7 @@ TEST(Machines, AMachineOnlyReadsItsOwnKeys) {
     EXPECT_NO_THROW(parseJob(v2));
     // ... and refuses them in a schema-2 file.
     const std::string withDh =
-        edited(v2, "\"steppers\": {", "\"robot\": {\"dh\": []},\n    \"steppers\": {");
+        edited(v2, "\"profile_cutter\": {", "\"robot\": {\"dh\": []},\n    \"profile_cutter\": {");
     EXPECT_NE(refusal(withDh).find("unknown key \"machine.robot\""), std::string::npos)
         << refusal(withDh);
 }
