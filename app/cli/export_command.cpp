@@ -43,9 +43,15 @@ int runExport(const Args& args) {
         for (const auto& e : offered)
             found = found || e.id == id;
         if (!found) {
-            std::fprintf(stderr,
-                         "cutcell-cli export: machine \"%s\" offers no %s export (it offers: %s)\n",
-                         module.id().c_str(), id.c_str(), offeredList.c_str());
+            std::string others; // the machines that do offer it
+            for (const MachineModule* m : machines())
+                for (const auto& e : m->exports())
+                    if (e.id == id) others += (others.empty() ? "\"" : ", \"") + m->id() + "\"";
+            std::fprintf(
+                stderr,
+                "cutcell-cli export: machine \"%s\" offers no %s export (it offers: %s)%s\n",
+                module.id().c_str(), id.c_str(), offeredList.c_str(),
+                others.empty() ? "" : ("; machine.kind " + others + " does").c_str());
             return kInvalidJob;
         }
     }
