@@ -13,7 +13,7 @@
 namespace cutcell {
 
 struct MotionProgram {
-    std::string machine;         // "pipe_robot_6axis", "profile_cutter_2axis"
+    std::string machine;         // the id of the machine module that built it
     std::string method;          // how the machine cuts (e.g. "rotating_pipe"), for reports
     int axis_count = kAxisCount; // axes 0..axis_count-1 are driven
     std::array<std::string, kAxisCount> axis_names{};
