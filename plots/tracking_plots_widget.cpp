@@ -69,6 +69,7 @@ struct TrackingPlotsWidget::Impl {
     QAction* pauseAction = nullptr;
     QLabel* status = nullptr;
     QTimer tick;
+    std::uint64_t ticks = 0; // timer ticks so far (tests wait for ticks, not for time)
     bool dirty = false;
     bool paused = false;
     bool autoscale = true;
@@ -334,7 +335,10 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     d->refresh();
 
     d->tick.setInterval(kTickMs);
-    connect(&d->tick, &QTimer::timeout, this, [this] { d->onTick(true); });
+    connect(&d->tick, &QTimer::timeout, this, [this] {
+        d->onTick(true);
+        ++d->ticks;
+    });
     d->tick.start();
 }
 
@@ -530,6 +534,10 @@ std::uint64_t TrackingPlotsWidget::droppedCount() const {
 
 int TrackingPlotsWidget::plottedPointCount() const {
     return d->graphs.empty() ? 0 : d->graphs[0]->dataCount();
+}
+
+std::uint64_t TrackingPlotsWidget::timerTicks() const {
+    return d->ticks;
 }
 
 void TrackingPlotsWidget::redrawPending() {

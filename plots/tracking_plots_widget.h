@@ -72,6 +72,7 @@ class TrackingPlotsWidget : public QWidget {
     int sampleCount() const;            // samples kept in the ring
     std::uint64_t droppedCount() const; // samples dropped since clear()
     int plottedPointCount() const;      // points in the joint plot's first trace (tests, bench)
+    std::uint64_t timerTicks() const;   // ticks of the ~30 Hz timer handled so far (tests)
     // Draws pending data now, as the internal ~30 Hz timer would. A host with its own display
     // tick calls it there and turns the timer's data redraws off (setHostDrivenRedraw(true)),
     // so the plots join that tick's window composition instead of causing one of their own

@@ -2,7 +2,8 @@
 # CutCell set-up on Debian 12: installs what is missing (apt-get), configures, builds, then
 #   tools/setup.sh run    starts the GUI on the simulated cell with the default job
 #                         (no display: says so and runs a headless demo instead)
-#   tools/setup.sh test   runs the whole test suite (also under ASan+UBSan)
+#   tools/setup.sh test   runs the whole test suite (also under ASan+UBSan), then fuzzes the
+#                         job parser for 60 s (tools/fuzz.sh: fails on a new finding)
 # Works as root and through sudo. Re-running it is cheap: only missing packages are installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,12 +13,17 @@ case "$mode" in run | test) ;; *) echo "usage: tools/setup.sh run|test" >&2; exi
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libgtest-dev libgmock-dev
+  libcli11-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-serialbus-dev libqt6serialbus6-bin
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
   poppler-utils linuxcnc-uspace
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
+  nodejs
   nlohmann-json3-dev locales
 )
+# npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
+command -v npm >/dev/null || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -64,6 +70,8 @@ if [ "$mode" = run ]; then
 fi
 
 echo "== test suite"
+# The independent CANopen peer's npm packages (pinned by tests/peer/package-lock.json).
+tools/peer_deps.sh tests/peer || echo "(no npm packages: the CANopen peer test reports skipped)"
 export QT_LOGGING_RULES="qt.canbus.plugins.virtualcan.info=false"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 
@@ -73,3 +81,6 @@ cmake -S . -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUTCELL_SANITI
 cmake --build "$san" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$san" --output-on-failure -j "$jobs" --timeout 900
+
+echo "== fuzzing the job parser (libFuzzer, 60 s)"
+tools/fuzz.sh 60

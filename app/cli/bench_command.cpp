@@ -4,6 +4,7 @@
 #ifdef CUTCELL_HAVE_DEVICES
 #include "bench_can.h"
 #include "bench_engine.h"
+#include "realtime_options.h"
 #endif
 
 #include "core/job/default_job.h"
@@ -52,20 +53,18 @@ double benchIk(const Job& job, int poses, int repeats) {
 
 } // namespace
 
-int runBench(const Args& args) {
-    const bool asJson = flag(args, "--json");
-    const bool quick = flag(args, "--quick");
+int runBench(const BenchOptions& o) {
+    const bool asJson = o.json;
+    const bool quick = o.quick;
     Job job = defaultJob();
-    const std::string jobFile = option(args, "--job");
-    if (!jobFile.empty()) {
-        try {
-            job = loadJobFile(jobFile);
-        } catch (const JobError& e) {
-            std::fprintf(stderr, "invalid job: %s\n", e.what());
-            return kInvalidJob;
-        }
-    }
+    const std::string& jobFile = o.job;
+    int code = kOk;
+    if (!jobFile.empty() && !loadJobArg(jobFile, job, &code)) return code;
     job.sim.period_s = 0.001;
+#ifdef CUTCELL_HAVE_DEVICES
+    const RealtimeSettings& realtime =
+        o.rt; // --rt-priority, --rt-cpu, --rt-dma-latency, --no-mlock
+#endif
 
     json::Object out;
     out.emplace_back("ik_ns_per_solve", benchIk(job, 2000, quick ? 20 : 200));
@@ -83,11 +82,11 @@ int runBench(const Args& args) {
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
 #ifdef CUTCELL_HAVE_DEVICES
-    if (!flag(args, "--no-engine")) benchEngine(job, quick, out);
+    if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif
 
 #ifdef CUTCELL_HAVE_DEVICES
-    if (!flag(args, "--no-can")) benchCan(out, quick);
+    if (!o.no_can) benchCan(out, quick);
 #endif
     const json::Value doc(std::move(out));
     if (asJson) {

@@ -1,8 +1,11 @@
 // cutcell-cli bench: the motion engine's real-time figures (cycle jitter and overruns over a
-// run of the default job at 1 ms; emergency-stop latency over many trials). Printed, never
-// asserted.
+// run of the default job at 1 ms; emergency-stop latency over many trials), what its thread
+// was granted (SCHED_FIFO, memory lock), and the host's own wake-up latency measured like
+// cyclictest at the same period for the same time, with the engine's p99 as a ratio to it.
+// Printed, never asserted.
 #include "bench_engine.h"
 
+#include "core/engine/host_latency.h"
 #include "core/engine/motion_engine.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/trajectory/cut_planner.h"
@@ -40,8 +43,9 @@ struct SimCell {
     }
 };
 
-EngineConfig realTimeConfig(const Job& job) {
+EngineConfig realTimeConfig(const Job& job, const RealtimeSettings& realtime) {
     EngineConfig c;
+    c.realtime = realtime;
     c.period_s = job.sim.period_s;
     c.clock = ClockMode::RealTime;
     c.spec = job.engine;
@@ -77,21 +81,32 @@ double quantile(std::vector<double> v, double p) {
 
 } // namespace
 
-void benchEngine(const Job& job, bool quick, json::Object& out) {
+void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, json::Object& out) {
     const CutPlan plan = planCut(job);
     if (!plan.reachable) return;
     const auto program = buildPipeRobotProgram(job, plan);
+    const double timedS = quick ? 2 : 10;
+
+    // 0. The host alone: cyclictest's measurement (clock_nanosleep to absolute deadlines) on a
+    //    thread set up like the engine's, same period, same duration as the timing run below.
+    const HostLatency host = measureHostWakeupLatency(job.sim.period_s, timedS, realtime);
+    out.emplace_back("host_wakeup_samples", static_cast<double>(host.samples));
+    out.emplace_back("host_wakeup_latency_us_p50", host.p50_us);
+    out.emplace_back("host_wakeup_latency_us_p99", host.p99_us);
+    out.emplace_back("host_wakeup_latency_us_max", host.max_us);
 
     // 1. Cycle timing: the default job cutting in real time, telemetry drained at 30 Hz.
     {
         SimCell cell(job);
-        MotionEngine engine(cell.devices, realTimeConfig(job));
+        MotionEngine engine(cell.devices, realTimeConfig(job, realtime));
         engine.load(program);
         engine.enable();
         engine.home();
         engine.start();
         engine.startThread();
-        const auto end = std::chrono::steady_clock::now() + (quick ? 2s : 10s);
+        const auto end = std::chrono::steady_clock::now() +
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(timedS));
         while (std::chrono::steady_clock::now() < end) {
             std::this_thread::sleep_for(33ms);
             drain(engine);
@@ -107,13 +122,23 @@ void benchEngine(const Job& job, bool quick, json::Object& out) {
         out.emplace_back("cycle_missed_deadlines", static_cast<double>(s.missed_deadlines));
         out.emplace_back("cycle_work_us_max", s.work_us_max);
         out.emplace_back("telemetry_dropped", static_cast<double>(s.telemetry_dropped));
+        // What the engine thread was granted (1 = yes, 0 = no), and what it adds to the host.
+        const RealtimeStatus rt = engine.realtimeStatus();
+        out.emplace_back("rt_priority_granted", rt.rt_priority_granted ? 1 : 0);
+        out.emplace_back("rt_priority", rt.priority);
+        out.emplace_back("memory_locked", rt.memory_locked ? 1 : 0);
+        if (realtime.cpu >= 0) out.emplace_back("cpu_pinned", rt.cpu_pinned ? 1 : 0);
+        if (realtime.cpu_dma_latency)
+            out.emplace_back("cpu_dma_latency_held", rt.dma_latency_held ? 1 : 0);
+        out.emplace_back("engine_jitter_to_host_ratio",
+                         host.p99_us > 0 ? s.jitter_us_p99 / host.p99_us : 0.0);
     }
 
     // 2. Emergency-stop latency: request at a random phase of the cycle, measured by the
     //    engine from the request to "all drives read back disabled and torch off".
     {
         SimCell cell(job);
-        MotionEngine engine(cell.devices, realTimeConfig(job));
+        MotionEngine engine(cell.devices, realTimeConfig(job, realtime));
         engine.load(program);
         engine.enable();
         engine.startThread();

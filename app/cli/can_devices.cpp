@@ -1,12 +1,14 @@
 #include "can_devices.h"
 
 #include "devices/canopen/canopen_master.h"
+#include "devices/canopen/cell_safe_stop.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/engine_tuning.h"
 
 #include "qt_app.h"
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 namespace cutcell::cli {
@@ -40,6 +42,11 @@ bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, std::string
         }
     }
     master_ = std::make_unique<CanOpenMaster>(mc);
+    master_->setEventSink([this](const MasterEvent& e) {
+        if (e.error) std::fprintf(stderr, "%s\n", e.text.c_str());
+        std::lock_guard lock(engineMutex_);
+        if (engine_) engine_->logExternalEvent(e.error ? Severity::Error : Severity::Info, e.text);
+    });
     if (!master_->start(error)) return false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (!master_->allOperational()) {
@@ -54,6 +61,21 @@ bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, std::string
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     return true;
+}
+
+void CanEngineDevices::attachEngine(MotionEngine* engine) {
+    std::lock_guard lock(engineMutex_);
+    engine_ = engine;
+}
+
+void CanEngineDevices::safeStop(const std::string& why) {
+    if (safeStopped_.exchange(true)) return;
+    MotionEngine* engine;
+    {
+        std::lock_guard lock(engineMutex_);
+        engine = engine_;
+    }
+    safeStopCanCell(engine, master_.get(), why, "cutcell-cli");
 }
 
 AxisDrive* CanEngineDevices::axis(int i) {

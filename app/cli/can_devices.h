@@ -7,7 +7,9 @@
 #include "core/engine/motion_engine.h"
 #include "core/job/job.h"
 
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 
 class QCoreApplication;
@@ -33,8 +35,20 @@ class CanEngineDevices {
     // resolution (the engine's defaults suit exact simulated drives).
     void tune(EngineConfig& config, const Job& job) const; // see canopen/engine_tuning.h
     canopen::CanOpenMaster& master() { return *master_; }
+    // The master's events (faults with node and decoded reason: "node 3: EMCY 0x2310
+    // over-current", "node 2: heartbeat lost ...", "CAN bus: connection to the bus lost")
+    // go into this engine's run log (events.log) as they happen, and errors to stderr. Null
+    // detaches (before the engine goes).
+    void attachEngine(MotionEngine* engine);
+    // Brings the cell to a safe state (engine emergency stop: torch off; then every drive
+    // disabled on the bus) and logs why, once. From a signal's watcher, std::terminate or the
+    // program's way out.
+    void safeStop(const std::string& why);
 
   private:
+    std::mutex engineMutex_; // guards engine_ against the master thread's event sink
+    MotionEngine* engine_ = nullptr;
+    std::atomic<bool> safeStopped_{false};
     std::unique_ptr<QCoreApplication> app_;
     std::unique_ptr<canopen::DriveSimulator> sim_;
     std::unique_ptr<canopen::CanOpenMaster> master_;

@@ -1,9 +1,9 @@
 #include "can_run.h"
 
-#include "core/common/c_format.h"
-
 #include "devices/canopen/canopen_master.h"
+#include "devices/canopen/cell_safe_stop.h"
 #include "devices/canopen/drive_simulator.h"
+#include "devices/process/safe_shutdown.h"
 
 #include "qt_app.h"
 
@@ -19,6 +19,11 @@ namespace {
 using namespace cutcell::canopen;
 using Clock = std::chrono::steady_clock;
 
+std::string faultText(CanOpenMaster& m, int axis, const DriveFeedback& fb);
+
+// One cycle of the lock-step runner, and its one supervision: once the drives are enabled,
+// every cycle of every phase (approach, settling, cut) checks every drive, so a fault anywhere
+// stops the run at the next SYNC (the engine path does the same in its cycle).
 class Cycler {
   public:
     Cycler(CanOpenMaster& m, double period, bool realtime)
@@ -26,8 +31,15 @@ class Cycler {
         clock_gettime(CLOCK_MONOTONIC, &next_);
     }
 
+    // From now on every step requires every drive Enabled; `phase` names the step in errors.
+    void supervise(const char* phase) { phase_ = phase; }
+
     // Writes the set-points, sends one SYNC and waits for every node's TPDO of that SYNC.
     bool step(const JointVector& targets, std::string& error) {
+        if (const int sig = SafeShutdown::requestedSignal()) {
+            error = std::string("stopped by ") + SafeShutdown::signalName(sig);
+            return false;
+        }
         for (int i = 0; i < m_.driveCount(); ++i)
             m_.drive(i)->write(targets[i]);
         if (realtime_) {
@@ -49,6 +61,21 @@ class Cycler {
             }
             std::this_thread::sleep_for(std::chrono::microseconds(20));
         }
+        return supervised(error);
+    }
+
+    bool supervised(std::string& error) {
+        if (!phase_) return true;
+        for (int i = 0; i < m_.driveCount(); ++i) {
+            const DriveFeedback fb = m_.drive(i)->read(0);
+            if (fb.state == DriveState::Enabled) continue;
+            error = (fb.state == DriveState::Fault
+                         ? faultText(m_, i, fb)
+                         : "axis " + std::to_string(i) + " left Operation Enabled (now " +
+                               toString(fb.state) + ")") +
+                    " during the " + phase_;
+            return false;
+        }
         return true;
     }
     void skipTo(std::uint64_t sent) { sent_ = sent; }
@@ -66,6 +93,7 @@ class Cycler {
     CanOpenMaster& m_;
     double period_;
     bool realtime_;
+    const char* phase_ = nullptr;
     timespec next_{};
     std::uint64_t sent_ = 0;
 };
@@ -108,6 +136,11 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
         }
     }
     CanOpenMaster master(mc);
+    // Any ending (signal, std::terminate) first disables every drive on the bus, then logs.
+    SafeShutdown::install();
+    const SafeShutdown::Registration safeStop = SafeShutdown::add([&](const std::string& why) {
+        safeStopCanCell(nullptr, &master, why, "cutcell-cli simulate");
+    });
     if (!master.start(&r.error)) return r;
     auto fail = [&](const std::string& why) {
         master.emergencyStop(false);
@@ -148,6 +181,7 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
         if (!cycler.step(q, r.error)) return fail(r.error);
     }
 
+    cycler.supervise("approach");
     // Approach the start of the cut (smooth cosine move at the homing speed), then settle.
     const JointVector from = q;
     const JointVector start = plan.spline.evaluate(0).q;
@@ -169,16 +203,12 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
     const double ramp = profile.duration() - plan.length_mm / job.cut.speed_mm_s;
     const double simulated = std::max(job.sim.duration_s, plan.cut_time_s);
     const long steps = static_cast<long>(std::ceil(simulated / T - 1e-9));
+    cycler.supervise("cut");
     for (int lead = 0; lead < 2; ++lead)
         if (!cycler.step(plan.spline.evaluate(lead * T).q, r.error)) return fail(r.error);
     for (long k = 0; k <= steps; ++k) {
         const double t = static_cast<double>(k) * T;
-        q = cycler.read(fb);
-        for (int i = 0; i < kAxisCount; ++i)
-            if (fb[static_cast<size_t>(i)].state != DriveState::Enabled)
-                return fail(fb[static_cast<size_t>(i)].state == DriveState::Fault
-                                ? faultText(master, i, fb[static_cast<size_t>(i)])
-                                : "axis " + std::to_string(i) + " left Operation Enabled");
+        q = cycler.read(fb); // supervised by the step that brought this feedback
         const JointVector ref = plan.spline.evaluate(t).q;
         stats.add(ref, q);
         // The torque in this TPDO was applied over the cycle before it (simulateCut's order).
@@ -221,46 +251,18 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
 
 namespace cutcell::cli {
 
-int parseCanOptions(const Args& args, CanRunOptions& o) {
-    o.plugin = option(args, "--can-plugin");
-    o.interface = option(args, "--can-interface");
-    o.in_process_simulator = flag(args, "--drivesim");
-    if (const std::string p = option(args, "--period-ms"); !p.empty()) {
-        const double ms = parseDouble(p).value_or(-1);
-        if (!(ms >= 0.1 && ms <= 100)) {
-            std::fprintf(stderr, "--period-ms = \"%s\" ms is outside [0.1, 100] ms\n", p.c_str());
-            return kUsage;
-        }
-        o.period_s = ms * 1e-3;
-    }
-    const std::string clock = option(args, "--clock");
-    if (clock == "fast")
-        o.realtime = false;
-    else if (!clock.empty() && clock != "realtime") {
-        std::fprintf(stderr, "--clock = \"%s\" is not one of \"realtime\", \"fast\"\n",
-                     clock.c_str());
-        return kUsage;
-    }
-    return kOk;
+bool usesCanOpen(const std::string& devices, const Job& job) {
+    if (devices.empty()) return job.devices.kind == DeviceKind::CanOpen;
+    return devices == "canopen";
 }
 
-int usesCanOpen(const Args& args, const Job& job) {
-    const std::string devices = option(args, "--devices");
-    if (devices.empty()) return job.devices.kind == DeviceKind::CanOpen ? 1 : 0;
-    if (devices == "canopen") return 1;
-    if (devices == "simulated") return 0;
-    std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
-                 devices.c_str());
-    return -1;
-}
-
-int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
-    CanRunOptions o;
-    if (const int code = parseCanOptions(args, o)) return code;
+int runSimulateCan(const Job& job, const CutPlan& plan, const SimulateOptions& options) {
+    const CanRunOptions& o = options.devices.can;
     const CanRunResult r = runCutOverCan(job, plan, o);
     if (!r.ok) {
         std::fprintf(stderr, "cutcell-cli simulate over CANopen: %s\n", r.error.c_str());
-        return kFailure;
+        const int sig = SafeShutdown::requestedSignal();
+        return sig ? 128 + sig : kFailure;
     }
     json::Value doc = reportToJson(r.report);
     const double T = o.period_s > 0 ? o.period_s : job.sim.period_s;
@@ -276,7 +278,7 @@ int runSimulateCan(const Job& job, const CutPlan& plan, const Args& args) {
                 {"wall_s", r.wall_s}});
     if (o.realtime) doc.asObject().back().second.set("sync_jitter_us_p99", r.sync_jitter_us_p99);
     const std::string text = json::write(doc);
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = options.report;
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc;
     std::printf("%s method over CANopen (%s, period %.1f ms): report written to %s\n",

@@ -37,11 +37,8 @@ struct CanRunResult {
 
 CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOptions& options);
 
-// --can-plugin, --can-interface, --period-ms, --clock, --drivesim into options; 0 or the exit
-// code after printing what is wrong (value, unit, limit).
-int parseCanOptions(const std::vector<std::string>& args, CanRunOptions& options);
-// Whether a command runs over CANopen: --devices canopen|simulated, else the job's choice;
-// -1 after printing the problem for a bad --devices value.
-int usesCanOpen(const std::vector<std::string>& args, const Job& job);
+// Whether a command runs over CANopen: --devices canopen|simulated (checked by the parser),
+// else (empty) the job's choice.
+bool usesCanOpen(const std::string& devices, const Job& job);
 
 } // namespace cutcell::cli

@@ -3,7 +3,6 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
-#include "core/machines/pipe_robot/plan_csv.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <cstdio>
@@ -12,49 +11,13 @@
 
 namespace cutcell::cli {
 
-std::string option(const Args& args, const std::string& name) {
-    for (size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == name && i + 1 < args.size()) return args[i + 1];
-        if (args[i].rfind(name + "=", 0) == 0) return args[i].substr(name.size() + 1);
-    }
-    return {};
-}
-
-bool flag(const Args& args, const std::string& name) {
-    for (const auto& a : args)
-        if (a == name) return true;
-    return false;
-}
-
-std::vector<std::string> positionals(const Args& args,
-                                     const std::vector<std::string>& valueOptions) {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a.rfind("--", 0) == 0) {
-            for (const auto& o : valueOptions)
-                if (a == o) ++i;
-            continue;
-        }
-        out.push_back(a);
-    }
-    return out;
-}
-
-bool loadJobArg(const Args& args, const std::vector<std::string>& valueOptions, Job& job,
-                int* code) {
-    const auto pos = positionals(args, valueOptions);
-    if (pos.empty()) {
-        std::fprintf(stderr, "cutcell-cli: missing JOB file argument\n");
-        *code = kUsage;
-        return false;
-    }
+bool loadJobArg(const std::string& file, Job& job, int* code) {
     try {
-        job = loadJobFile(pos.front());
+        job = loadJobFile(file);
         return true;
     } catch (const JobError& e) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
-        *code = std::filesystem::exists(pos.front()) ? kInvalidJob : kFailure;
+        *code = std::filesystem::exists(file) ? kInvalidJob : kFailure;
         return false;
     }
 }
@@ -91,10 +54,10 @@ bool planJob(const Job& job, const std::string& jobText, const MachineModule** m
 
 } // namespace
 
-int runValidate(const Args& args) {
+int runValidate(const ValidateOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, {}, job, &code)) return code;
+    if (!loadJobArg(o.job, job, &code)) return code;
     const MachineModule* module = nullptr;
     MachinePlan plan;
     if (!planJob(job, {}, &module, &plan, &code)) return code;
@@ -107,15 +70,11 @@ int runValidate(const Args& args) {
     return kOk;
 }
 
-int runPlan(const Args& args) {
+int runPlan(const PlanOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, {"--out"}, job, &code)) return code;
-    const std::string out = option(args, "--out");
-    if (out.empty()) {
-        std::fprintf(stderr, "cutcell-cli plan: --out DIR is required\n");
-        return kUsage;
-    }
+    if (!loadJobArg(o.job, job, &code)) return code;
+    const std::string& out = o.out;
     const MachineModule* module = nullptr;
     MachinePlan plan;
     if (!planJob(job, {}, &module, &plan, &code)) return code;
@@ -139,17 +98,15 @@ int runPlan(const Args& args) {
     return kOk;
 }
 
-int runSimulate(const Args& args) {
+int runSimulate(const SimulateOptions& o) {
     Job job;
     int code = kOk;
-    const std::vector<std::string> valueOptions{"--report",     "--method",        "--devices",
-                                                "--can-plugin", "--can-interface", "--period-ms",
-                                                "--clock"};
-    if (!loadJobArg(args, valueOptions, job, &code)) return code;
+    if (!loadJobArg(o.job, job, &code)) return code;
     const MachineModule& module = machineFor(job);
-    if (const std::string method = option(args, "--method"); !method.empty()) {
+    // main.cpp has checked --devices against its choices; the module checks --method.
+    if (!o.method.empty()) {
         std::string error;
-        if (!module.setVariant(job, method, &error)) {
+        if (!module.setVariant(job, o.method, &error)) {
             std::fprintf(stderr, "cutcell-cli simulate: %s\n", error.c_str());
             return kUsage;
         }
@@ -161,12 +118,7 @@ int runSimulate(const Args& args) {
         std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
-    const std::string devices = option(args, "--devices");
-    if (!devices.empty() && devices != "simulated" && devices != "canopen") {
-        std::fprintf(stderr, "--devices = \"%s\" is not one of \"simulated\", \"canopen\"\n",
-                     devices.c_str());
-        return kUsage;
-    }
+    const std::string& devices = o.devices.devices;
     if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
         std::string why;
         if (!module.supportsCanOpen(&why)) {
@@ -176,7 +128,7 @@ int runSimulate(const Args& args) {
 #ifdef CUTCELL_HAVE_DEVICES
         // The offline CAN cut follows the robot's CutPlan (the only CAN machine so far).
         // TODO(modules): run it from plan.program like the engine path, for every machine.
-        return runSimulateCan(job, *static_cast<const CutPlan*>(plan.data.get()), args);
+        return runSimulateCan(job, *static_cast<const CutPlan*>(plan.data.get()), o);
 #else
         std::fprintf(stderr,
                      "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
@@ -188,7 +140,7 @@ int runSimulate(const Args& args) {
         std::fprintf(stderr, "cutcell-cli simulate: %s\n", why.c_str());
         return kUsage;
     }
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc;
     std::printf("report written to %s\n%s", reportFile.c_str(), table.c_str());

@@ -10,24 +10,20 @@
 
 namespace cutcell::cli {
 
-int runExport(const Args& args) {
-    // Command-line option -> export id.
-    const std::pair<const char*, const char*> kOptions[] = {{"--gcode", "gcode"},
-                                                            {"--template-svg", "template_svg"},
-                                                            {"--template-pdf", "template_pdf"},
-                                                            {"--path-csv", "path_csv"},
-                                                            {"--joints-csv", "joints_csv"}};
-    std::vector<std::string> valueOptions;
-    for (const auto& o : kOptions)
-        valueOptions.push_back(o.first);
+int runExport(const ExportOptions& o) {
     Job job;
     int code = kOk;
-    if (!loadJobArg(args, valueOptions, job, &code)) return code;
+    if (!loadJobArg(o.job, job, &code)) return code;
     const MachineModule& module = machineFor(job);
+    // Export id -> the file given for it (main.cpp declares one option per export id).
+    const std::pair<const char*, const std::string*> kFiles[] = {{"gcode", &o.gcode},
+                                                                 {"template_svg", &o.template_svg},
+                                                                 {"template_pdf", &o.template_pdf},
+                                                                 {"path_csv", &o.path_csv},
+                                                                 {"joints_csv", &o.joints_csv}};
     std::vector<std::pair<std::string, std::string>> wanted; // export id, file
-    for (const auto& o : kOptions)
-        if (const std::string file = option(args, o.first); !file.empty())
-            wanted.emplace_back(o.second, file);
+    for (const auto& [id, file] : kFiles)
+        if (!file->empty()) wanted.emplace_back(id, *file);
     if (wanted.empty()) {
         std::fprintf(stderr, "cutcell-cli export: give at least one of --gcode FILE, "
                              "--template-svg FILE, --template-pdf FILE, --path-csv FILE, "
@@ -43,9 +39,15 @@ int runExport(const Args& args) {
         for (const auto& e : offered)
             found = found || e.id == id;
         if (!found) {
-            std::fprintf(stderr,
-                         "cutcell-cli export: machine \"%s\" offers no %s export (it offers: %s)\n",
-                         module.id().c_str(), id.c_str(), offeredList.c_str());
+            std::string others; // the machines that do offer it
+            for (const MachineModule* m : machines())
+                for (const auto& e : m->exports())
+                    if (e.id == id) others += (others.empty() ? "\"" : ", \"") + m->id() + "\"";
+            std::fprintf(
+                stderr,
+                "cutcell-cli export: machine \"%s\" offers no %s export (it offers: %s)%s\n",
+                module.id().c_str(), id.c_str(), offeredList.c_str(),
+                others.empty() ? "" : ("; machine.kind " + others + " does").c_str());
             return kInvalidJob;
         }
     }

@@ -1,56 +1,255 @@
 // cutcell-cli: headless planning, simulation and benchmarks over the CutCell core.
+// The command line is declared here with CLI11: every command, its options and the range of
+// every value. A command's run function gets its filled options struct (cli_options.h). Any
+// usage error (unknown command or option, missing argument, value out of range) exits 64.
 #include "cli_commands.h"
+#include "option_checks.h"
+#include "realtime_options.h"
 
 #include <cstdio>
 #include <cstring>
+#include <functional>
 
+namespace cutcell::cli {
 namespace {
 
-const char* kUsageText = R"(cutcell-cli - headless CutCell
+constexpr const char* kExitCodes =
+    "exit codes: 0 ok, 1 I/O error, 2 invalid job, 3 path not reachable, 64 usage";
 
-usage:
-  cutcell-cli validate JOB                  check a job file
-  cutcell-cli plan JOB --out DIR            write DIR/path.csv and DIR/joints.csv
-  cutcell-cli simulate JOB [--report FILE]  simulate the cut, print/write the JSON report
-  cutcell-cli bench [--json] [--quick]      measure speed figures
-  cutcell-cli export JOB [--gcode FILE] [--template-svg FILE] [--template-pdf FILE] [--path-csv FILE]
-                                            profile cutter G-code (LinuxCNC X/A), 1:1 cutting
-                                            template, path with stepper pulses
-  cutcell-cli run JOB [--realtime] [--report FILE] [--runs DIR] [--quiet]
-                                            run the job through the motion engine on
-                                            simulated drives; writes a run log
-  cutcell-cli simulate JOB --devices canopen [--can-plugin P] [--can-interface I]
-                 [--period-ms T] [--clock realtime|fast] [--drivesim]
-                                            run the cut over CANopen drives (--drivesim: start
-                                            simulated drives in-process)
-  cutcell-cli drivesim [JOB] [--nodes 1-6] [--plugin P] [--interface I] [--duration S]
-                 [--fault-node N] [--fault-code 0xNNNN] [--fault-after S]
-                 [--heartbeat-stop-after S] [--following-error-after S]
-                                            CiA 402 drive simulator on a CAN bus
+struct AllOptions {
+    ValidateOptions validate;
+    PlanOptions plan;
+    SimulateOptions simulate;
+    BenchOptions bench;
+    ExportOptions exportFiles;
+    RunOptions run;
+    DriveSimOptions drivesim;
+    MachinesOptions machines;
+    UpgradeOptions upgrade;
+};
 
-exit codes: 0 ok, 1 error, 2 invalid job, 3 path not reachable, 64 usage
-)";
+struct Command {
+    CLI::App* cmd;
+    std::function<int()> run;
+};
+
+void addJob(CLI::App& cmd, std::string& job) {
+    cmd.add_option("JOB", job, "job file (JSON)")->type_name("FILE")->required();
+}
+
+// --devices and the CANopen overrides (simulate and run).
+void addDeviceOptions(CLI::App& cmd, DeviceOptions& o) {
+    const char* group = "Drives";
+    addChoice(cmd, "--devices", o.devices, {"simulated", "canopen"},
+              "drives to use (default: the job's devices section)")
+        ->group(group);
+    cmd.add_option("--can-plugin", o.can.plugin, "Qt CAN bus plugin (default: the job's)")
+        ->type_name("P")
+        ->group(group);
+    cmd.add_option("--can-interface", o.can.interface, "CAN interface (default: the job's)")
+        ->type_name("I")
+        ->group(group);
+    addNumber(
+        cmd, "--period-ms", {0.1, 100, "ms"}, [&o](double ms) { o.can.period_s = ms * 1e-3; },
+        "SYNC period over CANopen (default: the job's sim.period_s)")
+        ->group(group);
+    addChoice(
+        cmd, "--clock", {"realtime", "fast"},
+        [&o](const std::string& c) { o.can.realtime = c == "realtime"; },
+        "CANopen cycle paced by the wall clock or lock-step as fast as the bus answers "
+        "(default: realtime)")
+        ->group(group);
+    cmd.add_flag("--drivesim", o.can.in_process_simulator,
+                 "start simulated CANopen drives in-process (a peer on the bus)")
+        ->group(group);
+}
+
+std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
+    std::vector<Command> commands;
+    const auto add = [&](const char* name, const char* description, std::function<int()> run) {
+        CLI::App* cmd = app.add_subcommand(name, description);
+        commands.push_back({cmd, std::move(run)});
+        return cmd;
+    };
+
+    CLI::App* validate = add("validate", "check a job file (exit 2 names key, value, unit, limit)",
+                             [&] { return runValidate(o.validate); });
+    addJob(*validate, o.validate.job);
+
+    CLI::App* plan =
+        add("plan", "write the machine's plan files into DIR (path.csv, joints.csv, ...)",
+            [&] { return runPlan(o.plan); });
+    addJob(*plan, o.plan.job);
+    plan->add_option("--out", o.plan.out, "output directory")->type_name("DIR")->required();
+
+    CLI::App* simulate =
+        add("simulate", "simulate the cut offline: JSON tracking report (also over CANopen drives)",
+            [&] { return runSimulate(o.simulate); });
+    addJob(*simulate, o.simulate.job);
+    simulate->add_option("--report", o.simulate.report, "write the report here (default: stdout)")
+        ->type_name("FILE");
+    addChoice(*simulate, "--method", o.simulate.method, {"static_pipe", "rotating_pipe"},
+              "cutting method (default: the job's)");
+    addDeviceOptions(*simulate, o.simulate.devices);
+
+    CLI::App* bench = add("bench", "measure speed figures (printed, never asserted)",
+                          [&] { return runBench(o.bench); });
+    bench->add_flag("--json", o.bench.json, "print the figures as JSON");
+    bench->add_flag("--quick", o.bench.quick, "fewer repetitions");
+    bench->add_option("--job", o.bench.job, "job to measure (default: the built-in job)")
+        ->type_name("FILE");
+    bench->add_flag("--no-engine", o.bench.no_engine, "skip the motion engine figures");
+    bench->add_flag("--no-can", o.bench.no_can, "skip the CANopen figures");
+    addRealtimeOptions(*bench, o.bench.rt);
+
+    CLI::App* exportCmd = add("export",
+                              "write the files the job's machine offers ('cutcell-cli machines' "
+                              "lists them)",
+                              [&] { return runExport(o.exportFiles); });
+    addJob(*exportCmd, o.exportFiles.job);
+    exportCmd->add_option("--gcode", o.exportFiles.gcode, "LinuxCNC G-code, axes X/A")
+        ->type_name("FILE");
+    exportCmd->add_option("--template-svg", o.exportFiles.template_svg, "cutting template, SVG 1:1")
+        ->type_name("FILE");
+    exportCmd->add_option("--template-pdf", o.exportFiles.template_pdf, "cutting template, PDF 1:1")
+        ->type_name("FILE");
+    exportCmd->add_option("--path-csv", o.exportFiles.path_csv, "path with stepper pulses (CSV)")
+        ->type_name("FILE");
+    exportCmd->add_option("--joints-csv", o.exportFiles.joints_csv, "joint trajectory (CSV)")
+        ->type_name("FILE");
+    exportCmd->footer("Give at least one of the files.");
+
+    CLI::App* machinesCmd =
+        add("machines", "list every machine: id, title, axes (unit, limits, command), exports",
+            [&] { return runMachines(o.machines); });
+    machinesCmd->add_flag("--json", o.machines.json, "print the list as JSON");
+
+    CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
+                            [&] { return runUpgrade(o.upgrade); });
+    addJob(*upgrade, o.upgrade.job);
+    upgrade->add_option("--out", o.upgrade.out, "the schema-2 job file (written atomically)")
+        ->type_name("FILE")
+        ->required();
+
+#ifdef CUTCELL_HAVE_DEVICES
+    CLI::App* run = add("run",
+                        "run the job in the motion engine on simulated or CANopen drives; "
+                        "writes a run log",
+                        [&] { return runRun(o.run); });
+    addJob(*run, o.run.job);
+    run->add_flag("--realtime", o.run.realtime, "pace the engine by the wall clock");
+    run->add_flag("--quiet", o.run.quiet, "print warnings and faults only");
+    addRealtimeOptions(*run, o.run.rt);
+    run->add_option("--report", o.run.report, "write the JSON report here (default: stdout)")
+        ->type_name("FILE");
+    run->add_option("--runs", o.run.runs, "run log directory (default: the job's engine.runs_dir)")
+        ->type_name("DIR");
+    addDeviceOptions(*run, o.run.devices);
+
+    DriveSimOptions& d = o.drivesim;
+    CLI::App* drivesim =
+        add("drivesim", "CiA 402 drive simulator on a CAN bus, with fault injection",
+            [&] { return runDriveSim(o.drivesim); });
+    drivesim
+        ->add_option("JOB", d.job,
+                     "job whose devices section gives the nodes (default: the built-in job)")
+        ->type_name("FILE");
+    addNodeList(*drivesim, "--nodes", d.nodes_text, d.nodes,
+                "node ids, e.g. 1-6, 1,3,5 or 2-3,7 (default: the job's)");
+    drivesim->add_option("--plugin", d.plugin, "Qt CAN bus plugin")->type_name("P");
+    drivesim->add_option("--interface", d.interface, "CAN interface")->type_name("I");
+    addNumber(*drivesim, "--duration", d.duration_s, {0, 1e6, "s"},
+              "stop after this long (default 0: at SIGINT/SIGTERM)");
+    const char* faults = "Fault injection";
+    addInteger(*drivesim, "--fault-node", d.fault_node, {1, 127, ""},
+               "node that gets the faults (default: the first)")
+        ->group(faults);
+    addEmcyCode(*drivesim, "--fault-code", d.fault_code, "raise this EMCY code (0x0001..0xFFFF)")
+        ->group(faults);
+    addNumber(*drivesim, "--fault-after", d.fault_after_s, {0, 1e6, "s"},
+              "... this long after Operation Enabled")
+        ->group(faults);
+    addNumber(*drivesim, "--heartbeat-stop-after", d.heartbeat_stop_after_s, {0, 1e6, "s"},
+              "stop the heartbeat this long after Operational")
+        ->group(faults);
+    addNumber(*drivesim, "--following-error-after", d.following_error_after_s, {0, 1e6, "s"},
+              "lose the motor torque this long after Operation Enabled")
+        ->group(faults);
+#endif
+    return commands;
+}
+
+// The message of a parse error, naming the command and what was wrong; always exit 64.
+int usageError(const CLI::App& app, const CLI::ParseError& e) {
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    if (parsed.empty()) {
+        const std::vector<std::string> extras = app.remaining();
+        if (!extras.empty() && extras.front().rfind('-', 0) != 0)
+            std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n", extras.front().c_str());
+        else if (!extras.empty())
+            std::fprintf(stderr, "cutcell-cli: %s\n\n", unexpectedArguments(app, extras).c_str());
+        else
+            std::fprintf(stderr, "cutcell-cli: %s\n\n", e.what());
+        std::fputs(app.help().c_str(), stderr);
+        return kUsage;
+    }
+    const CLI::App& cmd = *parsed.front();
+    std::string message = e.what();
+    if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+        std::vector<std::string> extras = app.remaining();
+        for (const std::string& a : cmd.remaining())
+            extras.push_back(a);
+        message = unexpectedArguments(cmd, extras);
+    }
+    std::fprintf(stderr, "cutcell-cli %s: %s\n('cutcell-cli %s --help' lists its options)\n",
+                 cmd.get_name().c_str(), message.c_str(), cmd.get_name().c_str());
+    return kUsage;
+}
 
 } // namespace
+} // namespace cutcell::cli
 
 int main(int argc, char** argv) {
     using namespace cutcell::cli;
-    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
-        !std::strcmp(argv[1], "help")) {
-        std::fputs(kUsageText, argc < 2 ? stderr : stdout);
-        return argc < 2 ? kUsage : kOk;
+    CLI::App app("cutcell-cli - headless CutCell: plan, simulate, export and run cutting jobs",
+                 "cutcell-cli");
+    app.require_subcommand(1);
+    // An option given twice takes the later value, so a script can append overrides.
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    app.footer(kExitCodes); // inherited by the commands
+    app.get_formatter()->column_width(32);
+    AllOptions options;
+    const std::vector<Command> commands = declareCommands(app, options);
+    app.footer(std::string(kExitCodes) + "\n'cutcell-cli COMMAND --help' lists its options.");
+
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stderr);
+        return kUsage;
     }
-    const std::string cmd = argv[1];
-    const Args args(argv + 2, argv + argc);
-    if (cmd == "validate") return runValidate(args);
-    if (cmd == "plan") return runPlan(args);
-    if (cmd == "simulate") return runSimulate(args);
-    if (cmd == "bench") return runBench(args);
-    if (cmd == "export") return runExport(args);
-#ifdef CUTCELL_HAVE_DEVICES
-    if (cmd == "run") return runRun(args);
-    if (cmd == "drivesim") return runDriveSim(args);
-#endif
-    std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", cmd.c_str(), kUsageText);
-    return ExitCode::kUsage;
+    // "cutcell-cli help [COMMAND]" as "cutcell-cli [COMMAND] --help".
+    if (!std::strcmp(argv[1], "help")) {
+        if (argc == 2) {
+            std::fputs(app.help().c_str(), stdout);
+            return kOk;
+        }
+        for (const Command& c : commands)
+            if (c.cmd->get_name() == argv[2]) {
+                std::fputs(c.cmd->help("cutcell-cli").c_str(), stdout);
+                return kOk;
+            }
+        std::fprintf(stderr, "cutcell-cli: unknown command '%s'\n\n%s", argv[2],
+                     app.help().c_str());
+        return kUsage;
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        std::fputs(app.help().c_str(), stdout); // the help of the command given, if any
+        return kOk;
+    } catch (const CLI::ParseError& e) {
+        return usageError(app, e);
+    }
+    for (const Command& c : commands)
+        if (c.cmd->parsed()) return c.run();
+    return kUsage;
 }

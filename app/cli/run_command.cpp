@@ -8,12 +8,15 @@
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
 #include "devices/machines/sim_rig_registry.h"
+#include "devices/process/safe_shutdown.h"
 #include "devices/sim/simulated_torch.h"
 
 #include "can_devices.h"
+#include "realtime_options.h"
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -55,7 +58,8 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
         while (engine.popTelemetry(t)) {
         }
         printEvents(engine, quiet);
-        if (!realtime) engine.flushRunLog(); // the thread mode has its own logger
+        if (!realtime) engine.flushRunLog();               // the thread mode has its own logger
+        if (SafeShutdown::requestedSignal()) return false; // the safe stop has run: end
         const EngineState s = engine.state();
         if (s == target) return true;
         if (latched(s)) return false;
@@ -68,27 +72,20 @@ bool runUntil(MotionEngine& engine, bool realtime, EngineState target, double bu
 
 } // namespace
 
-int runRun(const Args& args) {
-    const std::vector<std::string> valueOptions{"--report",     "--runs",          "--devices",
-                                                "--can-plugin", "--can-interface", "--period-ms",
-                                                "--clock"};
-    const auto pos = positionals(args, valueOptions);
-    if (pos.empty()) {
-        std::fprintf(stderr, "cutcell-cli run: missing JOB file argument\n");
-        return kUsage;
-    }
+int runRun(const RunOptions& o) {
     Job job;
     std::string text;
     try {
-        text = readTextFile(pos.front());
+        text = readTextFile(o.job);
         job = parseJob(text);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
-        return kInvalidJob;
+        return std::filesystem::exists(o.job) ? kInvalidJob : kFailure; // 1: cannot be read
     }
-    bool realtime = flag(args, "--realtime");
-    const bool quiet = flag(args, "--quiet");
-    if (!option(args, "--runs").empty()) job.engine.runs_dir = option(args, "--runs");
+    bool realtime = o.realtime;
+    const bool quiet = o.quiet;
+    if (!o.runs.empty()) job.engine.runs_dir = o.runs;
+    RealtimeSettings rtSettings = o.rt; // the engine thread's set-up (with --realtime or CANopen)
 
     // Every machine goes the same way: its module plans, its rig (or CANopen) drives.
     const MachineModule& module = machineFor(job);
@@ -109,15 +106,14 @@ int runRun(const Args& args) {
     EngineConfig config;
     config.period_s = job.sim.period_s;
     // CANopen drives (the job's devices section or --devices canopen): always real time.
-    const int overCan = usesCanOpen(args, job);
-    if (overCan < 0) return kUsage;
-    std::string why;
-    if (overCan && !module.supportsCanOpen(&why)) {
-        std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", why.c_str());
+    const bool overCan = usesCanOpen(o.devices.devices, job);
+    if (std::string noCan; overCan && !module.supportsCanOpen(&noCan)) {
+        std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", noCan.c_str());
         return kInvalidJob;
     }
-    CanRunOptions canOptions;
-    if (const int code = overCan ? parseCanOptions(args, canOptions) : 0) return code;
+    const CanRunOptions& canOptions = o.devices.can;
+    // Any ending (signal, std::terminate) first stops the torch and disables the drives.
+    SafeShutdown::install();
     CanEngineDevices can;
     SimulatedTorch canTorch; // the torch is simulated on the CAN path as well
     std::unique_ptr<MachineSimRig> rig;
@@ -144,7 +140,23 @@ int runRun(const Args& args) {
     }
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
+    config.realtime = rtSettings;
     MotionEngine engine(devices, config);
+    struct EngineAttachment { // detached before the engine goes
+        CanEngineDevices& can;
+        ~EngineAttachment() { can.attachEngine(nullptr); }
+    } attachment{can};
+    can.attachEngine(&engine);
+    const SafeShutdown::Registration safeStop = SafeShutdown::add([&](const std::string& why) {
+        if (overCan) {
+            can.safeStop(why);
+            return;
+        }
+        engine.emergencyStop(); // simulated drives: the engine stops torch and drives
+        const std::string line = "program ending (" + why + "): emergency stop";
+        std::fprintf(stderr, "cutcell-cli: %s\n", line.c_str());
+        engine.logExternalEvent(Severity::Error, line);
+    });
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.
     const double budget_s = 60 + 2 * program->cut_time_s;
@@ -158,6 +170,10 @@ int runRun(const Args& args) {
     (void)ok;
     engine.flushRunLog();
     printEvents(engine, quiet);
+    if (const int sig = SafeShutdown::requestedSignal()) {
+        std::fprintf(stderr, "cutcell-cli run: stopped by %s\n", SafeShutdown::signalName(sig));
+        return 128 + sig;
+    }
 
     TrackingReport report;
     std::string outcome;
@@ -177,7 +193,7 @@ int runRun(const Args& args) {
     json::Value doc = module.runReport(job, plan, report);
     if (rig) rig->addToReport(doc);
     const std::string out = json::write(doc);
-    const std::string reportFile = option(args, "--report");
+    const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
         return rc;
     return kOk;

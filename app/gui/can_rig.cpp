@@ -2,13 +2,16 @@
 
 #include "can_panel_feed.h"
 
+#include "devices/canopen/cell_safe_stop.h"
 #include "devices/canopen/engine_tuning.h"
+#include "devices/process/safe_shutdown.h"
 #include "devices/sim/simulated_torch.h"
 #include "ui/machine/machine_ui_registry.h"
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
 
+#include <atomic>
 #include <cstdio>
 
 namespace cutcell::app {
@@ -27,8 +30,15 @@ class CanRig : public CutCell::ui::EngineRig {
                 axisNames_.push_back(axis.name);
     }
     ~CanRig() override {
+        safeStop("the window was closed"); // torch off, drives disabled on the bus, logged
+        safeStopRegistration_.reset();
         if (engine_) engine_->stopThread();
         if (master_) master_->stop();
+    }
+    // Any ending of the program (signal, std::terminate, closing the window): once.
+    void safeStop(const std::string& why) {
+        if (!engine_ || safeStopped_.exchange(true)) return;
+        safeStopCanCell(engine_.get(), master_.get(), why, "cutcell");
     }
 
     // Connects and configures every node; the wait is bounded (5 s) and keeps this thread's
@@ -59,6 +69,8 @@ class CanRig : public CutCell::ui::EngineRig {
         tuneEngineForCan(config, job, period_);
         engine_ = std::make_unique<MotionEngine>(devices, config);
         engine_->startThread();
+        safeStopRegistration_ =
+            SafeShutdown::add([this](const std::string& why) { safeStop(why); });
         return true;
     }
 
@@ -89,6 +101,8 @@ class CanRig : public CutCell::ui::EngineRig {
     std::unique_ptr<CanOpenMaster> master_;
     SimulatedTorch torch_;
     std::unique_ptr<MotionEngine> engine_; // declared last: destroyed before the devices
+    std::atomic<bool> safeStopped_{false};
+    SafeShutdown::Registration safeStopRegistration_;
 };
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "gui_run.h"
 #include "sim_rig.h"
 
+#include "devices/process/safe_shutdown.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/run_controller.h"
@@ -54,6 +55,12 @@ int main(int argc, char** argv) {
     cutcell::view3d::CellView::setDefaultSurfaceFormat(); // before QApplication
 #endif
     QApplication app(argc, argv);
+    // Any ending (signal, std::terminate) first brings the cell to a safe state (the rigs
+    // register how), then quits the event loop: the window closes in order.
+    cutcell::SafeShutdown::install();
+    cutcell::SafeShutdown::setOnRequest([](int) {
+        QMetaObject::invokeMethod(qApp, &QCoreApplication::quit, Qt::QueuedConnection);
+    });
     QApplication::setOrganizationName(QStringLiteral("CutCell"));
     QApplication::setApplicationName(QStringLiteral("cutcell"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));

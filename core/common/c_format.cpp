@@ -30,7 +30,7 @@ class CLocaleScope {
 
 int vsnprintfC(char* buf, std::size_t size, const char* fmt, std::va_list ap) {
     const CLocaleScope scope;
-    return vsnprintfC(buf, size, fmt, ap);
+    return std::vsnprintf(buf, size, fmt, ap);
 }
 
 int snprintfC(char* buf, std::size_t size, const char* fmt, ...) {

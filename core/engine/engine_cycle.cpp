@@ -13,6 +13,10 @@ void MotionEngine::Impl::runCycle() {
     readDevices();
     checkEstopComplete();
     processCommands();
+    if (logProblemPending.load(std::memory_order_acquire)) {
+        emitf(EventKind::Info, Severity::Warning, state, state, "Run log: %s", logProblem.data());
+        logProblemPending.store(false, std::memory_order_release);
+    }
     superviseEnabling();
     advance();
     computeSetpoint();
@@ -157,7 +161,12 @@ void MotionEngine::Impl::stepRunning() {
     }
     case RunPhase::Ignite:
         torchCommand = true;
-        if (!dev.torch || torchFb.arc_ok) {
+        if (dev.torch && torchFb.arc_ok && tau <= 0 && program->pierce_s > 0) {
+            // At the first cut point the arc must go through the material before it moves.
+            phase = RunPhase::Pierce;
+            phaseSince = now;
+            note("Arc established: piercing for %.3f s", program->pierce_s);
+        } else if (!dev.torch || torchFb.arc_ok) {
             phase = RunPhase::Cut;
             traj = TrajectoryKind::Path;
             if (tau <= 0) {
@@ -170,6 +179,21 @@ void MotionEngine::Impl::stepRunning() {
             note(tau <= 0 ? "Arc established: cutting" : "Arc established: resuming the cut");
         } else if (now - phaseSince > cfg.ignition_timeout_s) {
             enterFault("torch: arc not established within %.1f s", cfg.ignition_timeout_s);
+        }
+        break;
+    case RunPhase::Pierce:
+        torchCommand = true;
+        if (!torchFb.arc_ok) { // the torch went out on a feed hold: light it again
+            phase = RunPhase::Ignite;
+            phaseSince = now;
+        } else if (now - phaseSince >= program->pierce_s - 0.5 * T) {
+            phase = RunPhase::Cut;
+            traj = TrajectoryKind::Path;
+            rate = overrideTarget; // the path starts at rest: full rate at once
+            anchorTau = tau = 0;
+            anchorCycles = 0;
+            cutStartTime = now;
+            note("Pierced: cutting");
         }
         break;
     case RunPhase::Cut:
@@ -288,8 +312,11 @@ void MotionEngine::Impl::track() {
     if (samples > 0)
         for (int i = 0; i < axisCount(); ++i)
             stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
-    stats.add(setpoint, actual);
-    if (tau >= program->cruise_from_s && tau <= program->cruise_to_s) cruise.add(setpoint, actual);
+    // One tip computation per cycle for the overall figures, the cruise figures and telemetry.
+    const TipSample& tips = tipsThisCycle(program->tip_model.get());
+    stats.add(setpoint, actual, tips);
+    if (tau >= program->cruise_from_s && tau <= program->cruise_to_s)
+        cruise.add(setpoint, actual, tips);
     if (pathDone && samples >= minRunSteps) phase = RunPhase::Close;
     ++samples;
 }
@@ -314,8 +341,7 @@ void MotionEngine::Impl::publishTelemetry() {
     t.actual = actualPositions();
     t.error = t.setpoint - t.actual;
     if (program && program->tip_model)
-        t.cartesian_error_mm =
-            program->tip_model->tip(t.actual) - program->tip_model->tip(t.setpoint);
+        t.cartesian_error_mm = tipsThisCycle(program->tip_model.get()).error();
     if (program && (state == EngineState::Running || state == EngineState::Paused ||
                     state == EngineState::Completed)) {
         const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
@@ -339,6 +365,16 @@ void MotionEngine::Impl::publishTelemetry() {
     t.arc_ok = torchFb.arc_ok;
     t.homed = homed;
     if (!telemetry.push(t)) telemetryDropped.fetch_add(1, std::memory_order_relaxed);
+}
+
+// The tips of (set-point, actual) for this cycle: computed on first use, then shared.
+const TipSample& MotionEngine::Impl::tipsThisCycle(const TipModel* model) {
+    if (tipsCycle != cycle || tipsModel != model) {
+        cycleTips = tipSample(model, setpoint, actualPositions());
+        tipsCycle = cycle;
+        tipsModel = model;
+    }
+    return cycleTips;
 }
 
 // Path time: tau advances by rate * T. While the rate is steady tau is computed from an

@@ -6,10 +6,12 @@
 #include "core/engine/joint_move.h"
 #include "core/engine/motion_engine.h"
 #include "core/engine/mpsc_queue.h"
+#include "core/engine/realtime_thread.h"
 #include "core/engine/run_log.h"
 #include "core/engine/spsc_ring.h"
 #include "core/sim/tracking_stats.h"
 
+#include <array>
 #include <atomic>
 #include <cstdarg>
 #include <mutex>
@@ -29,7 +31,7 @@ struct EngineCommand {
 // What the engine is moving along (all time-scaled by the path rate).
 enum class TrajectoryKind : std::uint8_t { Hold, Move, Path };
 // Steps of a Running job.
-enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Cut, Finish, Close };
+enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Pierce, Cut, Finish, Close };
 // Why the path rate is being brought to zero.
 enum class StopReason : std::uint8_t { None, Abort, EmergencyCat1, FaultCat1 };
 
@@ -81,9 +83,18 @@ struct MotionEngine::Impl {
     // ---- threads
     std::thread engineThread, loggerThread;
     std::atomic<bool> stopRequested{false}, threadRunning{false};
-    std::mutex logMutex;                  // logger side only: one drainer at a time
-    std::unique_ptr<class RunLog> runLog; // under logMutex
+    RealtimeStatus realtime;                // written by the engine thread before its first cycle
+    std::atomic<bool> realtimeKnown{false}; // ... and published by this flag
+    std::mutex logMutex;                    // logger side only: one drainer at a time
+    std::unique_ptr<class RunLog> runLog;   // under logMutex
+    // Logger -> engine thread: a run-log problem the cycle reports as a Warning event (the
+    // text is written before the flag is set, read after it is seen; no lock, no allocation).
+    std::array<char, 200> logProblem{};
+    std::atomic<bool> logProblemPending{false};
+    std::mutex externalMutex;          // never taken by the cycle
+    std::vector<EngineEvent> external; // logExternalEvent(), under externalMutex
     void loggerDrain();
+    void drainExternal();        // under logMutex
     CycleStats snapshot() const; // any thread
 
     // ---- engine thread only
@@ -123,6 +134,11 @@ struct MotionEngine::Impl {
     bool torchWritten = false;
     TrackingStats stats{static_cast<const TipModel*>(nullptr)};
     TrackingStats cruise{static_cast<const TipModel*>(nullptr)};
+    // The tips of (set-point, actual) of the current cycle, shared by track() and telemetry.
+    TipSample cycleTips{};
+    std::uint64_t tipsCycle = ~std::uint64_t{0};
+    const TipModel* tipsModel = nullptr;
+    const TipSample& tipsThisCycle(const TipModel* model);
     // supervision
     std::array<double, kAxisCount> lastSensed{}, travelSinceChange{};
     bool arcWasOk = false;

@@ -6,8 +6,7 @@
 #include "core/engine/run_log.h"
 
 #include <chrono>
-#include <pthread.h>
-#include <sched.h>
+#include <cstdio>
 
 namespace cutcell {
 
@@ -132,6 +131,12 @@ CycleStats MotionEngine::Impl::snapshot() const {
     return s;
 }
 
+RealtimeStatus MotionEngine::realtimeStatus() const {
+    // Written by the engine thread once before its first cycle, published by the flag.
+    return impl_->realtimeKnown.load(std::memory_order_acquire) ? impl_->realtime
+                                                                : RealtimeStatus{};
+}
+
 bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) const {
     const Impl& m = *impl_;
     for (int attempt = 0; attempt < 100; ++attempt) {
@@ -159,11 +164,38 @@ void MotionEngine::flushRunLog() {
     impl_->loggerDrain();
 }
 
+void MotionEngine::logExternalEvent(Severity severity, const std::string& text) {
+    Impl& m = *impl_;
+    EngineEvent e;
+    e.severity = severity;
+    e.kind = severity == Severity::Error ? EventKind::Fault : EventKind::Info;
+    e.from = e.to = m.publicState.load(std::memory_order_acquire);
+    e.time_s = static_cast<double>(m.cycles.load(std::memory_order_relaxed)) * m.T;
+    e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                    std::chrono::system_clock::now().time_since_epoch())
+                    .count();
+    std::snprintf(e.text.data(), e.text.size(), "%s", text.c_str());
+    std::lock_guard<std::mutex> lock(m.externalMutex);
+    if (m.external.size() < 1000) m.external.push_back(e);
+}
+
+void MotionEngine::Impl::drainExternal() {
+    std::vector<EngineEvent> pending;
+    {
+        std::lock_guard<std::mutex> lock(externalMutex);
+        pending.swap(external);
+    }
+    for (const EngineEvent& e : pending)
+        runLog->eventForLastRun(e);
+}
+
 // Logger side: events to files; opens a run on RunStarted, writes the summary on RunEnded.
+// Events from outside the cycle go first: they happened before the cycle reacted to them.
 void MotionEngine::Impl::loggerDrain() {
     // One drainer at a time (the logger thread, flushRunLog()); the ring has one consumer.
     std::lock_guard<std::mutex> logLock(logMutex);
     EngineEvent e;
+    drainExternal();
     while (logEvents.pop(e)) {
         if (e.kind == EventKind::RunStarted) {
             const std::uint64_t seq = runProgramSeq.load(std::memory_order_acquire);
@@ -176,7 +208,13 @@ void MotionEngine::Impl::loggerDrain() {
             runLog->beginRun(e.run_id, p ? p->name : std::string(),
                              p ? p->source_text : std::string());
         }
+        if (e.kind == EventKind::RunEnded) drainExternal(); // a device's reason, still in this run
         runLog->event(e);
+        if (const std::string p = runLog->takeProblem();
+            !p.empty() && !logProblemPending.load(std::memory_order_acquire)) {
+            std::snprintf(logProblem.data(), logProblem.size(), "%s", p.c_str());
+            logProblemPending.store(true, std::memory_order_release);
+        }
         if (e.kind == EventKind::RunEnded) {
             const std::uint64_t g = resultGeneration.load(std::memory_order_acquire);
             if (g != 0) {
@@ -193,12 +231,18 @@ void MotionEngine::startThread() {
     Impl& m = *impl_;
     if (m.threadRunning.exchange(true)) return;
     m.stopRequested.store(false);
+    m.realtimeKnown.store(false); // the new thread writes m.realtime, then sets it again
     m.engineThread = std::thread([&m] {
-        // Best effort: a real-time priority needs CAP_SYS_NICE or an rtprio limit.
+        // Priority, memory lock, CPU, DMA latency: each checked, the outcome an event (a
+        // warning when something asked for was refused) and realtimeStatus().
+        int dmaFd = -1;
         if (m.cfg.clock == ClockMode::RealTime) {
-            sched_param sp{};
-            sp.sched_priority = 80;
-            pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp);
+            m.realtime = applyRealtime(m.cfg.realtime, &dmaFd);
+            m.realtimeKnown.store(true, std::memory_order_release);
+            char text[240];
+            const bool allGranted = describeRealtime(m.cfg.realtime, m.realtime, text, sizeof text);
+            m.emitf(EventKind::Info, allGranted ? Severity::Info : Severity::Warning, m.state,
+                    m.state, "%s", text);
         }
         const std::int64_t periodNs = static_cast<std::int64_t>(m.T * 1e9 + 0.5);
         std::int64_t next = monotonicNowNs() + periodNs;
@@ -227,6 +271,7 @@ void MotionEngine::startThread() {
                 m.runCycle();
             }
         }
+        releaseRealtime(dmaFd);
     });
     m.loggerThread = std::thread([&m] {
         while (!m.stopRequested.load(std::memory_order_acquire)) {

@@ -33,6 +33,7 @@
 #include "core/devices/device_interfaces.h"
 #include "core/engine/engine_types.h"
 #include "core/engine/motion_program.h"
+#include "core/engine/realtime_thread.h"
 #include "core/job/job.h"
 #include "core/sim/tracking_stats.h"
 
@@ -72,6 +73,9 @@ struct EngineConfig {
     // error it measures is the drive's tracking error, not the bus's delay. 0 for in-process
     // drives.
     double setpoint_lead_s = 0;
+    // The engine thread's real-time set-up (RealTime clock only): SCHED_FIFO priority, memory
+    // lock, CPU pinning, /dev/cpu_dma_latency. What was granted: realtimeStatus() and an event.
+    RealtimeSettings realtime;
 };
 
 class MotionEngine {
@@ -110,6 +114,9 @@ class MotionEngine {
     // Snapshot readable from any thread.
     EngineState state() const;
     CycleStats cycleStats() const;
+    // What the real-time set-up of the engine thread got (applied = false before the thread
+    // started or in the fast clock). Read while the thread runs or after stopThread().
+    RealtimeStatus realtimeStatus() const;
 
     // The figures of the last run that ended (Completed, aborted, stopped or faulted), with the
     // same definitions as simulateCut(); false before the first run ended. Any thread.
@@ -119,6 +126,10 @@ class MotionEngine {
     std::string lastRunDirectory() const;
     // Writes pending run-log events now (runCycles() mode; the thread mode has a logger thread).
     void flushRunLog();
+    // An event from outside the cycle (a device's decoded fault, e.g. "node 3: EMCY 0x2310
+    // over-current"; a shutdown) for the run log, written by the log's drainer before the
+    // cycle's pending events. Any thread but the cycle's: it locks and allocates.
+    void logExternalEvent(Severity severity, const std::string& text);
 
   private:
     bool pushCommand(CommandType type, int axis = 0, double value = 0);

@@ -31,6 +31,9 @@ struct MotionProgram {
     // tracked after the path's end until then), so its figures cover the same span as the
     // offline simulation (sim.duration_s).
     double min_run_s = 0;
+    // After the arc is established at the first cut point the torch dwells this long before
+    // the path moves (the G-code's G4 pierce dwell); 0 = move at once.
+    double pierce_s = 0;
     // Path-time window of constant cutting speed (the report's "cruise" figures); empty if to <
     // from.
     double cruise_from_s = 0;

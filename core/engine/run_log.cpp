@@ -4,7 +4,10 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 
@@ -19,6 +22,15 @@ RunLog::~RunLog() {
 void RunLog::openFile(const std::string& path) {
     if (file_) std::fclose(file_);
     file_ = std::fopen(path.c_str(), "a");
+    if (!file_) problem("cannot open " + path + ": " + std::strerror(errno));
+}
+
+void RunLog::problem(const std::string& what) {
+    // Once each, not once per event.
+    if (std::find(reported_.begin(), reported_.end(), what) != reported_.end()) return;
+    reported_.push_back(what);
+    problem_ = what + " (runs are not logged)";
+    std::fprintf(stderr, "warning: run log: %s\n", problem_.c_str());
 }
 
 std::string RunLog::formatEvent(const EngineEvent& e) {
@@ -50,7 +62,7 @@ void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std
               (std::string(stamp) + "-run" + std::to_string(runId) + "-" + std::to_string(k));
     std::error_code ec;
     fs::create_directories(dir, ec);
-    if (ec) return;
+    if (ec) return problem("cannot create " + dir.string() + ": " + ec.message());
     dir_ = dir.string();
     try {
         writeFileAtomically((dir / "job.json").string(), jobText);
@@ -66,6 +78,7 @@ void RunLog::event(const EngineEvent& e) {
     if (!file_) {
         std::error_code ec;
         fs::create_directories(runsDir_, ec);
+        if (ec) return problem("cannot create " + runsDir_ + ": " + ec.message());
         openFile((fs::path(runsDir_) / "engine.log").string());
         if (!file_) return;
     }
@@ -73,6 +86,20 @@ void RunLog::event(const EngineEvent& e) {
     std::fputs(line.c_str(), file_);
     std::fputc('\n', file_);
     std::fflush(file_); // nothing is lost if the program dies after this line
+}
+
+void RunLog::eventForLastRun(const EngineEvent& e) {
+    if (file_ || dir_.empty()) {
+        event(e);
+        return;
+    }
+    std::FILE* f = std::fopen((fs::path(dir_) / "events.log").string().c_str(), "a");
+    if (!f) {
+        event(e);
+        return;
+    }
+    std::fputs((formatEvent(e) + "\n").c_str(), f);
+    std::fclose(f);
 }
 
 void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c,

@@ -10,6 +10,8 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace cutcell {
 
@@ -34,16 +36,25 @@ class RunLog {
     // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
     void event(const EngineEvent& e);
+    // An event about the current run, or, when none is open, the last one (e.g. why the program
+    // ended right after a run stopped): appended to that run's events.log.
+    void eventForLastRun(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
     void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle,
                 const RunStopPoint& stop = {});
     std::string runDirectory() const { return dir_; }
+    // A folder or file that could not be created since the last call ("" if none). Each new
+    // problem is also printed once to stderr, so a run that is not logged never goes unnoticed.
+    std::string takeProblem() { return std::exchange(problem_, {}); }
     // One event as a log line (also used by the CLI to print events).
     static std::string formatEvent(const EngineEvent& e);
 
   private:
     void openFile(const std::string& path);
+    void problem(const std::string& what);
     std::string runsDir_;
+    std::string problem_;
+    std::vector<std::string> reported_;
     std::string dir_;
     std::FILE* file_ = nullptr;
 };

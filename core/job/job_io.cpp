@@ -7,7 +7,10 @@
 #include "core/job/section_reader.h"
 #include "core/machine/machine_registry.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -258,6 +261,25 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
     namespace fs = std::filesystem;
     const fs::path target(path);
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    // A writer killed between mkstemp and rename leaves ".<name>.XXXXXX" behind. Remove such
+    // files older than a minute (no writer takes that long), and only where <name> is this
+    // target or a file beside it, so an unrelated hidden file (".bashrc.backup") is never hit.
+    {
+        std::error_code ec;
+        const auto stale = fs::file_time_type::clock::now() - std::chrono::minutes(1);
+        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string n = it->path().filename().string();
+            if (n.size() < 9 || n[0] != '.' || n[n.size() - 7] != '.') continue;
+            if (!std::all_of(n.end() - 6, n.end(), [](char c) { return std::isalnum(c & 0xff); }))
+                continue;
+            const std::string of = n.substr(1, n.size() - 8);
+            std::error_code e2;
+            if (of != target.filename().string() && !fs::is_regular_file(dir / of, e2)) continue;
+            if (it->is_regular_file(e2) && !it->is_symlink(e2) &&
+                fs::last_write_time(it->path(), e2) < stale && !e2)
+                fs::remove(it->path(), e2);
+        }
+    }
     std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
     const int fd = ::mkstemp(tmpl.data());
     if (fd < 0) throw JobError("cannot write " + path + ": " + std::strerror(errno));

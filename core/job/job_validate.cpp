@@ -54,13 +54,13 @@ std::vector<JobIssue> validateJob(const Job& job) {
         checkCommon(c, job);
         return c.issues;
     }
+    checkCommon(c, job);
     // The machine's issues keep their key relative to the section (the forms' field ids);
     // the message names the key as it stands in the file.
     for (JobIssue issue : module->validate(job)) {
         if (issue.message.rfind(issue.key, 0) == 0) issue.message = "machine." + issue.message;
         c.issues.push_back(issue);
     }
-    checkCommon(c, job);
     std::string why;
     if (job.devices.kind == DeviceKind::CanOpen && !module->supportsCanOpen(&why))
         c.add("devices.kind", "devices.kind = \"canopen\": " + why);

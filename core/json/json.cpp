@@ -109,8 +109,8 @@ class Builder : public nlohmann::json_sax<nl> {
                      const nlohmann::detail::exception& ex) override {
         // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..."
         std::string what = ex.what();
-        const size_t colon = what.find(": ");
-        if (colon != std::string::npos) what = what.substr(colon + 2);
+        const size_t bracket = what.find("] ");
+        if (bracket != std::string::npos) what = what.substr(bracket + 2);
         if (what.size() > 200) what = what.substr(0, 200) + "\xE2\x80\xA6";
         nlohmannMessage = what;
         return false;

@@ -40,8 +40,10 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
         const JointSample ref = plan.spline.evaluate(t);
         for (int i = 0; i < kAxisCount; ++i)
             actual[i] = plant[static_cast<size_t>(i)].position();
-        stats.add(ref.q, actual);
-        if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref.q, actual);
+        // The tips are computed once and shared by the overall and the cruise figures.
+        const TipSample tips = stats.tips(ref.q, actual);
+        stats.add(ref.q, actual, tips);
+        if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref.q, actual, tips);
         for (int i = 0; i < kAxisCount; ++i) {
             const size_t a = static_cast<size_t>(i);
             const double u = plant[a].step(pid[a].step(ref.q[i] - actual[i]));

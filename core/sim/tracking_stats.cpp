@@ -15,25 +15,41 @@ void TrackingStats::reset() {
     maxTorqueFraction_ = 0;
 }
 
-void TrackingStats::add(const JointVector& commanded, const JointVector& actual) {
+TipSample tipSample(const TipModel* model, const JointVector& commanded,
+                    const JointVector& actual) {
+    TipSample s;
+    if (!model) return s;
+    s.commanded = model->tip(commanded);
+    s.actual = model->tip(actual);
+    s.commanded_on_work = model->tipOnWork(commanded, s.commanded);
+    s.actual_on_work = model->tipOnWork(actual, s.actual);
+    s.valid = true;
+    return s;
+}
+
+TipSample TrackingStats::tips(const JointVector& commanded, const JointVector& actual) const {
+    if (!robot_) return tipSample(model_, commanded, actual);
+    TipSample s;
+    s.commanded = robot_->tip(commanded.tail<kArmJointCount>());
+    s.actual = robot_->tip(actual.tail<kArmJointCount>());
+    // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
+    s.commanded_on_work = robot_->workFromBase(commanded[0], s.commanded);
+    s.actual_on_work = robot_->workFromBase(actual[0], s.actual);
+    s.valid = true;
+    return s;
+}
+
+void TrackingStats::add(const JointVector& commanded, const JointVector& actual,
+                        const TipSample& tips) {
     const JointVector e = commanded - actual;
     maxAbs_ = maxAbs_.cwiseMax(e.cwiseAbs());
     sumSq_ += e.cwiseProduct(e);
     ++n_;
-    if (!robot_ && !model_) return;
-    const Vec3 tipCmd = robot_ ? robot_->forward(commanded.tail<kArmJointCount>()).translation()
-                               : model_->tip(commanded);
-    const Vec3 tipAct =
-        robot_ ? robot_->forward(actual.tail<kArmJointCount>()).translation() : model_->tip(actual);
-    lastCart_ = tipAct - tipCmd;
+    if (!tips.valid) return;
+    lastCart_ = tips.error();
     cartMin_ = cartMin_.cwiseMin(lastCart_);
     cartMax_ = cartMax_.cwiseMax(lastCart_);
-    // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
-    const Vec3 onPipeCmd = robot_ ? Vec3(robot_->baseFromWork(commanded[0]).inverse() * tipCmd)
-                                  : model_->tipOnWork(commanded, tipCmd);
-    const Vec3 onPipeAct = robot_ ? Vec3(robot_->baseFromWork(actual[0]).inverse() * tipAct)
-                                  : model_->tipOnWork(actual, tipAct);
-    workMaxAbs_ = workMaxAbs_.cwiseMax((onPipeAct - onPipeCmd).cwiseAbs());
+    workMaxAbs_ = workMaxAbs_.cwiseMax((tips.actual_on_work - tips.commanded_on_work).cwiseAbs());
 }
 
 void TrackingStats::fill(TrackingReport& r) const {

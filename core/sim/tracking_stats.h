@@ -40,6 +40,21 @@ struct TrackingReport {
     Vec3 cruise_on_pipe_max_abs_mm = Vec3::Zero();
 };
 
+// The torch tips of one sample (commanded and actual joints), in the base frame and seen
+// from the work piece. Computed once per step and shared by every TrackingStats fed that
+// sample (overall and cruise figures) and by the engine's telemetry.
+struct TipSample {
+    bool valid = false; // false: the stats have no tip model (joint figures only)
+    Vec3 commanded = Vec3::Zero();
+    Vec3 actual = Vec3::Zero();
+    Vec3 commanded_on_work = Vec3::Zero();
+    Vec3 actual_on_work = Vec3::Zero();
+    Vec3 error() const { return actual - commanded; } // FK(actual) - FK(commanded)
+};
+
+// The tips of a sample from a machine's tip model (invalid when the model is null).
+TipSample tipSample(const TipModel* model, const JointVector& commanded, const JointVector& actual);
+
 class TrackingStats {
   public:
     explicit TrackingStats(const PipeRobot& robot) : robot_(&robot) {}
@@ -47,7 +62,13 @@ class TrackingStats {
     // A null model gives joint figures only. The model must outlive the stats.
     explicit TrackingStats(const TipModel* model) : model_(model) {}
     void reset();
-    void add(const JointVector& commanded, const JointVector& actual);
+    // The tips of a sample with this stats' robot or model (allocation-free).
+    TipSample tips(const JointVector& commanded, const JointVector& actual) const;
+    void add(const JointVector& commanded, const JointVector& actual) {
+        add(commanded, actual, tips(commanded, actual));
+    }
+    // With tips computed once for several stats (they must come from the same robot/model).
+    void add(const JointVector& commanded, const JointVector& actual, const TipSample& tips);
     void addTorqueFraction(double f) {
         if (f > maxTorqueFraction_) maxTorqueFraction_ = f;
     }

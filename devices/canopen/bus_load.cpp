@@ -19,7 +19,9 @@ BusLoad computeBusLoad(const BusLoadInput& in) {
     const double cyclic = in.nodes * (rpdo + tpdo) + sync;
     // Heartbeats are not per cycle: their bits per second, then per cycle.
     const double heartbeatBitsPerS =
-        in.heartbeat_period_s > 0 ? in.nodes * heartbeat / in.heartbeat_period_s : 0;
+        in.heartbeat_period_s > 0
+            ? (in.nodes + in.other_heartbeats) * heartbeat / in.heartbeat_period_s
+            : 0;
     r.bits_per_cycle = cyclic + heartbeatBitsPerS * in.period_s;
     r.load = r.bits_per_cycle / (in.bitrate_bps * in.period_s);
     // load(T) = cyclic / (R T) + hb / R <= limit  ->  T >= cyclic / (R limit - hb)

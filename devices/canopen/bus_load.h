@@ -17,6 +17,7 @@ struct BusLoadInput {
     int rpdo_bytes = 6;              // per node per cycle
     int tpdo_bytes = 8;              // per node per cycle
     double heartbeat_period_s = 0.1; // each node's heartbeat (1 byte), 0 = none
+    int other_heartbeats = 0;        // producers beside the nodes (the master's own)
     double limit = 0.8;              // highest admissible load
 };
 

@@ -51,6 +51,7 @@ inline constexpr std::uint32_t kBusLost = 0x8100;
 inline constexpr std::uint32_t kNoBootUp = 0x8101;    // node silent at start-up
 inline constexpr std::uint32_t kWrongDevice = 0x8102; // device type is not a CiA 402 drive
 inline constexpr std::uint32_t kRebooted = 0x8103;    // unexpected boot-up while running
+inline constexpr std::uint32_t kOtherMaster = 0x8104; // another master owns the bus
 } // namespace master_fault
 
 } // namespace cutcell::canopen

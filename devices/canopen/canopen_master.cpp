@@ -9,8 +9,10 @@
 
 #include "core/job/job.h"
 #include "devices/canopen/bus_load.h"
+#include "devices/canopen/can_interface.h"
 #include "devices/canopen/master_impl.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QLoggingCategory>
 
@@ -18,6 +20,7 @@
 #include <chrono>
 #include <ctime>
 #include <sys/eventfd.h>
+#include <thread>
 #include <unistd.h>
 
 Q_LOGGING_CATEGORY(lcCanOpen, "cutcell.canopen")
@@ -67,6 +70,7 @@ CanOpenMaster::CanOpenMaster(CanOpenMasterConfig config) : impl_(std::make_uniqu
     in.rpdo_bytes = kRpdo1Bytes;
     in.tpdo_bytes = kTpdo1Bytes;
     in.heartbeat_period_s = m.heartbeatProducerMs * 1e-3;
+    in.other_heartbeats = m.cfg.master_node_id > 0 ? 1 : 0; // the master's own
     in.limit = m.cfg.bus_load_limit;
     const BusLoad load = computeBusLoad(in);
     m.load = load.load;
@@ -89,6 +93,7 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     if (m.wakeFd < 0 || m.syncFd < 0) return fail("cannot create eventfd for the CAN master");
     if (m.cfg.nodes.empty()) return fail("no CAN nodes configured");
     if (m.load > m.cfg.bus_load_limit) return fail("CAN bus load too high: " + m.loadText);
+    if (std::string why; !checkCanInterface(m.cfg.plugin, m.cfg.interface, &why)) return fail(why);
     m.thread = std::make_unique<QThread>();
     m.thread->setObjectName(QStringLiteral("canopen-master"));
     m.context = new QObject;
@@ -96,10 +101,22 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     m.thread->start(QThread::TimeCriticalPriority);
     QMetaObject::invokeMethod(
         m.context, [&m] { m.openDevice(); }, Qt::QueuedConnection);
+    // Wait for the connection and the listening. This thread may host the virtualcan bus (its
+    // first client lives here, e.g. a GUI or a test): keep its events flowing meanwhile, or
+    // nothing moves on the bus and the listening hears a silent bus.
+    const bool hasEventLoop = QThread::currentThread()->eventDispatcher() != nullptr;
+    const auto until = std::chrono::steady_clock::now() +
+                       std::chrono::milliseconds(timeout_ms + m.cfg.listen_before_start_ms);
     std::unique_lock lock(m.mutex);
-    m.changed.wait_for(lock, std::chrono::milliseconds(timeout_ms),
-                       [&m] { return m.connected || m.connectFailed; });
-    const bool ok = m.connected;
+    while (!(m.taken || m.connectFailed) && std::chrono::steady_clock::now() < until) {
+        m.changed.wait_for(lock, std::chrono::milliseconds(2));
+        if (hasEventLoop) {
+            lock.unlock();
+            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents, 2);
+            lock.lock();
+        }
+    }
+    const bool ok = m.taken;
     std::string why = m.connectFailed
                           ? m.connectError
                           : "CAN connection to " + m.cfg.plugin.toStdString() + " " +
@@ -155,7 +172,31 @@ void CanOpenMaster::stop() {
     m.context = nullptr;
     m.thread.reset();
     std::lock_guard lock(m.mutex);
-    m.connected = m.connectFailed = false;
+    m.connected = m.connectFailed = m.taken = false;
+}
+
+bool CanOpenMaster::disableAllNow(int timeout_ms) {
+    Impl& m = *impl_;
+    for (NodeShared& s : m.shared)
+        s.goal.store(static_cast<std::uint8_t>(DriveGoal::Disabled), std::memory_order_release);
+    if (!m.context) return false;
+    // The queued call may outlive this wait (master thread busy): it owns its flag.
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    QMetaObject::invokeMethod(
+        m.context,
+        [&m, done] {
+            m.writeDisableAll();
+            done->store(true, std::memory_order_release);
+        },
+        Qt::QueuedConnection);
+    const std::int64_t until = steadyNs() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
+    while (!done->load(std::memory_order_acquire) && steadyNs() < until)
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    return done->load(std::memory_order_acquire);
+}
+
+void CanOpenMaster::setEventSink(std::function<void(const MasterEvent&)> sink) {
+    impl_->sink = std::move(sink);
 }
 
 int CanOpenMaster::driveCount() const {
@@ -282,18 +323,23 @@ void CanOpenMaster::Impl::event(int node, bool error, const std::string& text) {
         qCWarning(lcCanOpen, "%s", line.c_str());
     else
         qCInfo(lcCanOpen, "%s", line.c_str());
-    std::lock_guard lock(mutex);
-    if (events.size() >= 1000) events.pop_front();
-    events.push_back({QDateTime::currentMSecsSinceEpoch(), node, error, line});
+    const MasterEvent e{QDateTime::currentMSecsSinceEpoch(), node, error, line};
+    {
+        std::lock_guard lock(mutex);
+        if (events.size() >= 1000) events.pop_front();
+        events.push_back(e);
+    }
+    if (sink) sink(e);
 }
 
 void CanOpenMaster::Impl::setFault(size_t i, std::uint32_t code, const std::string& text) {
-    shared[i].master_fault.store(code, std::memory_order_release);
     {
         std::lock_guard lock(mutex);
         faultText[i] = text;
     }
+    // The event first: whoever reacts to the fault (the engine) finds its reason logged.
     event(cfg.nodes[i].node, true, text);
+    shared[i].master_fault.store(code, std::memory_order_release);
 }
 
 } // namespace cutcell::canopen

@@ -2,9 +2,13 @@
 // CANopen master for CiA 402 drives in cyclic synchronous position mode (CSP) over Qt
 // SerialBus (socketcan on a real bus, virtualcan in tests).
 //
-// What it does: checks the bus load of the cycle; connects; per node: NMT reset
+// What it does: checks the bus load of the cycle and that the plugin offers the interface;
+// connects; listens before it takes the bus and refuses to start when another master is
+// active (SYNC, NMT command or a master heartbeat heard); produces its own heartbeat
+// (0x700 + master_node_id, the drives' period); per node: NMT reset
 // communication, waits for the boot-up, checks the device type, configures CSP, the cycle
-// period, RPDO1/RPDO2/TPDO1 and the heartbeat by expedited SDO, NMT start; then per cycle
+// period, RPDO1/RPDO2/TPDO1, the heartbeat, the abort connection option (0x6007) and the
+// consumer of the master's heartbeat (0x1016) by expedited SDO, NMT start; then per cycle
 // sends RPDO1 (controlword + target) to every node followed by SYNC; consumes TPDOs,
 // heartbeats (timeout -> Fault) and EMCYs (decoded, logged, shown); watches the bus state.
 //
@@ -22,9 +26,10 @@
 //  - drive(i) objects are used by the engine thread: read()/write()/commands touch atomics
 //    and an eventfd only (never block, lock or allocate).
 //  - sync() and emergencyStop() may be called from any thread, never block.
-//  - start()/stop() from one controlling thread; start() waits (bounded) for the connection,
-//    not for the nodes: poll allOperational() (while running your event loop if this thread
-//    hosts a virtualcan bus).
+//  - start()/stop() from one controlling thread; start() waits (bounded) for the connection
+//    and the listening before taking the bus (running the calling thread's events meanwhile:
+//    it may host the virtualcan bus), not for the nodes: poll allOperational() (while running
+//    your event loop if this thread hosts a virtualcan bus).
 //  - snapshot()/drainEvents()/stats() from any thread (short mutex; not for a control cycle).
 #include "core/devices/device_interfaces.h"
 #include "devices/canopen/bus_state.h"
@@ -35,6 +40,7 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,6 +71,14 @@ struct CanOpenMasterConfig {
     int sdo_retries = 2;
     int boot_timeout_ms = 1000;
     double bus_load_limit = 0.8;
+    // The master's own node id: its heartbeat (0x700 + id, produced at the drives' period) is
+    // what the drives watch; each drive reacts to its loss after heartbeat_timeout_s with
+    // abort_connection_option (0x6007, CiA 402: 3 = quick stop). 0: no master heartbeat.
+    int master_node_id = 127;
+    int abort_connection_option = 3;
+    // Listen this long after connecting before taking the bus: another master (SYNC, NMT or a
+    // heartbeat from master_node_id heard) makes start() fail, naming what was heard.
+    int listen_before_start_ms = 250;
 };
 
 // From a job's devices section (plugin, interface, bit rate, node ids, scaling, heartbeat),
@@ -120,9 +134,19 @@ class CanOpenMaster {
     CanOpenMaster& operator=(const CanOpenMaster&) = delete;
 
     // False with the reason (bus load over the limit with the figures, plugin or interface
-    // missing, no connection within timeout_ms).
+    // missing, another master on the bus, no connection within timeout_ms).
     bool start(std::string* error, int timeout_ms = 3000);
+    // Disables every drive (controlword disable voltage on RPDO2, then NMT pre-operational to
+    // all), flushes the frames to the bus and closes. Any one controlling thread.
     void stop();
+    // Safe state now, from any thread: disable voltage to every node at once and NMT
+    // pre-operational, written and flushed on the master thread; waits at most timeout_ms for
+    // that (never for the drives). True when the frames were written.
+    bool disableAllNow(int timeout_ms = 200);
+
+    // Called on the master thread for every event (after it is queued for drainEvents()), e.g.
+    // to put it into the run log at once. Set before start().
+    void setEventSink(std::function<void(const MasterEvent&)> sink);
 
     int driveCount() const;
     CanOpenDrive* drive(int i);

@@ -32,6 +32,9 @@ DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c) {
 
 void DriveNode::resetCommunication() {
     heartbeatMs_ = 0;
+    consumerHeartbeat_ = 0;
+    consumerLastSeen_s_ = -1;
+    consumerLost_ = false;
     rpdo_ = {};
     tpdo_ = {};
     rpdoPending_ = {};
@@ -59,6 +62,15 @@ void DriveNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>& 
         if (target == 0 || target == cfg_.node) onNmt(command, now_s, out);
         return;
     }
+    int producer = 0;
+    NmtState producerState;
+    if (decodeHeartbeat(in, producer, producerState)) {
+        if (consumerHeartbeat_ != 0 && producer == static_cast<int>(consumerHeartbeat_ >> 16)) {
+            consumerLastSeen_s_ = now_s;
+            consumerLost_ = false;
+        }
+        return;
+    }
     if (nmt_ == NmtState::Stopped) return;
     if (in.id == cob::kSdoRx + node) {
         onSdo(in, out);
@@ -75,7 +87,41 @@ void DriveNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>& 
             onRpdo(i, in, now_s, out);
 }
 
+void DriveNode::superviseMaster(double now_s, std::vector<CanFrame>& out) {
+    const double timeout = (consumerHeartbeat_ & 0xFFFF) * 1e-3;
+    if (consumerLost_ || consumerLastSeen_s_ < 0 || timeout <= 0 ||
+        now_s - consumerLastSeen_s_ <= timeout)
+        return;
+    consumerLost_ = true;
+    out.push_back(
+        encodeEmcy(cfg_.node, emcy_code::kHeartbeat, errorRegisterFor(emcy_code::kHeartbeat)));
+    const bool powered = state_ == Cia402State::OperationEnabled ||
+                         state_ == Cia402State::SwitchedOn ||
+                         state_ == Cia402State::ReadyToSwitchOn;
+    switch (abortConnectionOption_) {
+    case abort_connection::kFault:
+        if (state_ != Cia402State::Fault) raiseFault(emcy_code::kHeartbeat, out);
+        break;
+    case abort_connection::kDisableVoltage:
+        if (powered) enterState(Cia402State::SwitchOnDisabled, now_s);
+        break;
+    case abort_connection::kQuickStop:
+        if (state_ == Cia402State::OperationEnabled)
+            enterState(Cia402State::QuickStopActive, now_s);
+        else if (powered)
+            enterState(Cia402State::SwitchOnDisabled, now_s);
+        break;
+    default:
+        break;
+    }
+    if (nmt_ == NmtState::Operational) {
+        nmt_ = NmtState::PreOperational;
+        operationalSince_s_ = -1;
+    }
+}
+
 void DriveNode::tick(double now_s, std::vector<CanFrame>& out) {
+    superviseMaster(now_s, out);
     const FaultInjection& f = cfg_.faults;
     if (f.heartbeat_stop_after_s >= 0 && operationalSince_s_ >= 0 &&
         now_s - operationalSince_s_ >= f.heartbeat_stop_after_s)

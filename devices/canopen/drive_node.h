@@ -12,6 +12,10 @@
 // clock, so a quick stop or a coasting axis comes to rest when the master has gone quiet. In
 // Operation Enabled a SYNC gap of max(100 ms, 20 cycles) is a fault (0x8250, RPDO timeout): a
 // drive never keeps following a master that has gone silent.
+// Heartbeat consumer (0x1016:01 = producer node << 16 | time ms): from the first heartbeat of
+// that node on, a gap longer than the time sends EMCY 0x8130 and reacts as 0x6007 (abort
+// connection option code) says: 0 nothing, 1 Fault, 2 disable voltage, 3 quick stop; an
+// Operational node then enters Pre-operational (CiA 301 error behaviour default).
 //
 // Threading: not thread-safe; DriveSimulator drives it from its own thread.
 #include "core/control/joint_plant.h"
@@ -58,6 +62,10 @@ class DriveNode {
     // Periodic work without a frame: heartbeat production, injected faults.
     void tick(double now_s, std::vector<CanFrame>& out);
 
+    // Fault injection now (tests, demos): EMCY + Fault with this code; heartbeats stop.
+    void injectFault(std::uint16_t code, std::vector<CanFrame>& out) { raiseFault(code, out); }
+    void stopHeartbeat() { heartbeatStopped_ = true; }
+
     int node() const { return cfg_.node; }
     NmtState nmtState() const { return nmt_; }
     Cia402State driveState() const { return state_; }
@@ -85,6 +93,7 @@ class DriveNode {
     void enterState(Cia402State s, double now_s);
     void raiseFault(std::uint16_t code, std::vector<CanFrame>& out);
     void advance(int steps, double h, std::vector<CanFrame>& out);
+    void superviseMaster(double now_s, std::vector<CanFrame>& out);
 
     // Object dictionary access; returns 0 or an SDO abort code.
     std::uint32_t read(SdoAddress a, std::uint32_t& value, int& size) const;
@@ -112,6 +121,10 @@ class DriveNode {
     std::uint32_t cyclePeriodUs_ = 0;
     std::uint16_t heartbeatMs_ = 0;
     std::int16_t quickStopOption_ = 2;
+    std::int16_t abortConnectionOption_ = 1; // 0x6007 (CiA 402 default: Fault)
+    std::uint32_t consumerHeartbeat_ = 0;    // 0x1016:01; 0 = not watching
+    double consumerLastSeen_s_ = -1;         // < 0: not armed (no heartbeat seen yet)
+    bool consumerLost_ = false;
     std::uint32_t followingWindow_ = 0;
     std::uint32_t quickStopDecel_ = 0;
     std::array<Pdo, 2> rpdo_{};

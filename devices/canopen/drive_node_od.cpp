@@ -56,6 +56,13 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
         return one(cyclePeriodUs_, 4);
     case od::kProducerHeartbeat:
         return one(heartbeatMs_, 2);
+    case od::kConsumerHeartbeat:
+        if (a.sub > 1) return abort_code::kNoSubIndex;
+        v = a.sub == 0 ? 1 : consumerHeartbeat_;
+        size = a.sub == 0 ? 1 : 4;
+        return 0;
+    case od::kAbortConnectionOption:
+        return one(static_cast<std::uint16_t>(abortConnectionOption_), 2);
     case od::kIdentity:
         size = a.sub == 0 ? 1 : 4;
         switch (a.sub) {
@@ -167,6 +174,20 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         if ((abort = scalar(2))) return abort;
         heartbeatMs_ = static_cast<std::uint16_t>(v);
         nextHeartbeat_s_ = 0; // start producing at once
+        return 0;
+    case od::kConsumerHeartbeat:
+        if (a.sub == 0) return abort_code::kReadOnly;
+        if (a.sub > 1) return abort_code::kNoSubIndex;
+        if ((abort = sizeCheck(size, 4))) return abort;
+        if ((v >> 16) > 127) return abort_code::kInvalidValue; // producer node id 0..127
+        consumerHeartbeat_ = v & 0x00FFFFFFu;
+        consumerLastSeen_s_ = -1; // armed by the producer's next heartbeat
+        consumerLost_ = false;
+        return 0;
+    case od::kAbortConnectionOption:
+        if ((abort = scalar(2))) return abort;
+        if (static_cast<std::int16_t>(v) < 0 || v > 3) return abort_code::kInvalidValue;
+        abortConnectionOption_ = static_cast<std::int16_t>(v);
         return 0;
     case od::kControlword:
         if ((abort = scalar(2))) return abort;

@@ -1,5 +1,6 @@
 #include "devices/canopen/drive_simulator.h"
 
+#include "devices/canopen/can_interface.h"
 #include "devices/canopen/qt_can_frame.h"
 
 #include <QCanBus>
@@ -77,6 +78,31 @@ void DriveSimulator::stop() {
     thread_.reset();
 }
 
+void DriveSimulator::injectFault(int node, std::uint16_t code) {
+    if (!context_) return;
+    QMetaObject::invokeMethod(
+        context_,
+        [this, node, code] {
+            out_.clear();
+            for (DriveNode& n : nodes_)
+                if (n.node() == node) n.injectFault(code, out_);
+            send(out_);
+            publish();
+        },
+        Qt::QueuedConnection);
+}
+
+void DriveSimulator::stopHeartbeat(int node) {
+    if (!context_) return;
+    QMetaObject::invokeMethod(
+        context_,
+        [this, node] {
+            for (DriveNode& n : nodes_)
+                if (n.node() == node) n.stopHeartbeat();
+        },
+        Qt::QueuedConnection);
+}
+
 QString DriveSimulator::errorText() const {
     std::lock_guard lock(mutex_);
     return error_;
@@ -93,6 +119,13 @@ std::uint64_t DriveSimulator::framesReceived() const {
 }
 
 void DriveSimulator::openOnThread() {
+    if (std::string why; !checkCanInterface(config_.plugin, config_.interface, &why)) {
+        std::lock_guard lock(mutex_);
+        error_ = QString::fromStdString(why);
+        failed_ = true;
+        changed_.notify_all();
+        return;
+    }
     QString err;
     device_ = QCanBus::instance()->createDevice(config_.plugin, config_.interface, &err);
     auto fail = [this](const QString& text) {
@@ -111,6 +144,7 @@ void DriveSimulator::openOnThread() {
     QObject::connect(device_, &QCanBusDevice::stateChanged, context_,
                      [this](QCanBusDevice::CanBusDeviceState s) {
                          if (s != QCanBusDevice::ConnectedState) return;
+                         setLowDelay(device_, config_.plugin, config_.interface);
                          std::vector<CanFrame> boot;
                          for (DriveNode& n : nodes_)
                              n.boot(now(), boot);

@@ -54,6 +54,10 @@ class DriveSimulator {
     bool start(int timeout_ms = 3000);
     void stop();
     QString errorText() const;
+    // Fault injection on the simulator thread (queued; returns at once): node raises EMCY
+    // `code` and enters Fault / stops producing heartbeats.
+    void injectFault(int node, std::uint16_t code);
+    void stopHeartbeat(int node);
     std::vector<SimNodeSnapshot> snapshot() const;
     std::uint64_t framesReceived() const;
 

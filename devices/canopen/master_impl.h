@@ -61,6 +61,15 @@ struct CanOpenMaster::Impl {
     std::atomic<bool> pacing{false};
     bool stopping = false;       // [master]
     std::int64_t lastSyncNs = 0; // [master]
+    // Listening before taking the bus [master]: what another master would send.
+    bool listening = false;
+    std::int64_t listenUntilNs = 0;
+    int heardSync = 0, heardNmt = 0, heardMasterHeartbeat = 0;
+    std::string heardNmtText;
+    bool busTaken = false;                        // [master] listening found the bus free
+    std::int64_t nextMasterHeartbeatNs = 0;       // [master]
+    bool otherMasterReported = false;             // [master]
+    std::function<void(const MasterEvent&)> sink; // set before start()
 
     std::atomic<std::uint64_t> cycles{0};
     std::atomic<std::uint64_t> completed{0};
@@ -71,6 +80,7 @@ struct CanOpenMaster::Impl {
     mutable std::mutex mutex; // guards the fields below (texts, events, jitter ring, bus)
     std::condition_variable changed;
     bool connected = false;
+    bool taken = false; // connected and the bus found free: the nodes are being started
     bool connectFailed = false;
     std::string connectError;
     BusState bus = BusState::Unknown;
@@ -99,6 +109,10 @@ struct CanOpenMaster::Impl {
     void nextSdo(size_t i, std::int64_t now);
     void onSdoReply(size_t i, const CanFrame& f, std::int64_t now);
     void onBusDown(BusState s, std::uint32_t code, const std::string& why);
+    void listenFor(const CanFrame& f);
+    void endListening(std::int64_t now);
+    void produceHeartbeat(std::int64_t now);
+    void writeDisableAll();
     std::uint16_t controlwordFor(size_t i);
     bool send(const CanFrame& f);
 };

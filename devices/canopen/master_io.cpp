@@ -2,6 +2,7 @@
 // SDO, the cycle (RPDO1s + SYNC), urgent stops (RPDO2), TPDO/heartbeat/EMCY consumers, bus
 // state. See canopen_master.h for the protocol and the threading contract.
 #include "devices/canopen/bus_load.h"
+#include "devices/canopen/can_interface.h"
 #include "devices/canopen/emcy.h"
 #include "devices/canopen/master_impl.h"
 #include "devices/canopen/nmt.h"
@@ -13,6 +14,7 @@
 #include <QDeadlineTimer>
 #include <QVariant>
 
+#include <algorithm>
 #include <cstdio>
 #include <unistd.h>
 
@@ -96,13 +98,21 @@ void CanOpenMaster::Impl::openDevice() {
     }
 }
 
+void CanOpenMaster::Impl::writeDisableAll() {
+    if (!busTaken) return; // never write on a bus another master owns
+    for (size_t i = 0; i < shared.size(); ++i)
+        send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
+    send(encodeNmt(NmtCommand::EnterPreOperational, 0));
+    flushDevice(device);
+}
+
 void CanOpenMaster::Impl::closeDevice() {
     stopping = true;
     if (!device) return;
     // Leave the drives without torque and the nodes pre-operational.
-    for (size_t i = 0; i < shared.size(); ++i)
-        send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
-    send(encodeNmt(NmtCommand::EnterPreOperational, 0));
+    writeDisableAll();
+    busTaken = false;
+    listening = false;
     // Let the transport write them out before the device goes (virtualcan buffers in a socket).
     const QDeadlineTimer flush(50);
     while (!flush.hasExpired())
@@ -113,24 +123,28 @@ void CanOpenMaster::Impl::closeDevice() {
     for (NodeShared& s : shared)
         s.configured = false;
     std::lock_guard lock(mutex);
-    connected = false;
+    connected = taken = false;
 }
 
 void CanOpenMaster::Impl::onStateChanged(QCanBusDevice::CanBusDeviceState s) {
     if (s == QCanBusDevice::ConnectedState) {
+        setLowDelay(device, cfg.plugin, cfg.interface);
         {
             std::lock_guard lock(mutex);
             connected = true;
             bus = BusState::Good;
             busText =
                 "connected to " + cfg.plugin.toStdString() + " " + cfg.interface.toStdString();
-            changed.notify_all();
         }
-        event(0, false, "connected; " + loadText);
+        // Listen first: the bus may already have a master (a second `run` on a cutting cell).
         const std::int64_t now = steadyNs();
-        for (size_t i = 0; i < rt.size(); ++i)
-            startNode(i, now);
+        listening = true;
+        heardSync = heardNmt = heardMasterHeartbeat = 0;
+        heardNmtText.clear();
+        listenUntilNs = now + static_cast<std::int64_t>(cfg.listen_before_start_ms) * 1'000'000;
+        if (cfg.listen_before_start_ms <= 0) endListening(now);
     } else if (s == QCanBusDevice::UnconnectedState && !stopping) {
+        busTaken = listening = false;
         onBusDown(BusState::Disconnected, master_fault::kBusLost, "connection to the bus lost");
     }
 }
@@ -147,6 +161,98 @@ void CanOpenMaster::Impl::onBusDown(BusState s, std::uint32_t code, const std::s
         rt[i].phase = StartupPhase::Failed;
         setFault(i, code, "CAN bus: " + why);
     }
+}
+
+// ---- listening before taking the bus, the master's heartbeat ------------------------------
+
+// Frames only a master sends. virtualcan and socketcan do not echo our own frames, so any of
+// these comes from someone else.
+void CanOpenMaster::Impl::listenFor(const CanFrame& f) {
+    NmtCommand c;
+    int target = 0;
+    int hbNode = 0;
+    NmtState hbState;
+    if (f.id == cob::kSync) {
+        ++heardSync;
+    } else if (decodeNmt(f, c, target)) {
+        if (heardNmt++ == 0)
+            heardNmtText = std::string("NMT ") + toString(c) + " to " +
+                           (target ? "node " + std::to_string(target) : std::string("all nodes"));
+    } else if (cfg.master_node_id > 0 && decodeHeartbeat(f, hbNode, hbState) &&
+               hbNode == cfg.master_node_id) {
+        ++heardMasterHeartbeat;
+    } else {
+        return;
+    }
+    if (busTaken && !otherMasterReported) {
+        otherMasterReported = true;
+        event(0, true,
+              "another CANopen master is on the bus (heard " +
+                  std::string(f.id == cob::kSync ? "a SYNC"
+                              : heardNmt         ? heardNmtText
+                                                 : "its heartbeat") +
+                  "): two masters reset and command the same drives");
+    }
+}
+
+void CanOpenMaster::Impl::endListening(std::int64_t now) {
+    listening = false;
+    std::string heard;
+    auto add = [&heard](const std::string& what) { heard += (heard.empty() ? "" : ", ") + what; };
+    if (heardSync) add(std::to_string(heardSync) + " SYNC (0x080)");
+    if (heardNmt)
+        add(std::to_string(heardNmt) + " NMT command" + (heardNmt > 1 ? "s" : "") + " (0x000, " +
+            heardNmtText + ")");
+    if (heardMasterHeartbeat) {
+        char id[8];
+        std::snprintf(id, sizeof id, "0x%03X", 0x700 + cfg.master_node_id);
+        add(std::to_string(heardMasterHeartbeat) + " master heartbeat" +
+            (heardMasterHeartbeat > 1 ? "s" : "") + " of node " +
+            std::to_string(cfg.master_node_id) + " (" + id + ")");
+    }
+    if (!heard.empty()) {
+        const std::string why = "another CANopen master is active on " + cfg.plugin.toStdString() +
+                                " " + cfg.interface.toStdString() + ": heard " + heard +
+                                " within " + std::to_string(cfg.listen_before_start_ms) +
+                                " ms; not taking the bus";
+        {
+            std::lock_guard lock(mutex);
+            connectFailed = true;
+            connectError = why;
+            bus = BusState::Disconnected;
+            busText = why;
+            changed.notify_all();
+        }
+        for (size_t i = 0; i < rt.size(); ++i) {
+            rt[i].phase = StartupPhase::Failed;
+            setFault(i, master_fault::kOtherMaster, why);
+        }
+        stopping = true;
+        device->disconnectDevice();
+        return;
+    }
+    busTaken = true;
+    otherMasterReported = false;
+    nextMasterHeartbeatNs = now;
+    {
+        std::lock_guard lock(mutex);
+        taken = true;
+        changed.notify_all();
+    }
+    event(0, false,
+          "connected, no other master heard in " + std::to_string(cfg.listen_before_start_ms) +
+              " ms; " + loadText);
+    produceHeartbeat(now);
+    for (size_t i = 0; i < rt.size(); ++i)
+        startNode(i, now);
+}
+
+void CanOpenMaster::Impl::produceHeartbeat(std::int64_t now) {
+    if (!busTaken || cfg.master_node_id <= 0 || now < nextMasterHeartbeatNs) return;
+    send(encodeHeartbeat(cfg.master_node_id, NmtState::Operational));
+    const std::int64_t period = static_cast<std::int64_t>(heartbeatProducerMs) * 1'000'000;
+    nextMasterHeartbeatNs += period;
+    if (nextMasterHeartbeatNs < now) nextMasterHeartbeatNs = now + period; // fell behind
 }
 
 // ---- start-up of one node ----------------------------------------------------------------
@@ -219,7 +325,9 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
 
 void CanOpenMaster::Impl::onFrames() {
     const std::int64_t now = steadyNs();
-    while (device && device->framesAvailable()) {
+    // Not connected (closing, refused the bus): readFrame() fails and leaves the frame queued.
+    while (device && device->state() == QCanBusDevice::ConnectedState &&
+           device->framesAvailable()) {
         const QCanBusFrame q = device->readFrame();
         framesRx.fetch_add(1, std::memory_order_relaxed);
         if (q.frameType() == QCanBusFrame::ErrorFrame) {
@@ -248,6 +356,13 @@ void CanOpenMaster::Impl::onErrorFrame(std::uint32_t errorClass, const QByteArra
 }
 
 void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
+    if (f.id == cob::kSync || f.id == cob::kNmt ||
+        (cfg.master_node_id > 0 &&
+         f.id == cob::kHeartbeat + static_cast<std::uint32_t>(cfg.master_node_id))) {
+        listenFor(f);
+        return;
+    }
+    if (listening) return;
     const int node = cob::nodeOf(f.id);
     size_t i = 0;
     while (i < cfg.nodes.size() && cfg.nodes[i].node != node)
@@ -294,6 +409,10 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 DriveConfig dc;
                 dc.cycle_period_us = static_cast<std::uint32_t>(cfg.period_s * 1e6 + 0.5);
                 dc.heartbeat_ms = heartbeatProducerMs;
+                dc.master_node = cfg.master_node_id;
+                dc.master_heartbeat_timeout_ms = static_cast<std::uint16_t>(
+                    std::clamp(cfg.heartbeat_timeout_s * 1e3, 1.0, 65535.0));
+                dc.abort_connection_option = cfg.abort_connection_option;
                 for (const SdoWrite& w : cspStartupWrites(node, dc))
                     r.ops.push_back({w, false});
                 r.op = 0;
@@ -386,7 +505,11 @@ void CanOpenMaster::Impl::onWake() {
         const auto goal = static_cast<DriveGoal>(s.goal.load(std::memory_order_acquire));
         sent = send(encodeRpdo2(cfg.nodes[i].node, controlwordToward(state, goal))) || sent;
     }
-    if (sent) lastUrgentNs.store(steadyNs(), std::memory_order_release);
+    // Every stop frame of this wake-up in one write (with TCP_NODELAY: at once on the wire).
+    if (sent) {
+        flushDevice(device);
+        lastUrgentNs.store(steadyNs(), std::memory_order_release);
+    }
 }
 
 void CanOpenMaster::Impl::onSyncDue() {
@@ -426,6 +549,8 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
 
 void CanOpenMaster::Impl::onHousekeeping() {
     const std::int64_t now = steadyNs();
+    if (listening && now >= listenUntilNs) endListening(now);
+    produceHeartbeat(now);
     for (size_t i = 0; i < rt.size(); ++i) {
         NodeRuntime& r = rt[i];
         NodeShared& s = shared[i];

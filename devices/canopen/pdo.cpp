@@ -31,6 +31,13 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
         {mapEntry(od::kStatusword, 0, 16), mapEntry(od::kPositionActual, 0, 32),
          mapEntry(od::kTorqueActual, 0, 16)});
     add(od::kProducerHeartbeat, 0, c.heartbeat_ms, 2);
+    // The reaction first, then the consumer: it watches from the master's next heartbeat on.
+    if (c.abort_connection_option >= 0)
+        add(od::kAbortConnectionOption, 0, static_cast<std::uint32_t>(c.abort_connection_option),
+            2);
+    if (c.master_node > 0 && c.master_heartbeat_timeout_ms > 0)
+        add(od::kConsumerHeartbeat, 1,
+            (static_cast<std::uint32_t>(c.master_node) << 16) | c.master_heartbeat_timeout_ms, 4);
     return w;
 }
 

@@ -19,12 +19,14 @@ namespace od {
 inline constexpr std::uint16_t kDeviceType = 0x1000;
 inline constexpr std::uint16_t kErrorRegister = 0x1001;
 inline constexpr std::uint16_t kCommCyclePeriod = 0x1006;   // us
+inline constexpr std::uint16_t kConsumerHeartbeat = 0x1016; // sub 1: node << 16 | ms
 inline constexpr std::uint16_t kProducerHeartbeat = 0x1017; // ms
 inline constexpr std::uint16_t kIdentity = 0x1018;
-inline constexpr std::uint16_t kRpdoComm = 0x1400; // + n
-inline constexpr std::uint16_t kRpdoMap = 0x1600;  // + n
-inline constexpr std::uint16_t kTpdoComm = 0x1800; // + n
-inline constexpr std::uint16_t kTpdoMap = 0x1A00;  // + n
+inline constexpr std::uint16_t kRpdoComm = 0x1400;              // + n
+inline constexpr std::uint16_t kRpdoMap = 0x1600;               // + n
+inline constexpr std::uint16_t kTpdoComm = 0x1800;              // + n
+inline constexpr std::uint16_t kTpdoMap = 0x1A00;               // + n
+inline constexpr std::uint16_t kAbortConnectionOption = 0x6007; // reaction to a lost master
 inline constexpr std::uint16_t kErrorCode = 0x603F;
 inline constexpr std::uint16_t kControlword = 0x6040;
 inline constexpr std::uint16_t kStatusword = 0x6041;
@@ -60,7 +62,20 @@ struct DriveConfig {
     std::uint32_t cycle_period_us = 4000;
     std::uint16_t heartbeat_ms = 100;
     std::uint32_t following_error_window_counts = 0; // 0: leave the drive's own
+    // The drive watches the master: it consumes the master's heartbeat (0x1016:01 = master
+    // node << 16 | timeout ms) and reacts to its loss by 0x6007. 0 / -1: not written.
+    int master_node = 0;
+    std::uint16_t master_heartbeat_timeout_ms = 0;
+    int abort_connection_option = -1;
 };
+
+// 0x6007 abort connection option codes (CiA 402).
+namespace abort_connection {
+inline constexpr int kNoAction = 0;
+inline constexpr int kFault = 1;
+inline constexpr int kDisableVoltage = 2;
+inline constexpr int kQuickStop = 3;
+} // namespace abort_connection
 
 // The SDO writes that put a drive into CSP with the PDOs above (CiA 301 mapping procedure:
 // invalidate the PDO, clear the map, write entries, set the count, set the type, validate).

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace cutcell;
 
 TEST(Json, RoundTripKeepsValuesAndOrder) {
@@ -19,9 +21,14 @@ TEST(Json, RoundTripKeepsValuesAndOrder) {
 }
 
 TEST(Json, NumbersSurviveAtFullPrecision) {
-    for (double d : {0.1, 1.0 / 3.0, -2.5e-9, 123456.789012345, 4.397}) {
+    // Bit for bit (EXPECT_DOUBLE_EQ would let 4 ulps through). 0.1 + 0.2, 1 + 2^-52 and
+    // 1/3 need 16 or 17 significant digits; the extremes must not overflow or flush to zero.
+    for (double d :
+         {0.1, 1.0 / 3.0, -2.5e-9, 123456.789012345, 4.397, 0.1 + 0.2,
+          1.0 + std::numeric_limits<double>::epsilon(), std::numeric_limits<double>::max(),
+          std::numeric_limits<double>::min(), std::numeric_limits<double>::denorm_min()}) {
         const json::Value v = json::parse(json::write(json::Value(json::Array{d})));
-        EXPECT_DOUBLE_EQ(v.asArray()[0].asNumber(), d);
+        EXPECT_EQ(v.asArray()[0].asNumber(), d) << json::write(json::Value(json::Array{d}));
     }
 }
 

@@ -50,7 +50,8 @@ TEST(Kinematics, ChainMatchesTheSeedsClosedFormPosition) {
 TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
     const PipeRobot robot(seedDhTable());
     std::mt19937 rng(2);
-    int solved = 0;
+    // Configurations per IK branch: [tip behind joint 1][elbow down (theta3 < 0)].
+    int branch[2][2] = {{0, 0}, {0, 0}};
     for (int i = 0; i < 5000; ++i) {
         const ArmVector q = randomInLimits(robot, rng);
         const Pose T = robot.forward(q);
@@ -58,9 +59,15 @@ TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
         const IkResult r = robot.solve(T, &q);
         ASSERT_TRUE(r.ok()) << describe(r);
         ASSERT_LE((r.q - q).cwiseAbs().maxCoeff(), 1e-7) << "i = " << i;
-        ++solved;
+        // The tip is behind joint 1 when its reach along the arm's plane is negative.
+        const Vec3 armDir(std::cos(q[0]), std::sin(q[0]), 0);
+        ++branch[T.translation().dot(armDir) < 0][q[2] < 0];
     }
-    EXPECT_EQ(solved, 5000);
+    // The round trip covers all four branches of the solver (shoulder facing the tip or
+    // reaching over backwards, either elbow), so none of them can break unnoticed.
+    for (int behind = 0; behind < 2; ++behind)
+        for (int down = 0; down < 2; ++down)
+            EXPECT_GE(branch[behind][down], 10) << "behind " << behind << ", elbow down " << down;
 }
 
 TEST(Kinematics, ForwardOfInverseGivesBackThePose) {
@@ -109,20 +116,27 @@ TEST(Kinematics, UnreachablePosesSayWhyNeverWrongAngles) {
     EXPECT_EQ(r.status, IkStatus::OrientationUnreachable);
     EXPECT_NEAR(rad2deg(r.residual), rad2deg(std::asin(0.3 / std::hypot(0.3, 1.0))), 1e-9);
 
-    // Reachable geometrically but only past a joint limit: theta2 in [-45, 45] deg.
+    // Reachable geometrically but only past a joint limit, on every branch: theta2 = 70 deg
+    // (limit [-45, 45]); the other elbow needs theta2 = 61.3 deg, the shoulder reaching over
+    // backwards needs theta1 = 185.7 deg (limit [-140, 140]).
     ArmVector q;
-    q << 0.1, deg2rad(60), deg2rad(-30), deg2rad(10), 0;
+    q << 0.1, deg2rad(70), deg2rad(-10), deg2rad(10), 0;
     const Pose beyond = robot.forward(q);
     r = robot.solve(beyond, &q);
-    if (!r.ok()) {
-        EXPECT_EQ(r.status, IkStatus::JointLimit);
-        EXPECT_GE(r.axis, 1);
-        EXPECT_GT(r.residual, 0);
-        EXPECT_NE(describe(r).find("past its limit"), std::string::npos);
-    } else {
-        // Another in-limit branch reaches the same pose: that is a correct answer too.
-        EXPECT_LE((robot.forward(r.q).translation() - beyond.translation()).norm(), 1e-6);
-    }
+    ASSERT_EQ(r.status, IkStatus::JointLimit) << describe(r);
+    EXPECT_EQ(r.axis, 2);
+    EXPECT_NEAR(rad2deg(r.value), 70, 1e-7);
+    EXPECT_NEAR(rad2deg(r.limit), 45, 1e-12);
+    EXPECT_NEAR(rad2deg(r.residual), 25, 1e-7);
+    EXPECT_NE(describe(r).find("joint 2 = 70.000 deg is past its limit 45.000 deg by 25.000 deg"),
+              std::string::npos)
+        << describe(r);
+    // Without a reference the nearest failing branch is reported: still joint 2 past 45 deg.
+    r = robot.solve(beyond);
+    EXPECT_EQ(r.status, IkStatus::JointLimit) << describe(r);
+    EXPECT_EQ(r.axis, 2);
+    EXPECT_NEAR(rad2deg(r.limit), 45, 1e-12);
+    EXPECT_GT(r.residual, 0);
 
     // On the joint-1 axis with a vertical torch, theta1 is undefined.
     r = robot.solve(Vec3(0, 0, 100), Vec3(0, 0, -1), 0);
@@ -147,4 +161,55 @@ TEST(Kinematics, ChuckFrameMapsThePipeAxisOntoX0) {
     }
     // At theta0 = 0 the work pipe's +y side is on top (Z0 up), seed Eq. (9).
     EXPECT_LE((robot.baseFromWork(0) * Vec3(0, 10, 0) - Vec3(260, 0, 10)).norm(), 1e-12);
+}
+
+// The position-only FK (link constants precomputed, no 4x4 algebra) is the full FK's
+// translation, on random configurations anywhere in (-2 pi, 2 pi) and on non-seed DH tables.
+TEST(Kinematics, TipOnlyForwardEqualsTheFullForwardTranslation) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> angle(-2 * kPi, 2 * kPi), len(-400, 400),
+        alpha(-180, 180);
+    for (int table = 0; table < 20; ++table) {
+        auto dh = seedDhTable();
+        if (table > 0)
+            for (int i = 1; i < kAxisCount; ++i) {
+                auto& r = dh[static_cast<size_t>(i)];
+                r.alpha_deg = alpha(rng);
+                r.a_mm = len(rng);
+                r.d_mm = len(rng);
+                r.theta_offset_deg = alpha(rng);
+            }
+        const PipeRobot robot(dh);
+        for (int k = 0; k < 5000; ++k) {
+            ArmVector q;
+            for (int j = 0; j < kArmJointCount; ++j)
+                q[j] = angle(rng);
+            const Vec3 full = robot.forward(q).translation();
+            const Vec3 tip = robot.tip(q);
+            ASSERT_LE((tip - full).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, full.norm()))
+                << "table " << table << " q " << q.transpose();
+        }
+    }
+}
+
+// The chuck frame inverted as R^T (p - t) is the 4x4 inverse applied to the point.
+TEST(Kinematics, WorkFromBaseEqualsTheInverseChuckFrame) {
+    auto dh = seedDhTable();
+    dh[0].theta_offset_deg = 17;
+    const PipeRobot robot(dh);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> angle(-4 * kPi, 4 * kPi), coord(-1000, 1000);
+    for (int k = 0; k < 20000; ++k) {
+        const double th = angle(rng);
+        const Vec3 p(coord(rng), coord(rng), coord(rng));
+        const Vec3 viaInverse = robot.baseFromWork(th).inverse() * p;
+        const Vec3 viaMatrix = robot.baseFromWork(th).matrix().inverse().topLeftCorner<3, 3>() * p +
+                               robot.baseFromWork(th).matrix().inverse().topRightCorner<3, 1>();
+        const Vec3 w = robot.workFromBase(th, p);
+        ASSERT_LE((w - viaInverse).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+        ASSERT_LE((w - viaMatrix).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, p.norm()));
+        // And back: the base frame maps it onto p again.
+        ASSERT_LE((robot.baseFromWork(th) * w - p).cwiseAbs().maxCoeff(),
+                  1e-12 * std::max(1.0, p.norm()));
+    }
 }

@@ -83,12 +83,12 @@ TEST(Machines, ShippedSchema1JobsUpgradeAndPlanTheSame) {
 TEST(Machines, AMachineOnlyReadsItsOwnKeys) {
     // The profile cutter needs no DH table, controller or plant rows.
     const std::string v2 = upgradeJobText(shipped("profile_cutter_job.json"));
-    EXPECT_EQ(v2.find("controller"), std::string::npos);
+    EXPECT_EQ(v2.find("\"controller\""), std::string::npos);
     EXPECT_EQ(v2.find("\"dh\""), std::string::npos);
     EXPECT_NO_THROW(parseJob(v2));
     // ... and refuses them in a schema-2 file.
     const std::string withDh =
-        edited(v2, "\"steppers\": {", "\"robot\": {\"dh\": []},\n    \"steppers\": {");
+        edited(v2, "\"profile_cutter\": {", "\"robot\": {\"dh\": []},\n    \"profile_cutter\": {");
     EXPECT_NE(refusal(withDh).find("unknown key \"machine.robot\""), std::string::npos)
         << refusal(withDh);
 }

@@ -1,10 +1,14 @@
 // Seed 000 Section 4: the 30 s cut simulated with both methods. The rotating-pipe method must
 // track better than the static one, and both within the seed's simulated figures.
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <gtest/gtest.h>
+
+#include <random>
+#include <cstdio>
 
 using namespace cutcell;
 
@@ -39,12 +43,18 @@ TEST(Simulation, DefaultJobIsAThirtySecondCut) {
 TEST(Simulation, BothMethodsStayWithinTheSeedsFigures) {
     const TrackingReport stat = run(CutMethod::StaticPipe);
     const TrackingReport rot = run(CutMethod::RotatingPipe);
-    // Seed 000 Section 4: static joint <= 0.04 deg, Cartesian within +-0.026 mm;
-    // rotating joint <= 0.009 deg, Cartesian within +-0.021 mm.
-    EXPECT_LE(maxJoint(stat), 0.04);
-    EXPECT_LE(stat.cartesian_max_abs_mm.maxCoeff(), 0.026);
-    EXPECT_LE(maxJoint(rot), 0.009);
-    EXPECT_LE(rot.cartesian_max_abs_mm.maxCoeff(), 0.021);
+    // Seed 000 Section 4: static joint <= 0.04 deg, Cartesian within +-0.026 mm; rotating
+    // joint <= 0.009 deg, Cartesian within +-0.021 mm. Ours are far below (README, "Results"):
+    // measured static 0.000457 deg / 0.000689 mm, rotating 0.000436 deg / 0.000679 mm. The
+    // bounds sit about 2.5x above those, so a controller or plant regression fails here long
+    // before it would reach the seed's figures.
+    std::printf("static: %.6f deg, %.6f mm; rotating: %.6f deg, %.6f mm\n", maxJoint(stat),
+                stat.cartesian_max_abs_mm.maxCoeff(), maxJoint(rot),
+                rot.cartesian_max_abs_mm.maxCoeff());
+    EXPECT_LE(maxJoint(stat), 0.0012);
+    EXPECT_LE(stat.cartesian_max_abs_mm.maxCoeff(), 0.0017);
+    EXPECT_LE(maxJoint(rot), 0.0011);
+    EXPECT_LE(rot.cartesian_max_abs_mm.maxCoeff(), 0.0017);
     // The actuators are not saturated: the figures are the controller's, not the torque limit's.
     EXPECT_LT(stat.max_torque_fraction, 1.0);
     EXPECT_LT(rot.max_torque_fraction, 1.0);
@@ -78,4 +88,36 @@ TEST(Simulation, ReportJsonHasTheDocumentedKeys) {
         EXPECT_TRUE(cart->find(axis)->isNumber());
     EXPECT_EQ(v.find("method")->asString(), "rotating_pipe");
     EXPECT_TRUE(v.find("reachable")->asBool());
+}
+
+// The tips computed once and shared (overall, cruise, telemetry) give the same figures as
+// computing them per add(), and the engine's tip model (PipeRobotTipModel) the same as the
+// simulation's robot.
+TEST(Simulation, SharedTipsGiveTheSameFigures) {
+    const Job job = defaultJob();
+    const PipeRobot robot(job.dh);
+    const PipeRobotTipModel model(job.dh);
+    TrackingStats perAdd(robot), shared(robot), viaModel(&model);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> angle(-kPi, kPi), small(-0.01, 0.01);
+    for (int k = 0; k < 2000; ++k) {
+        JointVector c, a;
+        for (int i = 0; i < kAxisCount; ++i) {
+            c[i] = angle(rng);
+            a[i] = c[i] + small(rng);
+        }
+        perAdd.add(c, a);
+        const TipSample tips = shared.tips(c, a);
+        ASSERT_TRUE(tips.valid);
+        shared.add(c, a, tips);
+        viaModel.add(c, a);
+    }
+    TrackingReport r1, r2, r3;
+    perAdd.fill(r1);
+    shared.fill(r2);
+    viaModel.fill(r3);
+    EXPECT_EQ(json::write(reportToJson(r1)), json::write(reportToJson(r2)));
+    EXPECT_EQ(json::write(reportToJson(r1)), json::write(reportToJson(r3)));
+    EXPECT_GT(r1.cartesian_max_abs_mm.norm(), 0);
+    EXPECT_GT(r1.on_pipe_max_abs_mm.norm(), 0);
 }

@@ -8,6 +8,7 @@
 #include "devices/canopen/emcy.h"
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
+#include "devices/canopen/sdo.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -97,6 +98,86 @@ class CanOpenBusTest : public QObject {
         std::string error;
         QVERIFY(!m.start(&error, 1000));
         QVERIFY2(error.find("no-such-plugin") != std::string::npos, error.c_str());
+    }
+
+    void interfaceThePluginDoesNotOfferIsRefused() {
+        CanOpenMasterConfig c = masterConfigFromJob(job_, 0.004, 1);
+        c.interface = "can5";
+        CanOpenMaster m(c);
+        std::string error;
+        QVERIFY(!m.start(&error, 1000));
+        QVERIFY2(error.find("\"can5\" is not offered by plugin virtualcan") != std::string::npos,
+                 error.c_str());
+        QVERIFY2(error.find("can0, can1") != std::string::npos, error.c_str());
+        DriveSimulatorConfig sc;
+        sc.interface = "tcp://127.0.0.1:35468/can7";
+        sc.nodes = nodesFromJob(job_, {1});
+        DriveSimulator sim(sc);
+        QVERIFY(!sim.start(1000));
+        QVERIFY2(sim.errorText().contains("can0, can1"), qPrintable(sim.errorText()));
+    }
+
+    void aSecondMasterRefusesToTakeABusThatHasOne() {
+        auto sim = simulator({1, 2});
+        auto first = master(2);
+        enableAll(*first);
+        const qsizetype before = heard_.size();
+        CanOpenMaster second(masterConfigFromJob(job_, 0.004, 2));
+        std::string error;
+        QVERIFY(!second.start(&error));
+        QVERIFY2(error.find("another CANopen master is active") != std::string::npos,
+                 error.c_str());
+        QVERIFY2(error.find("SYNC (0x080)") != std::string::npos, error.c_str());
+        QVERIFY2(error.find("heartbeat") != std::string::npos, error.c_str()); // node 127's
+        second.stop();
+        // The second master wrote nothing: no NMT reset, no SDO; the cell keeps running.
+        for (qsizetype k = before; k < heard_.size(); ++k)
+            QVERIFY2(heard_[k].frameId() != cob::kNmt,
+                     "an NMT command went out while the first master owned the bus");
+        QTRY_VERIFY_WITH_TIMEOUT(allInState(*first, DriveState::Enabled), 1000);
+        for (const SimNodeSnapshot& n : sim->snapshot())
+            QCOMPARE(n.state, Cia402State::OperationEnabled);
+    }
+
+    void theDrivesAreConfiguredToWatchTheMastersHeartbeat() {
+        auto sim = simulator({1, 2});
+        heard_.clear();
+        auto m = master(2);
+        enableAll(*m);
+        // Start-up wrote 0x6007 = 3 (quick stop) and 0x1016:01 = 127 << 16 | timeout to both.
+        QSet<int> option, consumer;
+        for (const QCanBusFrame& q : heard_) {
+            CanFrame f;
+            if (!fromQt(q, f) || cob::functionOf(f.id) != cob::kSdoRx) continue;
+            const SdoMessage sdo = decodeSdo(f);
+            if (sdo.kind != SdoKind::DownloadRequest) continue;
+            if (sdo.address.index == od::kAbortConnectionOption && sdo.value == 3)
+                option.insert(cob::nodeOf(f.id));
+            if (sdo.address.index == od::kConsumerHeartbeat && sdo.address.sub == 1 &&
+                sdo.value == ((127u << 16) | std::uint32_t(job_.devices.heartbeat_timeout_ms)))
+                consumer.insert(cob::nodeOf(f.id));
+        }
+        QCOMPARE(option, QSet<int>({1, 2}));
+        QCOMPARE(consumer, QSet<int>({1, 2}));
+        // The master's own heartbeat (0x77F, Operational) at the drives' period (timeout / 3).
+        heard_.clear();
+        const qint64 t0 = QDateTime::currentMSecsSinceEpoch();
+        QTRY_VERIFY_WITH_TIMEOUT(QDateTime::currentMSecsSinceEpoch() - t0 >= 1000 &&
+                                     allInState(*m, DriveState::Enabled),
+                                 3000);
+        const double elapsed_s =
+            static_cast<double>(QDateTime::currentMSecsSinceEpoch() - t0) * 1e-3;
+        int beats = 0;
+        for (const QCanBusFrame& q : heard_)
+            if (q.frameId() == cob::kHeartbeat + 127 && q.payload().size() == 1 &&
+                std::uint8_t(q.payload()[0]) == std::uint8_t(NmtState::Operational))
+                ++beats;
+        const double expected = elapsed_s / (job_.devices.heartbeat_timeout_ms / 3 * 1e-3);
+        QVERIFY2(std::abs(beats - expected) <= 2,
+                 qPrintable(QString("%1 master heartbeats in %2 s, expected %3")
+                                .arg(beats)
+                                .arg(elapsed_s)
+                                .arg(expected)));
     }
 
     void sixNodesStartToOperationEnabled() {
@@ -200,10 +281,18 @@ class CanOpenBusTest : public QObject {
         // Set-points written before the drive reported Enabled must not reach it: write a far one.
         m->drive(1)->write(before + 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(m->drive(1)->read(0).state == DriveState::Enabled, 2000);
-        for (int k = 0; k < 20; ++k) {
-            QTest::qWait(5);
-            QVERIFY(std::fabs(sim->snapshot()[1].position_rad - before) < 1e-3);
-        }
+        // Over 20 SYNC cycles the drive holds (counted at the drive, so a slow machine that
+        // runs fewer cycles in a given time cannot pass without them).
+        const std::uint64_t from = sim->snapshot()[1].syncs;
+        bool held = true;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                const SimNodeSnapshot n = sim->snapshot()[1];
+                held = held && std::fabs(n.position_rad - before) < 1e-3;
+                return n.syncs >= from + 20;
+            },
+            3000));
+        QVERIFY(held);
     }
 
     void followingErrorEndsInFault() {
@@ -228,24 +317,46 @@ class CanOpenBusTest : public QObject {
         QProcess canbusutil;
         canbusutil.start("/usr/lib/qt6/bin/canbusutil", {"-l", "virtualcan", "can0"});
         QVERIFY(canbusutil.waitForStarted());
-        QTest::qWait(300); // its own connection: no signal to wait for from outside
+        // It listens once it prints a frame we send (no fixed wait).
+        QByteArray out;
+        const QRegularExpression probe("\\b765\\b");
+        QVERIFY2(QTest::qWaitFor(
+                     [&] {
+                         listener_->writeFrame(QCanBusFrame(0x765, QByteArray(1, '\x7f')));
+                         canbusutil.waitForReadyRead(20);
+                         out += canbusutil.readAllStandardOutput();
+                         return QString::fromLocal8Bit(out).contains(probe);
+                     },
+                     5000),
+                 out.constData());
         heard_.clear();
+        out.clear();
+        auto hasIds = [&] {
+            const QString dump = QString::fromLocal8Bit(out);
+            for (const char* id : {"701", "702", "080"})
+                if (!dump.contains(QRegularExpression(QString("\\b%1\\b").arg(id)))) return false;
+            return true;
+        };
         {
             auto sim = simulator({1, 2});
             auto m = master(2);
             enableAll(*m);
-            QTest::qWait(100);
+            // Both listeners heard the cell: the heartbeats of both nodes and the SYNC.
+            QVERIFY2(QTest::qWaitFor(
+                         [&] {
+                             out += canbusutil.readAllStandardOutput();
+                             return hasIds() && heard_.size() > 50;
+                         },
+                         5000),
+                     out.left(400).constData());
         }
-        QTRY_VERIFY(canbusutil.bytesAvailable() > 0 || heard_.size() > 0);
-        QTest::qWait(100);
         canbusutil.terminate();
         canbusutil.waitForFinished();
-        const QString dump = QString::fromLocal8Bit(canbusutil.readAllStandardOutput());
+        out += canbusutil.readAllStandardOutput();
+        const QString dump = QString::fromLocal8Bit(out);
         qInfo("canbusutil heard:\n%s", qPrintable(dump.left(300)));
         // Its dump lists the frames by COB-ID: the heartbeats of both nodes and the SYNC.
-        for (const char* id : {"701", "702", "080"})
-            QVERIFY2(dump.contains(QRegularExpression(QString("\\b%1\\b").arg(id))),
-                     qPrintable(dump.left(400)));
+        QVERIFY2(hasIds(), qPrintable(dump.left(400)));
         QVERIFY(heard_.size() > 50);
         for (const QCanBusFrame& q : heard_) {
             CanFrame f;
@@ -273,7 +384,9 @@ class CanOpenBusTest : public QObject {
             QVERIFY2(expected >= 0, qPrintable(QString("unexpected COB-ID 0x%1").arg(f.id, 0, 16)));
             QVERIFY2(f.len == expected,
                      qPrintable(QString("COB-ID 0x%1 has %2 bytes").arg(f.id, 0, 16).arg(f.len)));
-            if (f.id != cob::kNmt && f.id != cob::kSync) QVERIFY(node >= 1 && node <= 2);
+            const bool mastersHeartbeat = f.id == cob::kHeartbeat + 127;
+            if (f.id != cob::kNmt && f.id != cob::kSync && !mastersHeartbeat)
+                QVERIFY(node >= 1 && node <= 2);
         }
     }
 };

@@ -118,7 +118,11 @@ class CanOpenEngineTest : public QObject {
     void emergencyStopTakesEveryNodeOutOfOperationEnabled() {
         QVERIFY(engine_->start());
         QTRY_VERIFY_WITH_TIMEOUT(reach(EngineState::Running), 10000);
-        QTest::qWait(300);
+        // Stop while moving: 75 cycles into the run, counted at a drive (not a fixed wait a
+        // slow machine could spend without a single cycle).
+        const std::uint64_t from = sim_->snapshot()[0].syncs;
+        QTRY_VERIFY_WITH_TIMEOUT(sim_->snapshot()[0].syncs >= from + 75, 5000);
+        QCOMPARE(engine_->state(), EngineState::Running);
         QVERIFY(engine_->emergencyStop());
         QTRY_VERIFY_WITH_TIMEOUT(reach(EngineState::EmergencyStop), 2000);
         QTRY_VERIFY_WITH_TIMEOUT(

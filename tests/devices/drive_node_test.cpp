@@ -216,3 +216,79 @@ TEST(DriveNode, HeartbeatProducedAndStoppedByInjection) {
     }
     EXPECT_GE(beats, 4);
 }
+
+// The drive watches the master (0x1016 consumer, 0x6007 reaction): when the master's heartbeat
+// stops for longer than the configured time, an enabled drive signals EMCY 0x8130, quick-stops
+// out of Operation Enabled and leaves Operational. Not before the time, and not before the
+// master's first heartbeat (the consumer arms on it).
+TEST(DriveNode, LosingTheMastersHeartbeatQuickStopsTheDrive) {
+    constexpr int kMaster = 127;
+    constexpr std::uint16_t kTimeoutMs = 300;
+    Bench b(config());
+    DriveConfig dc;
+    dc.cycle_period_us = 2000;
+    dc.master_node = kMaster;
+    dc.master_heartbeat_timeout_ms = kTimeoutMs;
+    dc.abort_connection_option = abort_connection::kQuickStop;
+    for (const SdoWrite& w : cspStartupWrites(kNode, dc)) {
+        const SdoMessage m = b.sdo(sdoDownloadRequest(kNode, w.address, w.value, w.size));
+        ASSERT_EQ(m.kind, SdoKind::DownloadResponse)
+            << std::hex << w.address.index << ":" << int(w.address.sub) << " "
+            << sdoAbortText(m.value);
+    }
+    const SdoMessage consumer = b.sdo(sdoUploadRequest(kNode, {od::kConsumerHeartbeat, 1}));
+    EXPECT_EQ(consumer.value, (std::uint32_t(kMaster) << 16) | kTimeoutMs);
+    EXPECT_EQ(b.sdo(sdoUploadRequest(kNode, {od::kAbortConnectionOption, 0})).value, 3u);
+    b.send(encodeNmt(NmtCommand::Start, 0));
+    b.send(encodeHeartbeat(kMaster, NmtState::Operational));
+    const double lastHeartbeat = b.now;
+    ASSERT_EQ(decodeStatusword(b.enable().statusword), Cia402State::OperationEnabled);
+    // Keep cycling (SYNCs keep coming: only the heartbeat is missing) past the timeout.
+    std::vector<CanFrame> emcys;
+    double leftAt = -1;
+    while (b.now < lastHeartbeat + 0.6) {
+        b.now += 0.002;
+        std::vector<CanFrame> out;
+        if (b.node.nmtState() == NmtState::Operational) {
+            b.send(encodeRpdo1(kNode, {cw::kEnableOperation, 0}));
+            out = b.send(encodeSync()); // a SYNC also runs the drive's periodic work
+        } else {
+            b.node.tick(b.now, out);
+        }
+        for (const CanFrame& f : out) {
+            Emcy e;
+            if (decodeEmcy(f, e)) emcys.push_back(f);
+        }
+        if (leftAt < 0 && b.node.driveState() != Cia402State::OperationEnabled) leftAt = b.now;
+    }
+    ASSERT_GT(leftAt, 0) << "the drive stayed in Operation Enabled without the master";
+    EXPECT_GE(leftAt - lastHeartbeat, kTimeoutMs * 1e-3);
+    EXPECT_LE(leftAt - lastHeartbeat, kTimeoutMs * 1e-3 + 0.002 + 1e-9); // at the next cycle
+    ASSERT_EQ(emcys.size(), 1u);
+    Emcy e;
+    ASSERT_TRUE(decodeEmcy(emcys[0], e));
+    EXPECT_EQ(e.error_code, emcy_code::kHeartbeat);
+    EXPECT_EQ(b.node.nmtState(), NmtState::PreOperational);
+    EXPECT_NE(b.node.driveState(), Cia402State::OperationEnabled);
+}
+
+TEST(DriveNode, WithoutAMasterHeartbeatYetTheConsumerWaits) {
+    Bench b(config());
+    DriveConfig dc;
+    dc.master_node = 127;
+    dc.master_heartbeat_timeout_ms = 100;
+    dc.abort_connection_option = abort_connection::kFault;
+    for (const SdoWrite& w : cspStartupWrites(kNode, dc))
+        b.sdo(sdoDownloadRequest(kNode, w.address, w.value, w.size));
+    b.send(encodeNmt(NmtCommand::Start, 0));
+    ASSERT_EQ(decodeStatusword(b.enable().statusword), Cia402State::OperationEnabled);
+    for (int i = 0; i < 200; ++i) // 0.4 s of cycles, no master heartbeat ever
+        b.cycle(cw::kEnableOperation, 0);
+    EXPECT_EQ(b.node.driveState(), Cia402State::OperationEnabled);
+    // 0x6007 takes 0..3 only; 0x1016 a producer id up to 127.
+    EXPECT_EQ(b.sdo(sdoDownloadRequest(kNode, {od::kAbortConnectionOption, 0}, 4, 2)).value,
+              abort_code::kInvalidValue);
+    EXPECT_EQ(
+        b.sdo(sdoDownloadRequest(kNode, {od::kConsumerHeartbeat, 1}, (200u << 16) | 100, 4)).value,
+        abort_code::kInvalidValue);
+}

@@ -5,6 +5,7 @@
 #include "core/sim/cut_simulation.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace cutcell::test {
 namespace {
@@ -88,15 +89,33 @@ TEST(EngineMotion, FeedHoldStopsOnThePathAndResumeContinuesWithoutAJump) {
     const double progressAtPause = cell.telemetry.back().progress;
     EXPECT_GT(progressAtPause, 0.1);
 
+    const size_t resumedAt = cell.telemetry.size();
     cell.engine().resume();
     cell.run(3000, EngineState::Fault);
     EXPECT_EQ(cell.engine().state(), EngineState::Running) << cell.eventText();
     EXPECT_GT(cell.telemetry.back().progress, progressAtPause);
     EXPECT_TRUE(cell.telemetry.back().torch_on) << "the torch is lit again before the path moves";
     expectNoJumps(cell.telemetry, 1.0);
-    // The path restarts from the held point: the first set-point after the pause is within
-    // one cycle's travel of it.
-    EXPECT_NE(cell.eventText().find("Resume at path time"), std::string::npos);
+    // The path restarts from the held point: the held set-point is the path's own at the path
+    // time the engine paused and resumed at (printed to 1 ms) ...
+    double pausedTau = -1, resumedTau = -2;
+    for (const EngineEvent& e : cell.events) {
+        std::sscanf(e.text.data(), "Paused on the path at %lf s", &pausedTau);
+        std::sscanf(e.text.data(), "Resume at path time %lf s", &resumedTau);
+    }
+    EXPECT_EQ(resumedTau, pausedTau) << cell.eventText();
+    double vmax = 0, amax = 0;
+    splineBounds(vmax, amax);
+    const double T = testJob().sim.period_s;
+    const JointVector onPath = testProgram()->spline.evaluate(resumedTau).q;
+    EXPECT_LE((onPath - held).cwiseAbs().maxCoeff(), vmax * 0.0005 + 1e-12);
+    // ... and the first set-point that moves after the resume is within one cycle's travel of
+    // the held one.
+    size_t k = resumedAt;
+    while (k < cell.telemetry.size() && cell.telemetry[k].setpoint == held)
+        ++k;
+    ASSERT_LT(k, cell.telemetry.size()) << "the set-point never moved after the resume";
+    EXPECT_LE((cell.telemetry[k].setpoint - held).cwiseAbs().maxCoeff(), vmax * T);
 }
 
 TEST(EngineMotion, OverrideChangesThePathRateSmoothly) {

@@ -2,6 +2,7 @@
 // the axis, the fault and the values.
 #include "engine_fixture.h"
 
+#include <cmath>
 #include <functional>
 
 namespace cutcell::test {
@@ -11,6 +12,14 @@ struct StateSetup {
     const char* name;
     std::function<void(SimCell&)> go;
 };
+
+// Engine time of the first event since `from` whose text contains `fragment` (NaN if none).
+double eventTime(const SimCell& cell, const char* fragment, size_t from = 0) {
+    for (size_t i = from; i < cell.events.size(); ++i)
+        if (std::string(cell.events[i].text.data()).find(fragment) != std::string::npos)
+            return cell.events[i].time_s;
+    return std::nan("");
+}
 
 std::vector<StateSetup> everyState() {
     return {
@@ -34,14 +43,17 @@ TEST(EmergencyStop, FromEveryStateStopsTheDevicesAndLatchesUntilReleasedAndReset
         s.go(cell);
         if (HasFatalFailure()) return;
         const std::uint64_t measured = cell.engine().cycleStats().estops_measured;
+        const size_t before = cell.events.size();
         cell.engine().emergencyStop();
         cell.cycleOnce();
         EXPECT_EQ(cell.engine().state(), EngineState::EmergencyStop);
         EXPECT_FALSE(cell.torch().isOn());
         EXPECT_TRUE(cell.drivesAllDisabled());
-        // Category 0: measured within the same cycle.
+        // Category 0: commanded off and seen off within the cycle that took the request.
         EXPECT_EQ(cell.engine().cycleStats().estops_measured, measured + 1);
-        EXPECT_GT(cell.engine().cycleStats().last_estop_latency_us, 0);
+        const double requested = eventTime(cell, "Emergency stop (", before);
+        EXPECT_EQ(eventTime(cell, "Emergency stop complete", before), requested)
+            << cell.eventText(before);
         // Latched: nothing moves it but release + reset.
         cell.engine().enable();
         cell.engine().start();
@@ -70,6 +82,7 @@ TEST(EmergencyStop, CategoryOneStopsAlongThePathThenDisables) {
     cell.toCutting(3.0);
     cell.keepTelemetry = true;
     const std::uint64_t measured = cell.engine().cycleStats().estops_measured;
+    const size_t before = cell.events.size();
     cell.engine().emergencyStop();
     cell.cycleOnce();
     EXPECT_EQ(cell.engine().state(), EngineState::EmergencyStop);
@@ -79,8 +92,13 @@ TEST(EmergencyStop, CategoryOneStopsAlongThePathThenDisables) {
     cell.run(2000, EngineState::Idle);
     EXPECT_TRUE(cell.drivesAllDisabled());
     EXPECT_EQ(cell.engine().cycleStats().estops_measured, measured + 1);
-    // The stop took about feed_hold_decel_s: more than one cycle of latency.
-    EXPECT_GT(cell.engine().cycleStats().last_estop_latency_us, 0);
+    // The path rate ramps from 1 to 0 in feed_hold_decel_s, then the drives are disabled and
+    // seen off: the stop completes that long after the request, plus at most a few cycles.
+    const double T = testJob().sim.period_s, decel = testJob().engine.feed_hold_decel_s;
+    const double took = eventTime(cell, "Emergency stop complete", before) -
+                        eventTime(cell, "Emergency stop (", before);
+    EXPECT_GE(took, decel - 1e-9) << cell.eventText(before);
+    EXPECT_LE(took, decel + 3 * T) << cell.eventText(before);
     EXPECT_NE(cell.eventText().find("Controlled stop complete"), std::string::npos);
 }
 

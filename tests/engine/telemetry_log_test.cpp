@@ -187,5 +187,35 @@ TEST(RunLog, AFaultedRunStillHasItsSummary) {
     fs::remove_all(dir);
 }
 
+// A runs folder that cannot be created (here: its parent is a file) is said once on stderr
+// and as a Warning event (the GUI's event log, the CLI's event lines), never silently.
+TEST(RunLog, AFolderThatCannotBeCreatedIsAWarning) {
+    const fs::path blocker =
+        fs::temp_directory_path() / ("cutcell_runlog_file_" + std::to_string(::getpid()));
+    std::ofstream(blocker) << "not a folder";
+    const std::string runs = (blocker / "runs").string();
+    {
+        CellOptions o;
+        o.runs_dir = runs;
+        SimCell cell(o);
+        cell.toReady(true);
+        testing::internal::CaptureStderr();
+        cell.engine().flushRunLog();
+        cell.cycleOnce(); // the engine thread reports what the logger found
+        cell.engine().flushRunLog();
+        const std::string err = testing::internal::GetCapturedStderr();
+        const std::string said = "warning: run log: cannot create " + runs;
+        EXPECT_NE(err.find(said), std::string::npos) << err;
+        EXPECT_EQ(err.find(said), err.rfind(said)) << "said once, not once per event: " << err;
+        int warnings = 0;
+        for (const EngineEvent& e : cell.events)
+            if (e.severity == Severity::Warning &&
+                std::string(e.text.data()).find("Run log: cannot create " + runs) == 0)
+                ++warnings;
+        EXPECT_EQ(warnings, 1) << cell.eventText();
+    }
+    fs::remove(blocker);
+}
+
 } // namespace
 } // namespace cutcell::test

@@ -37,6 +37,14 @@ EngineState state(const MainWindow& w) {
     return w.run()->bridge()->state();
 }
 
+// Waits until the GUI has a sample from at least `seconds` of engine time after its current
+// one: "nothing changed" is then checked over that many cycles however slow the machine is
+// (a fixed qWait checks fewer cycles, or none, when the machine is slow).
+void waitForEngineTime(const MainWindow& w, double seconds) {
+    const double from = w.run()->bridge()->last().time_s;
+    QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().time_s >= from + seconds, 30000);
+}
+
 // Opens the job file and keeps run logs out of the source tree.
 void openProfileJob(MainWindow& w) {
     QString err;
@@ -115,16 +123,17 @@ class TestGuiProfile : public QObject {
         // Feed hold: the progress stops, Resume continues.
         QTest::mouseClick(w.controls()->holdButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Paused, 5000);
-        QTest::qWait(200);
-        w.run()->bridge()->poll();
+        // The state comes from the newest sample: it is already Paused (on the path, at rest).
+        QCOMPARE(w.run()->bridge()->last().state, EngineState::Paused);
         const double held = w.run()->bridge()->last().progress;
-        QTest::qWait(300);
-        w.run()->bridge()->poll();
+        waitForEngineTime(w, 0.3);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(w.run()->bridge()->last().progress, held);
         QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::EmergencyStop, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->bridge()->last().torch_on, 2000);
-        QTest::qWait(300);
+        waitForEngineTime(w, 0.3); // latched over 300 cycles, however slow the machine
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(state(w), EngineState::EmergencyStop);
         QVERIFY(!w.controls()->startButton()->isEnabled());
     }

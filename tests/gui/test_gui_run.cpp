@@ -43,6 +43,14 @@ EngineState state(const MainWindow& w) {
     return w.run()->bridge()->state();
 }
 
+// Waits until the GUI has a sample from at least `seconds` of engine time after its current
+// one: "nothing changed" is then checked over that many cycles however slow the machine is
+// (a fixed qWait checks fewer cycles, or none, when the machine is slow).
+void waitForEngineTime(const MainWindow& w, double seconds) {
+    const double from = w.run()->bridge()->last().time_s;
+    QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().time_s >= from + seconds, 30000);
+}
+
 } // namespace
 
 class TestGuiRun : public QObject {
@@ -116,7 +124,8 @@ class TestGuiRun : public QObject {
         QVERIFY(!w.lamps()->lamp(StateLamps::Torch)->isLit());
         QTRY_VERIFY_WITH_TIMEOUT(drivesDisabled(w), 2000);
         // Latched: it stays so, Start is blocked, Reset is offered.
-        QTest::qWait(300);
+        waitForEngineTime(w, 0.3);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(state(w), EngineState::EmergencyStop);
         QVERIFY(!w.controls()->startButton()->isEnabled());
         QVERIFY(w.controls()->startBlockedReason().contains("EMERGENCY STOP"));
@@ -144,10 +153,12 @@ class TestGuiRun : public QObject {
         QTest::mouseClick(w.controls()->holdButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Paused, 5000);
         QVERIFY(w.lamps()->lamp(StateLamps::Paused)->isLit());
-        // Stopped on the path: the progress no longer moves.
-        QTest::qWait(700); // the hold's deceleration ends well within this
+        // Stopped on the path: the progress no longer moves. The state comes from the newest
+        // sample, so that sample is already Paused (the deceleration has ended).
+        QCOMPARE(w.run()->bridge()->last().state, EngineState::Paused);
         const double held = w.run()->bridge()->last().progress;
-        QTest::qWait(400);
+        waitForEngineTime(w, 0.4);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(w.run()->bridge()->last().progress, held);
         QVERIFY(held < 1.0);
         QVERIFY(w.controls()->resumeButton()->isEnabled());

@@ -142,6 +142,34 @@ TEST(ProfileEngine, CompletesTheCutOnSteppers) {
     EXPECT_LT(deg2rad(report.joints[1].max_abs_deg), 2 * job.profile_cutter.mm_per_pulse_x);
 }
 
+// The job's pierce (profile_cutter.pierce_s, the G-code's G4 after M3): once the arc is
+// established at the first cut point the torch stays there that long before either axis moves.
+TEST(ProfileEngine, PiercesBeforeTheTorchMoves) {
+    const Job job = test::exampleProfileJob();
+    ASSERT_GE(job.profile_cutter.pierce_s, 1.0);
+    SteppedRun run(job);
+    run.toRunning();
+    const double T = job.sim.period_s;
+    double arcAt = -1, movedAt = -1;
+    JointVector atArc = JointVector::Zero();
+    for (int k = 0; k < 20000 && movedAt < 0; ++k) {
+        run.engine->runCycles(1, EngineState::Completed);
+        TelemetrySample t;
+        while (run.engine->popTelemetry(t)) {
+            if (arcAt < 0 && t.torch_on && t.arc_ok) {
+                arcAt = t.time_s;
+                atArc = t.setpoint;
+            } else if (arcAt >= 0 && movedAt < 0 && t.setpoint != atArc) {
+                movedAt = t.time_s;
+            }
+        }
+    }
+    ASSERT_GE(arcAt, 0) << "the arc was never established";
+    ASSERT_GE(movedAt, 0) << "the path never started";
+    EXPECT_GE(movedAt - arcAt, job.profile_cutter.pierce_s - 0.5 * T);
+    EXPECT_LE(movedAt - arcAt, job.profile_cutter.pierce_s + 3 * T);
+}
+
 TEST(ProfileEngine, FeedHoldStopsOnThePathAndResumes) {
     const Job job = test::exampleProfileJob();
     SteppedRun run(job);

@@ -20,6 +20,13 @@ void sample(int i, double* j, double* c) {
     for (int k = 0; k < 3; ++k)
         c[k] = -0.25 * (k + 1) - i;
 }
+
+// Waits until the widget's timer has ticked n more times: "nothing happened" is only checked
+// after the timer had its chances (a fixed wait may see no tick at all on a slow machine).
+void waitForTicks(const TrackingPlotsWidget& w, std::uint64_t n) {
+    const std::uint64_t from = w.timerTicks();
+    QTRY_VERIFY_WITH_TIMEOUT(w.timerTicks() >= from + n, 10000);
+}
 } // namespace
 
 class TstTrackingPlots : public QObject {
@@ -93,7 +100,7 @@ void TstTrackingPlots::pausedViewStaysFrozen() {
         sample(i, j, c);
         w.append(i * 0.01, j, 6, c);
     }
-    QTest::qWait(150); // several timer ticks
+    waitForTicks(w, 3);
     QCOMPARE(w.plottedPointCount(), 10);
     QCOMPARE(w.sampleCount(), 30);
     w.setPaused(false);
@@ -251,7 +258,7 @@ void TstTrackingPlots::hiddenWidgetCatchesUpWhenShown() {
         sample(i, j, c);
         w.append(i * 0.01, j, 6, c);
     }
-    QTest::qWait(120);
+    waitForTicks(w, 3);
     QCOMPARE(w.plottedPointCount(), 0); // no work for a hidden widget
     w.show();
     QTRY_COMPARE_WITH_TIMEOUT(w.plottedPointCount(), 25, 2000);
@@ -270,7 +277,7 @@ void TstTrackingPlots::hostDrivenRedrawWaitsForTheHost() {
         sample(i, j, c);
         w.append(i * 0.01, j, 6, c);
     }
-    QTest::qWait(150); // several timer ticks
+    waitForTicks(w, 3);
     QCOMPARE(w.plottedPointCount(), 0);
     w.redrawPending();
     QCOMPARE(w.plottedPointCount(), 40);

@@ -53,8 +53,15 @@ class PipeRobot {
 
     // Work frame -> base frame for a chuck angle theta0 (rad).
     Pose baseFromWork(double theta0) const;
+    // The tip expressed in the work frame: baseFromWork(theta0)^-1 * tipBase, computed as
+    // R^T (p - t) (bit for bit the same as the 4x4 inverse, without forming it).
+    Vec3 workFromBase(double theta0, const Vec3& tipBase) const;
     // Tool pose (tip, n o a) in the base frame.
     Pose forward(const ArmVector& q) const;
+    // Tip only: forward(q).translation() with the link constants (sin/cos of alpha) computed
+    // once, no homogeneous 4x4 algebra and no last rotation. The products are summed in the
+    // order Eigen uses for the full pose, so the result is the same bit for bit (tested).
+    Vec3 tip(const ArmVector& q) const;
     // Frames 0..5 of the arm for drawing (6 poses).
     void armFrames(const ArmVector& q, Pose* out6) const;
 
@@ -71,7 +78,13 @@ class PipeRobot {
                        const ArmVector* previous) const;
     double nearestWithinLimits(int axis, double value, double reference, bool* ok) const;
 
+    // Per arm link: cos/sin of alpha, a, d and the theta offset (for tip()).
+    struct LinkConstants {
+        double ca, sa, a, d, offset;
+    };
+
     DhChain arm_;
+    std::array<LinkConstants, kArmJointCount> link_{};
     double d0_, d1_, a2_, a3_, a4_, d5_;
     std::array<double, kAxisCount> offset_{}, min_{}, max_{};
 };

@@ -11,11 +11,11 @@ namespace cutcell {
 
 Vec3 PipeRobotTipModel::tip(const JointVector& q) const {
     // The same expression as TrackingStats' pipe-robot path, so figures agree bit for bit.
-    return robot_.forward(q.tail<kArmJointCount>()).translation();
+    return robot_.tip(q.tail<kArmJointCount>());
 }
 
 Vec3 PipeRobotTipModel::tipOnWork(const JointVector& q, const Vec3& tipBase) const {
-    return Vec3(robot_.baseFromWork(q[0]).inverse() * tipBase);
+    return robot_.workFromBase(q[0], tipBase);
 }
 
 std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const CutPlan& plan,

@@ -28,7 +28,7 @@ std::string travelProblem(const Job& job, const ProfileCut& cut) {
             snprintfC(
                 buf, sizeof buf,
                 "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
-                "machine.steppers.x_travel_mm = %.3f mm",
+                "machine.profile_cutter.x_travel_mm = %.3f mm",
                 p.x_mm, p.beta_deg, travel);
             return buf;
         }

@@ -85,7 +85,7 @@ void ProfileCutterModule::readSection(const json::Value& section, Job& job) cons
     readPipeJoint(m, job, kCutKeys);
     job.other_branches = readOtherBranches(m);
     job.profile_cutter = ProfileCutterSpec{};
-    if (m.has("steppers")) readSteppers(m.child("steppers"), job.profile_cutter);
+    if (m.has("profile_cutter")) readSteppers(m.child("profile_cutter"), job.profile_cutter);
     m.finish();
 }
 
@@ -110,7 +110,7 @@ json::Value ProfileCutterModule::writeSection(const Job& job) const {
                    {"pierce_s", pc.pierce_s},
                    {"x_travel_mm", pc.x_travel_mm}};
     if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
-    s.emplace_back("steppers", o);
+    s.emplace_back("profile_cutter", o);
     return s;
 }
 
@@ -121,7 +121,6 @@ void ProfileCutterModule::migrateSchema1(json::Object& section) const {
                kv.first == "plant";
     });
     for (auto& [k, v] : section) {
-        if (k == "profile_cutter") k = "steppers";
         if (k == "cut" && v.isObject())
             std::erase_if(v.asObject(), [](const auto& kv) {
                 return kv.first == "max_direction_deviation_deg" ||
@@ -163,15 +162,15 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
                       " deg from the cut branch's axis; it must differ by >= 1 deg");
     }
     const ProfileCutterSpec& p = job.profile_cutter;
-    c.range("steppers.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
-    c.range("steppers.pulses_per_step_a", p.pulses_per_step_a, 1, 100000, "pulses/step");
-    c.range("steppers.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
-    c.range("steppers.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
-    c.range("steppers.pierce_s", p.pierce_s, 0, 60, "s");
-    c.range("steppers.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
+    c.range("profile_cutter.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
+    c.range("profile_cutter.pulses_per_step_a", p.pulses_per_step_a, 1, 100000, "pulses/step");
+    c.range("profile_cutter.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
+    c.range("profile_cutter.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
+    c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
+    c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
     if (!p.branch_position_auto)
-        c.range("steppers.branch_position_mm", p.branch_position_mm, 0, job.main_pipe.length_mm,
-                "mm");
+        c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0,
+                job.main_pipe.length_mm, "mm");
     // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
     if (job.cut.bevel_deg != 0)
         c.add("cut.bevel_deg", "cut.bevel_deg = " + num(job.cut.bevel_deg) +

@@ -4,7 +4,7 @@
 //
 // Its `machine` section: the pipe joint (main_pipe, branch_pipe, angle_deg, eccentricity_mm,
 // cut: target, bevel_deg = 0, speed_mm_s, ramp_s, knot_spacing_mm), other_branches[] and
-// steppers { steps_per_rev_a, pulses_per_step_a, mm_per_pulse_x, max_pulse_rate_hz, pierce_s,
+// profile_cutter { steps_per_rev_a, pulses_per_step_a, mm_per_pulse_x, max_pulse_rate_hz, pierce_s,
 // x_travel_mm, branch_position_mm }.
 #include "core/machine/machine_module.h"
 #include "core/machines/profile_cutter/profile_cutter.h"

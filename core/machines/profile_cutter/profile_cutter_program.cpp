@@ -87,6 +87,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
     const double ramp = cutTime - path.length() / job.cut.speed_mm_s;
     p->cruise_from_s = ramp;
     p->cruise_to_s = cutTime - ramp;
+    p->pierce_s = job.profile_cutter.pierce_s; // as the G-code's G4 after M3
     p->name = job.name;
     p->source_text = jobText.empty() ? json::write(jobToJson(job)) : jobText;
     return p;

@@ -48,7 +48,7 @@ PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec&
             char buf[256];
             snprintfC(buf, sizeof buf,
                       "step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above "
-                      "machine.steppers.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s",
+                      "machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s",
                       i, cut.points[i].beta_deg, std::max(st.x_rate_hz, st.a_rate_hz),
                       st.x_rate_hz >= st.a_rate_hz ? "X" : "A", spec.max_pulse_rate_hz);
             s.problem = buf;

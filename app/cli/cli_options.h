@@ -1,0 +1,85 @@
+#pragma once
+// What each cutcell-cli command was given on its command line, filled by the CLI11 parser of
+// main.cpp (which has already refused unknown options and checked every value against its
+// range). The commands read these structs; none of them looks at argv.
+#include "can_run.h"
+#include "core/engine/realtime_thread.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cutcell::cli {
+
+struct ValidateOptions {
+    std::string job;
+};
+
+struct PlanOptions {
+    std::string job;
+    std::string out; // directory for the machine's plan files
+};
+
+// --devices and the CANopen overrides of simulate and run.
+struct DeviceOptions {
+    std::string devices; // "", "simulated" or "canopen" (empty: the job's devices section)
+    CanRunOptions can;   // --can-plugin, --can-interface, --period-ms, --clock, --drivesim
+};
+
+struct SimulateOptions {
+    std::string job;
+    std::string report; // empty: the report goes to stdout
+    std::string method; // "", "static_pipe" or "rotating_pipe" (empty: the job's method)
+    DeviceOptions devices;
+};
+
+struct BenchOptions {
+    std::string job; // empty: the default job
+    bool json = false;
+    bool quick = false;
+    bool no_engine = false;
+    bool no_can = false;
+    RealtimeSettings rt; // --rt-priority, --rt-cpu, --rt-dma-latency, --no-mlock
+};
+
+struct ExportOptions {
+    std::string job;
+    // One file per export id of the machine's module; empty: not written.
+    std::string gcode, template_svg, template_pdf, path_csv, joints_csv;
+};
+
+struct MachinesOptions {
+    bool json = false;
+};
+
+struct UpgradeOptions {
+    std::string job; // the old (schema 1) job file
+    std::string out; // the schema-2 file, written atomically
+};
+
+struct RunOptions {
+    std::string job;
+    bool realtime = false;
+    bool quiet = false;
+    std::string report; // empty: the report goes to stdout
+    std::string runs;   // empty: the job's engine.runs_dir
+    DeviceOptions devices;
+    RealtimeSettings rt; // --rt-priority, --rt-cpu, --rt-dma-latency, --no-mlock
+};
+
+struct DriveSimOptions {
+    std::string job;                         // empty: the default job
+    std::string nodes_text;                  // --nodes as given (empty: the job's node ids)
+    std::vector<int> nodes;                  // --nodes expanded, ids 1..127
+    std::string plugin;                      // empty: the simulator's default
+    std::string interface;                   // empty: the simulator's default
+    double duration_s = 0;                   // 0: until SIGINT/SIGTERM
+    std::optional<int> fault_node;           // empty: the first simulated node
+    std::optional<std::uint16_t> fault_code; // EMCY code 0x0001..0xFFFF
+    std::optional<double> fault_after_s;     // times in s, [0, 1e6]
+    std::optional<double> heartbeat_stop_after_s;
+    std::optional<double> following_error_after_s;
+};
+
+} // namespace cutcell::cli
