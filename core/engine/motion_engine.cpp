@@ -175,6 +175,7 @@ void MotionEngine::Impl::loggerDrain() {
             }
             runLog->beginRun(e.run_id, p ? p->name : std::string(),
                              p ? p->source_text : std::string());
+            if (p) runLog->setAxisNames(p->axis_names);
         }
         runLog->event(e);
         if (e.kind == EventKind::RunEnded) {

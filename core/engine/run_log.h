@@ -8,6 +8,7 @@
 #include "core/engine/engine_types.h"
 #include "core/sim/tracking_stats.h"
 
+#include <array>
 #include <cstdio>
 #include <string>
 
@@ -22,6 +23,8 @@ class RunLog {
 
     // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
+    // The names of the run's axes for summary.json (set after beginRun).
+    void setAxisNames(const std::array<std::string, kMaxAxes>& names) { names_ = names; }
     void event(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
     void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle);
@@ -34,6 +37,7 @@ class RunLog {
     std::string runsDir_;
     std::string dir_;
     std::FILE* file_ = nullptr;
+    std::array<std::string, kMaxAxes> names_{};
 };
 
 } // namespace cutcell

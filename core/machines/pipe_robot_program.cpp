@@ -9,7 +9,7 @@ namespace cutcell {
 
 Vec3 PipeRobotTipModel::tip(const JointVector& q) const {
     // The same expression as TrackingStats' pipe-robot path, so figures agree bit for bit.
-    return robot_.forward(q.tail<kArmJointCount>()).translation();
+    return robot_.forward(q.segment<kArmJointCount>(1)).translation();
 }
 
 Vec3 PipeRobotTipModel::tipOnWork(const JointVector& q, const Vec3& tipBase) const {

@@ -1,5 +1,6 @@
 #include "core/sim/tracking_stats.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cutcell {
@@ -21,10 +22,10 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
     sumSq_ += e.cwiseProduct(e);
     ++n_;
     if (!robot_ && !model_) return;
-    const Vec3 tipCmd = robot_ ? robot_->forward(commanded.tail<kArmJointCount>()).translation()
+    const Vec3 tipCmd = robot_ ? robot_->forward(commanded.segment<kArmJointCount>(1)).translation()
                                : model_->tip(commanded);
     const Vec3 tipAct =
-        robot_ ? robot_->forward(actual.tail<kArmJointCount>()).translation() : model_->tip(actual);
+        robot_ ? robot_->forward(actual.segment<kArmJointCount>(1)).translation() : model_->tip(actual);
     lastCart_ = tipAct - tipCmd;
     cartMin_ = cartMin_.cwiseMin(lastCart_);
     cartMax_ = cartMax_.cwiseMax(lastCart_);
@@ -37,7 +38,7 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
 }
 
 void TrackingStats::fill(TrackingReport& r) const {
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kMaxAxes; ++i) {
         r.joints[static_cast<size_t>(i)].max_abs_deg = rad2deg(maxAbs_[i]);
         r.joints[static_cast<size_t>(i)].rms_deg =
             n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
@@ -64,18 +65,27 @@ json::Value xyz(const Vec3& v) {
 }
 } // namespace
 
-json::Value reportToJson(const TrackingReport& r) {
+json::Value reportToJson(const TrackingReport& r, const std::array<std::string, kMaxAxes>* names) {
     json::Array joints, cruise;
-    for (int i = 0; i < kAxisCount; ++i) {
-        const auto& j = r.joints[static_cast<size_t>(i)];
-        joints.emplace_back(
-            json::Object{{"axis", i},
-                         {"name", i == 0 ? "chuck (theta0)" : "theta" + std::to_string(i)},
-                         {"max_abs_error_deg", j.max_abs_deg},
-                         {"rms_error_deg", j.rms_deg}});
-        const auto& c = r.cruise_joints[static_cast<size_t>(i)];
-        cruise.emplace_back(json::Object{
-            {"axis", i}, {"max_abs_error_deg", c.max_abs_deg}, {"rms_error_deg", c.rms_deg}});
+    const int n = std::clamp(r.axis_count, 0, kMaxAxes);
+    for (int i = 0; i < n; ++i) {
+        const auto a = static_cast<size_t>(i);
+        const bool linear = r.axis_linear[a];
+        // Linear axes: the stats hold rad2deg of mm; undo it (the profile cutter's figures).
+        auto value = [linear](double deg) { return linear ? deg2rad(deg) : deg; };
+        const std::string maxKey = linear ? "max_abs_error_mm" : "max_abs_error_deg";
+        const std::string rmsKey = linear ? "rms_error_mm" : "rms_error_deg";
+        const std::string name = names && !(*names)[a].empty() ? (*names)[a]
+                                 : i == 0                      ? "chuck (theta0)"
+                                                               : "theta" + std::to_string(i);
+        const auto& j = r.joints[a];
+        joints.emplace_back(json::Object{{"axis", i},
+                                         {"name", name},
+                                         {maxKey, value(j.max_abs_deg)},
+                                         {rmsKey, value(j.rms_deg)}});
+        const auto& c = r.cruise_joints[a];
+        cruise.emplace_back(
+            json::Object{{"axis", i}, {maxKey, value(c.max_abs_deg)}, {rmsKey, value(c.rms_deg)}});
     }
     return json::Object{
         {"method", r.method},
