@@ -48,7 +48,7 @@ class AxisDrive {
     // Per cycle: now_s is the engine's clock (simulated or real time).
     virtual DriveFeedback read(double now_s) = 0;
     // Per cycle, the command of the drive's mode (exactly one of the three is called).
-    virtual void write(double targetPosition) = 0; // CSP
+    virtual void write(double targetPosition) = 0;                              // CSP
     virtual void writeVelocity(double targetVelocity) { (void)targetVelocity; } // CSV
     virtual void writeTorque(double targetTorque) { (void)targetTorque; }       // CST
     // The command mode is chosen before the run, outside the cycle (a CANopen drive writes

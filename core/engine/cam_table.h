@@ -53,8 +53,8 @@ inline std::string camTableProblem(const CamTable& t) {
             return "cam table: slave[" + std::to_string(i) + "] is not a number";
     if (std::fabs(t.slave[0] - t.slave[static_cast<size_t>(t.count - 1)]) > 1e-9)
         return "cam table: a periodic table must end where it starts (slave[0] = " +
-               std::to_string(t.slave[0]) + ", slave[last] = " +
-               std::to_string(t.slave[static_cast<size_t>(t.count - 1)]) + ")";
+               std::to_string(t.slave[0]) +
+               ", slave[last] = " + std::to_string(t.slave[static_cast<size_t>(t.count - 1)]) + ")";
     return {};
 }
 

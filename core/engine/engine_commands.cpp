@@ -130,8 +130,8 @@ void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
     torchCommand = false;
     if (dev.torch) dev.torch->setOn(false); // at once, not at the cycle's write
     torchWritten = false;
-    const bool moving = traj == TrajectoryKind::Source ? !sourceAtRest
-                                                       : traj != TrajectoryKind::Hold && rate > 0;
+    const bool moving =
+        traj == TrajectoryKind::Source ? !sourceAtRest : traj != TrajectoryKind::Hold && rate > 0;
     if (category == StopCategory::Cat0 || !moving) {
         disableAll();
     } else {

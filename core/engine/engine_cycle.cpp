@@ -123,8 +123,7 @@ void MotionEngine::Impl::advance() {
 }
 
 void MotionEngine::Impl::stepRunning() {
-    if (state == EngineState::Running && holding && restReached() &&
-        stopping == StopReason::None) {
+    if (state == EngineState::Running && holding && restReached() && stopping == StopReason::None) {
         setState(EngineState::Paused, EventKind::Transition,
                  "Paused on the path at %.3f s (torch %s)", tau, torchCommand ? "lit" : "off");
         return;
@@ -296,13 +295,11 @@ void MotionEngine::Impl::runSource() {
     if (traj == TrajectoryKind::Source) {
         setpoint = srcOut.position;
         setpointVel = srcOut.velocity;
-        sourceAtRest =
-            srcOut.status == SourceStatus::AtRest || srcOut.status == SourceStatus::Done;
+        sourceAtRest = srcOut.status == SourceStatus::AtRest || srcOut.status == SourceStatus::Done;
         // The source switches its tool; held at rest, torch_on_during_feed_hold keeps it on.
-        const bool keepOn = holding && sourceAtRest && cfg.spec.torch_on_during_feed_hold &&
-                            torchCommand;
-        if (phase == RunPhase::Cut)
-            torchCommand = program->uses_tool && (srcOut.tool_on || keepOn);
+        const bool keepOn =
+            holding && sourceAtRest && cfg.spec.torch_on_during_feed_hold && torchCommand;
+        if (phase == RunPhase::Cut) torchCommand = program->uses_tool && (srcOut.tool_on || keepOn);
     } else if (law) {
         // Tracking a move: the law's reference is the engine's set-point.
         setpoint = srcOut.position;
@@ -393,8 +390,7 @@ void MotionEngine::Impl::superviseDevices() {
     if (dev.torch && torchCommand && arcWasOk && !torchFb.process_ok) {
         if (isSourceProgram())
             return enterFault("process tool: process lost (%s, %u of %u)",
-                              program->source->stateName(), srcOut.point_index,
-                              srcOut.point_count);
+                              program->source->stateName(), srcOut.point_index, srcOut.point_count);
         const std::uint32_t point =
             program ? static_cast<std::uint32_t>(tau / program->spline.dt()) : 0;
         return enterFault("torch: arc lost at point %u of %zu (path time %.3f s)", point,
@@ -435,9 +431,8 @@ void MotionEngine::Impl::writeDevices() {
             d->writeVelocity(moving || stopping != StopReason::None ? setpointVel[i] : 0.0);
             break;
         case AxisCommandMode::Torque:
-            d->writeTorque(torqueOn || (sourceRan && stopping != StopReason::None)
-                               ? srcOut.torque[i]
-                               : 0.0);
+            d->writeTorque(
+                torqueOn || (sourceRan && stopping != StopReason::None) ? srcOut.torque[i] : 0.0);
             break;
         }
     }
@@ -458,7 +453,7 @@ void MotionEngine::Impl::publishTelemetry() {
         t.units[a] = program && program->axis_linear[a] ? AxisUnit::Linear : AxisUnit::Rotary;
         t.modes[a] = mode(i);
         t.supervised[a] = supervisedNow[a];
-        t.command[i] = t.modes[a] == AxisCommandMode::Torque     ? (sourceRan ? srcOut.torque[i] : 0)
+        t.command[i] = t.modes[a] == AxisCommandMode::Torque ? (sourceRan ? srcOut.torque[i] : 0)
                        : t.modes[a] == AxisCommandMode::Velocity ? setpointVel[i]
                                                                  : setpoint[i];
     }

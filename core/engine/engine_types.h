@@ -80,10 +80,10 @@ struct TelemetrySample {
     JointVector actual = JointVector::Zero();
     JointVector error = JointVector::Zero(); // setpoint - actual
     JointVector command = JointVector::Zero();
-    double master_position = 0;              // MasterAxis source: the filtered master
-    std::array<char, 24> source_state{};     // MasterAxis / ControlLaw: e.g. "in sync"
-    Vec3 cartesian_error_mm = Vec3::Zero();  // FK(actual) - FK(setpoint)
-    double progress = 0;                     // 0..1 of the cut's length
+    double master_position = 0;             // MasterAxis source: the filtered master
+    std::array<char, 24> source_state{};    // MasterAxis / ControlLaw: e.g. "in sync"
+    Vec3 cartesian_error_mm = Vec3::Zero(); // FK(actual) - FK(setpoint)
+    double progress = 0;                    // 0..1 of the cut's length
     std::uint32_t point_index = 0;
     std::uint32_t point_count = 0;
     double elapsed_s = 0;

@@ -38,10 +38,10 @@ enum class CouplingKind : std::uint8_t { None, Gear, Cam };
 
 struct AxisCoupling {
     CouplingKind kind = CouplingKind::None;
-    double ratio = 1;       // Gear: slave units per master unit
-    double slave_sync = 0;  // Gear: slave position at the sync position of the master
-    double cam_offset = 0;  // Cam: added to the table's value
-    int cam = 0;            // Cam: which table (0 .. kMaxCams - 1)
+    double ratio = 1;      // Gear: slave units per master unit
+    double slave_sync = 0; // Gear: slave position at the sync position of the master
+    double cam_offset = 0; // Cam: added to the table's value
+    int cam = 0;           // Cam: which table (0 .. kMaxCams - 1)
 };
 
 enum class SyncState : std::uint8_t { Waiting, Synchronizing, InSync, Returning, Stopping, Done };
@@ -54,7 +54,7 @@ struct MasterFollowerConfig {
     double filter_beta = 0; // 0: Benedict-Bordner from alpha
     std::array<AxisCoupling, kMaxAxes> couplings{};
     JointVector wait_position = JointVector::Zero(); // also the program's start position
-    double first_sync = 0;      // S_0, master units
+    double first_sync = 0;                           // S_0, master units
     double cut_length = 0;      // S_{k+1} - S_k (master units); 0 = a single cycle
     double start_distance = 50; // D: master travel of the sync-in
     double sync_span = 0;       // master travel in sync per cut; 0 = until the program ends

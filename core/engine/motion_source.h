@@ -61,8 +61,8 @@ struct SourceOutput {
     const char* unsupervised_reason = ""; // static text
     bool tool_on = false;
     SourceStatus status = SourceStatus::Working;
-    const char* fault = ""; // static text when status == Fault
-    double progress = 0;    // 0..1 of the program
+    const char* fault = "";     // static text when status == Fault
+    double progress = 0;        // 0..1 of the program
     double master_position = 0; // MasterAxis: the filtered master (telemetry)
     std::uint32_t point_index = 0, point_count = 0;
 };

@@ -123,9 +123,11 @@ void PdSliderLaw::update(const SourceInput& in, SourceOutput& out) {
             force = pd(xRef, 0, x, v);
             break;
         }
-        if (phase_ == SliderPhase::Done) out.status = SourceStatus::Done;
-        else if (!run && (phase_ == SliderPhase::Braking ||
-                          (phase_ == SliderPhase::Catch && restCount_ >= cfg_.rest_cycles)) &&
+        if (phase_ == SliderPhase::Done)
+            out.status = SourceStatus::Done;
+        else if (!run &&
+                 (phase_ == SliderPhase::Braking ||
+                  (phase_ == SliderPhase::Catch && restCount_ >= cfg_.rest_cycles)) &&
                  restCount_ >= cfg_.rest_cycles)
             out.status = SourceStatus::AtRest;
     }

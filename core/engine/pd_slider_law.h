@@ -19,10 +19,10 @@
 namespace cutcell {
 
 struct PdSliderLawConfig {
-    int axis = 0;   // the torque-mode axis
-    int sensor = 0; // its linear position sensor
-    double kp = 50, kd = 1;  // N/mm, N s/mm
-    double force_limit = 500; // N
+    int axis = 0;                                                // the torque-mode axis
+    int sensor = 0;                                              // its linear position sensor
+    double kp = 50, kd = 1;                                      // N/mm, N s/mm
+    double force_limit = 500;                                    // N
     double stroke_from = 0, stroke_to = 200, stroke_speed = 100; // mm, mm/s
     double return_force = -50;                                   // N
     double catch_distance = 40, catch_window = 0.5;              // mm

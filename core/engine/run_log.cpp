@@ -88,8 +88,8 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                        {"telemetry_dropped", static_cast<double>(c.telemetry_dropped)},
                        {"events_dropped", static_cast<double>(c.events_dropped)},
                        {"last_estop_latency_us", c.last_estop_latency_us}};
-    const json::Value doc(
-        json::Object{{"outcome", outcome}, {"tracking", reportToJson(report, &names_)}, {"cycle", cycle}});
+    const json::Value doc(json::Object{
+        {"outcome", outcome}, {"tracking", reportToJson(report, &names_)}, {"cycle", cycle}});
     try {
         writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));
     } catch (const std::exception&) {

@@ -24,8 +24,8 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual)
     if (!robot_ && !model_) return;
     const Vec3 tipCmd = robot_ ? robot_->forward(commanded.segment<kArmJointCount>(1)).translation()
                                : model_->tip(commanded);
-    const Vec3 tipAct =
-        robot_ ? robot_->forward(actual.segment<kArmJointCount>(1)).translation() : model_->tip(actual);
+    const Vec3 tipAct = robot_ ? robot_->forward(actual.segment<kArmJointCount>(1)).translation()
+                               : model_->tip(actual);
     lastCart_ = tipAct - tipCmd;
     cartMin_ = cartMin_.cwiseMin(lastCart_);
     cartMax_ = cartMax_.cwiseMax(lastCart_);

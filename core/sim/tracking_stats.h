@@ -30,7 +30,7 @@ struct TrackingReport {
     double simulated_s = 0;
     long steps = 0;
     double max_direction_deviation_deg = 0;
-    int axis_count = kAxisCount;               // axes in joints / cruise_joints
+    int axis_count = kAxisCount;              // axes in joints / cruise_joints
     std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
     std::array<AxisErrorStats, kMaxAxes> joints{};
     Vec3 cartesian_max_abs_mm = Vec3::Zero(); // tip, base frame

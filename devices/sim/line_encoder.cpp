@@ -36,8 +36,8 @@ SensorReading LineEncoder::read(double now_s) {
         speed *= 1 - cfg_.slip_fraction;
     }
     SensorReading r;
-    r.position = cfg_.start_mm + std::floor(travel * cfg_.counts_per_mm + 0.5) / cfg_.counts_per_mm +
-                 noise();
+    r.position = cfg_.start_mm +
+                 std::floor(travel * cfg_.counts_per_mm + 0.5) / cfg_.counts_per_mm + noise();
     r.velocity = speed;
     r.valid = !invalid_.load(std::memory_order_relaxed);
     return r;

@@ -13,7 +13,7 @@ TorchFeedback SimulatedTorch::read(double now_s) {
     fb.on = on_;
     fb.fault_code = fault_.load(std::memory_order_relaxed);
     fb.process_ok = on_ && now_s - onSince_ + 1e-9 >= ignitionDelay_ &&
-                !arcLost_.load(std::memory_order_relaxed) && fb.fault_code == 0;
+                    !arcLost_.load(std::memory_order_relaxed) && fb.fault_code == 0;
     return fb;
 }
 

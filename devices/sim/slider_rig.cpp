@@ -5,8 +5,8 @@ namespace cutcell {
 namespace {
 SimulatedTorqueDriveConfig sliderDrive(const SliderRigOptions& o) {
     SimulatedTorqueDriveConfig c;
-    c.plant.inertia_kg_m2 = 0.005;         // 5 kg in N / (mm/s^2)
-    c.plant.viscous_nm_s_per_rad = 0.02;   // N s/mm
+    c.plant.inertia_kg_m2 = 0.005;               // 5 kg in N / (mm/s^2)
+    c.plant.viscous_nm_s_per_rad = 0.02;         // N s/mm
     c.plant.torque_limit_nm = o.law.force_limit; // N
     c.period_s = o.period_s;
     c.initial_position = o.law.stroke_from;

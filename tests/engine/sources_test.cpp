@@ -265,10 +265,12 @@ TEST(MasterSource, FeedHoldFinishesTheCutReturnsAndStopsWaiting) {
     EXPECT_EQ(run.samples.back().setpoint[0], o.follower.wait_position[0]) << "returned";
     EXPECT_FALSE(cell.rig.saw().isOn()) << "the saw stops while held";
     // Held: the line passes the next sync position without the carriage moving.
-    run.until(*cell.engine, [] { return false; }, 2000);
+    run.until(
+        *cell.engine, [] { return false; }, 2000);
     const double parked = cell.rig.carriage().truePosition();
     EXPECT_NEAR(parked, o.follower.wait_position[0], 1e-3);
-    run.until(*cell.engine, [] { return false; }, 4000);
+    run.until(
+        *cell.engine, [] { return false; }, 4000);
     EXPECT_GT(cell.rig.line().linePosition(run.samples.back().time_s),
               f.syncPosition() - o.follower.start_distance);
     EXPECT_EQ(cell.engine->state(), EngineState::Paused);
