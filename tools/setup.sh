@@ -20,6 +20,7 @@ packages=(
   poppler-utils linuxcnc-uspace
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
   nodejs
+  nlohmann-json3-dev locales
 )
 # npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
 command -v npm >/dev/null || packages+=(npm)
@@ -36,6 +37,12 @@ if ((${#missing[@]})); then
   fi
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The locale tests run the writers under a decimal-comma locale (skipped without it).
+if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
+  echo "== generating the de_DE.UTF-8 locale"
+  ${sudo:-$([ "$(id -u)" -ne 0 ] && echo sudo)} localedef -i de_DE -f UTF-8 de_DE.UTF-8
 fi
 
 jobs=2

@@ -1,6 +1,6 @@
 #pragma once
 // File exports of the cut for the shop floor, as `cutcell-cli export`: the profile cutter's
-// G-code (X/A, machine "profile_cutter_2axis" only) and the wrap-around cutting template
+// G-code (X/A, the profile cutter machine only) and the wrap-around cutting template
 // (SVG or PDF, 1:1, any machine). Files are written atomically (writeFileAtomically); errors
 // name the file.
 //

@@ -1,8 +1,9 @@
 #include "ui/machine_plan.h"
 
-#include "core/machines/pipe_robot_program.h"
-#include "core/machines/profile_cutter.h"
-#include "core/machines/profile_cutter_program.h"
+#include "core/machine/machine_registry.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -17,10 +18,13 @@ cutcell::CutPlan planProfileCutter(const cutcell::Job& job) {
     cutcell::CutPlan plan;
     plan.method = job.method;
     try {
-        const cutcell::ProfileCut cut = cutcell::computeProfileCut(job);
-        plan.problem = cutcell::travelProblem(job, cut);
-        if (!plan.problem.empty()) return plan; // reachable stays false
-        const auto program = cutcell::buildProfileCutterProgram(job);
+        // The module's plan: the same feasibility checks (travel, pulse rates) as the CLI.
+        const cutcell::MachinePlan mp = cutcell::machineFor(job).plan(job, {});
+        if (!mp.ok()) {
+            plan.problem = mp.problem;
+            return plan; // reachable stays false
+        }
+        const auto& program = mp.program;
         plan.length_mm = program->length_mm;
         plan.cut_time_s = program->cut_time_s;
         plan.knot_dt_s =

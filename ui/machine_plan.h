@@ -8,6 +8,7 @@
 // Threading contract: pure functions of their arguments; callable from any thread.
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <memory>
@@ -15,7 +16,7 @@
 
 namespace CutCell::ui {
 
-inline constexpr const char* kProfileCutterMachine = "profile_cutter_2axis";
+inline constexpr const char* kProfileCutterMachine = cutcell::kProfileCutterId;
 
 bool isProfileCutterJob(const cutcell::Job& job);
 

@@ -10,7 +10,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 

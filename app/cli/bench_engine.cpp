@@ -8,7 +8,7 @@
 
 #include "core/engine/host_latency.h"
 #include "core/engine/motion_engine.h"
-#include "core/machines/pipe_robot_program.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/trajectory/cut_planner.h"
 #include "devices/sim/follower_rig.h"
 #include "devices/sim/simulated_drive.h"

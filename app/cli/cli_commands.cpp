@@ -1,9 +1,8 @@
 #include "cli_commands.h"
 
-#include "core/io/plan_csv.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "core/sim/cut_simulation.h"
+#include "core/machine/machine_registry.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <cstdio>
@@ -39,9 +38,18 @@ int emitReport(const std::string& reportFile, const std::string& text, const cha
 
 namespace {
 
-void printUnreachable(const CutPlan& plan) {
-    std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method),
-                 plan.problem.c_str());
+// The job's machine module and its plan; false (and *code) when the job cannot be planned.
+bool planJob(const Job& job, const std::string& jobText, const MachineModule** module,
+             MachinePlan* plan, int* code) {
+    *module = &machineFor(job);
+    try {
+        *plan = (*module)->plan(job, jobText);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "invalid job: %s\n", e.what());
+        *code = kInvalidJob;
+        return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -50,17 +58,15 @@ int runValidate(const ValidateOptions& o) {
     Job job;
     int code = kOk;
     if (!loadJobArg(o.job, job, &code)) return code;
-    if (job.machine == "profile_cutter_2axis") return runProfileValidate(job);
-    const CutPlan plan = planCut(job);
-    std::printf("job '%s' is valid: %s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)\n",
-                job.name.c_str(), toString(job.method), toString(job.cut.target), plan.length_mm,
-                job.cut.speed_mm_s, plan.cut_time_s);
-    if (!plan.reachable) {
-        printUnreachable(plan);
+    const MachineModule* module = nullptr;
+    MachinePlan plan;
+    if (!planJob(job, {}, &module, &plan, &code)) return code;
+    std::printf("job '%s' is valid: %s, %s\n", job.name.c_str(), module->id().c_str(),
+                plan.summary.c_str());
+    if (!plan.ok()) {
+        std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
-    std::printf("every point is reachable; largest torch tilt into the joint-1 plane: %.3f deg\n",
-                plan.max_deviation_deg);
     return kOk;
 }
 
@@ -69,20 +75,22 @@ int runPlan(const PlanOptions& o) {
     int code = kOk;
     if (!loadJobArg(o.job, job, &code)) return code;
     const std::string& out = o.out;
-    if (job.machine == "profile_cutter_2axis") return runProfilePlan(job, out);
-    const CutPlan plan = planCut(job);
-    if (!plan.reachable) {
-        printUnreachable(plan);
+    const MachineModule* module = nullptr;
+    MachinePlan plan;
+    if (!planJob(job, {}, &module, &plan, &code)) return code;
+    if (!plan.ok()) {
+        std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
     try {
         std::filesystem::create_directories(out);
-        const std::string pathFile = (std::filesystem::path(out) / "path.csv").string();
-        const std::string jointsFile = (std::filesystem::path(out) / "joints.csv").string();
-        writeFileAtomically(pathFile, pathCsv(plan));
-        writeFileAtomically(jointsFile, jointsCsv(plan, job.sim.period_s));
-        std::printf("wrote %s (%zu points) and %s (%.3f s at %.4f s)\n", pathFile.c_str(),
-                    plan.knots.size(), jointsFile.c_str(), plan.cut_time_s, job.sim.period_s);
+        for (const ExportInfo& e : module->exports()) {
+            if (!e.plan_file) continue;
+            const std::string file = (std::filesystem::path(out) / e.default_name).string();
+            const std::string text = module->exportFile(e.id, job, plan);
+            writeFileAtomically(file, text);
+            std::printf("wrote %s (%s, %zu bytes)\n", file.c_str(), e.title.c_str(), text.size());
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "cutcell-cli plan: %s\n", e.what());
         return kFailure;
@@ -94,49 +102,48 @@ int runSimulate(const SimulateOptions& o) {
     Job job;
     int code = kOk;
     if (!loadJobArg(o.job, job, &code)) return code;
-    if (job.machine != "pipe_robot_6axis") {
-        std::fprintf(stderr,
-                     "cutcell-cli simulate: the report is for the pipe robot; machine \"%s\" "
-                     "runs in the engine: cutcell-cli run JOB\n",
-                     job.machine.c_str());
-        return kUsage;
+    const MachineModule& module = machineFor(job);
+    // main.cpp has checked --devices against its choices; the module checks --method.
+    if (!o.method.empty()) {
+        std::string error;
+        if (!module.setVariant(job, o.method, &error)) {
+            std::fprintf(stderr, "cutcell-cli simulate: %s\n", error.c_str());
+            return kUsage;
+        }
     }
-    // main.cpp has checked --method and --devices against their choices.
-    if (o.method == "static_pipe")
-        job.method = CutMethod::StaticPipe;
-    else if (o.method == "rotating_pipe")
-        job.method = CutMethod::RotatingPipe;
-    const CutPlan plan = planCut(job);
-    if (!plan.reachable) {
-        printUnreachable(plan);
+    const MachineModule* m = nullptr;
+    MachinePlan plan;
+    if (!planJob(job, {}, &m, &plan, &code)) return code;
+    if (!plan.ok()) {
+        std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
     const std::string& devices = o.devices.devices;
     if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
+        std::string why;
+        if (!module.supportsCanOpen(&why)) {
+            std::fprintf(stderr, "cutcell-cli simulate --devices canopen: %s\n", why.c_str());
+            return kInvalidJob;
+        }
 #ifdef CUTCELL_HAVE_DEVICES
-        return runSimulateCan(job, plan, o);
+        // The offline CAN cut follows the robot's CutPlan (the only CAN machine so far).
+        // TODO(modules): run it from plan.program like the engine path, for every machine.
+        return runSimulateCan(job, *static_cast<const CutPlan*>(plan.data.get()), o);
 #else
         std::fprintf(stderr,
                      "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");
         return kFailure;
 #endif
     }
-    const TrackingReport report = simulateCut(job, plan);
-    const std::string text = json::write(reportToJson(report));
+    std::string text, table, why;
+    if (!module.offlineReport(job, plan, &text, &table, &why)) {
+        std::fprintf(stderr, "cutcell-cli simulate: %s\n", why.c_str());
+        return kUsage;
+    }
     const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc;
-    std::printf("%s method, %.1f s simulated at %.4f s: report written to %s\n",
-                report.method.c_str(), report.simulated_s, job.sim.period_s, reportFile.c_str());
-    std::printf("%-16s %14s %14s\n", "axis", "max |e| (deg)", "rms (deg)");
-    for (int i = 0; i < kAxisCount; ++i)
-        std::printf("%-16s %14.6f %14.6f\n",
-                    i == 0 ? "0 chuck" : ("" + std::to_string(i) + " arm").c_str(),
-                    report.joints[static_cast<size_t>(i)].max_abs_deg,
-                    report.joints[static_cast<size_t>(i)].rms_deg);
-    std::printf("tip error (mm), base frame: x %.6f  y %.6f  z %.6f\n",
-                report.cartesian_max_abs_mm.x(), report.cartesian_max_abs_mm.y(),
-                report.cartesian_max_abs_mm.z());
+    std::printf("report written to %s\n%s", reportFile.c_str(), table.c_str());
     return kOk;
 }
 

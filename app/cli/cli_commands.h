@@ -19,14 +19,11 @@ int runPlan(const PlanOptions& o);
 int runSimulate(const SimulateOptions& o);
 int runBench(const BenchOptions& o);
 int runExport(const ExportOptions& o);
-// validate / plan of a job with machine = "profile_cutter_2axis" (app/cli/export_command.cpp).
-int runProfileValidate(const Job& job);
-int runProfilePlan(const Job& job, const std::string& outDir);
+int runMachines(const MachinesOptions& o); // machines_command.cpp
+int runUpgrade(const UpgradeOptions& o);   // machines_command.cpp
 int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const DriveSimOptions& o); // drivesim_command.cpp
 int runSimulateCan(const Job& job, const CutPlan& plan, const SimulateOptions& o); // can_run.cpp
-int runProfileRun(const Job& job, const std::string& jobText,
-                  const RunOptions& o); // profile_run_command.cpp
 
 // Loads the job file; on failure prints the reason and sets *code (kInvalidJob: a bad job
 // file, kFailure: it cannot be read).

@@ -18,7 +18,7 @@ struct ValidateOptions {
 
 struct PlanOptions {
     std::string job;
-    std::string out; // directory for path.csv and joints.csv
+    std::string out; // directory for the machine's plan files
 };
 
 // --devices and the CANopen overrides of simulate and run.
@@ -45,7 +45,17 @@ struct BenchOptions {
 
 struct ExportOptions {
     std::string job;
-    std::string gcode, template_svg, template_pdf, path_csv; // empty: not written
+    // One file per export id of the machine's module; empty: not written.
+    std::string gcode, template_svg, template_pdf, path_csv, joints_csv;
+};
+
+struct MachinesOptions {
+    bool json = false;
+};
+
+struct UpgradeOptions {
+    std::string job; // the old (schema 1) job file
+    std::string out; // the schema-2 file, written atomically
 };
 
 struct RunOptions {

@@ -24,6 +24,8 @@ struct AllOptions {
     ExportOptions exportFiles;
     RunOptions run;
     DriveSimOptions drivesim;
+    MachinesOptions machines;
+    UpgradeOptions upgrade;
 };
 
 struct Command {
@@ -74,14 +76,14 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                              [&] { return runValidate(o.validate); });
     addJob(*validate, o.validate.job);
 
-    CLI::App* plan = add("plan", "write DIR/path.csv and DIR/joints.csv (profile cutter: path.csv)",
-                         [&] { return runPlan(o.plan); });
+    CLI::App* plan =
+        add("plan", "write the machine's plan files into DIR (path.csv, joints.csv, ...)",
+            [&] { return runPlan(o.plan); });
     addJob(*plan, o.plan.job);
     plan->add_option("--out", o.plan.out, "output directory")->type_name("DIR")->required();
 
     CLI::App* simulate =
-        add("simulate",
-            "simulate the pipe robot's cut: JSON tracking report (also over CANopen drives)",
+        add("simulate", "simulate the cut offline: JSON tracking report (also over CANopen drives)",
             [&] { return runSimulate(o.simulate); });
     addJob(*simulate, o.simulate.job);
     simulate->add_option("--report", o.simulate.report, "write the report here (default: stdout)")
@@ -100,9 +102,10 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     bench->add_flag("--no-can", o.bench.no_can, "skip the CANopen figures");
     addRealtimeOptions(*bench, o.bench.rt);
 
-    CLI::App* exportCmd = add(
-        "export", "profile cutter: G-code (LinuxCNC X/A), 1:1 cutting template, path with pulses",
-        [&] { return runExport(o.exportFiles); });
+    CLI::App* exportCmd = add("export",
+                              "write the files the job's machine offers ('cutcell-cli machines' "
+                              "lists them)",
+                              [&] { return runExport(o.exportFiles); });
     addJob(*exportCmd, o.exportFiles.job);
     exportCmd->add_option("--gcode", o.exportFiles.gcode, "LinuxCNC G-code, axes X/A")
         ->type_name("FILE");
@@ -112,7 +115,21 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
         ->type_name("FILE");
     exportCmd->add_option("--path-csv", o.exportFiles.path_csv, "path with stepper pulses (CSV)")
         ->type_name("FILE");
+    exportCmd->add_option("--joints-csv", o.exportFiles.joints_csv, "joint trajectory (CSV)")
+        ->type_name("FILE");
     exportCmd->footer("Give at least one of the files.");
+
+    CLI::App* machinesCmd =
+        add("machines", "list every machine: id, title, axes (unit, limits, command), exports",
+            [&] { return runMachines(o.machines); });
+    machinesCmd->add_flag("--json", o.machines.json, "print the list as JSON");
+
+    CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
+                            [&] { return runUpgrade(o.upgrade); });
+    addJob(*upgrade, o.upgrade.job);
+    upgrade->add_option("--out", o.upgrade.out, "the schema-2 job file (written atomically)")
+        ->type_name("FILE")
+        ->required();
 
 #ifdef CUTCELL_HAVE_DEVICES
     CLI::App* run = add("run",

@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#include <clocale>
 #include <cstdlib>
 #include <memory>
 
@@ -18,7 +19,11 @@ inline std::unique_ptr<QCoreApplication> ensureQCoreApplication() {
     static int argc = 1;
     static char name[] = "cutcell-cli";
     static char* argv[] = {name, nullptr};
-    return std::make_unique<QCoreApplication>(argc, argv);
+    auto app = std::make_unique<QCoreApplication>(argc, argv);
+    // QCoreApplication sets LC_ALL from the environment; the CLI's messages keep the decimal
+    // point (the files go through core/common/c_format.h anyway).
+    std::setlocale(LC_NUMERIC, "C");
+    return app;
 }
 
 } // namespace cutcell::cli

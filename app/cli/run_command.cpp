@@ -6,10 +6,9 @@
 #include "core/engine/run_log.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "core/machines/pipe_robot_program.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_registry.h"
+#include "devices/machines/sim_rig_registry.h"
 #include "devices/process/safe_shutdown.h"
-#include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
 
 #include "can_devices.h"
@@ -83,52 +82,61 @@ int runRun(const RunOptions& o) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
         return std::filesystem::exists(o.job) ? kInvalidJob : kFailure; // 1: cannot be read
     }
-    if (job.machine == "profile_cutter_2axis") return runProfileRun(job, text, o);
     bool realtime = o.realtime;
     const bool quiet = o.quiet;
     if (!o.runs.empty()) job.engine.runs_dir = o.runs;
     RealtimeSettings rtSettings = o.rt; // the engine thread's set-up (with --realtime or CANopen)
 
-    const CutPlan plan = planCut(job);
-    if (!plan.reachable) {
-        std::fprintf(stderr, "path not reachable (%s method): %s\n", toString(plan.method),
-                     plan.problem.c_str());
+    // Every machine goes the same way: its module plans, its rig (or CANopen) drives.
+    const MachineModule& module = machineFor(job);
+    MachinePlan plan;
+    try {
+        plan = module.plan(job, text);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "invalid job: %s\n", e.what());
+        return kInvalidJob;
+    }
+    if (!plan.ok()) {
+        std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
-    const auto program = buildPipeRobotProgram(job, plan, text);
+    const auto program = plan.program;
 
-    std::vector<std::unique_ptr<SimulatedDrive>> drives;
     EngineDevices devices;
+    EngineConfig config;
+    config.period_s = job.sim.period_s;
     // CANopen drives (the job's devices section or --devices canopen): always real time.
     const bool overCan = usesCanOpen(o.devices.devices, job);
+    if (std::string noCan; overCan && !module.supportsCanOpen(&noCan)) {
+        std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", noCan.c_str());
+        return kInvalidJob;
+    }
     const CanRunOptions& canOptions = o.devices.can;
     // Any ending (signal, std::terminate) first stops the torch and disables the drives.
     SafeShutdown::install();
     CanEngineDevices can;
+    SimulatedTorch canTorch; // the torch is simulated on the CAN path as well
+    std::unique_ptr<MachineSimRig> rig;
     std::string canError;
-    if (overCan && !can.start(job, canOptions, &canError)) {
-        std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
-        return kFailure;
-    }
-    for (int i = 0; overCan && i < kAxisCount; ++i)
-        devices.axes[static_cast<size_t>(i)] = can.axis(i);
-    for (int i = 0; !overCan && i < kAxisCount; ++i) {
-        SimulatedDriveConfig dc;
-        dc.gains = job.controller[static_cast<size_t>(i)];
-        dc.plant = job.plant[static_cast<size_t>(i)];
-        dc.period_s = job.sim.period_s;
-        dc.initial_position = program->reference[i];
-        drives.push_back(std::make_unique<SimulatedDrive>(dc));
-        devices.axes[static_cast<size_t>(i)] = drives.back().get();
-    }
-    SimulatedTorch torch;
-    devices.torch = &torch;
-
-    EngineConfig config;
-    config.period_s = job.sim.period_s;
     if (overCan) {
+        if (!can.start(job, canOptions, &canError)) {
+            std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
+            return kFailure;
+        }
+        for (int i = 0; i < kAxisCount; ++i)
+            devices.axes[static_cast<size_t>(i)] = can.axis(i);
+        devices.torch = &canTorch;
         can.tune(config, job);
         realtime = true;
+    } else {
+        std::string error;
+        rig = makeSimulatedRig(job, *program, &error);
+        if (!rig) {
+            std::fprintf(stderr, "cutcell-cli run: %s\n", error.c_str());
+            return kFailure;
+        }
+        devices = rig->devices();
+        rig->configure(config);
     }
     config.clock = realtime ? ClockMode::RealTime : ClockMode::AsFastAsPossible;
     config.spec = job.engine;
@@ -151,7 +159,7 @@ int runRun(const RunOptions& o) {
     });
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.
-    const double budget_s = 60 + 2 * plan.cut_time_s;
+    const double budget_s = 60 + 2 * program->cut_time_s;
     const auto step = [&](EngineState target) {
         return runUntil(engine, realtime, target, budget_s, quiet);
     };
@@ -174,17 +182,17 @@ int runRun(const RunOptions& o) {
                      toString(engine.state()));
         return kFailure;
     }
-    report.method = toString(job.method);
-    report.max_direction_deviation_deg = plan.max_deviation_deg;
     const CycleStats cs = engine.cycleStats();
     const std::string dir = engine.lastRunDirectory();
     if (!dir.empty()) std::fprintf(stderr, "run log: %s\n", dir.c_str());
-    std::fprintf(stderr,
-                 "%s: %llu cycles, %llu overruns, jitter p99 %.1f us, telemetry dropped %llu\n",
-                 outcome.c_str(), static_cast<unsigned long long>(cs.cycles),
-                 static_cast<unsigned long long>(cs.overruns), cs.jitter_us_p99,
-                 static_cast<unsigned long long>(cs.telemetry_dropped));
-    const std::string out = json::write(reportToJson(report));
+    std::fprintf(
+        stderr, "%s: %llu cycles, %llu overruns, jitter p99 %.1f us, telemetry dropped %llu\n",
+        rig ? rig->summary(outcome).c_str() : outcome.c_str(),
+        static_cast<unsigned long long>(cs.cycles), static_cast<unsigned long long>(cs.overruns),
+        cs.jitter_us_p99, static_cast<unsigned long long>(cs.telemetry_dropped));
+    json::Value doc = module.runReport(job, plan, report);
+    if (rig) rig->addToReport(doc);
+    const std::string out = json::write(doc);
     const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())
         return rc;

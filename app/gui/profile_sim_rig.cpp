@@ -1,6 +1,6 @@
 #include "profile_sim_rig.h"
 
-#include "core/machines/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
 #include "devices/sim/profile_cutter_rig.h"
 
 #include <cstdio>

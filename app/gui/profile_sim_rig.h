@@ -1,5 +1,5 @@
 #pragma once
-// The simulated 2-axis NC pipe profile cutter behind the GUI (machine "profile_cutter_2axis"):
+// The simulated 2-axis NC pipe profile cutter behind the GUI (the profile cutter machine):
 // the job's ProfileCutterRig (A and X open-loop steppers behind a pulse card, and a torch)
 // wired into a motion engine whose thread is started here.
 #include "ui/engine_rig.h"

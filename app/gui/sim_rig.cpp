@@ -1,4 +1,5 @@
 #include "sim_rig.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include "can_rig.h"
 #include "profile_sim_rig.h"
@@ -68,7 +69,7 @@ std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                      "\": this build of cutcell drives the simulated cell only";
         return nullptr;
     }
-    if (job.machine == "profile_cutter_2axis") return makeProfileCutterRig(job, clock, error);
+    if (job.machine == cutcell::kProfileCutterId) return makeProfileCutterRig(job, clock, error);
     try {
         return std::make_unique<SimulatedRig>(job, clock);
     } catch (const std::exception& e) {

@@ -1,5 +1,6 @@
 // The motion engine's commands and state transitions (engine thread only). Every accepted
 // command changes state or says what it did; every refused one says why, as an event.
+#include "core/common/c_format.h"
 #include "core/engine/engine_impl.h"
 
 #include <chrono>
@@ -58,7 +59,7 @@ void MotionEngine::Impl::emit(EventKind kind, Severity sev, EngineState from, En
     e.to = to;
     e.kind = kind;
     e.run_id = runId;
-    std::vsnprintf(e.text.data(), e.text.size(), fmt, ap);
+    vsnprintfC(e.text.data(), e.text.size(), fmt, ap);
     if (!events.push(e)) eventsDropped.fetch_add(1, std::memory_order_relaxed);
     if (!logEvents.push(e)) logDropped.fetch_add(1, std::memory_order_relaxed);
 }
@@ -82,7 +83,7 @@ void MotionEngine::Impl::refuse(CommandType c, const char* fmt, ...) {
     char reason[200];
     va_list ap;
     va_start(ap, fmt);
-    std::vsnprintf(reason, sizeof reason, fmt, ap);
+    vsnprintfC(reason, sizeof reason, fmt, ap);
     va_end(ap);
     emitf(EventKind::Refusal, Severity::Warning, state, state, "%s refused: %s", toString(c),
           reason);
@@ -158,8 +159,8 @@ void MotionEngine::Impl::endRun(const char* outcome) {
     r.report.cut_time_s = program ? program->cut_time_s : 0;
     r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;
     r.run_id = runId;
-    std::snprintf(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
-    std::snprintf(r.outcome.data(), r.outcome.size(), "%s", outcome);
+    snprintfC(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
+    snprintfC(r.outcome.data(), r.outcome.size(), "%s", outcome);
     resultGeneration.store(g + 1, std::memory_order_release);
     emitf(EventKind::RunEnded, Severity::Info, state, state, "Run %u ended: %s (%ld samples)",
           runId, outcome, samples);
@@ -184,7 +185,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
     char reason[200];
     va_list ap;
     va_start(ap, fmt);
-    std::vsnprintf(reason, sizeof reason, fmt, ap);
+    vsnprintfC(reason, sizeof reason, fmt, ap);
     va_end(ap);
     if (latched(state)) {
         // A second fault during a controlled stop: no more waiting, torque off now.
@@ -198,7 +199,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
     faultCat0 = false;
     stopDevices(category, StopReason::FaultCat1);
     char outcome[120];
-    std::snprintf(outcome, sizeof outcome, "fault: %.110s", reason);
+    snprintfC(outcome, sizeof outcome, "fault: %.110s", reason);
     setState(EngineState::Fault, EventKind::Fault, "Fault: %s; torch off, %s stop", reason,
              toString(category));
     endRun(outcome);

@@ -24,7 +24,7 @@ enum class MotionSourceKind : std::uint8_t {
 const char* toString(MotionSourceKind k);
 
 struct MotionProgram {
-    std::string machine;         // the machine's id, for reports
+    std::string machine;         // the id of the machine module that built it
     std::string method;          // how the machine cuts (e.g. "rotating_pipe"), for reports
     int axis_count = kAxisCount; // axes 0..axis_count-1 are driven (at most kMaxAxes)
     std::array<std::string, kMaxAxes> axis_names{};

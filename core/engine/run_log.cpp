@@ -1,4 +1,5 @@
 #include "core/engine/run_log.h"
+#include "core/common/c_format.h"
 
 #include "core/job/job_io.h"
 #include "core/json/json.h"
@@ -42,9 +43,9 @@ std::string RunLog::formatEvent(const EngineEvent& e) {
                       : e.severity == Severity::Warning ? "warn"
                                                         : "ERROR";
     char line[420];
-    std::snprintf(line, sizeof line, "%s.%03dZ t=%.3f s %-5s %-11s %s -> %s: %s", stamp,
-                  static_cast<int>(e.wall_ms % 1000), e.time_s, sev, toString(e.kind),
-                  toString(e.from), toString(e.to), e.text.data());
+    snprintfC(line, sizeof line, "%s.%03dZ t=%.3f s %-5s %-11s %s -> %s: %s", stamp,
+              static_cast<int>(e.wall_ms % 1000), e.time_s, sev, toString(e.kind), toString(e.from),
+              toString(e.to), e.text.data());
     return line;
 }
 

@@ -118,11 +118,16 @@ struct ProfileCutterSpec {
     double branch_position_mm = 0;
 };
 
+// The common part (name, description, units note, sim, engine, devices) and, for now, the
+// fields of both machines' sections side by side; each module reads, writes and validates only
+// its own (core/machines/<name>/). machine = the id of the job's module ("" = the schema-1
+// default machine).
 struct Job {
-    int schema = 1;
-    std::string machine = "pipe_robot_6axis";
+    int schema = 2;
+    std::string machine;
     std::string name;
     std::string description;
+    std::string units_note; // free text: how the keys name their units
     PipeSpec main_pipe;
     PipeSpec branch_pipe;
     double angle_deg = 90;

@@ -1,4 +1,11 @@
+// The common part of a job file (schema 2: name, description, units note, sim, engine,
+// devices) and the dispatch of the `machine` section to its module. Schema-1 files (machine
+// keys at the top level) are migrated in memory first (upgradeJobDocument()).
 #include "core/job/job_io.h"
+
+#include "core/common/c_format.h"
+#include "core/job/section_reader.h"
+#include "core/machine/machine_registry.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,359 +23,194 @@
 namespace cutcell {
 namespace {
 
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
+// Keys of the common part; everything else of a schema-1 file belongs to its machine.
+const char* const kCommonKeys[] = {"schema", "name",   "description", "units",
+                                   "sim",    "engine", "devices"};
+
+bool isCommonKey(const std::string& k) {
+    for (const char* c : kCommonKeys)
+        if (k == c) return true;
+    return false;
 }
 
-// Reads members of one JSON object, tracking the dotted path for messages.
-class Reader {
-  public:
-    Reader(const json::Value& v, std::string path) : v_(v), path_(std::move(path)) {
-        if (!v_.isObject())
-            throw JobError(label() + " must be a JSON object, found " + v_.typeName());
-    }
+void readSim(SectionReader r, Job& job) {
+    job.sim.period_s = r.number("period_s", "s");
+    job.sim.duration_s = r.number("duration_s", "s");
+    r.finish();
+}
 
-    std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+void readEngine(SectionReader e, Job& job) {
+    job.engine.estop_category = e.choice<StopCategory>(
+        "estop_category", {{"cat0", StopCategory::Cat0}, {"cat1", StopCategory::Cat1}},
+        job.engine.estop_category);
+    job.engine.feed_hold_decel_s = e.number("feed_hold_decel_s", "s", job.engine.feed_hold_decel_s);
+    job.engine.torch_on_during_feed_hold =
+        e.boolean("torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold);
+    job.engine.following_error_limit_deg =
+        e.number("following_error_limit_deg", "deg", job.engine.following_error_limit_deg);
+    job.engine.home_speed_deg_s =
+        e.number("home_speed_deg_s", "deg/s", job.engine.home_speed_deg_s);
+    job.engine.runs_dir = e.string("runs_dir", job.engine.runs_dir);
+    e.finish();
+}
 
-    const json::Value* get(const std::string& k) const { return v_.find(k); }
-
-    double number(const std::string& k, const char* unit) const {
-        const json::Value* m = v_.find(k);
-        if (!m) throw JobError("missing required key " + key(k) + " (a number in " + unit + ")");
-        return asNumber(*m, k, unit);
-    }
-    double number(const std::string& k, const char* unit, double fallback) const {
-        const json::Value* m = v_.find(k);
-        return m ? asNumber(*m, k, unit) : fallback;
-    }
-    std::string string(const std::string& k, const std::string& fallback) const {
-        const json::Value* m = v_.find(k);
-        if (!m) return fallback;
-        if (!m->isString()) throw JobError(key(k) + " must be a string, found " + m->typeName());
-        return m->asString();
-    }
-    bool boolean(const std::string& k, bool fallback) const {
-        const json::Value* m = v_.find(k);
-        if (!m) return fallback;
-        if (!m->isBool()) throw JobError(key(k) + " must be true or false, found " + m->typeName());
-        return m->asBool();
-    }
-    Reader child(const std::string& k) const {
-        const json::Value* m = v_.find(k);
-        if (!m) throw JobError("missing required section " + key(k));
-        return Reader(*m, key(k));
-    }
-    bool has(const std::string& k) const { return v_.find(k) != nullptr; }
-
-    template <typename E>
-    E choice(const std::string& k, std::initializer_list<std::pair<const char*, E>> options,
-             E fallback) const {
-        const json::Value* m = v_.find(k);
-        if (!m) return fallback;
-        std::string allowed;
-        for (const auto& [name, value] : options) {
-            if (m->isString() && m->asString() == name) return value;
-            allowed += allowed.empty() ? "" : ", ";
-            allowed += std::string("\"") + name + "\"";
+void readDevices(SectionReader d, Job& job) {
+    job.devices.kind = d.choice<DeviceKind>(
+        "kind", {{"simulated", DeviceKind::Simulated}, {"canopen", DeviceKind::CanOpen}},
+        job.devices.kind);
+    job.devices.can_plugin = d.string("can_plugin", job.devices.can_plugin);
+    job.devices.can_interface = d.string("can_interface", job.devices.can_interface);
+    // Range first, then the conversion (a double such as 1e10 does not fit an int).
+    job.devices.bitrate_bps =
+        d.integer("bitrate_bps", "bit/s", job.devices.bitrate_bps, 1, 1000000000);
+    job.devices.heartbeat_timeout_ms =
+        d.number("heartbeat_timeout_ms", "ms", job.devices.heartbeat_timeout_ms);
+    if (const json::Value* ids = d.get("node_ids")) {
+        if (!ids->isArray() || ids->asArray().size() != kAxisCount)
+            throw JobError(d.key("node_ids") + " must be an array of 6 node ids (1..127)");
+        for (size_t i = 0; i < kAxisCount; ++i) {
+            const auto& v = ids->asArray()[i];
+            const std::string k = d.key("node_ids") + "[" + std::to_string(i) + "]";
+            if (!v.isNumber()) throw JobError(k + " must be a number (a node id 1..127)");
+            const double id = v.asNumber();
+            if (!(id >= 1 && id <= 127) || id != std::floor(id))
+                throw JobError(k + " = " + num(id) +
+                               " is not a CANopen node id: a whole number in [1, 127]");
+            job.devices.node_ids[i] = static_cast<int>(id);
         }
-        const std::string found = m->isString() ? "\"" + m->asString() + "\"" : m->typeName();
-        throw JobError(key(k) + " = " + found + " is not one of " + allowed);
     }
-
-    const json::Value& value() const { return v_; }
-
-  private:
-    std::string label() const { return path_.empty() ? "the job" : path_; }
-    double asNumber(const json::Value& m, const std::string& k, const char* unit) const {
-        if (!m.isNumber())
-            throw JobError(key(k) + " must be a number in " + unit + ", found " + m.typeName());
-        return m.asNumber();
+    if (const json::Value* cpu = d.get("counts_per_unit")) {
+        if (!cpu->isArray() || cpu->asArray().size() != kAxisCount)
+            throw JobError(d.key("counts_per_unit") +
+                           " must be an array of 6 numbers (counts/deg)");
+        for (size_t i = 0; i < kAxisCount; ++i) {
+            const auto& v = cpu->asArray()[i];
+            if (!v.isNumber())
+                throw JobError(d.key("counts_per_unit") + "[" + std::to_string(i) +
+                               "] must be a number (counts/deg)");
+            job.devices.counts_per_unit[i] = v.asNumber();
+        }
     }
-    const json::Value& v_;
-    std::string path_;
-};
-
-PipeSpec readPipe(const Reader& r, double defaultLength) {
-    PipeSpec p;
-    p.radius_mm = r.number("radius_mm", "mm");
-    p.wall_mm = r.number("wall_mm", "mm");
-    p.length_mm = r.number("length_mm", "mm", defaultLength);
-    return p;
+    d.finish();
 }
 
-template <typename T, typename F>
-void readTable(const Reader& parent, const std::string& k, std::array<T, kAxisCount>& out,
-               F readRow) {
-    const json::Value* m = parent.get(k);
-    if (!m) return;
-    if (!m->isArray())
-        throw JobError(parent.key(k) + " must be an array of " + std::to_string(kAxisCount) +
-                       " rows (axis 0 = chuck, 1..5 = arm), found " + m->typeName());
-    const auto& arr = m->asArray();
-    if (arr.size() != kAxisCount)
-        throw JobError(parent.key(k) + " has " + std::to_string(arr.size()) + " rows; it needs " +
-                       std::to_string(kAxisCount) + " (axis 0 = chuck, 1..5 = arm)");
-    for (size_t i = 0; i < arr.size(); ++i)
-        out[i] = readRow(Reader(arr[i], parent.key(k) + "[" + std::to_string(i) + "]"));
+json::Value devicesJson(const DeviceSpec& d) {
+    json::Array ids, cpu;
+    for (int id : d.node_ids)
+        ids.emplace_back(id);
+    for (double c : d.counts_per_unit)
+        cpu.emplace_back(c);
+    return json::Object{{"kind", toString(d.kind)},
+                        {"can_plugin", d.can_plugin},
+                        {"can_interface", d.can_interface},
+                        {"bitrate_bps", d.bitrate_bps},
+                        {"node_ids", ids},
+                        {"counts_per_unit", cpu},
+                        {"heartbeat_timeout_ms", d.heartbeat_timeout_ms}};
 }
 
-std::vector<OtherBranch> readOtherBranches(const Reader& r) {
-    std::vector<OtherBranch> out;
-    const json::Value* m = r.get("other_branches");
-    if (!m) return out;
-    if (!m->isArray())
-        throw JobError("other_branches must be an array of branch pipes, found " + m->typeName());
-    for (size_t i = 0; i < m->asArray().size(); ++i) {
-        const Reader b(m->asArray()[i], "other_branches[" + std::to_string(i) + "]");
-        OtherBranch o;
-        o.radius_mm = b.number("radius_mm", "mm");
-        o.angle_deg = b.number("angle_deg", "deg");
-        o.eccentricity_mm = b.number("eccentricity_mm", "mm", 0);
-        o.position_mm = b.number("position_mm", "mm", 0);
-        o.phase_deg = b.number("phase_deg", "deg", 0);
-        out.push_back(o);
-    }
-    return out;
-}
-
-ProfileCutterSpec readProfileCutter(const Reader& r) {
-    ProfileCutterSpec p;
-    if (!r.has("profile_cutter")) return p;
-    const Reader c = r.child("profile_cutter");
-    auto integer = [&c](const std::string& k, const char* unit, int fallback) {
-        const double v = c.number(k, unit, fallback);
-        if (v != std::floor(v) || std::fabs(v) > 1e9)
-            throw JobError(c.key(k) + " = " + num(v) + " " + unit + " must be a whole number");
-        return static_cast<int>(v);
-    };
-    p.steps_per_rev_a = integer("steps_per_rev_a", "steps/rev", p.steps_per_rev_a);
-    p.pulses_per_step_a = integer("pulses_per_step_a", "pulses/step", p.pulses_per_step_a);
-    p.mm_per_pulse_x = c.number("mm_per_pulse_x", "mm/pulse", p.mm_per_pulse_x);
-    p.max_pulse_rate_hz = c.number("max_pulse_rate_hz", "Hz", p.max_pulse_rate_hz);
-    p.pierce_s = c.number("pierce_s", "s", p.pierce_s);
-    p.x_travel_mm = c.number("x_travel_mm", "mm", p.x_travel_mm);
-    p.branch_position_auto = !c.has("branch_position_mm");
-    p.branch_position_mm = c.number("branch_position_mm", "mm", 0);
-    return p;
-}
-
-bool isDefault(const ProfileCutterSpec& p) {
-    const ProfileCutterSpec d;
-    return p.steps_per_rev_a == d.steps_per_rev_a && p.pulses_per_step_a == d.pulses_per_step_a &&
-           p.mm_per_pulse_x == d.mm_per_pulse_x && p.max_pulse_rate_hz == d.max_pulse_rate_hz &&
-           p.pierce_s == d.pierce_s && p.x_travel_mm == d.x_travel_mm &&
-           p.branch_position_auto == d.branch_position_auto;
-}
-
-json::Value pipeJson(const PipeSpec& p) {
-    return json::Object{
-        {"radius_mm", p.radius_mm}, {"wall_mm", p.wall_mm}, {"length_mm", p.length_mm}};
+double schemaOf(const json::Value& doc) {
+    const json::Value* s = doc.isObject() ? doc.find("schema") : nullptr;
+    if (!s) throw JobError("missing required key schema (the job file's version: 1 or 2)");
+    if (!s->isNumber()) throw JobError("schema must be a number (1 or 2), found " + s->typeName());
+    const double v = s->asNumber();
+    if (v != 1 && v != 2)
+        throw JobError("schema = " + num(v) +
+                       " is not supported; this CutCell reads schema 1 and 2");
+    return v;
 }
 
 } // namespace
 
-Job jobFromJson(const json::Value& doc) {
-    Reader r(doc, "");
+json::Value upgradeJobDocument(const json::Value& doc) {
+    if (!doc.isObject()) throw JobError("the job must be a JSON object, found " + doc.typeName());
+    if (schemaOf(doc) == 2) return doc;
+    std::string kind;
+    if (const json::Value* m = doc.find("machine")) {
+        if (!m->isString())
+            throw JobError("machine must be a string (the machine's id), found " + m->typeName());
+        kind = m->asString();
+    } else {
+        kind = schema1DefaultMachine();
+    }
+    const MachineModule* module = findMachine(kind);
+    if (!module)
+        throw JobError("machine = " + json::quote(kind) + " is not one of " + machineIdList());
+    json::Object out{{"schema", 2}};
+    json::Object section{{"kind", kind}};
+    for (const auto& [k, v] : doc.asObject()) {
+        if (k == "schema" || k == "machine") continue;
+        if (isCommonKey(k))
+            out.emplace_back(k, v);
+        else
+            section.emplace_back(k, v);
+    }
+    module->migrateSchema1(section);
+    // The machine section after the description, as schema-2 files are written.
+    json::Object ordered;
+    for (auto& kv : out) {
+        ordered.push_back(kv);
+        if (kv.first == "description") ordered.emplace_back("machine", section);
+    }
+    bool placed = false;
+    for (const auto& kv : ordered)
+        placed = placed || kv.first == "machine";
+    if (!placed) ordered.emplace_back("machine", section);
+    return ordered;
+}
+
+std::string upgradeJobText(const std::string& text) {
+    json::Value doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::ParseError& e) {
+        throw JobError(std::string("the job file is not valid JSON: ") + e.what());
+    }
+    const json::Value upgraded = upgradeJobDocument(doc);
+    (void)jobFromJson(upgraded); // it must read back (keys and types), else refuse it now
+    return json::write(upgraded);
+}
+
+Job jobFromJson(const json::Value& input) {
+    const json::Value doc = upgradeJobDocument(input);
+    SectionReader r(doc, "");
     Job job;
-    const double schema = r.number("schema", "(version number)");
-    if (schema != 1)
-        throw JobError("schema = " + num(schema) +
-                       " is not supported; this CutCell reads schema 1");
-    job.machine = r.string("machine", job.machine);
+    job.schema = 2;
+    r.get("schema");
     job.name = r.string("name", "");
     job.description = r.string("description", "");
-    job.main_pipe = readPipe(r.child("main_pipe"), 1000);
-    job.branch_pipe = readPipe(r.child("branch_pipe"), 300);
-    job.angle_deg = r.number("angle_deg", "deg");
-    job.eccentricity_mm = r.number("eccentricity_mm", "mm", 0);
-    job.method = r.choice<CutMethod>(
-        "method",
-        {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
-        CutMethod::RotatingPipe);
-
-    const Reader cut = r.child("cut");
-    job.cut.target = cut.choice<CutTarget>(
-        "target", {{"branch", CutTarget::Branch}, {"main", CutTarget::Main}}, CutTarget::Main);
-    job.cut.bevel_deg = cut.number("bevel_deg", "deg", 0);
-    job.cut.speed_mm_s = cut.number("speed_mm_s", "mm/s");
-    job.cut.ramp_s = cut.number("ramp_s", "s", job.cut.ramp_s);
-    job.cut.max_direction_deviation_deg =
-        cut.number("max_direction_deviation_deg", "deg", job.cut.max_direction_deviation_deg);
-    job.cut.knot_spacing_mm = cut.number("knot_spacing_mm", "mm", job.cut.knot_spacing_mm);
-    job.cut.static_chuck_deg = cut.number("static_chuck_deg", "deg", job.cut.static_chuck_deg);
-    job.cut.start_phi_auto = !cut.has("start_phi_deg");
-    job.cut.start_phi_deg = cut.number("start_phi_deg", "deg", 0);
-
-    job.dh = seedDhTable();
-    if (r.has("robot")) {
-        const Reader robot = r.child("robot");
-        readTable(robot, "dh", job.dh, [](const Reader& row) {
-            DhRow d;
-            d.alpha_deg = row.number("alpha_deg", "deg");
-            d.a_mm = row.number("a_mm", "mm");
-            d.d_mm = row.number("d_mm", "mm");
-            d.theta_offset_deg = row.number("theta_offset_deg", "deg", 0);
-            d.min_deg = row.number("min_deg", "deg");
-            d.max_deg = row.number("max_deg", "deg");
-            return d;
-        });
-    }
-    readTable(r, "controller", job.controller, [](const Reader& row) {
-        PidGains g;
-        g.kp = row.number("kp_nm_per_rad", "N m/rad");
-        g.ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
-        g.kd = row.number("kd_nm_s_per_rad", "N m s/rad");
-        g.tau_f = row.number("tau_f_s", "s");
-        return g;
-    });
-    if (!r.has("controller")) throw JobError("missing required key controller (6 PID rows)");
-    readTable(r, "plant", job.plant, [](const Reader& row) {
-        JointPlantParams p;
-        p.inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
-        p.viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
-        p.torque_limit_nm = row.number("torque_limit_nm", "N m");
-        return p;
-    });
-    if (!r.has("plant")) throw JobError("missing required key plant (6 joint model rows)");
-
-    const Reader sim = r.child("sim");
-    job.sim.period_s = sim.number("period_s", "s");
-    job.sim.duration_s = sim.number("duration_s", "s");
-
-    if (r.has("engine")) {
-        const Reader e = r.child("engine");
-        job.engine.estop_category = e.choice<StopCategory>(
-            "estop_category", {{"cat0", StopCategory::Cat0}, {"cat1", StopCategory::Cat1}},
-            job.engine.estop_category);
-        job.engine.feed_hold_decel_s =
-            e.number("feed_hold_decel_s", "s", job.engine.feed_hold_decel_s);
-        job.engine.torch_on_during_feed_hold =
-            e.boolean("torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold);
-        job.engine.following_error_limit_deg =
-            e.number("following_error_limit_deg", "deg", job.engine.following_error_limit_deg);
-        job.engine.home_speed_deg_s =
-            e.number("home_speed_deg_s", "deg/s", job.engine.home_speed_deg_s);
-        job.engine.runs_dir = e.string("runs_dir", job.engine.runs_dir);
-    }
-    if (r.has("devices")) {
-        const Reader d = r.child("devices");
-        job.devices.kind = d.choice<DeviceKind>(
-            "kind", {{"simulated", DeviceKind::Simulated}, {"canopen", DeviceKind::CanOpen}},
-            job.devices.kind);
-        job.devices.can_plugin = d.string("can_plugin", job.devices.can_plugin);
-        job.devices.can_interface = d.string("can_interface", job.devices.can_interface);
-        job.devices.bitrate_bps =
-            static_cast<int>(d.number("bitrate_bps", "bit/s", job.devices.bitrate_bps));
-        job.devices.heartbeat_timeout_ms =
-            d.number("heartbeat_timeout_ms", "ms", job.devices.heartbeat_timeout_ms);
-        if (const json::Value* ids = d.get("node_ids")) {
-            if (!ids->isArray() || ids->asArray().size() != kAxisCount)
-                throw JobError(d.key("node_ids") + " must be an array of 6 node ids (1..127)");
-            for (int i = 0; i < kAxisCount; ++i) {
-                const auto& v = ids->asArray()[static_cast<size_t>(i)];
-                if (!v.isNumber()) throw JobError(d.key("node_ids") + " must hold numbers");
-                job.devices.node_ids[static_cast<size_t>(i)] = static_cast<int>(v.asNumber());
-            }
-        }
-        if (const json::Value* cpu = d.get("counts_per_unit")) {
-            if (!cpu->isArray() || cpu->asArray().size() != kAxisCount)
-                throw JobError(d.key("counts_per_unit") +
-                               " must be an array of 6 numbers (counts/deg)");
-            for (int i = 0; i < kAxisCount; ++i) {
-                const auto& v = cpu->asArray()[static_cast<size_t>(i)];
-                if (!v.isNumber()) throw JobError(d.key("counts_per_unit") + " must hold numbers");
-                job.devices.counts_per_unit[static_cast<size_t>(i)] = v.asNumber();
-            }
-        }
-    }
-    job.other_branches = readOtherBranches(r);
-    job.profile_cutter = readProfileCutter(r);
+    job.units_note = r.string("units", "");
+    SectionReader m = r.child("machine");
+    const std::string kind = m.string("kind", "");
+    if (kind.empty())
+        throw JobError("missing required key machine.kind (one of " + machineIdList() + ")");
+    const MachineModule* module = findMachine(kind);
+    if (!module)
+        throw JobError("machine.kind = " + json::quote(kind) + " is not one of " + machineIdList());
+    job.machine = kind;
+    module->readSection(*doc.find("machine"), job);
+    readSim(r.child("sim"), job);
+    if (r.has("engine")) readEngine(r.child("engine"), job);
+    if (r.has("devices")) readDevices(r.child("devices"), job);
+    r.finish();
     return job;
 }
 
 json::Value jobToJson(const Job& job) {
-    json::Object cut{{"target", toString(job.cut.target)},
-                     {"bevel_deg", job.cut.bevel_deg},
-                     {"speed_mm_s", job.cut.speed_mm_s},
-                     {"ramp_s", job.cut.ramp_s},
-                     {"max_direction_deviation_deg", job.cut.max_direction_deviation_deg},
-                     {"knot_spacing_mm", job.cut.knot_spacing_mm},
-                     {"static_chuck_deg", job.cut.static_chuck_deg}};
-    if (!job.cut.start_phi_auto) cut.emplace_back("start_phi_deg", job.cut.start_phi_deg);
-    json::Array dh, ctrl, plant, ids, cpu;
-    for (const auto& d : job.dh)
-        dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg},
-                                     {"a_mm", d.a_mm},
-                                     {"d_mm", d.d_mm},
-                                     {"theta_offset_deg", d.theta_offset_deg},
-                                     {"min_deg", d.min_deg},
-                                     {"max_deg", d.max_deg}});
-    for (const auto& g : job.controller)
-        ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp},
-                                       {"ki_nm_per_rad_s", g.ki},
-                                       {"kd_nm_s_per_rad", g.kd},
-                                       {"tau_f_s", g.tau_f}});
-    for (const auto& p : job.plant)
-        plant.emplace_back(json::Object{{"inertia_kg_m2", p.inertia_kg_m2},
-                                        {"viscous_nm_s_per_rad", p.viscous_nm_s_per_rad},
-                                        {"torque_limit_nm", p.torque_limit_nm}});
-    for (int id : job.devices.node_ids)
-        ids.emplace_back(id);
-    for (double c : job.devices.counts_per_unit)
-        cpu.emplace_back(c);
-    json::Object doc{
-        {"schema", job.schema},
-        {"machine", job.machine},
-        {"name", job.name},
-        {"description", job.description},
-        {"main_pipe", pipeJson(job.main_pipe)},
-        {"branch_pipe", pipeJson(job.branch_pipe)},
-        {"angle_deg", job.angle_deg},
-        {"eccentricity_mm", job.eccentricity_mm},
-        {"method", toString(job.method)},
-        {"cut", cut},
-        {"robot", json::Object{{"dh", dh}}},
-        {"controller", ctrl},
-        {"plant", plant},
-        {"sim", json::Object{{"period_s", job.sim.period_s}, {"duration_s", job.sim.duration_s}}},
-        {"engine", json::Object{{"estop_category", toString(job.engine.estop_category)},
-                                {"feed_hold_decel_s", job.engine.feed_hold_decel_s},
-                                {"torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold},
-                                {"following_error_limit_deg", job.engine.following_error_limit_deg},
-                                {"home_speed_deg_s", job.engine.home_speed_deg_s},
-                                {"runs_dir", job.engine.runs_dir}}},
-        {"devices", json::Object{{"kind", toString(job.devices.kind)},
-                                 {"can_plugin", job.devices.can_plugin},
-                                 {"can_interface", job.devices.can_interface},
-                                 {"bitrate_bps", job.devices.bitrate_bps},
-                                 {"node_ids", ids},
-                                 {"counts_per_unit", cpu},
-                                 {"heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms}}},
-    };
-    // Profile-cutter keys are written when used, so robot job files keep their shape.
-    if (!job.other_branches.empty()) {
-        json::Array others;
-        for (const auto& o : job.other_branches)
-            others.emplace_back(json::Object{{"radius_mm", o.radius_mm},
-                                             {"angle_deg", o.angle_deg},
-                                             {"eccentricity_mm", o.eccentricity_mm},
-                                             {"position_mm", o.position_mm},
-                                             {"phase_deg", o.phase_deg}});
-        doc.emplace_back("other_branches", others);
-    }
-    const ProfileCutterSpec& pc = job.profile_cutter;
-    if (job.machine == "profile_cutter_2axis" || !isDefault(pc)) {
-        json::Object o{{"steps_per_rev_a", pc.steps_per_rev_a},
-                       {"pulses_per_step_a", pc.pulses_per_step_a},
-                       {"mm_per_pulse_x", pc.mm_per_pulse_x},
-                       {"max_pulse_rate_hz", pc.max_pulse_rate_hz},
-                       {"pierce_s", pc.pierce_s},
-                       {"x_travel_mm", pc.x_travel_mm}};
-        if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
-        doc.emplace_back("profile_cutter", o);
-    }
+    const MachineModule& module = machineFor(job);
+    json::Object doc{{"schema", 2}, {"name", job.name}, {"description", job.description}};
+    if (!job.units_note.empty()) doc.emplace_back("units", job.units_note);
+    doc.emplace_back("machine", module.writeSection(job));
+    doc.emplace_back(
+        "sim", json::Object{{"period_s", job.sim.period_s}, {"duration_s", job.sim.duration_s}});
+    doc.emplace_back(
+        "engine", json::Object{{"estop_category", toString(job.engine.estop_category)},
+                               {"feed_hold_decel_s", job.engine.feed_hold_decel_s},
+                               {"torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold},
+                               {"following_error_limit_deg", job.engine.following_error_limit_deg},
+                               {"home_speed_deg_s", job.engine.home_speed_deg_s},
+                               {"runs_dir", job.engine.runs_dir}});
+    doc.emplace_back("devices", devicesJson(job.devices));
     return doc;
 }
 
@@ -394,6 +236,13 @@ Job parseJob(const std::string& text) {
 std::string readTextFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw JobError("cannot open " + path + ": " + std::strerror(errno));
+    // Refuse a huge file before reading it into memory (a job is a few kB).
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > json::kMaxDocumentBytes)
+        throw JobError(path + " is " + std::to_string(size) +
+                       " bytes; a job file may have at most " +
+                       std::to_string(json::kMaxDocumentBytes) + " bytes (16 MiB)");
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();

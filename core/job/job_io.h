@@ -22,12 +22,23 @@ struct JobIssue {
     std::string message;
 };
 
-// Parses the JSON document into a Job (missing optional keys take documented defaults).
-// Throws JobError for syntax errors, unknown enums, wrong types or missing required keys.
+// Parses the JSON document (schema 1 or 2) into a Job; the machine section is read by the
+// module of machine.kind (core/machine/machine_registry.h). Missing optional keys take
+// documented defaults. Throws JobError for unknown keys (with a hint), unknown enums, wrong
+// types or missing required keys, naming the dotted key.
 Job jobFromJson(const json::Value& doc);
+// Always schema 2: the common part and the machine's section.
 json::Value jobToJson(const Job& job);
 
-// All range and consistency problems of a job (empty when the job is valid).
+// Schema 1 -> 2 (a schema-2 document is returned as it is): the machine's keys move into the
+// `machine` section { "kind": ..., ... }, keys its machine never read in schema 1 are dropped.
+json::Value upgradeJobDocument(const json::Value& doc);
+// The text of a job file (schema 1 or 2) as a schema-2 file; throws JobError when it cannot be
+// read (for `cutcell-cli upgrade`).
+std::string upgradeJobText(const std::string& text);
+
+// All range and consistency problems of a job (empty when the job is valid): the common part
+// and the machine's own validation. The GUI and the CLI both call this one.
 std::vector<JobIssue> validateJob(const Job& job);
 
 // Parse + validate; throws JobError with the first problem (and a count of the others).

@@ -1,8 +1,15 @@
+// Parsing and writing through nlohmann-json (Debian nlohmann-json3-dev). The parser runs as a
+// SAX handler that builds the small Value tree the core uses, checks duplicate keys with one
+// hash set per open object (linear in the document), tracks the key path for every message
+// and limits the nesting depth. Numbers are read and written without the C locale's help, so a
+// German or French locale (decimal comma) changes nothing.
 #include "core/json/json.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <unordered_set>
 
 namespace cutcell::json {
 
@@ -32,355 +39,244 @@ std::string Value::typeName() const {
     return "object";
 }
 
+std::string quote(const std::string& s, size_t maxChars) {
+    std::string body = s;
+    if (body.size() > maxChars) {
+        size_t cut = maxChars;
+        // Do not split a UTF-8 sequence.
+        while (cut > 0 && (static_cast<unsigned char>(body[cut]) & 0xC0) == 0x80)
+            --cut;
+        body = body.substr(0, cut) + "\xE2\x80\xA6"; // "…"
+    }
+    return "\"" + body + "\"";
+}
+
+std::string formatNumber(double d) {
+    if (!std::isfinite(d)) throw std::domain_error("a number is not finite (NaN or Inf)");
+    if (d == std::floor(d) && std::fabs(d) < 1e15)
+        return nlohmann::json(static_cast<std::int64_t>(d)).dump();
+    return nlohmann::json(d).dump(); // shortest text that reads back to the same double
+}
+
 namespace {
 
-class Parser {
-  public:
-    explicit Parser(const std::string& text) : s_(text) {}
+using nl = nlohmann::json;
 
-    Value parseDocument() {
-        skipSpace();
-        Value v = parseValue(0);
-        skipSpace();
-        if (pos_ != s_.size()) fail("unexpected text after the JSON value");
-        return v;
+constexpr int kMaxDepth = 64;
+
+// Builds Values from nlohmann's SAX events.
+class Builder : public nlohmann::json_sax<nl> {
+  public:
+    std::string error; // set when a check of ours stops the parse
+    Value root;
+
+    bool null() override { return add(Value()); }
+    bool boolean(bool b) override { return add(Value(b)); }
+    bool number_integer(number_integer_t v) override { return add(Value(static_cast<double>(v))); }
+    bool number_unsigned(number_unsigned_t v) override {
+        return add(Value(static_cast<double>(v)));
     }
+    bool number_float(number_float_t v, const string_t& text) override {
+        if (!std::isfinite(v))
+            return fail(where() + "the number " + quote(text, 40) +
+                        " is out of the range of a double");
+        return add(Value(v));
+    }
+    bool string(string_t& s) override { return add(Value(std::move(s))); }
+    bool binary(binary_t&) override { return fail("binary values are not JSON"); }
+
+    bool start_object(std::size_t) override {
+        if (!open(Value(Object{}))) return false;
+        keys_.emplace_back();
+        return true;
+    }
+    bool key(string_t& k) override {
+        Frame& f = stack_.back();
+        if (!keys_.back().insert(k).second)
+            return fail("duplicate key " + quote(joinPath(k), 80) +
+                        " (each key may appear once in an object)");
+        f.key = k;
+        return true;
+    }
+    bool end_object() override {
+        keys_.pop_back();
+        return close();
+    }
+    bool start_array(std::size_t) override { return open(Value(Array{})); }
+    bool end_array() override { return close(); }
+
+    bool parse_error(std::size_t, const std::string&,
+                     const nlohmann::detail::exception& ex) override {
+        // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..."
+        std::string what = ex.what();
+        const size_t bracket = what.find("] ");
+        if (bracket != std::string::npos) what = what.substr(bracket + 2);
+        if (what.size() > 200) what = what.substr(0, 200) + "\xE2\x80\xA6";
+        nlohmannMessage = what;
+        return false;
+    }
+    std::string nlohmannMessage;
+
+    // "main_pipe.radius_mm" of the value being read, or "" at the top.
+    std::string currentPath() const { return joinPath(""); }
 
   private:
-    static constexpr int kMaxDepth = 64;
-    const std::string& s_;
-    size_t pos_ = 0;
+    struct Frame {
+        Value value;
+        std::string key;  // objects: the key of the member being read
+        size_t index = 0; // arrays: the index of the element being read
+    };
+    std::vector<Frame> stack_;
+    std::vector<std::unordered_set<std::string>> keys_;
 
-    [[noreturn]] void fail(const std::string& what) const {
-        int line = 1, col = 1;
-        for (size_t i = 0; i < pos_ && i < s_.size(); ++i) {
-            if (s_[i] == '\n') {
-                ++line;
-                col = 1;
+    std::string joinPath(const std::string& last) const {
+        std::string p;
+        for (const Frame& f : stack_) {
+            if (f.value.isObject()) {
+                const std::string& k = (&f == &stack_.back() && !last.empty()) ? last : f.key;
+                if (k.empty()) continue;
+                p += (p.empty() ? "" : ".") + k;
             } else {
-                ++col;
+                p += "[" + std::to_string(f.index) + "]";
             }
         }
-        throw ParseError("JSON syntax error at line " + std::to_string(line) + ", column " +
-                             std::to_string(col) + ": " + what,
-                         line, col);
+        return p;
     }
-
-    void skipSpace() {
-        while (pos_ < s_.size() &&
-               (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r'))
-            ++pos_;
+    std::string where() const {
+        const std::string p = currentPath();
+        return p.empty() ? "" : "at " + quote(p, 80) + ": ";
     }
-
-    char peek() const { return pos_ < s_.size() ? s_[pos_] : '\0'; }
-
-    void expect(char c) {
-        if (peek() != c) fail(std::string("expected '") + c + "'");
-        ++pos_;
+    bool fail(const std::string& msg) {
+        error = msg;
+        return false;
     }
-
-    Value parseValue(int depth) {
-        if (depth > kMaxDepth) fail("nesting deeper than 64 levels");
-        switch (peek()) {
-        case '{':
-            return parseObject(depth);
-        case '[':
-            return parseArray(depth);
-        case '"':
-            return Value(parseString());
-        case 't':
-            literal("true");
-            return Value(true);
-        case 'f':
-            literal("false");
-            return Value(false);
-        case 'n':
-            literal("null");
-            return Value(nullptr);
-        case '\0':
-            fail("unexpected end of input");
-        default:
-            return Value(parseNumber());
+    bool add(Value v) {
+        if (stack_.empty()) {
+            root = std::move(v);
+            return true;
         }
-    }
-
-    void literal(const char* word) {
-        for (const char* p = word; *p; ++p) {
-            if (peek() != *p) fail(std::string("invalid literal, expected '") + word + "'");
-            ++pos_;
-        }
-    }
-
-    Value parseObject(int depth) {
-        expect('{');
-        Object obj;
-        skipSpace();
-        if (peek() == '}') {
-            ++pos_;
-            return Value(std::move(obj));
-        }
-        for (;;) {
-            skipSpace();
-            if (peek() != '"') fail("expected a quoted member name");
-            std::string key = parseString();
-            for (const auto& [k, v] : obj)
-                if (k == key) fail("duplicate member \"" + key + "\"");
-            skipSpace();
-            expect(':');
-            skipSpace();
-            obj.emplace_back(std::move(key), parseValue(depth + 1));
-            skipSpace();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            expect('}');
-            return Value(std::move(obj));
-        }
-    }
-
-    Value parseArray(int depth) {
-        expect('[');
-        Array arr;
-        skipSpace();
-        if (peek() == ']') {
-            ++pos_;
-            return Value(std::move(arr));
-        }
-        for (;;) {
-            skipSpace();
-            arr.push_back(parseValue(depth + 1));
-            skipSpace();
-            if (peek() == ',') {
-                ++pos_;
-                continue;
-            }
-            expect(']');
-            return Value(std::move(arr));
-        }
-    }
-
-    static void appendUtf8(std::string& out, unsigned cp) {
-        if (cp < 0x80) {
-            out += static_cast<char>(cp);
-        } else if (cp < 0x800) {
-            out += static_cast<char>(0xC0 | (cp >> 6));
-            out += static_cast<char>(0x80 | (cp & 0x3F));
-        } else if (cp < 0x10000) {
-            out += static_cast<char>(0xE0 | (cp >> 12));
-            out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-            out += static_cast<char>(0x80 | (cp & 0x3F));
+        Frame& f = stack_.back();
+        if (f.value.isObject()) {
+            f.value.asObject().emplace_back(f.key, std::move(v));
         } else {
-            out += static_cast<char>(0xF0 | (cp >> 18));
-            out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-            out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-            out += static_cast<char>(0x80 | (cp & 0x3F));
+            f.value.asArray().push_back(std::move(v));
+            ++f.index;
         }
+        return true;
     }
-
-    unsigned parseHex4() {
-        unsigned v = 0;
-        for (int i = 0; i < 4; ++i) {
-            char c = peek();
-            ++pos_;
-            v <<= 4;
-            if (c >= '0' && c <= '9')
-                v |= static_cast<unsigned>(c - '0');
-            else if (c >= 'a' && c <= 'f')
-                v |= static_cast<unsigned>(c - 'a' + 10);
-            else if (c >= 'A' && c <= 'F')
-                v |= static_cast<unsigned>(c - 'A' + 10);
-            else
-                fail("invalid \\u escape");
-        }
-        return v;
+    bool open(Value v) {
+        if (static_cast<int>(stack_.size()) >= kMaxDepth)
+            return fail(where() + "nesting deeper than " + std::to_string(kMaxDepth) + " levels");
+        stack_.push_back({std::move(v), {}, 0});
+        return true;
     }
-
-    std::string parseString() {
-        expect('"');
-        std::string out;
-        for (;;) {
-            if (pos_ >= s_.size()) fail("unterminated string");
-            char c = s_[pos_++];
-            if (c == '"') return out;
-            if (static_cast<unsigned char>(c) < 0x20) fail("control character in string");
-            if (c != '\\') {
-                out += c;
-                continue;
-            }
-            char e = peek();
-            ++pos_;
-            switch (e) {
-            case '"':
-                out += '"';
-                break;
-            case '\\':
-                out += '\\';
-                break;
-            case '/':
-                out += '/';
-                break;
-            case 'b':
-                out += '\b';
-                break;
-            case 'f':
-                out += '\f';
-                break;
-            case 'n':
-                out += '\n';
-                break;
-            case 'r':
-                out += '\r';
-                break;
-            case 't':
-                out += '\t';
-                break;
-            case 'u': {
-                unsigned cp = parseHex4();
-                if (cp >= 0xD800 && cp < 0xDC00 && peek() == '\\') {
-                    ++pos_;
-                    expect('u');
-                    unsigned lo = parseHex4();
-                    cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
-                }
-                appendUtf8(out, cp);
-                break;
-            }
-            default:
-                --pos_;
-                fail("invalid escape in string");
-            }
-        }
-    }
-
-    double parseNumber() {
-        size_t start = pos_;
-        if (peek() == '-') ++pos_;
-        if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid value");
-        while (std::isdigit(static_cast<unsigned char>(peek())))
-            ++pos_;
-        if (peek() == '.') {
-            ++pos_;
-            if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid number");
-            while (std::isdigit(static_cast<unsigned char>(peek())))
-                ++pos_;
-        }
-        if (peek() == 'e' || peek() == 'E') {
-            ++pos_;
-            if (peek() == '+' || peek() == '-') ++pos_;
-            if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid exponent");
-            while (std::isdigit(static_cast<unsigned char>(peek())))
-                ++pos_;
-        }
-        const std::string token = s_.substr(start, pos_ - start);
-        double v = std::strtod(token.c_str(), nullptr);
-        if (!std::isfinite(v)) fail("number out of range");
-        return v;
+    bool close() {
+        Value v = std::move(stack_.back().value);
+        stack_.pop_back();
+        return add(std::move(v));
     }
 };
 
-void writeString(std::ostringstream& os, const std::string& s) {
-    os << '"';
-    for (char c : s) {
-        switch (c) {
-        case '"':
-            os << "\\\"";
-            break;
-        case '\\':
-            os << "\\\\";
-            break;
-        case '\n':
-            os << "\\n";
-            break;
-        case '\r':
-            os << "\\r";
-            break;
-        case '\t':
-            os << "\\t";
-            break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-                os << buf;
-            } else {
-                os << c;
-            }
-        }
-    }
-    os << '"';
+void writeString(std::string& os, const std::string& s) {
+    // nlohmann escapes control characters and checks UTF-8 (invalid bytes become U+FFFD).
+    os += nl(s).dump(-1, ' ', false, nl::error_handler_t::replace);
 }
 
-void writeNumber(std::ostringstream& os, double d) {
-    if (d == std::floor(d) && std::fabs(d) < 1e15) {
-        os << static_cast<long long>(d);
-        return;
-    }
-    // Shortest of 15 or 17 significant digits that reads back to the same double.
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.15g", d);
-    if (std::strtod(buf, nullptr) != d) std::snprintf(buf, sizeof buf, "%.17g", d);
-    os << buf;
-}
-
-void writeValue(std::ostringstream& os, const Value& v, int indent, int level) {
+void writeValue(std::string& os, const Value& v, int indent, int level, const std::string& path) {
     const std::string pad(static_cast<size_t>(indent * (level + 1)), ' ');
     const std::string padEnd(static_cast<size_t>(indent * level), ' ');
     if (v.isNull())
-        os << "null";
+        os += "null";
     else if (v.isBool())
-        os << (v.asBool() ? "true" : "false");
-    else if (v.isNumber())
-        writeNumber(os, v.asNumber());
-    else if (v.isString())
+        os += v.asBool() ? "true" : "false";
+    else if (v.isNumber()) {
+        if (!std::isfinite(v.asNumber()))
+            throw std::domain_error("refusing to write " +
+                                    std::string(std::isnan(v.asNumber()) ? "NaN" : "Inf") + " at " +
+                                    (path.empty() ? "the top" : path) +
+                                    ": JSON output holds finite numbers only");
+        os += formatNumber(v.asNumber());
+    } else if (v.isString())
         writeString(os, v.asString());
     else if (v.isArray()) {
         const auto& a = v.asArray();
         if (a.empty()) {
-            os << "[]";
+            os += "[]";
             return;
         }
         // Arrays of scalars stay on one line: tables of numbers read better that way.
         bool flat = true;
         for (const auto& e : a)
             flat = flat && !e.isArray() && !e.isObject();
-        os << '[';
+        os += '[';
         for (size_t i = 0; i < a.size(); ++i) {
-            if (i) os << (flat ? ", " : ",");
-            if (!flat) os << '\n' << pad;
-            writeValue(os, a[i], indent, level + 1);
+            if (i) os += flat ? ", " : ",";
+            if (!flat) os += "\n" + pad;
+            writeValue(os, a[i], indent, level + 1, path + "[" + std::to_string(i) + "]");
         }
-        if (!flat) os << '\n' << padEnd;
-        os << ']';
+        if (!flat) os += "\n" + padEnd;
+        os += ']';
     } else {
         const auto& o = v.asObject();
         if (o.empty()) {
-            os << "{}";
+            os += "{}";
             return;
         }
-        os << '{';
+        os += '{';
         for (size_t i = 0; i < o.size(); ++i) {
-            if (i) os << ',';
-            os << '\n' << pad;
+            if (i) os += ',';
+            os += "\n" + pad;
             writeString(os, o[i].first);
-            os << ": ";
-            writeValue(os, o[i].second, indent, level + 1);
+            os += ": ";
+            writeValue(os, o[i].second, indent, level + 1,
+                       path.empty() ? o[i].first : path + "." + o[i].first);
         }
-        os << '\n' << padEnd << '}';
+        os += "\n" + padEnd + '}';
     }
 }
 
 } // namespace
 
-Value parse(const std::string& text) {
-    return Parser(text).parseDocument();
+Value parse(const std::string& input) {
+    if (input.size() > kMaxDocumentBytes)
+        throw ParseError("the JSON document is " + std::to_string(input.size()) +
+                             " bytes; the limit is " + std::to_string(kMaxDocumentBytes) +
+                             " bytes (16 MiB)",
+                         1, 1);
+    // A UTF-8 byte order mark (some Windows editors write one) is not part of the document.
+    const std::string_view bom = "\xEF\xBB\xBF";
+    std::string_view text(input);
+    if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+
+    Builder b;
+    bool ok = false;
+    try {
+        ok = nl::sax_parse(text.begin(), text.end(), &b, nlohmann::detail::input_format_t::json,
+                           true, false);
+    } catch (const nl::exception& e) {
+        b.nlohmannMessage = e.what();
+    }
+    if (ok) return std::move(b.root);
+    if (!b.error.empty()) throw ParseError(b.error, 0, 0);
+    // nlohmann's message carries line and column; repeat them in our form and add the key.
+    int line = 0, col = 0;
+    std::string msg = b.nlohmannMessage;
+    if (std::sscanf(msg.c_str(), "parse error at line %d, column %d", &line, &col) == 2) {
+        const size_t colon = msg.find(": ");
+        msg = colon == std::string::npos ? msg : msg.substr(colon + 2);
+    }
+    const std::string inKey = b.currentPath();
+    throw ParseError("JSON syntax error at line " + std::to_string(line) + ", column " +
+                         std::to_string(col) +
+                         (inKey.empty() ? "" : " (in " + quote(inKey, 80) + ")") + ": " + msg,
+                     line, col);
 }
 
 std::string write(const Value& v, int indent) {
-    std::ostringstream os;
-    writeValue(os, v, indent, 0);
-    os << '\n';
-    return os.str();
+    std::string os;
+    writeValue(os, v, indent, 0, "");
+    os += '\n';
+    return os;
 }
 
 } // namespace cutcell::json

@@ -1,6 +1,8 @@
 #pragma once
-// A small JSON value with a strict parser and a stable writer. The core keeps to C++ and
-// Eigen only, so it carries its own JSON instead of a third-party library.
+// The core's JSON value (a small ordered tree) read and written through nlohmann-json
+// (json.cpp): strict parsing with line/column and the key path in every message, duplicate
+// keys refused, a UTF-8 BOM accepted, a size cap; numbers written locale-independently and
+// never NaN or Inf.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -64,9 +66,19 @@ struct ParseError : std::runtime_error {
     int column;
 };
 
-// Throws ParseError naming line and column.
+// Documents larger than this are refused before parsing (a job is a few kB).
+inline constexpr size_t kMaxDocumentBytes = 16u << 20; // 16 MiB
+
+// Throws ParseError naming line and column (0, 0 for a duplicate key or a too deep nesting,
+// which name the key path instead).
 Value parse(const std::string& text);
-// Pretty-printed with two-space indentation; numbers with up to 15 significant digits.
+// Pretty-printed with two-space indentation; numbers as the shortest text that reads back to
+// the same double. Throws std::domain_error naming the key path for NaN or Inf.
 std::string write(const Value& v, int indent = 2);
+
+// A string for a message: in double quotes, cut to maxChars (UTF-8 safe) with "…" appended.
+std::string quote(const std::string& s, size_t maxChars = 80);
+// A finite number as JSON writes it (integers without a fraction). Throws for NaN / Inf.
+std::string formatNumber(double d);
 
 } // namespace cutcell::json

@@ -6,8 +6,8 @@
 #include "core/common/types.h"
 #include "core/job/job.h"
 #include "core/json/json.h"
-#include "core/kinematics/pipe_robot.h"
 #include "core/kinematics/tip_model.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 
 #include <array>
 #include <string>

@@ -1,4 +1,5 @@
 #include "core/trajectory/cut_planner.h"
+#include "core/common/c_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,10 +36,9 @@ namespace {
 
 std::string describePoint(size_t index, const PlannedPoint& p) {
     char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)", index,
-                  rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
-                  p.cut.p_main.z());
+    snprintfC(buf, sizeof buf, "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)",
+              index, rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
+              p.cut.p_main.z());
     return buf;
 }
 
@@ -131,15 +131,15 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
             std::string why;
             if (!robot.withinLimits(0, chuck)) {
                 char buf[160];
-                std::snprintf(buf, sizeof buf,
-                              "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
-                              rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
+                snprintfC(buf, sizeof buf,
+                          "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
+                          rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
                 why = buf;
             } else if (!p.ik.ok()) {
                 why = describe(p.ik);
             } else if (p.deviation_deg > maxDev + 1e-9) {
                 char buf[200];
-                std::snprintf(
+                snprintfC(
                     buf, sizeof buf,
                     "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more "
                     "than cut.max_direction_deviation_deg = %.2f deg",

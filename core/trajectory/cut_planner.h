@@ -14,7 +14,7 @@
 #include "core/common/types.h"
 #include "core/geometry/cut_path.h"
 #include "core/job/job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/trajectory/joint_spline.h"
 
 #include <atomic>

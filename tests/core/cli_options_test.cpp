@@ -2,9 +2,13 @@
 // misspelt options, missing or bad arguments, value ranges, and numbers read the same under a
 // German locale. Runs the built binary as a user does, plus the option checks in-process.
 #include "app/cli/option_checks.h"
+#include "core/job/job_io.h"
+#include "core/json/json.h"
+#include "core/machine/machine_registry.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <clocale>
 #include <cstdio>
 #include <cstdlib>
@@ -82,8 +86,10 @@ std::vector<CommandSpec> commands() {
         {"simulate", simulate, job},
         {"bench", {"--json", "--quick", "--job", "--no-engine", "--no-can"}, "--quick"},
         {"export",
-         {"--gcode", "--template-svg", "--template-pdf", "--path-csv"},
+         {"--gcode", "--template-svg", "--template-pdf", "--path-csv", "--joints-csv"},
          job + " --template-svg " + (refusedDir() / "t.svg").string()},
+        {"machines", {"--json"}, "--json"},
+        {"upgrade", {"--out"}, job + " --out " + (refusedDir() / "new.json").string()},
     };
 #ifdef CUTCELL_CLI_HAS_DEVICES
     std::vector<std::string> run{"--realtime", "--quiet", "--report", "--runs"};
@@ -177,8 +183,10 @@ TEST(CliOptions, MissingOrBadJobGivesItsExitCode) {
     std::ofstream(broken) << "{ \"schema\": 1, \"main_pipe\": ";
     const std::string out = " --out " + (dir / "out").string();
     const std::string svg = " --template-svg " + (dir / "t.svg").string();
-    std::vector<std::pair<std::string, std::string>> needJob{
-        {"validate", ""}, {"plan", out}, {"simulate", ""}, {"export", svg}};
+    const std::string upgraded = " --out " + (dir / "new.json").string();
+    std::vector<std::pair<std::string, std::string>> needJob{{"validate", ""}, {"plan", out},
+                                                             {"simulate", ""}, {"export", svg},
+                                                             {"upgrade", upgraded}};
 #ifdef CUTCELL_CLI_HAS_DEVICES
     needJob.push_back({"run", ""});
 #endif
@@ -191,6 +199,10 @@ TEST(CliOptions, MissingOrBadJobGivesItsExitCode) {
     }
     EXPECT_FALSE(fs::exists(dir / "out"));
     EXPECT_FALSE(fs::exists(dir / "t.svg"));
+    EXPECT_FALSE(fs::exists(dir / "new.json"));
+    const Result upgradeNoOut = runCli("upgrade " + defaultJob());
+    EXPECT_EQ(upgradeNoOut.code, 64);
+    EXPECT_TRUE(contains(upgradeNoOut.all, "--out is required")) << upgradeNoOut.all;
     const Result noOut = runCli("plan " + defaultJob());
     EXPECT_EQ(noOut.code, 64);
     EXPECT_TRUE(contains(noOut.all, "--out is required")) << noOut.all;
@@ -299,4 +311,86 @@ TEST(CliOptions, NodeListsExpandRangesAndLists) {
         ids.clear();
         EXPECT_FALSE(cutcell::cli::parseNodeList(bad, ids, error)) << bad;
     }
+}
+
+// `machines --json` lists every registered machine as the registry describes it: axes with
+// name, unit, limits (of the machine's default job) and command mode, and its exports; the
+// machines of both shipped jobs are among them.
+TEST(CliMachines, JsonListsEveryRegisteredMachineWithAxesAndUnits) {
+    const Result r = runCli("machines --json");
+    ASSERT_EQ(r.code, 0) << r.all;
+    const cutcell::json::Value doc = cutcell::json::parse(r.out);
+    const cutcell::json::Value* list = doc.find("machines");
+    ASSERT_TRUE(list && list->isArray()) << r.out;
+    const auto registered = cutcell::machines();
+    ASSERT_EQ(list->asArray().size(), registered.size());
+    std::vector<std::string> ids;
+    for (size_t i = 0; i < registered.size(); ++i) {
+        const cutcell::MachineModule& m = *registered[i];
+        const cutcell::json::Value& e = list->asArray()[i];
+        ASSERT_TRUE(e.find("id") && e.find("title") && e.find("axes") && e.find("exports"));
+        EXPECT_EQ(e.find("id")->asString(), m.id());
+        EXPECT_EQ(e.find("title")->asString(), m.title());
+        ids.push_back(e.find("id")->asString());
+        const auto axes = m.axes(m.defaultJob());
+        ASSERT_FALSE(axes.empty()) << m.id();
+        const auto& jsonAxes = e.find("axes")->asArray();
+        ASSERT_EQ(jsonAxes.size(), axes.size()) << m.id();
+        for (size_t k = 0; k < axes.size(); ++k) {
+            const cutcell::json::Value& a = jsonAxes[k];
+            EXPECT_EQ(a.find("name")->asString(), axes[k].name);
+            const std::string unit = a.find("unit")->asString();
+            EXPECT_TRUE(unit == "deg" || unit == "mm") << unit;
+            EXPECT_EQ(unit, cutcell::unitSymbol(axes[k].unit));
+            EXPECT_EQ(a.find("min")->asNumber(), axes[k].min);
+            EXPECT_EQ(a.find("max")->asNumber(), axes[k].max);
+            EXPECT_LT(a.find("min")->asNumber(), a.find("max")->asNumber());
+            EXPECT_EQ(a.find("command_mode")->asString(), cutcell::toString(axes[k].mode));
+        }
+        const auto exports = m.exports();
+        ASSERT_EQ(e.find("exports")->asArray().size(), exports.size()) << m.id();
+        for (size_t k = 0; k < exports.size(); ++k)
+            EXPECT_EQ(e.find("exports")->asArray()[k].find("id")->asString(), exports[k].id);
+    }
+    for (const char* shipped : {"default_job.json", "profile_cutter_job.json"}) {
+        const cutcell::Job job = cutcell::loadJobFile(std::string(CUTCELL_SOURCE_DIR) +
+                                                      "/resources/jobs/" + shipped);
+        EXPECT_NE(std::find(ids.begin(), ids.end(), job.machine), ids.end()) << job.machine;
+    }
+    // The text listing names the same machines.
+    const Result text = runCli("machines");
+    EXPECT_EQ(text.code, 0) << text.all;
+    for (const std::string& id : ids)
+        EXPECT_TRUE(contains(text.out, id + ": ")) << text.out;
+}
+
+// `upgrade` writes the schema-2 file of a schema-1 job: it loads to the same job, and a second
+// upgrade changes nothing; a job out of range is refused (exit 2) and nothing is written.
+TEST(CliUpgrade, WritesASchema2FileThatLoadsToTheSameJob) {
+    const fs::path dir = tempDir("upgrade");
+    for (const char* shipped : {"default_job.json", "profile_cutter_job.json"}) {
+        const std::string old = std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/" + shipped;
+        const fs::path out = dir / (std::string("v2_") + shipped);
+        const Result r = runCli("upgrade " + old + " --out " + out.string());
+        ASSERT_EQ(r.code, 0) << r.all;
+        const std::string text = cutcell::readTextFile(out.string());
+        EXPECT_EQ(cutcell::json::parse(text).find("schema")->asNumber(), 2);
+        EXPECT_EQ(cutcell::json::write(cutcell::jobToJson(cutcell::loadJobFile(out.string()))),
+                  cutcell::json::write(cutcell::jobToJson(cutcell::loadJobFile(old))));
+        const fs::path again = dir / (std::string("v2v2_") + shipped);
+        ASSERT_EQ(runCli("upgrade " + out.string() + " --out " + again.string()).code, 0);
+        EXPECT_EQ(cutcell::readTextFile(again.string()), text);
+    }
+    // Valid JSON and keys, a value out of range: exit 2, no file.
+    std::string text = cutcell::readTextFile(defaultJob());
+    const std::string key = "\"speed_mm_s\": ";
+    const size_t at = text.find(key);
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + key.size(), "-");
+    const fs::path bad = dir / "negative_speed.json";
+    std::ofstream(bad) << text;
+    const Result r = runCli("upgrade " + bad.string() + " --out " + (dir / "bad_v2.json").string());
+    EXPECT_EQ(r.code, 2) << r.all;
+    EXPECT_TRUE(contains(r.all, "speed_mm_s")) << r.all;
+    EXPECT_FALSE(fs::exists(dir / "bad_v2.json"));
 }

@@ -116,8 +116,8 @@ INSTANTIATE_TEST_SUITE_P(
             "eccentricity_mm",
             40,
             {"|eccentricity_mm| + branch radius = 64.15 mm", "<= main_pipe.radius_mm = 57.15 mm"}},
-        BadValue{"angle_deg", 0, {"angle_deg = 0 deg", "(0, 90] deg"}},
-        BadValue{"angle_deg", 95, {"angle_deg = 95 deg", "(0, 90] deg"}},
+        BadValue{"angle_deg", 0, {"angle_deg = 0 deg", "[0.1, 90] deg"}},
+        BadValue{"angle_deg", 95, {"angle_deg = 95 deg", "[0.1, 90] deg"}},
         BadValue{"main_pipe.wall_mm", -1, {"main_pipe.wall_mm = -1 mm", "> 0 mm"}},
         BadValue{"branch_pipe.wall_mm",
                  30,
@@ -154,8 +154,8 @@ TEST(Job, StructuralErrorsAreNamed) {
               }).find("main_pipe.radius_mm must be a number in mm, found string"),
               std::string::npos);
     EXPECT_NE(rejection([](json::Value& d) {
-                  d.set("schema", json::Value(2));
-              }).find("schema = 2 is not supported"),
+                  d.set("schema", json::Value(3));
+              }).find("schema = 3 is not supported"),
               std::string::npos);
     json::Value doc = defaultDoc();
     auto& obj = doc.asObject();
@@ -166,7 +166,7 @@ TEST(Job, StructuralErrorsAreNamed) {
         parseJob(json::write(doc));
         FAIL();
     } catch (const JobError& e) {
-        EXPECT_NE(std::string(e.what()).find("missing required section cut"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("missing required section machine.cut"), std::string::npos);
     }
     try {
         parseJob("{ \"schema\": 1, ");

@@ -1,7 +1,7 @@
 // Forward and inverse kinematics of the seed's arm: round trips on random configurations,
 // the seed's closed-form FK, and the status of poses that cannot be reached.
 #include "core/job/job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Cut planning: the rotating method keeps the torch on its straight line over the pipe, the
 // cut point moves at the cutting speed, and unreachable paths are reported with the point.
 #include "core/job/default_job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Seed 000 Section 4: the 30 s cut simulated with both methods. The rotating-pipe method must
 // track better than the static one, and both within the seed's simulated figures.
 #include "core/job/default_job.h"
-#include "core/machines/pipe_robot_program.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 

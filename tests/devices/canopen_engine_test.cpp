@@ -3,7 +3,7 @@
 // in the middle of one. SYNC follows the engine: the last drive's write posts the cycle.
 #include "core/engine/motion_engine.h"
 #include "core/job/default_job.h"
-#include "core/machines/pipe_robot_program.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/engine_tuning.h"

@@ -5,10 +5,10 @@
 // core's message.
 #include "sim_rig.h"
 
-#include "core/io/gcode_export.h"
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/gcode_export.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"

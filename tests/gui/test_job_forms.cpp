@@ -103,7 +103,10 @@ class TestJobForms : public QObject {
         QTest::keyClicks(field, "750");
         QCOMPARE(w.editor()->job().cut.speed_mm_s, 750.0);
         QVERIFY(field->property("invalid").toBool());
-        QVERIFY(field->toolTip().contains("500 mm/s"));
+        // The tooltip names the value, the limit and the unit ("... = 750 mm/s is outside
+        // [0.1, 500] mm/s").
+        QVERIFY2(field->toolTip().contains("750 mm/s") && field->toolTip().contains("500] mm/s"),
+                 qPrintable(field->toolTip()));
     }
 
     void duplicateNodeIdMarksTheIdFields() {

@@ -1,7 +1,7 @@
 // LinuxCNC G-code of the profile cutter, read back through LinuxCNC's own interpreter (rs274,
 // from Debian's linuxcnc-uspace); skipped where rs274 is not installed.
-#include "core/io/gcode_export.h"
 #include "core/job/job_io.h"
+#include "core/machines/profile_cutter/gcode_export.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The profile cutter's trace against the pipes and against the seed's own formulas (Eq. 1, 3, 4).
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // cut) and a run on simulated stepper axes with progress, feed hold and emergency stop.
 #include "core/engine/motion_engine.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
 #include "devices/sim/profile_cutter_rig.h"
 #include "profile_test_util.h"
 

@@ -1,7 +1,7 @@
 // Profile-cutter job keys (round trip, validation messages) and the CLI over them.
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>
@@ -51,44 +51,50 @@ TEST(ProfileJob, BadValuesNameKeyValueUnitAndLimit) {
     Job job = test::exampleProfileJob();
     job.other_branches[0].radius_mm = 80;
     job.other_branches[0].eccentricity_mm = 10;
-    EXPECT_EQ(firstMessageFor(job, "other_branches[0].radius_mm"),
-              "other_branches[0].radius_mm = 80 mm does not fit: |eccentricity_mm| + radius = 90 "
-              "mm must be <= "
-              "main_pipe.radius_mm = 84.15 mm");
+    EXPECT_EQ(
+        firstMessageFor(job, "other_branches[0].radius_mm"),
+        "machine.other_branches[0].radius_mm = 80 mm does not fit: |eccentricity_mm| + radius = 90 "
+        "mm must be <= "
+        "main_pipe.radius_mm = 84.15 mm");
     job = test::exampleProfileJob();
     job.other_branches[0].angle_deg = 180;
     EXPECT_EQ(
         firstMessageFor(job, "other_branches[0].angle_deg"),
-        "other_branches[0].angle_deg = 180 deg is outside (0, 180) deg (angle to the main axis)");
+        "machine.other_branches[0].angle_deg = 180 deg is outside [0.1, 179.9] deg (angle to the "
+        "main axis)");
     job = test::exampleProfileJob();
     job.other_branches[0].angle_deg = job.angle_deg; // parallel to the cut branch
     EXPECT_NE(firstMessageFor(job, "other_branches[0].angle_deg").find("must differ by >= 1 deg"),
               std::string::npos);
     job = test::exampleProfileJob();
     job.profile_cutter.steps_per_rev_a = 4;
-    EXPECT_EQ(firstMessageFor(job, "profile_cutter.steps_per_rev_a"),
-              "profile_cutter.steps_per_rev_a = 4 steps/rev is outside [8, 100000] steps/rev");
+    EXPECT_EQ(
+        firstMessageFor(job, "profile_cutter.steps_per_rev_a"),
+        "machine.profile_cutter.steps_per_rev_a = 4 steps/rev is outside [8, 100000] steps/rev");
     job = test::exampleProfileJob();
     job.profile_cutter.mm_per_pulse_x = 0;
     EXPECT_EQ(firstMessageFor(job, "profile_cutter.mm_per_pulse_x"),
-              "profile_cutter.mm_per_pulse_x = 0 mm/pulse is outside [1e-05, 1] mm/pulse");
+              "machine.profile_cutter.mm_per_pulse_x = 0 mm/pulse is outside [1e-05, 1] mm/pulse");
     job = test::exampleProfileJob();
     job.cut.bevel_deg = 15;
     EXPECT_EQ(firstMessageFor(job, "cut.bevel_deg"),
-              "cut.bevel_deg = 15 deg: the 2-axis profile cutter cuts square only (0 deg)");
+              "machine.cut.bevel_deg = 15 deg: the 2-axis profile cutter cuts square only (0 deg)");
 }
 
 TEST(ProfileJob, NonIntegerStepsAreRejectedWhenRead) {
     json::Value doc = jobToJson(test::exampleProfileJob());
-    json::Value pc = *doc.find("profile_cutter");
+    json::Value machine = *doc.find("machine"); // schema 2: the machine's own section
+    json::Value pc = *machine.find("profile_cutter");
     pc.set("steps_per_rev_a", 400.5);
-    doc.set("profile_cutter", pc);
+    machine.set("profile_cutter", pc);
+    doc.set("machine", machine);
     try {
         jobFromJson(doc);
         FAIL() << "accepted 400.5 steps/rev";
     } catch (const JobError& e) {
         EXPECT_STREQ(e.what(),
-                     "profile_cutter.steps_per_rev_a = 400.5 steps/rev must be a whole number");
+                     "machine.profile_cutter.steps_per_rev_a = 400.5 steps/rev must be a whole "
+                     "number");
     }
 }
 

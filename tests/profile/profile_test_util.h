@@ -25,6 +25,14 @@ inline Job randomProfileJob(std::mt19937& rng, CutTarget target) {
     job.eccentricity_mm = (2 * U(rng) - 1) * room;
     job.angle_deg = 25 + 65 * U(rng);
     if (U(rng) < 0.2) job.angle_deg = 90;
+    // The branch must be long enough to hold its saddle (validateJob checks it): at a shallow
+    // angle the cut end spans up to (R + 2 r cos a) / sin a along the branch.
+    const double a = job.angle_deg * kPi / 180;
+    const double saddle =
+        (job.main_pipe.radius_mm + 2 * job.branch_pipe.radius_mm * std::cos(a)) / std::sin(a);
+    job.branch_pipe.length_mm = std::max(job.branch_pipe.length_mm, saddle + 50);
+    job.profile_cutter.x_travel_mm =
+        std::max(job.profile_cutter.x_travel_mm, job.branch_pipe.length_mm + 100);
     return job;
 }
 

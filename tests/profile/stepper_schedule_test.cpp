@@ -1,5 +1,5 @@
 // Stepper output: pulse counts per step and the constant-surface-speed pulse-rate schedule.
-#include "core/machines/stepper_schedule.h"
+#include "core/machines/profile_cutter/stepper_schedule.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

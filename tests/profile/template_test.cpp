@@ -1,7 +1,7 @@
 // The unrolled cutting template: its geometry, the SVG and the PDF (structure, 1:1 size, render).
-#include "core/io/template_pdf.h"
-#include "core/io/template_svg.h"
 #include "core/job/job_io.h"
+#include "core/machines/profile_cutter/template_pdf.h"
+#include "core/machines/profile_cutter/template_svg.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

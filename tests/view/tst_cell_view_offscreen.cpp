@@ -1,7 +1,7 @@
 // CellView on Qt's offscreen platform: no OpenGL, so a placeholder replaces the 3D view while
 // the scene graph keeps working.
 #include "core/job/default_job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/trajectory/cut_planner.h"
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"

@@ -3,8 +3,8 @@
 // torch's contact point on the pipe); the pipe turns about its own axis, the torch points into
 // it radially. Offscreen, no rendering.
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter.h"
-#include "core/machines/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
 #include "ui/view3d/profile_scene.h"
 
 #include <QtTest>

@@ -2,7 +2,7 @@
 // core's kinematics, for the default job and variants.
 #include "core/geometry/cut_path.h"
 #include "core/job/default_job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/trajectory/cut_planner.h"
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/scene_model.h"

@@ -1,4 +1,5 @@
 #include "ui/forms/parameter_tabs.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include "ui/forms/controller_form.h"
 #include "ui/forms/cut_form.h"
@@ -97,7 +98,7 @@ bool ParameterTabs::tabShown(const QString& title) const {
 
 void ParameterTabs::applyMachine() {
     // Robot-only pages (how the robot cuts, its DH table) give way to the profile cutter's.
-    const bool profile = editor_->job().machine == "profile_cutter_2axis";
+    const bool profile = editor_->job().machine == cutcell::kProfileCutterId;
     const auto show = [this](const QString& title, bool on) {
         const int i = static_cast<int>(titles_.indexOf(title));
         if (i >= 0) tabs_->setTabVisible(i, on);

@@ -2,7 +2,7 @@
 // The 2-axis NC pipe profile cutter's own keys (seed 002): A-axis grid and pulses, X-axis
 // resolution, the pulse card's rate limit, the pierce dwell, the X travel and the hole's
 // branch position. Shown instead of the robot's pages when job.machine is
-// "profile_cutter_2axis" (ParameterTabs).
+// kProfileCutterId (ParameterTabs).
 #include "ui/forms/job_form.h"
 
 class QCheckBox;

@@ -1,4 +1,5 @@
 #include "ui/panels/monitor_views.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include <QLabel>
 #include <QVBoxLayout>
@@ -44,7 +45,7 @@ void CellViewPanel::setPlan(const std::shared_ptr<const cutcell::CutPlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
     if (!view_ || !plan) return;
-    if (job.machine == "profile_cutter_2axis") {
+    if (job.machine == cutcell::kProfileCutterId) {
         try {
             view_->setScene(cutcell::view3d::buildProfileCutterScene(job));
         } catch (const std::exception&) {

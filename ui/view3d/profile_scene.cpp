@@ -1,7 +1,7 @@
 #include "ui/view3d/profile_scene.h"
 
 #include "core/job/job.h"
-#include "core/machines/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,9 +4,9 @@
 // from a carriage on axis 1 (X, mm) over the pipe's top generatrix; the cut curve is drawn on
 // the pipe.
 //
-// Work frame = the tip model's frame (core/machines/profile_cutter_program.h): pipe axis z,
-// z = X (0 at the carriage origin), A = 0 puts the work +y generatrix under the torch. The cut
-// point of grid point i is (R_w sin A_i, R_w cos A_i, X_i), so with q = (A_i, X_i) the torch
+// Work frame = the tip model's frame (core/machines/profile_cutter/profile_cutter_program.h): pipe
+// axis z, z = X (0 at the carriage origin), A = 0 puts the work +y generatrix under the torch. The
+// cut point of grid point i is (R_w sin A_i, R_w cos A_i, X_i), so with q = (A_i, X_i) the torch
 // tip touches path point i.
 #include "ui/view3d/scene_model.h"
 

@@ -2,7 +2,7 @@
 
 #include "core/geometry/cut_path.h"
 #include "core/job/job.h"
-#include "core/kinematics/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/trajectory/cut_planner.h"
 
 #include <algorithm>

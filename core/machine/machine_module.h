@@ -1,0 +1,110 @@
+#pragma once
+// One seam per machine. A machine module says what the machine is (id, title, axes), reads and
+// validates its own `machine` section of the job, plans a cut into the MotionProgram the
+// engine runs, and offers its exports. The controller (engine, CLI, GUI) is the same for every
+// machine and picks the module by the job's `machine.kind`, as LinuxCNC picks a kinematics
+// module by configuration; the simulated devices of a machine are built beside the devices
+// (devices/machines/, see devices/machines/rig_registry.h), as a ros2_control hardware
+// interface has a mock and a real implementation behind one interface.
+//
+// Adding a machine: a folder core/machines/<name>/ with a class derived from MachineModule,
+// one line in core/machines/register_machines.cpp, and (for `run`) one line in
+// devices/machines/rig_registry.cpp. See README, "Adding a machine".
+#include "core/engine/motion_program.h"
+#include "core/job/job.h"
+#include "core/job/job_io.h"
+#include "core/json/json.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cutcell {
+
+struct TrackingReport;
+
+enum class AxisUnit { Rotary, Linear }; // deg (rad inside the engine) / mm
+enum class CommandMode { Position, Velocity, Torque };
+
+struct AxisInfo {
+    std::string name; // "A (pipe turn)", "theta1"
+    AxisUnit unit = AxisUnit::Rotary;
+    double min = -180; // deg or mm
+    double max = 180;
+    CommandMode mode = CommandMode::Position;
+};
+
+const char* unitSymbol(AxisUnit u); // "deg" or "mm"
+const char* toString(CommandMode m);
+
+enum class PlanStatus {
+    Ok,
+    Infeasible, // the job is valid but the machine cannot make this cut (reach, travel, rates)
+};
+
+// What plan() gives: the program for the engine and the machine's own data for its exports.
+struct MachinePlan {
+    PlanStatus status = PlanStatus::Infeasible;
+    std::string summary; // one line for the operator ("530.1 mm at 8 mm/s, 66.3 s, ...")
+    std::string problem; // when Infeasible: one sentence naming the point, the value, the limit
+    std::shared_ptr<const MotionProgram> program;
+    std::shared_ptr<const void> data; // owned by the module that made it (its plan type)
+    bool ok() const { return status == PlanStatus::Ok; }
+};
+
+// A file the machine can write from a plan.
+struct ExportInfo {
+    std::string id;           // "gcode", "path_csv", "template_svg", ...
+    std::string title;        // "LinuxCNC G-code (X/A)"
+    std::string default_name; // "cut.ngc"
+    bool plan_file = false;   // written by `cutcell-cli plan --out DIR`
+    bool binary = false;      // PDF
+};
+
+class MachineModule {
+  public:
+    virtual ~MachineModule() = default;
+
+    virtual std::string id() const = 0;    // the job's machine.kind
+    virtual std::string title() const = 0; // "Pipe-cutting robot (chuck + 5-DOF arm)"
+    // The axes with their limits as the job sets them.
+    virtual std::vector<AxisInfo> axes(const Job& job) const = 0;
+
+    // A complete job for this machine (File -> New).
+    virtual Job defaultJob() const = 0;
+    // Reads the `machine` section (kind already checked) into job. Unknown keys are refused
+    // with the nearest valid key as a hint (SectionReader). Throws JobError.
+    virtual void readSection(const json::Value& section, Job& job) const = 0;
+    // The `machine` section of job (with "kind" first).
+    virtual json::Value writeSection(const Job& job) const = 0;
+    // Schema 1 kept machine keys at the top level and tolerated keys a machine did not read:
+    // given the top-level keys moved into the section, drop those this machine never read.
+    virtual void migrateSchema1(json::Object& section) const = 0;
+    // Range and consistency problems of the machine's part of the job (key, value, unit, limit).
+    virtual std::vector<JobIssue> validate(const Job& job) const = 0;
+
+    // Whether the machine can run on CANopen drives; if not, why (for devices.kind = canopen).
+    virtual bool supportsCanOpen(std::string* why) const = 0;
+
+    // Plans the cut of a valid job. jobText is kept in the program for the run log.
+    virtual MachinePlan plan(const Job& job, const std::string& jobText = {}) const = 0;
+    // "variant" of the cut where the machine has one (the robot's method); false + *error when
+    // the value is not one of the machine's or the machine has none.
+    virtual bool setVariant(Job& job, const std::string& variant, std::string* error) const;
+
+    virtual std::vector<ExportInfo> exports() const = 0;
+    // The contents of one export of a plan (text, or the PDF's bytes). Throws
+    // std::invalid_argument for an unknown id or a plan that cannot give it.
+    virtual std::string exportFile(const std::string& exportId, const Job& job,
+                                   const MachinePlan& plan) const = 0;
+
+    // The offline report of `cutcell-cli simulate` (JSON text) and a few lines for the
+    // terminal; false + *why when the machine has none (it runs in the engine only).
+    virtual bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                               std::string* text, std::string* why) const;
+    // The report of an engine run (`cutcell-cli run`, the GUI's run) in the machine's units.
+    virtual json::Value runReport(const Job& job, const MachinePlan& plan,
+                                  const TrackingReport& report) const = 0;
+};
+
+} // namespace cutcell

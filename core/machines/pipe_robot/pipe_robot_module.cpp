@@ -1,0 +1,284 @@
+#include "core/machines/pipe_robot/pipe_robot_module.h"
+
+#include "core/common/c_format.h"
+#include "core/job/default_job.h"
+#include "core/job/issue_checker.h"
+#include "core/machine/pipe_joint_section.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
+#include "core/machines/pipe_robot/plan_csv.h"
+#include "core/sim/cut_simulation.h"
+#include "core/sim/tracking_stats.h"
+
+#include <cmath>
+
+namespace cutcell {
+namespace {
+
+const CutKeys kCutKeys{};
+
+template <typename T, typename F>
+void readTable(SectionReader& parent, const std::string& k, std::array<T, kAxisCount>& out,
+               F readRow) {
+    const json::Value* m = parent.get(k);
+    if (!m)
+        throw JobError("missing required key " + parent.key(k) + " (" + std::to_string(kAxisCount) +
+                       " rows: axis 0 = chuck, 1..5 = arm)");
+    if (!m->isArray())
+        throw JobError(parent.key(k) + " must be an array of " + std::to_string(kAxisCount) +
+                       " rows (axis 0 = chuck, 1..5 = arm), found " + m->typeName());
+    const auto& arr = m->asArray();
+    if (arr.size() != kAxisCount)
+        throw JobError(parent.key(k) + " has " + std::to_string(arr.size()) + " rows; it needs " +
+                       std::to_string(kAxisCount) + " (axis 0 = chuck, 1..5 = arm)");
+    for (size_t i = 0; i < arr.size(); ++i) {
+        SectionReader row(arr[i], parent.key(k) + "[" + std::to_string(i) + "]");
+        out[i] = readRow(row);
+        row.finish();
+    }
+}
+
+const char* const kAxisNames[kAxisCount] = {"chuck (theta0)", "theta1", "theta2",
+                                            "theta3",         "theta4", "theta5"};
+
+} // namespace
+
+std::vector<AxisInfo> PipeRobotModule::axes(const Job& job) const {
+    std::vector<AxisInfo> out;
+    for (int i = 0; i < kAxisCount; ++i) {
+        const DhRow& r = job.dh[static_cast<size_t>(i)];
+        out.push_back({kAxisNames[i], AxisUnit::Rotary, r.min_deg, r.max_deg, CommandMode::Torque});
+    }
+    return out;
+}
+
+Job PipeRobotModule::defaultJob() const {
+    return cutcell::defaultJob();
+}
+
+void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
+    SectionReader m(section, "machine");
+    m.get("kind");
+    readPipeJoint(m, job, kCutKeys);
+    job.method = m.choice<CutMethod>(
+        "method",
+        {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
+        CutMethod::RotatingPipe);
+    job.dh = seedDhTable();
+    if (m.has("robot")) {
+        SectionReader robot = m.child("robot");
+        if (robot.has("dh"))
+            readTable(robot, "dh", job.dh, [](SectionReader& row) {
+                DhRow d;
+                d.alpha_deg = row.number("alpha_deg", "deg");
+                d.a_mm = row.number("a_mm", "mm");
+                d.d_mm = row.number("d_mm", "mm");
+                d.theta_offset_deg = row.number("theta_offset_deg", "deg", 0);
+                d.min_deg = row.number("min_deg", "deg");
+                d.max_deg = row.number("max_deg", "deg");
+                return d;
+            });
+        robot.finish();
+    }
+    readTable(m, "controller", job.controller, [](SectionReader& row) {
+        PidGains g;
+        g.kp = row.number("kp_nm_per_rad", "N m/rad");
+        g.ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
+        g.kd = row.number("kd_nm_s_per_rad", "N m s/rad");
+        g.tau_f = row.number("tau_f_s", "s");
+        return g;
+    });
+    readTable(m, "plant", job.plant, [](SectionReader& row) {
+        JointPlantParams p;
+        p.inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
+        p.viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
+        p.torque_limit_nm = row.number("torque_limit_nm", "N m");
+        return p;
+    });
+    m.finish();
+}
+
+json::Value PipeRobotModule::writeSection(const Job& job) const {
+    json::Object s{{"kind", id()}};
+    writePipeJoint(job, s, kCutKeys);
+    s.emplace_back("method", toString(job.method));
+    json::Array dh, ctrl, plant;
+    for (const auto& d : job.dh)
+        dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg},
+                                     {"a_mm", d.a_mm},
+                                     {"d_mm", d.d_mm},
+                                     {"theta_offset_deg", d.theta_offset_deg},
+                                     {"min_deg", d.min_deg},
+                                     {"max_deg", d.max_deg}});
+    for (const auto& g : job.controller)
+        ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp},
+                                       {"ki_nm_per_rad_s", g.ki},
+                                       {"kd_nm_s_per_rad", g.kd},
+                                       {"tau_f_s", g.tau_f}});
+    for (const auto& p : job.plant)
+        plant.emplace_back(json::Object{{"inertia_kg_m2", p.inertia_kg_m2},
+                                        {"viscous_nm_s_per_rad", p.viscous_nm_s_per_rad},
+                                        {"torque_limit_nm", p.torque_limit_nm}});
+    s.emplace_back("robot", json::Object{{"dh", dh}});
+    s.emplace_back("controller", ctrl);
+    s.emplace_back("plant", plant);
+    return s;
+}
+
+void PipeRobotModule::migrateSchema1(json::Object& section) const {
+    // Schema 1 read the profile cutter's keys for every job; the robot never used them.
+    std::erase_if(section, [](const auto& kv) {
+        return kv.first == "other_branches" || kv.first == "profile_cutter";
+    });
+}
+
+std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
+    IssueChecker c;
+    checkPipeJoint(c, job, kCutKeys);
+    for (int i = 0; i < kAxisCount; ++i) {
+        const auto& d = job.dh[static_cast<size_t>(i)];
+        const std::string k = "robot.dh[" + std::to_string(i) + "]";
+        c.range(k + ".alpha_deg", d.alpha_deg, -360, 360, "deg");
+        c.range(k + ".a_mm", d.a_mm, -5000, 5000, "mm");
+        c.range(k + ".d_mm", d.d_mm, -5000, 5000, "mm");
+        c.range(k + ".theta_offset_deg", d.theta_offset_deg, -360, 360, "deg");
+        c.range(k + ".min_deg", d.min_deg, -360, 360, "deg");
+        c.range(k + ".max_deg", d.max_deg, -360, 360, "deg");
+        if (d.min_deg >= d.max_deg)
+            c.add(k + ".min_deg", k + ".min_deg = " + num(d.min_deg) + " deg must be below " + k +
+                                      ".max_deg = " + num(d.max_deg) + " deg");
+    }
+    // The analytic IK is written for the seed's arm structure (alpha = 90, 0, 0, 90, 0).
+    const double structure[kAxisCount] = {90, 90, 0, 0, 90, 0};
+    for (int i = 1; i < kAxisCount; ++i) {
+        const auto& d = job.dh[static_cast<size_t>(i)];
+        if (std::fabs(d.alpha_deg - structure[i]) > 1e-9)
+            c.add("robot.dh[" + std::to_string(i) + "].alpha_deg",
+                  "robot.dh[" + std::to_string(i) + "].alpha_deg = " + num(d.alpha_deg) +
+                      " deg: the pipe robot's inverse kinematics needs " + num(structure[i]) +
+                      " deg");
+    }
+    // ... and for its offsets: these lengths are zero on the seed's arm.
+    const struct {
+        int row;
+        const char* field;
+        double value;
+    } zeros[] = {{1, "a_mm", job.dh[1].a_mm},
+                 {2, "d_mm", job.dh[2].d_mm},
+                 {3, "d_mm", job.dh[3].d_mm},
+                 {4, "d_mm", job.dh[4].d_mm},
+                 {5, "a_mm", job.dh[5].a_mm}};
+    for (const auto& z : zeros)
+        if (std::fabs(z.value) > 1e-9) {
+            const std::string k = "robot.dh[" + std::to_string(z.row) + "]." + z.field;
+            c.add(k,
+                  k + " = " + num(z.value) + " mm: the pipe robot's inverse kinematics needs 0 mm");
+        }
+    if (job.dh[2].a_mm <= 0 || job.dh[3].a_mm <= 0)
+        c.add("robot.dh[2].a_mm",
+              "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)");
+
+    // Physical ranges of the drives: far beyond any joint of a cutting robot, but finite, so
+    // the discretised controller and plant stay finite numbers.
+    for (int i = 0; i < kAxisCount; ++i) {
+        const auto& g = job.controller[static_cast<size_t>(i)];
+        const std::string k = "controller[" + std::to_string(i) + "]";
+        c.range(k + ".kp_nm_per_rad", g.kp, 0, 1e6, "N m/rad");
+        c.range(k + ".ki_nm_per_rad_s", g.ki, 0, 1e8, "N m/(rad s)");
+        c.range(k + ".kd_nm_s_per_rad", g.kd, 0, 1e5, "N m s/rad");
+        c.positive(k + ".tau_f_s", g.tau_f, 1e-5, 1, "s");
+        const auto& p = job.plant[static_cast<size_t>(i)];
+        const std::string pk = "plant[" + std::to_string(i) + "]";
+        c.positive(pk + ".inertia_kg_m2", p.inertia_kg_m2, 1e-5, 1e4, "kg m^2");
+        c.range(pk + ".viscous_nm_s_per_rad", p.viscous_nm_s_per_rad, 0, 1e5, "N m s/rad");
+        c.positive(pk + ".torque_limit_nm", p.torque_limit_nm, 1e-3, 1e5, "N m");
+        // The filter time constant must be resolvable at the control period.
+        if (g.tau_f > 0 && job.sim.period_s > 0 && g.tau_f < job.sim.period_s / 2)
+            c.add(k + ".tau_f_s", k + ".tau_f_s = " + num(g.tau_f) +
+                                      " s must be >= half the control period (" +
+                                      num(job.sim.period_s / 2) + " s)");
+    }
+    return c.issues;
+}
+
+MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText) const {
+    MachinePlan out;
+    auto cut = std::make_shared<CutPlan>(planCut(job));
+    out.data = cut;
+    out.summary =
+        formatC("%s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)", toString(job.method),
+                toString(job.cut.target), cut->length_mm, job.cut.speed_mm_s, cut->cut_time_s);
+    if (!cut->reachable) {
+        out.status = PlanStatus::Infeasible;
+        out.problem = formatC("path not reachable (%s method): %s", toString(cut->method),
+                              cut->problem.c_str());
+        return out;
+    }
+    auto program = buildPipeRobotProgram(job, *cut, jobText);
+    out.program = program;
+    out.status = PlanStatus::Ok;
+    return out;
+}
+
+bool PipeRobotModule::setVariant(Job& job, const std::string& variant, std::string* error) const {
+    if (variant == "static_pipe")
+        job.method = CutMethod::StaticPipe;
+    else if (variant == "rotating_pipe")
+        job.method = CutMethod::RotatingPipe;
+    else {
+        if (error)
+            *error = "--method = " + json::quote(variant) +
+                     " is not one of \"static_pipe\", \"rotating_pipe\"";
+        return false;
+    }
+    return true;
+}
+
+std::vector<ExportInfo> PipeRobotModule::exports() const {
+    return {
+        {"path_csv", "cut path with torch poses (CSV)", "path.csv", true, false},
+        {"joints_csv", "joint trajectory at the control period (CSV)", "joints.csv", true, false}};
+}
+
+std::string PipeRobotModule::exportFile(const std::string& exportId, const Job& job,
+                                        const MachinePlan& plan) const {
+    const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get());
+    if (!cut || !plan.ok()) throw std::invalid_argument("the plan has no reachable cut");
+    if (exportId == "path_csv") return pathCsv(*cut);
+    if (exportId == "joints_csv") return jointsCsv(*cut, job.sim.period_s);
+    throw std::invalid_argument("the pipe robot has no export " + json::quote(exportId));
+}
+
+bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                    std::string* text, std::string* why) const {
+    const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get());
+    if (!cut || !plan.ok()) {
+        if (why) *why = plan.problem;
+        return false;
+    }
+    const TrackingReport report = simulateCut(job, *cut);
+    *json = json::write(reportToJson(report));
+    std::string t = formatC("%s method, %.1f s simulated at %.4f s\n", report.method.c_str(),
+                            report.simulated_s, job.sim.period_s);
+    t += formatC("%-16s %14s %14s\n", "axis", "max |e| (deg)", "rms (deg)");
+    for (int i = 0; i < kAxisCount; ++i)
+        t += formatC("%-16s %14.6f %14.6f\n",
+                     i == 0 ? "0 chuck" : (std::to_string(i) + " arm").c_str(),
+                     report.joints[static_cast<size_t>(i)].max_abs_deg,
+                     report.joints[static_cast<size_t>(i)].rms_deg);
+    t += formatC("tip error (mm), base frame: x %.6f  y %.6f  z %.6f\n",
+                 report.cartesian_max_abs_mm.x(), report.cartesian_max_abs_mm.y(),
+                 report.cartesian_max_abs_mm.z());
+    *text = t;
+    return true;
+}
+
+json::Value PipeRobotModule::runReport(const Job& job, const MachinePlan& plan,
+                                       const TrackingReport& report) const {
+    TrackingReport r = report;
+    r.method = toString(job.method);
+    if (const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get()))
+        r.max_direction_deviation_deg = cut->max_deviation_deg;
+    return reportToJson(r);
+}
+
+} // namespace cutcell

@@ -1,0 +1,37 @@
+#pragma once
+// The pipe-cutting robot of seed 000: a pipe chuck (axis 0) and a 5-DOF arm (axes 1..5), all
+// rotary, torque-controlled joints behind PID drives; CANopen drives or simulated ones.
+//
+// Its `machine` section: the pipe joint (main_pipe, branch_pipe, angle_deg, eccentricity_mm,
+// cut), method ("static_pipe" | "rotating_pipe"), robot.dh[6], controller[6], plant[6].
+#include "core/machine/machine_module.h"
+#include "core/trajectory/cut_planner.h"
+
+namespace cutcell {
+
+inline constexpr const char* kPipeRobotId = "pipe_robot_6axis";
+
+// MachinePlan::data of its plans is the CutPlan.
+class PipeRobotModule : public MachineModule {
+  public:
+    std::string id() const override { return kPipeRobotId; }
+    std::string title() const override { return "Pipe-cutting robot (chuck + 5-DOF arm)"; }
+    std::vector<AxisInfo> axes(const Job& job) const override;
+    Job defaultJob() const override;
+    void readSection(const json::Value& section, Job& job) const override;
+    json::Value writeSection(const Job& job) const override;
+    void migrateSchema1(json::Object& section) const override;
+    std::vector<JobIssue> validate(const Job& job) const override;
+    bool supportsCanOpen(std::string*) const override { return true; }
+    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    bool setVariant(Job& job, const std::string& variant, std::string* error) const override;
+    std::vector<ExportInfo> exports() const override;
+    std::string exportFile(const std::string& exportId, const Job& job,
+                           const MachinePlan& plan) const override;
+    bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                       std::string* text, std::string* why) const override;
+    json::Value runReport(const Job& job, const MachinePlan& plan,
+                          const TrackingReport& report) const override;
+};
+
+} // namespace cutcell

@@ -1,0 +1,93 @@
+#include "core/machines/profile_cutter/gcode_export.h"
+#include "core/common/c_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace cutcell {
+namespace {
+
+// A G-code comment may not hold parentheses or line breaks.
+std::string commentText(const std::string& s) {
+    std::string out;
+    for (char c : s)
+        out += c == '(' ? '[' : c == ')' ? ']' : (c >= 32 && c < 127) ? c : ' ';
+    return out;
+}
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
+    char buf[256];
+    snprintfC(buf, sizeof buf, f, a, b, c, d);
+    return buf;
+}
+
+// The value as written with 4 decimals, so F matches the coordinates LinuxCNC reads.
+double written(double v) {
+    return std::round(v * 1e4) / 1e4;
+}
+
+} // namespace
+
+std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stats) {
+    std::string g;
+    auto line = [&g](const std::string& s) { g += s + "\n"; };
+    auto comment = [&line](const std::string& s) { line("(" + commentText(s) + ")"); };
+    const double v = job.cut.speed_mm_s;
+
+    comment(
+        "CutCell profile cutter program, machine profile_cutter_2axis, X linear mm, A rotary deg");
+    comment("job: " + job.name);
+    comment(job.cut.target == CutTarget::Branch ? "cut: branch pipe end [saddle]; X = distance "
+                                                  "from the branch's fixed end, A = branch turn"
+                                                : "cut: hole in the main pipe; X = distance from "
+                                                  "the main pipe's fixed end, A = main pipe turn");
+    comment(fmt("main pipe: radius %.3f mm, wall %.3f mm, length %.1f mm", job.main_pipe.radius_mm,
+                job.main_pipe.wall_mm, job.main_pipe.length_mm));
+    comment(fmt("branch pipe: radius %.3f mm, wall %.3f mm, length %.1f mm",
+                job.branch_pipe.radius_mm, job.branch_pipe.wall_mm, job.branch_pipe.length_mm));
+    comment(fmt("angle %.3f deg, eccentricity %.3f mm", job.angle_deg, job.eccentricity_mm));
+    if (job.cut.target == CutTarget::Branch)
+        for (size_t k = 0; k < job.other_branches.size(); ++k) {
+            const OtherBranch& o = job.other_branches[k];
+            comment("other branch " + std::to_string(k + 1) +
+                    fmt(": radius %.3f mm, angle %.3f deg, eccentricity %.3f mm, position %.3f mm",
+                        o.radius_mm, o.angle_deg, o.eccentricity_mm, o.position_mm) +
+                    fmt(", phase %.3f deg", o.phase_deg));
+        }
+    comment(fmt("cutting speed %.3f mm/s on the pipe surface, work radius %.3f mm, %.0f steps/rev, "
+                "pierce %.2f s",
+                v, cut.work_radius_mm, static_cast<double>(job.profile_cutter.steps_per_rev_a),
+                job.profile_cutter.pierce_s));
+    line("G21 G90 G17 G40 G94");
+    const ProfilePoint first = cut.points.front();
+    line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
+    line("M3 S1 (torch on)");
+    if (job.profile_cutter.pierce_s > 0)
+        line(fmt("G4 P%.3f (pierce)", job.profile_cutter.pierce_s));
+    line("G93 (inverse time feed: F = 1 / minutes per move, constant surface speed)");
+
+    GcodeStats st;
+    double px = written(first.x_mm), pa = written(first.a_deg);
+    for (size_t i = 1; i <= cut.points.size(); ++i) {
+        const ProfilePoint p = cut.closedAt(i);
+        const double x = written(p.x_mm), a = written(p.a_deg);
+        const double ds = std::hypot(x - px, cut.work_radius_mm * deg2rad(a - pa));
+        if (ds <= 0) continue;
+        const double f = 60.0 * v / ds;
+        line(fmt("G1 X%.4f A%.4f F%.4f", x, a, f));
+        ++st.moves;
+        st.length_mm += ds;
+        st.time_s += 60.0 / f;
+        px = x;
+        pa = a;
+    }
+    line("G94");
+    line("M5 (torch off)");
+    comment(fmt("%.0f moves, developed length %.3f mm, cutting time %.2f s",
+                static_cast<double>(st.moves), st.length_mm, st.time_s));
+    line("M2");
+    if (stats) *stats = st;
+    return g;
+}
+
+} // namespace cutcell

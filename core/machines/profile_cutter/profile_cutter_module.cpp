@@ -1,0 +1,243 @@
+#include "core/machines/profile_cutter/profile_cutter_module.h"
+
+#include "core/common/c_format.h"
+#include "core/job/default_job.h"
+#include "core/job/issue_checker.h"
+#include "core/machine/pipe_joint_section.h"
+#include "core/machines/profile_cutter/gcode_export.h"
+#include "core/machines/profile_cutter/profile_csv.h"
+#include "core/machines/profile_cutter/profile_cutter_program.h"
+#include "core/machines/profile_cutter/template_layout.h"
+#include "core/machines/profile_cutter/template_pdf.h"
+#include "core/machines/profile_cutter/template_svg.h"
+
+#include <cmath>
+
+namespace cutcell {
+namespace {
+
+// The torch stands radially over the pipe: no tilt, no static chuck angle, no start choice.
+const CutKeys kCutKeys{true, false, false, false};
+
+std::vector<OtherBranch> readOtherBranches(SectionReader& r) {
+    std::vector<OtherBranch> out;
+    const json::Value* m = r.get("other_branches");
+    if (!m) return out;
+    if (!m->isArray())
+        throw JobError(r.key("other_branches") + " must be an array of branch pipes, found " +
+                       m->typeName());
+    if (m->asArray().size() > 16)
+        throw JobError(r.key("other_branches") + " has " + std::to_string(m->asArray().size()) +
+                       " pipes; the limit is 16");
+    for (size_t i = 0; i < m->asArray().size(); ++i) {
+        SectionReader b(m->asArray()[i], r.key("other_branches") + "[" + std::to_string(i) + "]");
+        OtherBranch o;
+        o.radius_mm = b.number("radius_mm", "mm");
+        o.angle_deg = b.number("angle_deg", "deg");
+        o.eccentricity_mm = b.number("eccentricity_mm", "mm", 0);
+        o.position_mm = b.number("position_mm", "mm", 0);
+        o.phase_deg = b.number("phase_deg", "deg", 0);
+        b.finish();
+        out.push_back(o);
+    }
+    return out;
+}
+
+void readSteppers(SectionReader c, ProfileCutterSpec& p) {
+    p.steps_per_rev_a = c.integer("steps_per_rev_a", "steps/rev", p.steps_per_rev_a, 8, 100000);
+    p.pulses_per_step_a =
+        c.integer("pulses_per_step_a", "pulses/step", p.pulses_per_step_a, 1, 100000);
+    p.mm_per_pulse_x = c.number("mm_per_pulse_x", "mm/pulse", p.mm_per_pulse_x);
+    p.max_pulse_rate_hz = c.number("max_pulse_rate_hz", "Hz", p.max_pulse_rate_hz);
+    p.pierce_s = c.number("pierce_s", "s", p.pierce_s);
+    p.x_travel_mm = c.number("x_travel_mm", "mm", p.x_travel_mm);
+    p.branch_position_auto = !c.has("branch_position_mm");
+    p.branch_position_mm = c.number("branch_position_mm", "mm", 0);
+    c.finish();
+}
+
+} // namespace
+
+std::vector<AxisInfo> ProfileCutterModule::axes(const Job& job) const {
+    return {{"A (pipe turn)", AxisUnit::Rotary, -1e9, 1e9, CommandMode::Position},
+            {"X (torch carriage)", AxisUnit::Linear, 0, job.profile_cutter.x_travel_mm,
+             CommandMode::Position}};
+}
+
+Job ProfileCutterModule::defaultJob() const {
+    // The shipped profile job's machine section over the default job's common part.
+    Job job = cutcell::defaultJob();
+    job.machine = kProfileCutterId;
+    job.name = "New profile cutter job";
+    job.description.clear();
+    job.cut.target = CutTarget::Branch;
+    job.cut.bevel_deg = 0;
+    job.cut.speed_mm_s = 8;
+    job.profile_cutter = ProfileCutterSpec{};
+    job.profile_cutter.x_travel_mm = 1500;
+    job.sim.duration_s = 120;
+    return job;
+}
+
+void ProfileCutterModule::readSection(const json::Value& section, Job& job) const {
+    SectionReader m(section, "machine");
+    m.get("kind");
+    readPipeJoint(m, job, kCutKeys);
+    job.other_branches = readOtherBranches(m);
+    job.profile_cutter = ProfileCutterSpec{};
+    if (m.has("profile_cutter")) readSteppers(m.child("profile_cutter"), job.profile_cutter);
+    m.finish();
+}
+
+json::Value ProfileCutterModule::writeSection(const Job& job) const {
+    json::Object s{{"kind", id()}};
+    writePipeJoint(job, s, kCutKeys);
+    if (!job.other_branches.empty()) {
+        json::Array others;
+        for (const auto& o : job.other_branches)
+            others.emplace_back(json::Object{{"radius_mm", o.radius_mm},
+                                             {"angle_deg", o.angle_deg},
+                                             {"eccentricity_mm", o.eccentricity_mm},
+                                             {"position_mm", o.position_mm},
+                                             {"phase_deg", o.phase_deg}});
+        s.emplace_back("other_branches", others);
+    }
+    const ProfileCutterSpec& pc = job.profile_cutter;
+    json::Object o{{"steps_per_rev_a", pc.steps_per_rev_a},
+                   {"pulses_per_step_a", pc.pulses_per_step_a},
+                   {"mm_per_pulse_x", pc.mm_per_pulse_x},
+                   {"max_pulse_rate_hz", pc.max_pulse_rate_hz},
+                   {"pierce_s", pc.pierce_s},
+                   {"x_travel_mm", pc.x_travel_mm}};
+    if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
+    s.emplace_back("profile_cutter", o);
+    return s;
+}
+
+void ProfileCutterModule::migrateSchema1(json::Object& section) const {
+    // Schema 1 made every job carry the robot's keys; this machine never read them.
+    std::erase_if(section, [](const auto& kv) {
+        return kv.first == "method" || kv.first == "robot" || kv.first == "controller" ||
+               kv.first == "plant";
+    });
+    for (auto& [k, v] : section) {
+        if (k == "cut" && v.isObject())
+            std::erase_if(v.asObject(), [](const auto& kv) {
+                return kv.first == "max_direction_deviation_deg" ||
+                       kv.first == "static_chuck_deg" || kv.first == "start_phi_deg";
+            });
+    }
+}
+
+std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
+    IssueChecker c;
+    checkPipeJoint(c, job, kCutKeys);
+    const double R = job.main_pipe.radius_mm;
+    const double a = deg2rad(job.angle_deg);
+    for (size_t i = 0; i < job.other_branches.size(); ++i) {
+        const OtherBranch& o = job.other_branches[i];
+        const std::string k = "other_branches[" + std::to_string(i) + "]";
+        c.positive(k + ".radius_mm", o.radius_mm, 1, 2000, "mm");
+        if (!(o.angle_deg >= 0.1 && o.angle_deg <= 179.9))
+            c.add(k + ".angle_deg",
+                  k + ".angle_deg = " + num(o.angle_deg) +
+                      " deg is outside [0.1, 179.9] deg (angle to the main axis)");
+        c.range(k + ".eccentricity_mm", o.eccentricity_mm, -2000, 2000, "mm");
+        c.range(k + ".position_mm", o.position_mm, -20000, 20000, "mm");
+        c.range(k + ".phase_deg", o.phase_deg, -360, 360, "deg");
+        const double fit = std::fabs(o.eccentricity_mm) + o.radius_mm;
+        if (R > 0 && o.radius_mm > 0 && fit > R)
+            c.add(k + ".radius_mm",
+                  k + ".radius_mm = " + num(o.radius_mm) +
+                      " mm does not fit: |eccentricity_mm| + radius = " + num(fit) +
+                      " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
+        // Axes must not be parallel to the cut branch's: the crossing would be undefined.
+        const double aj = deg2rad(o.angle_deg), ph = deg2rad(o.phase_deg);
+        const double cosAxes =
+            std::sin(a) * std::cos(ph) * std::sin(aj) + std::cos(a) * std::cos(aj);
+        const double between = rad2deg(std::acos(std::min(1.0, std::fabs(cosAxes))));
+        if (std::isfinite(between) && between < 1.0)
+            c.add(k + ".angle_deg",
+                  k + ": its axis is " + num(between) +
+                      " deg from the cut branch's axis; it must differ by >= 1 deg");
+    }
+    const ProfileCutterSpec& p = job.profile_cutter;
+    c.range("profile_cutter.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
+    c.range("profile_cutter.pulses_per_step_a", p.pulses_per_step_a, 1, 100000, "pulses/step");
+    c.range("profile_cutter.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
+    c.range("profile_cutter.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
+    c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
+    c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
+    if (!p.branch_position_auto)
+        c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0,
+                job.main_pipe.length_mm, "mm");
+    // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
+    if (job.cut.bevel_deg != 0)
+        c.add("cut.bevel_deg", "cut.bevel_deg = " + num(job.cut.bevel_deg) +
+                                   " deg: the 2-axis profile cutter cuts square only (0 deg)");
+    return c.issues;
+}
+
+bool ProfileCutterModule::supportsCanOpen(std::string* why) const {
+    if (why)
+        *why = "the profile cutter's A and X steppers are driven by a pulse card, not by CANopen "
+               "drives: use devices.kind = \"simulated\"";
+    return false;
+}
+
+MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText) const {
+    MachinePlan out;
+    auto data = std::make_shared<ProfileCutterPlanData>();
+    data->cut = computeProfileCut(job);
+    data->schedule = buildPulseSchedule(data->cut, job.profile_cutter, job.cut.speed_mm_s);
+    out.data = data;
+    const PulseSchedule& sch = data->schedule;
+    out.summary =
+        formatC("cut %s, %zu steps/rev, developed length %.2f mm at %.2f mm/s (%.2f s); largest "
+                "pulse rates X %.0f Hz, A %.0f Hz (limit %.0f Hz)",
+                toString(job.cut.target), data->cut.points.size(), sch.developed_length_mm,
+                job.cut.speed_mm_s, sch.total_time_s, sch.max_x_rate_hz, sch.max_a_rate_hz,
+                job.profile_cutter.max_pulse_rate_hz);
+    out.status = PlanStatus::Infeasible;
+    if (!sch.problem.empty()) {
+        out.problem = "not feasible: " + sch.problem;
+        return out;
+    }
+    if (const std::string travel = travelProblem(job, data->cut); !travel.empty()) {
+        out.problem = "not feasible: " + travel;
+        return out;
+    }
+    try {
+        out.program = buildProfileCutterProgram(job, jobText);
+    } catch (const std::invalid_argument& e) {
+        out.problem = std::string("not feasible: ") + e.what();
+        return out;
+    }
+    out.status = PlanStatus::Ok;
+    return out;
+}
+
+std::vector<ExportInfo> ProfileCutterModule::exports() const {
+    return {{"path_csv", "cut path with stepper pulses (CSV)", "path.csv", true, false},
+            {"gcode", "LinuxCNC G-code (X/A, inverse-time feed)", "cut.ngc", false, false},
+            {"template_svg", "1:1 cutting template (SVG)", "template.svg", false, false},
+            {"template_pdf", "1:1 cutting template (PDF)", "template.pdf", false, true}};
+}
+
+std::string ProfileCutterModule::exportFile(const std::string& exportId, const Job& job,
+                                            const MachinePlan& plan) const {
+    const auto* data = static_cast<const ProfileCutterPlanData*>(plan.data.get());
+    if (exportId == "template_svg") return templateSvg(buildTemplate(job));
+    if (exportId == "template_pdf") return templatePdf(buildTemplate(job));
+    if (!data) throw std::invalid_argument("the plan has no profile cut");
+    if (exportId == "path_csv") return profilePathCsv(data->cut, data->schedule);
+    if (exportId == "gcode") return profileGcode(job, data->cut);
+    throw std::invalid_argument("the profile cutter has no export " + json::quote(exportId));
+}
+
+json::Value ProfileCutterModule::runReport(const Job&, const MachinePlan&,
+                                           const TrackingReport& report) const {
+    return profileRunReportJson(report);
+}
+
+} // namespace cutcell

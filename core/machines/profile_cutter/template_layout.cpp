@@ -1,0 +1,132 @@
+#include "core/machines/profile_cutter/template_layout.h"
+#include "core/common/c_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace cutcell {
+namespace {
+
+constexpr double kMargin = 12;    // mm, printers need ~5 mm
+constexpr double kLineStep = 5.5; // mm between text lines
+constexpr double kTextSize = 3.5; // mm
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
+    char buf[256];
+    snprintfC(buf, sizeof buf, f, a, b, c, d);
+    return buf;
+}
+
+// Job text is printed into SVG and PDF: keep printable ASCII only.
+std::string ascii(const std::string& s) {
+    std::string out;
+    for (char ch : s)
+        out += (ch >= 32 && ch < 127) ? ch : '?';
+    return out;
+}
+
+std::vector<std::string> captions(const Job& job, const ProfileCut& cut, double xRef) {
+    std::vector<std::string> t;
+    t.push_back("CutCell cutting template: " + ascii(job.name));
+    t.push_back(
+        job.cut.target == CutTarget::Branch
+            ? "Branch pipe end (saddle): wrap round the BRANCH pipe, cut along the curve; keep the "
+              "reference-line side"
+            : "Hole in the main pipe: wrap round the MAIN pipe, cut out the closed curve (inside "
+              "is "
+              "scrap)");
+    t.push_back(fmt("main pipe OD %.2f mm, wall %.2f mm; branch pipe OD %.2f mm, wall %.2f mm",
+                    2 * job.main_pipe.radius_mm, job.main_pipe.wall_mm,
+                    2 * job.branch_pipe.radius_mm, job.branch_pipe.wall_mm));
+    t.push_back(fmt("angle between axes %.2f deg, eccentricity %.2f mm", job.angle_deg,
+                    job.eccentricity_mm));
+    for (size_t k = 0; k < job.other_branches.size() && job.cut.target == CutTarget::Branch; ++k) {
+        const OtherBranch& o = job.other_branches[k];
+        t.push_back("also fits other branch " + std::to_string(k + 1) +
+                    fmt(": OD %.2f mm, angle %.2f deg, eccentricity %.2f mm, position %.2f mm",
+                        2 * o.radius_mm, o.angle_deg, o.eccentricity_mm, o.position_mm) +
+                    fmt(", phase %.2f deg", o.phase_deg));
+    }
+    t.push_back(
+        fmt("width = circumference 2 pi R = %.2f mm (R = %.2f mm); reference line at X = %.1f mm "
+            "from the pipe's fixed end",
+            2 * kPi * cut.work_radius_mm, cut.work_radius_mm, xRef));
+    t.push_back("Print at 100 % (1:1, no fit to page); check the scale bar before cutting.");
+    return t;
+}
+
+} // namespace
+
+TemplateDrawing buildTemplate(const Job& job, int samples) {
+    const ProfileCut cut = computeProfileCut(job, samples);
+    TemplateDrawing d;
+    d.circumference_mm = 2 * kPi * cut.work_radius_mm;
+    d.a_low_deg = cut.target == CutTarget::Branch ? 0.0 : -180.0;
+    double xMin = 1e300, xMax = -1e300;
+    for (const auto& p : cut.points) {
+        xMin = std::min(xMin, p.x_mm);
+        xMax = std::max(xMax, p.x_mm);
+    }
+    const double xRef = 5 * std::floor((xMin - 15) / 5);
+    const auto caption = captions(job, cut, xRef);
+    const double textTop = kMargin + kTextSize;
+    for (size_t i = 0; i < caption.size(); ++i)
+        d.texts.push_back({{kMargin, textTop + kLineStep * static_cast<double>(i)},
+                           kTextSize,
+                           caption[i],
+                           false});
+
+    d.origin_u_mm = kMargin;
+    d.top_mm = textTop + kLineStep * static_cast<double>(caption.size()) + 8;
+    d.x_top_mm = xMax;
+    const double bottom = d.top_mm + (xMax - xRef);
+    auto page = [&](double aDeg, double x) {
+        return Eigen::Vector2d(d.origin_u_mm + cut.work_radius_mm * deg2rad(aDeg - d.a_low_deg),
+                               d.top_mm + (d.x_top_mm - x));
+    };
+
+    TemplateDrawing::Polyline curve{"cut", {}, 0.35, cut.target == CutTarget::Main};
+    const size_t last = cut.target == CutTarget::Branch ? cut.points.size() : cut.points.size() - 1;
+    for (size_t i = 0; i <= last; ++i) {
+        const ProfilePoint p = cut.closedAt(i);
+        curve.points.push_back(page(p.a_deg, p.x_mm));
+    }
+    d.lines.push_back(curve);
+
+    // Wrap edges and quadrant marks, labelled with A.
+    for (int k = 0; k <= 4; ++k) {
+        const double a = d.a_low_deg + 90.0 * k;
+        const Eigen::Vector2d top = page(a, xMax), foot = page(a, xRef);
+        const bool edge = k == 0 || k == 4;
+        d.lines.push_back(
+            {edge ? "edge" : "quadrant", {{top.x(), top.y() - 4}, foot}, edge ? 0.3 : 0.15, false});
+        d.texts.push_back({{top.x(), top.y() - 5}, kTextSize, fmt("%.0f deg", a), true});
+    }
+    d.lines.push_back(
+        {"reference", {page(d.a_low_deg, xRef), page(d.a_low_deg + 360, xRef)}, 0.3, false});
+    d.texts.push_back(
+        {{d.origin_u_mm + 2, bottom + 4.5},
+         kTextSize,
+         fmt("reference line X = %.1f mm (align with a line scribed round the pipe)", xRef),
+         false});
+
+    // Scale bar: 100 mm (50 mm on small pipes), ticks every 10 mm.
+    d.scale_bar_mm = d.circumference_mm >= 110 ? 100 : 50;
+    const double sy = bottom + 16, sx = d.origin_u_mm;
+    d.lines.push_back({"scale", {{sx, sy}, {sx + d.scale_bar_mm, sy}}, 0.4, false});
+    for (int k = 0; k * 10 <= static_cast<int>(d.scale_bar_mm); ++k) {
+        const double x = sx + 10.0 * k, h = (k % 5 == 0) ? 4 : 2;
+        d.lines.push_back({"scale", {{x, sy - h}, {x, sy}}, 0.25, false});
+    }
+    d.texts.push_back({{sx + d.scale_bar_mm + 3, sy},
+                       kTextSize,
+                       fmt("%.0f mm at 1:1 (ticks every 10 mm)", d.scale_bar_mm),
+                       false});
+
+    d.width_mm = std::max(d.circumference_mm + 2 * kMargin, 215.0);
+    d.height_mm = sy + 6 + kMargin;
+    return d;
+}
+
+} // namespace cutcell

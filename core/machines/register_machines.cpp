@@ -1,0 +1,14 @@
+// The one list of machines. Adding a machine = one line here (and its folder); the first one
+// is the machine of schema-1 files without a "machine" key.
+#include "core/machine/machine_registry.h"
+#include "core/machines/pipe_robot/pipe_robot_module.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
+
+namespace cutcell {
+
+void registerMachines() {
+    registerMachine(std::make_unique<PipeRobotModule>());
+    registerMachine(std::make_unique<ProfileCutterModule>());
+}
+
+} // namespace cutcell

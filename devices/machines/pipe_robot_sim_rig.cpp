@@ -1,0 +1,46 @@
+// The pipe robot's simulated cell: six simulated drives (the job's PID and joint plant) and a
+// simulated torch.
+#include "devices/machines/sim_rigs.h"
+#include "devices/sim/simulated_drive.h"
+#include "devices/sim/simulated_torch.h"
+
+#include <array>
+
+namespace cutcell {
+namespace {
+
+class PipeRobotSimRig : public MachineSimRig {
+  public:
+    PipeRobotSimRig(const Job& job, const MotionProgram& program) : job_(job) {
+        for (size_t i = 0; i < drives_.size(); ++i) {
+            SimulatedDriveConfig dc;
+            dc.gains = job.controller[i];
+            dc.plant = job.plant[i];
+            dc.period_s = job.sim.period_s;
+            dc.initial_position = program.reference[static_cast<int>(i)];
+            drives_[i] = std::make_unique<SimulatedDrive>(dc);
+        }
+    }
+    EngineDevices devices() override {
+        EngineDevices d;
+        for (size_t i = 0; i < drives_.size(); ++i)
+            d.axes[i] = drives_[i].get();
+        d.torch = &torch_;
+        return d;
+    }
+    void configure(EngineConfig& config) const override { config.period_s = job_.sim.period_s; }
+    std::string description() const override { return "Simulated cell: 6 drives + torch"; }
+
+  private:
+    Job job_;
+    std::array<std::unique_ptr<SimulatedDrive>, kAxisCount> drives_;
+    SimulatedTorch torch_;
+};
+
+} // namespace
+
+std::unique_ptr<MachineSimRig> makePipeRobotSimRig(const Job& job, const MotionProgram& program) {
+    return std::make_unique<PipeRobotSimRig>(job, program);
+}
+
+} // namespace cutcell
