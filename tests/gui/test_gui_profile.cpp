@@ -7,6 +7,7 @@
 
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
 #include "core/machines/profile_cutter/gcode_export.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
 #include "plots/tracking_plots_widget.h"
@@ -24,6 +25,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+
 #include <QtTest>
 
 using cutcell::EngineState;
@@ -208,6 +210,23 @@ class TestGuiProfile : public QObject {
         w.editor()->setJob(job);
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
         QTRY_VERIFY(w.run()->startBlockedReason().contains("x_travel_mm"));
+        QVERIFY(!w.controls()->startButton()->isEnabled());
+    }
+
+    // One validation for GUI and CLI: a pulse rate the card cannot give is refused by both, with
+    // the same sentence (the GUI once accepted what `cutcell-cli validate` refused).
+    void pulseRateOverTheCardBlocksStartAsInTheCli() {
+        MainWindow w(&cutcell::app::makeRig);
+        openProfileJob(w);
+        auto job = w.editor()->job();
+        job.profile_cutter.max_pulse_rate_hz = 50; // in range, far below what the cut needs
+        w.editor()->setJob(job);
+        const cutcell::MachinePlan cli = cutcell::machineFor(job).plan(job);
+        QVERIFY(!cli.ok());
+        QVERIFY(QString::fromStdString(cli.problem).contains("max_pulse_rate_hz"));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
+        QTRY_VERIFY2(w.run()->startBlockedReason().contains(QString::fromStdString(cli.problem)),
+                     qPrintable(w.run()->startBlockedReason()));
         QVERIFY(!w.controls()->startButton()->isEnabled());
     }
 };
