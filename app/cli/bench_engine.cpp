@@ -1,7 +1,8 @@
 // cutcell-cli bench: the motion engine's real-time figures (cycle jitter and overruns over a
 // run of the default job at 1 ms; emergency-stop latency over many trials), what its thread
-// was granted (SCHED_FIFO, memory lock), and the host's own wake-up latency measured like
-// cyclictest at the same period for the same time, with the engine's p99 as a ratio to it.
+// was granted (SCHED_FIFO, memory lock), the host's own wake-up latency measured like
+// cyclictest at the same period for the same time (with the engine's p99 as a ratio to it), and
+// the work of one cycle for each motion source (joint spline, master axis, control law).
 // Printed, never asserted.
 #include "bench_engine.h"
 
@@ -9,8 +10,10 @@
 #include "core/engine/motion_engine.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/trajectory/cut_planner.h"
+#include "devices/sim/follower_rig.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
+#include "devices/sim/slider_rig.h"
 
 #include <algorithm>
 #include <chrono>
@@ -79,12 +82,99 @@ double quantile(std::vector<double> v, double p) {
     return v[std::min(k, v.size() - 1)];
 }
 
+// The engine's own work per cycle (runCycles(1) timed on this thread, fast clock; telemetry
+// and events drained between timed cycles, untimed): the 99th percentile in us.
+double cycleWorkP99(MotionEngine& engine, int cycles) {
+    std::vector<double> us;
+    us.reserve(static_cast<size_t>(cycles));
+    for (int k = 0; k < cycles; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        engine.runCycles(1, static_cast<EngineState>(255));
+        const auto t1 = std::chrono::steady_clock::now();
+        us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+        if (k % 30 == 0) drain(engine);
+    }
+    return quantile(us, 0.99);
+}
+
+EngineConfig fastConfig(double period_s) {
+    EngineConfig c;
+    c.period_s = period_s;
+    c.clock = ClockMode::AsFastAsPossible;
+    c.spec.runs_dir.clear();
+    return c;
+}
+
+// Starts the program and runs until its source is moving (the figures are of the run itself).
+bool startRun(MotionEngine& engine, int maxCycles) {
+    auto until = [&](EngineState s) {
+        engine.runCycles(1, static_cast<EngineState>(255)); // takes the pending command
+        for (int k = 0; k < maxCycles && engine.state() != s; ++k) {
+            engine.runCycles(1, static_cast<EngineState>(255));
+            if (k % 30 == 0) drain(engine);
+        }
+    };
+    engine.enable();
+    until(EngineState::Ready);
+    engine.home();
+    until(EngineState::Ready);
+    engine.start();
+    engine.runCycles(1, static_cast<EngineState>(255));
+    return engine.state() == EngineState::Running;
+}
+
+void benchSources(const Job& job, const std::shared_ptr<const MotionProgram>& spline, bool quick,
+                  json::Object& out) {
+    const int cycles = quick ? 5000 : 30000;
+    {
+        SimCell cell(job);
+        EngineConfig c = fastConfig(job.sim.period_s);
+        c.spec = job.engine;
+        c.spec.runs_dir.clear();
+        MotionEngine engine(cell.devices, c);
+        engine.load(spline);
+        if (startRun(engine, 20000))
+            out.emplace_back("cycle_us_p99_joint_spline", cycleWorkP99(engine, cycles));
+    }
+    {
+        FollowerRigOptions o;
+        o.line.speed_mm_s = 200;
+        o.line.speed_amplitude = 0.1;
+        o.line.noise_mm = 0.005;
+        o.follower.first_sync = 300;
+        o.follower.start_distance = 60;
+        o.follower.sync_span = 200;
+        o.follower.cut_length = 500;
+        o.follower.cut_count = 1000;
+        o.follower.return_s = 0.5;
+        FollowerRig rig(o);
+        EngineConfig c = fastConfig(0.001);
+        rig.configure(c);
+        MotionEngine engine(rig.devices(), c);
+        engine.load(rig.program());
+        if (startRun(engine, 2000))
+            out.emplace_back("cycle_us_p99_master_axis", cycleWorkP99(engine, cycles));
+    }
+    {
+        SliderRigOptions o;
+        o.law.stroke_count = 100000;
+        SliderRig rig(o);
+        EngineConfig c = fastConfig(0.001);
+        rig.configure(c);
+        MotionEngine engine(rig.devices(), c);
+        engine.load(rig.program());
+        if (startRun(engine, 2000))
+            out.emplace_back("cycle_us_p99_control_law", cycleWorkP99(engine, cycles));
+    }
+}
+
 } // namespace
 
 void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, json::Object& out) {
     const CutPlan plan = planCut(job);
     if (!plan.reachable) return;
     const auto program = buildPipeRobotProgram(job, plan);
+    benchSources(job, program, quick, out);
     const double timedS = quick ? 2 : 10;
 
     // 0. The host alone: cyclictest's measurement (clock_nanosleep to absolute deadlines) on a

@@ -24,7 +24,7 @@ json::Value machineJson(const MachineModule& m) {
                                     {"unit", unitSymbol(a.unit)},
                                     {"min", a.min},
                                     {"max", a.max},
-                                    {"command_mode", toString(a.mode)}});
+                                    {"command_mode", commandModeName(a.mode)}});
     json::Array exports;
     for (const ExportInfo& e : m.exports())
         exports.push_back(json::Object{{"id", e.id},
@@ -63,7 +63,7 @@ int runMachines(const MachinesOptions& o) {
         for (const AxisInfo& a : m->axes(m->defaultJob()))
             std::printf("  axis %-22s %-4s [%s, %s]  %s command\n", a.name.c_str(),
                         unitSymbol(a.unit), limitText(a.min).c_str(), limitText(a.max).c_str(),
-                        toString(a.mode));
+                        commandModeName(a.mode));
         for (const ExportInfo& e : m->exports())
             std::printf("  export %-14s %s (%s)\n", e.id.c_str(), e.title.c_str(),
                         e.default_name.c_str());

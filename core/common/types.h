@@ -2,15 +2,26 @@
 // Shared value types of the core: fixed-size joint vectors so the control cycle never allocates.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <numbers>
 
 namespace cutcell {
 
-// Axis 0 is the pipe chuck (the seed's theta0); axes 1..5 are the arm joints theta1..theta5.
+// A machine has up to kMaxAxes axes; a JointVector holds one value per axis (axes past the
+// machine's axis count are zero). Fixed size: no heap in the control cycle.
+inline constexpr int kMaxAxes = 8;
+// The pipe robot's axes: axis 0 is the pipe chuck (the seed's theta0); axes 1..5 are the arm
+// joints theta1..theta5.
 inline constexpr int kAxisCount = 6;
 inline constexpr int kArmJointCount = 5;
 
-using JointVector = Eigen::Matrix<double, kAxisCount, 1>;
+using JointVector = Eigen::Matrix<double, kMaxAxes, 1>;
+
+// The unit of an axis: rotary axes in rad (shown in deg), linear axes in mm.
+enum class AxisUnit : std::uint8_t { Rotary, Linear };
+inline constexpr const char* displayUnit(AxisUnit u) {
+    return u == AxisUnit::Linear ? "mm" : "deg";
+}
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Pose = Eigen::Isometry3d;

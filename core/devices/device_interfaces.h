@@ -6,7 +6,7 @@
 // requests and return at once; their progress shows in the state read back each cycle.
 // read()/write() are called once per cycle and must not block, lock or allocate; read() may
 // also be called right after an emergency-stop push (it returns the latest known state).
-// Units: rotary axes in rad, rad/s; linear axes in mm, mm/s.
+// Units: rotary axes in rad, rad/s, N m; linear axes in mm, mm/s, N.
 #include <cstdint>
 
 namespace cutcell {
@@ -30,6 +30,14 @@ struct DriveFeedback {
     double torque_ratio = 0; // torque applied over the last period / rated torque (CiA 402 0x6077)
 };
 
+// How an axis is commanded: CiA 402 cyclic synchronous position / velocity / torque.
+enum class AxisCommandMode : std::uint8_t {
+    Position, // CSP: target position every cycle; the drive closes the loops
+    Velocity, // CSV: target velocity every cycle
+    Torque,   // CST: target torque (force) every cycle; the loop is closed by the engine
+};
+const char* toString(AxisCommandMode m);
+
 class AxisDrive {
   public:
     virtual ~AxisDrive() = default;
@@ -39,20 +47,49 @@ class AxisDrive {
     virtual void faultReset() = 0; // Fault -> Disabled (rising edge on a real drive)
     // Per cycle: now_s is the engine's clock (simulated or real time).
     virtual DriveFeedback read(double now_s) = 0;
-    virtual void write(double targetPosition) = 0;
+    // Per cycle, the command of the drive's mode (exactly one of the three is called).
+    virtual void write(double targetPosition) = 0;                              // CSP
+    virtual void writeVelocity(double targetVelocity) { (void)targetVelocity; } // CSV
+    virtual void writeTorque(double targetTorque) { (void)targetTorque; }       // CST
+    // The command mode is chosen before the run, outside the cycle (a CANopen drive writes
+    // 0x6060 by SDO), while the drive is disabled; false if the drive does not offer it. The
+    // engine refuses a program whose axis modes differ from its drives'.
+    virtual bool setCommandMode(AxisCommandMode mode) { return mode == AxisCommandMode::Position; }
+    virtual AxisCommandMode commandMode() const { return AxisCommandMode::Position; }
 };
 
-struct TorchFeedback {
-    bool on = false;
-    bool arc_ok = false; // arc established (false while on = arc lost)
+// An external encoder or sensor (a line encoder on a measuring roller, a slider's scale):
+// read once per cycle, never blocks. Units as the axes.
+struct SensorReading {
+    double position = 0;
+    double velocity = 0;
+    bool valid = false; // false: no fresh, trustworthy value (cable, bus loss, scale error)
     std::uint32_t fault_code = 0;
 };
 
-class Torch {
+class SensorInput {
   public:
-    virtual ~Torch() = default;
-    virtual void setOn(bool on) = 0; // must take effect at once (emergency stop)
-    virtual TorchFeedback read(double now_s) = 0;
+    virtual ~SensorInput() = default;
+    virtual SensorReading read(double now_s) = 0;
 };
+
+// A process tool: a cutting torch or a saw. On/off and "process OK" (arc established, blade
+// at speed); false while on means the process was lost (arc out, blade stalled).
+struct ProcessToolFeedback {
+    bool on = false;
+    bool process_ok = false;
+    std::uint32_t fault_code = 0;
+};
+
+class ProcessTool {
+  public:
+    virtual ~ProcessTool() = default;
+    virtual void setOn(bool on) = 0; // must take effect at once (emergency stop)
+    virtual ProcessToolFeedback read(double now_s) = 0;
+};
+
+// The torch is the process tool of the cutting machines.
+using Torch = ProcessTool;
+using TorchFeedback = ProcessToolFeedback;
 
 } // namespace cutcell

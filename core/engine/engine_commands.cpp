@@ -102,7 +102,7 @@ void MotionEngine::Impl::setState(EngineState s, EventKind kind, const char* fmt
 
 JointVector MotionEngine::Impl::actualPositions() const {
     JointVector q = setpoint;
-    for (int i = 0; i < kAxisCount; ++i)
+    for (int i = 0; i < kMaxAxes; ++i)
         if (axisPresent(i)) q[i] = fb[static_cast<size_t>(i)].position;
     return q;
 }
@@ -118,7 +118,8 @@ void MotionEngine::Impl::holdAt(const JointVector& q) {
 // ---- transitions -----------------------------------------------------------------------
 
 void MotionEngine::Impl::disableAll() {
-    for (int i = 0; i < kAxisCount; ++i)
+    // Torque-mode axes also get a zero torque at this cycle's write (writeDevices).
+    for (int i = 0; i < kMaxAxes; ++i)
         if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->deactivate();
     enabling = false;
     homed = false;
@@ -131,7 +132,8 @@ void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
     torchCommand = false;
     if (dev.torch) dev.torch->setOn(false); // at once, not at the cycle's write
     torchWritten = false;
-    const bool moving = traj != TrajectoryKind::Hold && rate > 0;
+    const bool moving =
+        traj == TrajectoryKind::Source ? !sourceAtRest : traj != TrajectoryKind::Hold && rate > 0;
     if (category == StopCategory::Cat0 || !moving) {
         disableAll();
     } else {
@@ -149,6 +151,11 @@ void MotionEngine::Impl::endRun(const char* outcome) {
     stats.fill(r.report);
     cruise.fillCruise(r.report);
     r.report.reachable = true;
+    r.report.axis_count = axisCount();
+    if (program)
+        for (int i = 0; i < kMaxAxes; ++i)
+            r.report.axis_linear[static_cast<size_t>(i)] =
+                program->axis_linear[static_cast<size_t>(i)];
     r.report.length_mm = program ? program->length_mm : 0;
     r.report.cut_time_s = program ? program->cut_time_s : 0;
     r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;
@@ -208,17 +215,19 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
         return;
     }
     captureStop();
-    stopDevices(cfg.spec.estop_category, StopReason::FaultCat1);
+    const StopCategory category = faultCat0 ? StopCategory::Cat0 : cfg.spec.estop_category;
+    faultCat0 = false;
+    stopDevices(category, StopReason::FaultCat1);
     char outcome[120];
     snprintfC(outcome, sizeof outcome, "fault: %.110s", reason);
     setState(EngineState::Fault, EventKind::Fault, "Fault: %s; torch off, %s stop", reason,
-             toString(cfg.spec.estop_category));
+             toString(category));
     endRun(outcome);
 }
 
 void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveState) {
-    JointVector limit;
-    for (int i = 0; i < kAxisCount; ++i)
+    JointVector limit = JointVector::Zero();
+    for (int i = 0; i < kMaxAxes; ++i)
         limit[i] = speedLimit(i);
     move = JointMove::make(setpoint, target, limit);
     traj = TrajectoryKind::Move;
@@ -249,10 +258,19 @@ void MotionEngine::Impl::beginCut() {
     emitf(EventKind::RunStarted, Severity::Info, state, EngineState::Running,
           "Run %u started: %s, %.1f mm in %.2f s", runId, program->name.c_str(), program->length_mm,
           program->cut_time_s);
+    sourceStarted = false;
+    sourceAtRest = false;
+    if (program->source_kind == MotionSourceKind::ControlLaw) {
+        // A control law starts from where its axes are: no approach.
+        setState(EngineState::Running, EventKind::Transition, "Start: control law");
+        phase = RunPhase::Ignite;
+        phaseSince = now;
+        return;
+    }
     setState(EngineState::Running, EventKind::Transition, "Start: approach to the first cut point");
     phase = RunPhase::Approach;
     phaseSince = now;
-    beginMove(program->spline.evaluate(0).q, EngineState::Running);
+    beginMove(startPosition(), EngineState::Running);
 }
 
 // ---- commands --------------------------------------------------------------------------
@@ -271,14 +289,28 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         const MotionProgram* p = c.program;
         if (inMotion(s)) return refuse(c.type, "a motion is in progress (%s)", toString(s));
         if (!p) return refuse(c.type, "no program");
-        if (p->axis_count < 1 || p->axis_count > kAxisCount)
-            return refuse(c.type, "axis_count = %d is outside 1 .. %d", p->axis_count, kAxisCount);
-        if (p->spline.empty() || !(p->cut_time_s > 0))
+        if (p->axis_count < 1 || p->axis_count > kMaxAxes)
+            return refuse(c.type, "axis_count = %d is outside 1 .. %d", p->axis_count, kMaxAxes);
+        if (p->source_kind == MotionSourceKind::JointSpline &&
+            (p->spline.empty() || !(p->cut_time_s > 0)))
             return refuse(c.type, "the program has no trajectory");
+        if (p->source_kind != MotionSourceKind::JointSpline && !p->source)
+            return refuse(c.type, "the %s program has no motion source", toString(p->source_kind));
+        for (size_t k = 0; k < dev.sensors.size(); ++k)
+            if ((p->sensors_used >> k & 1u) && !dev.sensors[k])
+                return refuse(c.type, "sensor %zu is used by the program but not connected", k);
         for (int i = 0; i < p->axis_count; ++i) {
             if (!axisPresent(i))
                 return refuse(c.type, "axis %d (%s) has no drive", i,
                               p->axis_names[static_cast<size_t>(i)].c_str());
+            const AxisCommandMode want = p->axis_modes[static_cast<size_t>(i)];
+            const AxisCommandMode have = dev.axes[static_cast<size_t>(i)]->commandMode();
+            if (want != have)
+                return refuse(c.type,
+                              "axis %d (%s): the program commands %s, the drive is set to %s "
+                              "(set the mode before the run)",
+                              i, p->axis_names[static_cast<size_t>(i)].c_str(), toString(want),
+                              toString(have));
             const double r = p->reference[i];
             if (r < p->min_position[i] || r > p->max_position[i])
                 return refuse(c.type, "reference of axis %d = %.4g is outside %.4g .. %.4g", i, r,
@@ -299,7 +331,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
             return refuse(c.type, "drives already enabled (%s)", toString(s));
         if (!program) return refuse(c.type, "no job loaded");
         if (enabling) return refuse(c.type, "drives are already enabling");
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < kMaxAxes; ++i)
             if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->activate();
         enabling = true;
         enableDeadline = now + cfg.enable_timeout_s;
@@ -351,6 +383,12 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         if (stopping != StopReason::None) return refuse(c.type, "a stop is in progress");
         if (holding) return refuse(c.type, "already holding");
         holding = true;
+        if (isSourceProgram())
+            return note("Feed hold: %s (%s)",
+                        program->source_kind == MotionSourceKind::MasterAxis
+                            ? "finishing the cut, returning, then no more waiting for the line"
+                            : "the control law brings the axes to rest",
+                        program->source->stateName());
         if (!cfg.spec.torch_on_during_feed_hold) torchCommand = false;
         return note("Feed hold: decelerating along the path (torch %s)",
                     torchCommand ? "stays lit" : "off");
@@ -404,7 +442,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
             return refuse(c.type, "the emergency stop is still pressed (release it first)");
         if (stopping != StopReason::None)
             return refuse(c.type, "the controlled stop is still in progress");
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < kMaxAxes; ++i)
             if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->faultReset();
         estopLatched = false;
         return setState(EngineState::Idle, EventKind::Transition,

@@ -4,6 +4,7 @@
 #include "core/engine/engine_impl.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace cutcell {
 
@@ -38,15 +39,17 @@ void MotionEngine::Impl::checkEmergencyStop() {
 }
 
 void MotionEngine::Impl::readDevices() {
-    for (int i = 0; i < kAxisCount; ++i)
+    for (int i = 0; i < kMaxAxes; ++i)
         if (axisPresent(i))
             fb[static_cast<size_t>(i)] = dev.axes[static_cast<size_t>(i)]->read(now);
+    for (size_t k = 0; k < dev.sensors.size(); ++k)
+        if (dev.sensors[k]) sensorFb[k] = dev.sensors[k]->read(now);
     if (dev.torch) torchFb = dev.torch->read(now);
 }
 
 void MotionEngine::Impl::checkEstopComplete() {
     if (!estopLatencyPending) return;
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kMaxAxes; ++i) {
         if (!axisPresent(i)) continue;
         const DriveState d = fb[static_cast<size_t>(i)].state;
         if (d != DriveState::Disabled && d != DriveState::Fault) return;
@@ -62,7 +65,7 @@ void MotionEngine::Impl::checkEstopComplete() {
 void MotionEngine::Impl::superviseEnabling() {
     if (!enabling || state != EngineState::Idle) return;
     bool all = true;
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kMaxAxes; ++i) {
         if (!axisPresent(i)) continue;
         const DriveFeedback& f = fb[static_cast<size_t>(i)];
         if (f.state == DriveState::Fault) {
@@ -83,7 +86,7 @@ void MotionEngine::Impl::superviseEnabling() {
     enabling = false;
     holdAt(actualPositions());
     setpoint = hold;
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kMaxAxes; ++i) {
         lastSensed[static_cast<size_t>(i)] = fb[static_cast<size_t>(i)].position;
         travelSinceChange[static_cast<size_t>(i)] = 0;
     }
@@ -93,8 +96,9 @@ void MotionEngine::Impl::superviseEnabling() {
 
 // State machine step at the current path time (before the set-point is computed).
 void MotionEngine::Impl::advance() {
-    // A controlled stop (abort, category-1 stop) ends when the path rate reaches zero.
-    if (stopping != StopReason::None && rate <= 0) {
+    // A controlled stop (abort, category-1 stop) ends when the path rate (or the source)
+    // reaches rest.
+    if (stopping != StopReason::None && restReached()) {
         const StopReason why = stopping;
         stopping = StopReason::None;
         holding = false;
@@ -124,7 +128,7 @@ void MotionEngine::Impl::advance() {
 }
 
 void MotionEngine::Impl::stepRunning() {
-    if (state == EngineState::Running && holding && rate <= 0 && stopping == StopReason::None) {
+    if (state == EngineState::Running && holding && restReached() && stopping == StopReason::None) {
         setState(EngineState::Paused, EventKind::Transition,
                  "Paused on the path at %.3f s (torch %s)", tau, torchCommand ? "lit" : "off");
         return;
@@ -160,13 +164,36 @@ void MotionEngine::Impl::stepRunning() {
         break;
     }
     case RunPhase::Ignite:
-        torchCommand = true;
-        if (dev.torch && torchFb.arc_ok && tau <= 0 && program->pierce_s > 0) {
+        torchCommand = program->uses_tool;
+        if (isSourceProgram() && (!dev.torch || !program->uses_tool || torchFb.process_ok)) {
+            phase = RunPhase::Cut;
+            traj = TrajectoryKind::Source;
+            const bool first = !sourceStarted;
+            if (first) {
+                SourceInput in;
+                in.now_s = now;
+                in.period_s = T;
+                in.axis_count = axisCount();
+                in.axes = &fb;
+                in.sensors = &sensorFb;
+                in.setpoint = setpoint;
+                in.override_fraction = overrideTarget;
+                in.tool_ok = torchFb.process_ok;
+                program->source->start(in);
+                sourceStarted = true;
+                sourceAtRest = false;
+                cutStartTime = now;
+            }
+            note(first ? "%s: %s program running" : "%s: %s program resumed",
+                 program->uses_tool && dev.torch ? "Process OK" : "Start",
+                 toString(program->source_kind));
+        } else if (!isSourceProgram() && dev.torch && torchFb.process_ok && tau <= 0 &&
+                   program->pierce_s > 0) {
             // At the first cut point the arc must go through the material before it moves.
             phase = RunPhase::Pierce;
             phaseSince = now;
             note("Arc established: piercing for %.3f s", program->pierce_s);
-        } else if (!dev.torch || torchFb.arc_ok) {
+        } else if (!isSourceProgram() && (!dev.torch || torchFb.process_ok)) {
             phase = RunPhase::Cut;
             traj = TrajectoryKind::Path;
             if (tau <= 0) {
@@ -183,7 +210,7 @@ void MotionEngine::Impl::stepRunning() {
         break;
     case RunPhase::Pierce:
         torchCommand = true;
-        if (!torchFb.arc_ok) { // the torch went out on a feed hold: light it again
+        if (!torchFb.process_ok) { // the torch went out on a feed hold: light it again
             phase = RunPhase::Ignite;
             phaseSince = now;
         } else if (now - phaseSince >= program->pierce_s - 0.5 * T) {
@@ -197,6 +224,16 @@ void MotionEngine::Impl::stepRunning() {
         }
         break;
     case RunPhase::Cut:
+        if (isSourceProgram()) {
+            if (sourceRan && srcOut.status == SourceStatus::Done) {
+                pathDone = true;
+                torchCommand = false;
+                phase = RunPhase::Finish;
+                note("Program finished (%s, %u of %u): tool off", program->source->stateName(),
+                     srcOut.point_index, srcOut.point_count);
+            }
+            break;
+        }
         if (tau / T >= program->cut_time_s / T - 1e-9) {
             pathDone = true;
             torchCommand = false;
@@ -229,8 +266,70 @@ JointSample MotionEngine::Impl::evaluate(double t) const {
         return move.at(t);
     case TrajectoryKind::Path:
         return program->spline.evaluate(t);
+    case TrajectoryKind::Source: { // the source sets the set-point (runSource)
+        JointSample s;
+        s.q = setpoint;
+        return s;
+    }
     }
     return {};
+}
+
+JointVector MotionEngine::Impl::startPosition() const {
+    return isSourceProgram() ? program->start_position : program->spline.evaluate(0).q;
+}
+
+bool MotionEngine::Impl::restReached() const {
+    return traj == TrajectoryKind::Source ? sourceAtRest : rate <= 0;
+}
+
+SourceRequest MotionEngine::Impl::sourceRequest() const {
+    if (traj != TrajectoryKind::Source) return SourceRequest::Track;
+    if (stopping == StopReason::Abort) return SourceRequest::Abort;
+    if (stopping != StopReason::None) return SourceRequest::ControlledStop;
+    // Paused, holding, or waiting for the tool (resume): stay at rest.
+    if (holding || state == EngineState::Paused || phase == RunPhase::Ignite)
+        return SourceRequest::FeedHold;
+    return SourceRequest::Run;
+}
+
+// The program's motion source: while it runs the program (traj Source), it sets the set-point;
+// a control law also runs whenever its drives have torque, tracking the engine's set-point.
+void MotionEngine::Impl::runSource() {
+    sourceRan = false;
+    if (!isSourceProgram()) return;
+    const bool torqueOn = state == EngineState::Ready || state == EngineState::Homing ||
+                          state == EngineState::Jogging || state == EngineState::Running ||
+                          state == EngineState::Paused || state == EngineState::Completed ||
+                          stopping != StopReason::None;
+    const bool law = program->source_kind == MotionSourceKind::ControlLaw;
+    if (traj != TrajectoryKind::Source && !(law && torqueOn)) return;
+    SourceInput in;
+    in.now_s = now;
+    in.period_s = T;
+    in.axis_count = axisCount();
+    in.axes = &fb;
+    in.sensors = &sensorFb;
+    in.setpoint = setpoint;
+    in.setpoint_velocity = setpointVel;
+    in.request = sourceRequest();
+    in.override_fraction = overrideTarget;
+    in.tool_ok = torchFb.process_ok;
+    srcOut = SourceOutput{};
+    program->source->update(in, srcOut);
+    sourceRan = true;
+    if (traj == TrajectoryKind::Source) {
+        setpoint = srcOut.position;
+        setpointVel = srcOut.velocity;
+        sourceAtRest = srcOut.status == SourceStatus::AtRest || srcOut.status == SourceStatus::Done;
+        // The source switches its tool; held at rest, torch_on_during_feed_hold keeps it on.
+        const bool keepOn =
+            holding && sourceAtRest && cfg.spec.torch_on_during_feed_hold && torchCommand;
+        if (phase == RunPhase::Cut) torchCommand = program->uses_tool && (srcOut.tool_on || keepOn);
+    } else if (law) {
+        // Tracking a move: the law's reference is the engine's set-point.
+        setpoint = srcOut.position;
+    }
 }
 
 double MotionEngine::Impl::trajectoryDuration() const {
@@ -249,6 +348,7 @@ void MotionEngine::Impl::computeSetpoint() {
     const JointSample s = evaluate(tau);
     setpoint = s.q;
     setpointVel = s.qd * rate;
+    runSource();
 }
 
 void MotionEngine::Impl::superviseDevices() {
@@ -259,6 +359,12 @@ void MotionEngine::Impl::superviseDevices() {
         stopping != StopReason::None &&
         (state == EngineState::EmergencyStop || state == EngineState::Fault);
     if (!drivesOn && !stoppingLatched) return;
+    if (sourceRan && srcOut.status == SourceStatus::Fault) {
+        // A control law without trusted feedback cannot brake: torque off at once.
+        faultCat0 = program->source_kind == MotionSourceKind::ControlLaw;
+        return enterFault("%s source (%s): %s", toString(program->source_kind),
+                          program->source->stateName(), srcOut.fault);
+    }
     for (int i = 0; i < axisCount(); ++i) {
         const auto a = static_cast<size_t>(i);
         const DriveFeedback& f = fb[a];
@@ -273,6 +379,18 @@ void MotionEngine::Impl::superviseDevices() {
         if (!f.feedback_valid)
             return enterFault("axis %d (%s): feedback not valid (stale data) at %.3f %s", i,
                               axisName(i), displayValue(i, f.position), unit(i));
+        const bool supervised = !sourceRan || srcOut.supervised[a];
+        if (supervised != supervisedNow[a]) {
+            supervisedNow[a] = supervised;
+            note("axis %d (%s): following-error supervision %s%s%s", i, axisName(i),
+                 supervised ? "on again" : "off", supervised ? "" : ": ",
+                 supervised ? "" : srcOut.unsupervised_reason);
+        }
+        if (!supervised) { // no position reference (open-loop torque): nothing to compare
+            travelSinceChange[a] = 0;
+            lastSensed[a] = f.position;
+            continue;
+        }
         if (f.position == lastSensed[a]) {
             travelSinceChange[a] += std::fabs(setpoint[i] - setpointPrev[i]);
             if (travelSinceChange[a] > cfg.frozen_feedback_travel)
@@ -295,13 +413,16 @@ void MotionEngine::Impl::superviseDevices() {
     }
     if (dev.torch && torchFb.fault_code != 0)
         return enterFault("torch: fault 0x%04X", torchFb.fault_code);
-    if (dev.torch && torchCommand && arcWasOk && !torchFb.arc_ok) {
+    if (dev.torch && torchCommand && arcWasOk && !torchFb.process_ok) {
+        if (isSourceProgram())
+            return enterFault("process tool: process lost (%s, %u of %u)",
+                              program->source->stateName(), srcOut.point_index, srcOut.point_count);
         const std::uint32_t point =
             program ? static_cast<std::uint32_t>(tau / program->spline.dt()) : 0;
         return enterFault("torch: arc lost at point %u of %zu (path time %.3f s)", point,
                           program ? program->point_count : size_t{0}, tau);
     }
-    arcWasOk = torchCommand && torchFb.arc_ok;
+    arcWasOk = torchCommand && torchFb.process_ok;
 }
 
 void MotionEngine::Impl::track() {
@@ -322,10 +443,28 @@ void MotionEngine::Impl::track() {
 }
 
 void MotionEngine::Impl::writeDevices() {
-    for (int i = 0; i < kAxisCount; ++i)
-        if (axisPresent(i))
-            dev.axes[static_cast<size_t>(i)]->write(setpoint[i] +
-                                                    setpointVel[i] * cfg.setpoint_lead_s);
+    // Torque and velocity only while the drives are meant to have torque (the law ran this
+    // cycle, or a move is followed); 0 at once after an emergency stop or a fault.
+    const bool torqueOn = sourceRan && (state != EngineState::EmergencyStop &&
+                                        state != EngineState::Fault && state != EngineState::Idle);
+    const bool moving = state != EngineState::EmergencyStop && state != EngineState::Fault &&
+                        state != EngineState::Idle;
+    for (int i = 0; i < kMaxAxes; ++i) {
+        if (!axisPresent(i)) continue;
+        AxisDrive* d = dev.axes[static_cast<size_t>(i)];
+        switch (mode(i)) {
+        case AxisCommandMode::Position:
+            d->write(setpoint[i] + setpointVel[i] * cfg.setpoint_lead_s);
+            break;
+        case AxisCommandMode::Velocity:
+            d->writeVelocity(moving || stopping != StopReason::None ? setpointVel[i] : 0.0);
+            break;
+        case AxisCommandMode::Torque:
+            d->writeTorque(
+                torqueOn || (sourceRan && stopping != StopReason::None) ? srcOut.torque[i] : 0.0);
+            break;
+        }
+    }
     if (dev.torch && torchCommand != torchWritten) {
         dev.torch->setOn(torchCommand);
         torchWritten = torchCommand;
@@ -337,13 +476,34 @@ void MotionEngine::Impl::publishTelemetry() {
     TelemetrySample t;
     t.time_s = now;
     t.state = state;
+    t.axis_count = static_cast<std::uint8_t>(axisCount());
+    for (int i = 0; i < kMaxAxes; ++i) {
+        const auto a = static_cast<size_t>(i);
+        t.units[a] = program && program->axis_linear[a] ? AxisUnit::Linear : AxisUnit::Rotary;
+        t.modes[a] = mode(i);
+        t.supervised[a] = supervisedNow[a];
+        t.command[i] = t.modes[a] == AxisCommandMode::Torque ? (sourceRan ? srcOut.torque[i] : 0)
+                       : t.modes[a] == AxisCommandMode::Velocity ? setpointVel[i]
+                                                                 : setpoint[i];
+    }
+    if (isSourceProgram()) {
+        std::snprintf(t.source_state.data(), t.source_state.size(), "%s",
+                      program->source->stateName());
+        t.master_position = srcOut.master_position;
+    }
     t.setpoint = setpoint;
     t.actual = actualPositions();
     t.error = t.setpoint - t.actual;
     if (program && program->tip_model)
         t.cartesian_error_mm = tipsThisCycle(program->tip_model.get()).error();
-    if (program && (state == EngineState::Running || state == EngineState::Paused ||
-                    state == EngineState::Completed)) {
+    if (isSourceProgram() && (state == EngineState::Running || state == EngineState::Paused ||
+                              state == EngineState::Completed)) {
+        t.progress = state == EngineState::Completed ? 1 : srcOut.progress;
+        t.point_index = srcOut.point_index;
+        t.point_count = srcOut.point_count;
+        t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime;
+    } else if (program && (state == EngineState::Running || state == EngineState::Paused ||
+                           state == EngineState::Completed)) {
         const bool onPath = traj == TrajectoryKind::Path || phase == RunPhase::Finish ||
                             phase == RunPhase::Close || state == EngineState::Completed;
         const double pathT = state == EngineState::Completed ? program->cut_time_s
@@ -358,11 +518,11 @@ void MotionEngine::Impl::publishTelemetry() {
         t.remaining_s = (program->cut_time_s - pathT) / r;
     }
     t.override_fraction = overrideTarget;
-    for (int i = 0; i < kAxisCount; ++i)
+    for (int i = 0; i < kMaxAxes; ++i)
         t.drive_states[static_cast<size_t>(i)] =
             axisPresent(i) ? fb[static_cast<size_t>(i)].state : DriveState::Disabled;
     t.torch_on = torchFb.on;
-    t.arc_ok = torchFb.arc_ok;
+    t.process_ok = torchFb.process_ok;
     t.homed = homed;
     if (!telemetry.push(t)) telemetryDropped.fetch_add(1, std::memory_order_relaxed);
 }
@@ -381,7 +541,7 @@ const TipSample& MotionEngine::Impl::tipsThisCycle(const TipModel* model) {
 // anchor (tau0 + rate * n * T) so no rounding accumulates; at rate 1 from 0 it is n * T,
 // exactly the offline simulation's sample times.
 void MotionEngine::Impl::stepPathTime() {
-    if (traj == TrajectoryKind::Hold) return;
+    if (traj == TrajectoryKind::Hold || traj == TrajectoryKind::Source) return;
     double target = traj == TrajectoryKind::Path ? overrideTarget : 1.0;
     if (holding || stopping != StopReason::None) target = 0;
     if (traj == TrajectoryKind::Path && phase == RunPhase::Ignite) target = 0; // wait for the arc

@@ -28,8 +28,9 @@ struct EngineCommand {
     std::uint64_t seq = 0;                  // Load: the program's hand-over number
 };
 
-// What the engine is moving along (all time-scaled by the path rate).
-enum class TrajectoryKind : std::uint8_t { Hold, Move, Path };
+// What the engine is moving along (Hold, Move and Path are time-scaled by the path rate; Source
+// is the program's motion source, which keeps its own time).
+enum class TrajectoryKind : std::uint8_t { Hold, Move, Path, Source };
 // Steps of a Running job.
 enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Pierce, Cut, Finish, Close };
 // Why the path rate is being brought to zero.
@@ -102,8 +103,9 @@ struct MotionEngine::Impl {
     EngineState state = EngineState::Idle;
     std::uint64_t cycle = 0;
     double now = 0;
-    std::array<DriveFeedback, kAxisCount> fb{};
-    TorchFeedback torchFb{};
+    std::array<DriveFeedback, kMaxAxes> fb{};
+    std::array<SensorReading, kMaxSensors> sensorFb{};
+    ProcessToolFeedback torchFb{};
     bool enabling = false;
     double enableDeadline = 0;
     bool homed = false;
@@ -139,8 +141,15 @@ struct MotionEngine::Impl {
     std::uint64_t tipsCycle = ~std::uint64_t{0};
     const TipModel* tipsModel = nullptr;
     const TipSample& tipsThisCycle(const TipModel* model);
+    // motion source (MasterAxis / ControlLaw programs)
+    SourceOutput srcOut{};
+    bool sourceRan = false;     // update() ran this cycle (srcOut is this cycle's)
+    bool sourceStarted = false; // start() ran for the current run
+    bool sourceAtRest = false;
+    bool faultCat0 = false; // the next fault removes torque at once (control laws)
     // supervision
-    std::array<double, kAxisCount> lastSensed{}, travelSinceChange{};
+    std::array<double, kMaxAxes> lastSensed{}, travelSinceChange{};
+    std::array<bool, kMaxAxes> supervisedNow{true, true, true, true, true, true, true, true};
     bool arcWasOk = false;
 
     // cycle.cpp
@@ -158,6 +167,9 @@ struct MotionEngine::Impl {
     void writeDevices();
     void publishTelemetry();
     void stepPathTime();
+    void runSource();
+    SourceRequest sourceRequest() const;
+    bool restReached() const; // the rate (spline, moves) or the source is at rest
 
     // commands.cpp
     void processCommands();
@@ -190,6 +202,14 @@ struct MotionEngine::Impl {
         __attribute__((format(printf, 6, 7)));
     void note(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
     JointSample evaluate(double t) const;
+    JointVector startPosition() const; // where the approach goes
+    AxisCommandMode mode(int i) const {
+        return program && i < program->axis_count ? program->axis_modes[static_cast<size_t>(i)]
+                                                  : AxisCommandMode::Position;
+    }
+    bool isSourceProgram() const {
+        return program && program->source_kind != MotionSourceKind::JointSpline;
+    }
     double trajectoryDuration() const;
     void holdAt(const JointVector& q);
     JointVector actualPositions() const;

@@ -1,5 +1,8 @@
 #include "core/engine/engine_types.h"
 
+#include "core/engine/motion_program.h"
+#include "core/engine/motion_source.h"
+
 namespace cutcell {
 
 const char* toString(EngineState s) {
@@ -88,6 +91,46 @@ const char* toString(DriveState s) {
         return "QuickStop";
     case DriveState::Fault:
         return "Fault";
+    }
+    return "?";
+}
+
+const char* toString(AxisCommandMode m) {
+    switch (m) {
+    case AxisCommandMode::Position:
+        return "position (CSP)";
+    case AxisCommandMode::Velocity:
+        return "velocity (CSV)";
+    case AxisCommandMode::Torque:
+        return "torque (CST)";
+    }
+    return "?";
+}
+
+const char* toString(MotionSourceKind k) {
+    switch (k) {
+    case MotionSourceKind::JointSpline:
+        return "joint spline";
+    case MotionSourceKind::MasterAxis:
+        return "master axis";
+    case MotionSourceKind::ControlLaw:
+        return "control law";
+    }
+    return "?";
+}
+
+const char* toString(SourceRequest r) {
+    switch (r) {
+    case SourceRequest::Track:
+        return "track";
+    case SourceRequest::Run:
+        return "run";
+    case SourceRequest::FeedHold:
+        return "feed hold";
+    case SourceRequest::Abort:
+        return "abort";
+    case SourceRequest::ControlledStop:
+        return "controlled stop";
     }
     return "?";
 }

@@ -66,22 +66,32 @@ struct EngineEvent {
     std::uint32_t run_id = 0; // the run this event belongs to (0 = before the first Start)
 };
 
+// One cycle's view of the machine. Per axis i < axis_count: set-point, actual, error in the
+// axis's unit (rotary: rad, linear: mm — see units), its command mode and the command written
+// (CSP: the position; CSV: the velocity; CST: the torque or force).
 struct TelemetrySample {
     double time_s = 0;
     EngineState state = EngineState::Idle;
+    std::uint8_t axis_count = 0;
+    std::array<AxisUnit, kMaxAxes> units{};
+    std::array<AxisCommandMode, kMaxAxes> modes{};
+    std::array<bool, kMaxAxes> supervised{}; // following error checked this cycle
     JointVector setpoint = JointVector::Zero();
     JointVector actual = JointVector::Zero();
     JointVector error = JointVector::Zero(); // setpoint - actual
-    Vec3 cartesian_error_mm = Vec3::Zero();  // FK(actual) - FK(setpoint)
-    double progress = 0;                     // 0..1 of the cut's length
+    JointVector command = JointVector::Zero();
+    double master_position = 0;             // MasterAxis source: the filtered master
+    std::array<char, 24> source_state{};    // MasterAxis / ControlLaw: e.g. "in sync"
+    Vec3 cartesian_error_mm = Vec3::Zero(); // FK(actual) - FK(setpoint)
+    double progress = 0;                    // 0..1 of the cut's length
     std::uint32_t point_index = 0;
     std::uint32_t point_count = 0;
     double elapsed_s = 0;
     double remaining_s = 0;
     double override_fraction = 1;
-    std::array<DriveState, kAxisCount> drive_states{};
-    bool torch_on = false;
-    bool arc_ok = false;
+    std::array<DriveState, kMaxAxes> drive_states{};
+    bool torch_on = false;   // the process tool (torch or saw) is on
+    bool process_ok = false; // arc established / blade at speed
     bool homed = false;
 };
 

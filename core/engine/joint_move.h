@@ -21,7 +21,7 @@ struct JointMove {
         JointMove m;
         m.from = from;
         m.to = to;
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < kMaxAxes; ++i)
             if (speedLimit[i] > 0)
                 m.duration =
                     std::max(m.duration, 15.0 / 8.0 * std::fabs(to[i] - from[i]) / speedLimit[i]);

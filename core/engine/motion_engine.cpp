@@ -207,6 +207,7 @@ void MotionEngine::Impl::loggerDrain() {
             }
             runLog->beginRun(e.run_id, p ? p->name : std::string(),
                              p ? p->source_text : std::string());
+            if (p) runLog->setAxisNames(p->axis_names);
         }
         if (e.kind == EventKind::RunEnded) drainExternal(); // a device's reason, still in this run
         runLog->event(e);

@@ -30,9 +30,36 @@
 //  - Emergency stop / fault: torch off at once; category 0 disables every drive at once,
 //    category 1 stops along the path first, then disables. Both latch; Reset clears a fault,
 //    and an emergency stop only after releaseEmergencyStop(). Drives are "not homed" again.
+//
+// Motion sources (MotionProgram::source_kind). Axes have a unit (rotary rad / linear mm) and a
+// command mode (CSP / CSV / CST) fixed before Load; Load refuses drives in another mode. Every
+// cycle writes each present axis in its mode; axes not driven get position = hold, velocity 0,
+// torque 0. Home, jog and the approach are set-point moves (above) for every source.
+//  (1) JointSpline: everything above, unchanged.
+//  (2) MasterAxis (MasterFollower: gear / cam to a line encoder, MC_GearInPos / MC_CamIn):
+//      Start = approach to start_position, settle, tool on and process OK (saw at speed), then
+//      the source runs each cycle until its cuts are done (Completed).
+//      Feed hold: the line cannot be stopped, so the saw finishes the cut in progress, the
+//      axes return to their wait positions and stop waiting: Paused once at rest (tool off
+//      unless torch_on_during_feed_hold). Resume: tool on, process OK, then the next sync
+//      position still ahead of the line. Override: does not apply (the line sets the speed).
+//      Abort: tool off, the axes leave the line decelerating to rest in the source's decel_s,
+//      then Ready. Category 1 stop / fault: the same deceleration, then drives disabled;
+//      category 0: drives disabled at once. A master reading that is not valid is a fault.
+//  (3) ControlLaw (a machine's law writing torques in CST): no approach; Start = tool (if any),
+//      then the law runs. Outside a run (Ready, Home, Jog, Paused) the law tracks the engine's
+//      set-point. Feed hold / abort / category-1 stop: the law brakes to rest (an open-loop
+//      phase is finished first, as the law defines), then Paused / Ready / drives disabled.
+//      Override: passed to the law (scales its speed). Category 0 and every fault of a
+//      control-law program: torque 0 written and drives disabled in the same cycle (no
+//      braking without trusted feedback). A sensor reading that is not valid is a fault.
+//  Supervision: following error and frozen feedback are checked per axis only while the
+//  source says the axis has a position reference (SourceOutput::supervised); an event names
+//  the axis and the reason each time supervision of an axis goes off or on again.
 #include "core/devices/device_interfaces.h"
 #include "core/engine/engine_types.h"
 #include "core/engine/motion_program.h"
+#include "core/engine/motion_source.h"
 #include "core/engine/realtime_thread.h"
 #include "core/job/job.h"
 #include "core/sim/tracking_stats.h"
@@ -44,8 +71,9 @@
 namespace cutcell {
 
 struct EngineDevices {
-    std::array<AxisDrive*, kAxisCount> axes{}; // null for axes the machine does not have
-    Torch* torch = nullptr;
+    std::array<AxisDrive*, kMaxAxes> axes{};         // null for axes the machine does not have
+    std::array<SensorInput*, kMaxSensors> sensors{}; // external encoders and sensors
+    ProcessTool* torch = nullptr;                    // the process tool: torch or saw
 };
 
 struct EngineConfig {

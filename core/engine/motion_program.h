@@ -1,8 +1,11 @@
 #pragma once
-// What the engine runs: a joint trajectory for up to six axes with the cut's length, and a
-// model that turns joint values into a torch tip position for the Cartesian error. Built by a
-// machine (the pipe robot, the 2-axis profile cutter) from a job; the engine knows no machine.
+// What the engine runs for a machine: its axes (up to kMaxAxes, each with its unit, limits and
+// command mode) and its motion source — a joint trajectory in time with the cut's length and a
+// tip model for the Cartesian error, or a master-axis coupling, or a control law (see
+// motion_source.h). Built by a machine from a job; the engine knows no machine.
 #include "core/common/types.h"
+#include "core/devices/device_interfaces.h"
+#include "core/engine/motion_source.h"
 #include "core/kinematics/tip_model.h"
 #include "core/trajectory/joint_spline.h"
 
@@ -12,13 +15,32 @@
 
 namespace cutcell {
 
+// Which motion source runs the program (motion_engine.h says how each one behaves).
+enum class MotionSourceKind : std::uint8_t {
+    JointSpline, // the joint spline in time (pipe robot, profile cutter)
+    MasterAxis,  // coupled to a master axis the engine does not drive (MasterFollower)
+    ControlLaw,  // a control law run in the cycle (torque-mode axes)
+};
+const char* toString(MotionSourceKind k);
+
 struct MotionProgram {
     std::string machine;         // the id of the machine module that built it
     std::string method;          // how the machine cuts (e.g. "rotating_pipe"), for reports
-    int axis_count = kAxisCount; // axes 0..axis_count-1 are driven
-    std::array<std::string, kAxisCount> axis_names{};
-    std::array<bool, kAxisCount> axis_linear{}; // mm instead of rad
-    JointSpline spline;                         // t = 0 .. cut_time_s, at rest at both ends
+    int axis_count = kAxisCount; // axes 0..axis_count-1 are driven (at most kMaxAxes)
+    std::array<std::string, kMaxAxes> axis_names{};
+    std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
+    // Command mode of every axis; the drives must be set to it before Load (outside the cycle).
+    std::array<AxisCommandMode, kMaxAxes> axis_modes{};
+    MotionSourceKind source_kind = MotionSourceKind::JointSpline;
+    // MasterAxis / ControlLaw: the source. It keeps run state and is updated by the engine
+    // thread of the one engine the program is loaded into.
+    std::shared_ptr<MotionSource> source;
+    // MasterAxis: where the axes go before the source starts (the approach); ControlLaw: unused
+    // (the law starts from where the axes are).
+    JointVector start_position = JointVector::Zero();
+    std::uint32_t sensors_used = 0; // bit i: EngineDevices::sensors[i] must be present
+    bool uses_tool = true;          // the process tool is lit (and awaited) before the motion
+    JointSpline spline;             // JointSpline: t = 0 .. cut_time_s, at rest at both ends
     double cut_time_s = 0;
     double length_mm = 0;
     size_t point_count = 0; // knots along the cut (progress: current point / total)

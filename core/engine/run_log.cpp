@@ -64,6 +64,7 @@ void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std
     fs::create_directories(dir, ec);
     if (ec) return problem("cannot create " + dir.string() + ": " + ec.message());
     dir_ = dir.string();
+    names_ = {};
     try {
         writeFileAtomically((dir / "job.json").string(), jobText);
     } catch (const std::exception&) {
@@ -116,7 +117,7 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                        {"telemetry_dropped", static_cast<double>(c.telemetry_dropped)},
                        {"events_dropped", static_cast<double>(c.events_dropped)},
                        {"last_estop_latency_us", c.last_estop_latency_us}};
-    json::Object top{{"outcome", outcome}, {"tracking", reportToJson(report)}, {"cycle", cycle}};
+    json::Object top{{"outcome", outcome}, {"tracking", reportToJson(report, &names_)}, {"cycle", cycle}};
     if (stop.valid)
         top.emplace_back("stop",
                          json::Object{{"path_time_s", stop.path_time_s},

@@ -8,6 +8,7 @@
 #include "core/engine/engine_types.h"
 #include "core/sim/tracking_stats.h"
 
+#include <array>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -35,6 +36,8 @@ class RunLog {
 
     // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
+    // The names of the run's axes for summary.json (set after beginRun).
+    void setAxisNames(const std::array<std::string, kMaxAxes>& names) { names_ = names; }
     void event(const EngineEvent& e);
     // An event about the current run, or, when none is open, the last one (e.g. why the program
     // ended right after a run stopped): appended to that run's events.log.
@@ -57,6 +60,7 @@ class RunLog {
     std::vector<std::string> reported_;
     std::string dir_;
     std::FILE* file_ = nullptr;
+    std::array<std::string, kMaxAxes> names_{};
 };
 
 } // namespace cutcell

@@ -10,6 +10,8 @@
 // Adding a machine: a folder core/machines/<name>/ with a class derived from MachineModule,
 // one line in core/machines/register_machines.cpp, and (for `run`) one line in
 // devices/machines/rig_registry.cpp. See README, "Adding a machine".
+#include "core/common/types.h"
+#include "core/devices/device_interfaces.h"
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
 #include "core/job/job_io.h"
@@ -23,8 +25,8 @@ namespace cutcell {
 
 struct TrackingReport;
 
-enum class AxisUnit { Rotary, Linear }; // deg (rad inside the engine) / mm
-enum class CommandMode { Position, Velocity, Torque };
+// AxisUnit (core/common/types.h) and the CiA 402 command mode (core/devices) are the engine's.
+using CommandMode = AxisCommandMode;
 
 struct AxisInfo {
     std::string name; // "A (pipe turn)", "theta1"
@@ -34,8 +36,8 @@ struct AxisInfo {
     CommandMode mode = CommandMode::Position;
 };
 
-const char* unitSymbol(AxisUnit u); // "deg" or "mm"
-const char* toString(CommandMode m);
+const char* unitSymbol(AxisUnit u);         // "deg" or "mm"
+const char* commandModeName(CommandMode m); // "position", "velocity", "torque"
 
 enum class PlanStatus {
     Ok,

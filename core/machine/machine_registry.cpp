@@ -61,7 +61,7 @@ const char* unitSymbol(AxisUnit u) {
     return u == AxisUnit::Rotary ? "deg" : "mm";
 }
 
-const char* toString(CommandMode m) {
+const char* commandModeName(CommandMode m) {
     switch (m) {
     case CommandMode::Position:
         return "position";

@@ -34,7 +34,7 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     }
     const double simulated = std::max(job.sim.duration_s, plan.cut_time_s);
     const long steps = static_cast<long>(std::ceil(simulated / T - 1e-9));
-    JointVector actual;
+    JointVector actual = JointVector::Zero();
     for (long k = 0; k <= steps; ++k) {
         const double t = static_cast<double>(k) * T;
         const JointSample ref = plan.spline.evaluate(t);

@@ -1,5 +1,6 @@
 #include "core/sim/tracking_stats.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cutcell {
@@ -30,8 +31,8 @@ TipSample tipSample(const TipModel* model, const JointVector& commanded,
 TipSample TrackingStats::tips(const JointVector& commanded, const JointVector& actual) const {
     if (!robot_) return tipSample(model_, commanded, actual);
     TipSample s;
-    s.commanded = robot_->tip(commanded.tail<kArmJointCount>());
-    s.actual = robot_->tip(actual.tail<kArmJointCount>());
+    s.commanded = robot_->tip(commanded.segment<kArmJointCount>(1));
+    s.actual = robot_->tip(actual.segment<kArmJointCount>(1));
     // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
     s.commanded_on_work = robot_->workFromBase(commanded[0], s.commanded);
     s.actual_on_work = robot_->workFromBase(actual[0], s.actual);
@@ -53,7 +54,7 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual,
 }
 
 void TrackingStats::fill(TrackingReport& r) const {
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kMaxAxes; ++i) {
         r.joints[static_cast<size_t>(i)].max_abs_deg = rad2deg(maxAbs_[i]);
         r.joints[static_cast<size_t>(i)].rms_deg =
             n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
@@ -80,18 +81,27 @@ json::Value xyz(const Vec3& v) {
 }
 } // namespace
 
-json::Value reportToJson(const TrackingReport& r) {
+json::Value reportToJson(const TrackingReport& r, const std::array<std::string, kMaxAxes>* names) {
     json::Array joints, cruise;
-    for (int i = 0; i < kAxisCount; ++i) {
-        const auto& j = r.joints[static_cast<size_t>(i)];
-        joints.emplace_back(
-            json::Object{{"axis", i},
-                         {"name", i == 0 ? "chuck (theta0)" : "theta" + std::to_string(i)},
-                         {"max_abs_error_deg", j.max_abs_deg},
-                         {"rms_error_deg", j.rms_deg}});
-        const auto& c = r.cruise_joints[static_cast<size_t>(i)];
-        cruise.emplace_back(json::Object{
-            {"axis", i}, {"max_abs_error_deg", c.max_abs_deg}, {"rms_error_deg", c.rms_deg}});
+    const int n = std::clamp(r.axis_count, 0, kMaxAxes);
+    for (int i = 0; i < n; ++i) {
+        const auto a = static_cast<size_t>(i);
+        const bool linear = r.axis_linear[a];
+        // Linear axes: the stats hold rad2deg of mm; undo it (the profile cutter's figures).
+        auto value = [linear](double deg) { return linear ? deg2rad(deg) : deg; };
+        const std::string maxKey = linear ? "max_abs_error_mm" : "max_abs_error_deg";
+        const std::string rmsKey = linear ? "rms_error_mm" : "rms_error_deg";
+        const std::string name = names && !(*names)[a].empty() ? (*names)[a]
+                                 : i == 0                      ? "chuck (theta0)"
+                                                               : "theta" + std::to_string(i);
+        const auto& j = r.joints[a];
+        joints.emplace_back(json::Object{{"axis", i},
+                                         {"name", name},
+                                         {maxKey, value(j.max_abs_deg)},
+                                         {rmsKey, value(j.rms_deg)}});
+        const auto& c = r.cruise_joints[a];
+        cruise.emplace_back(
+            json::Object{{"axis", i}, {maxKey, value(c.max_abs_deg)}, {rmsKey, value(c.rms_deg)}});
     }
     return json::Object{
         {"method", r.method},

@@ -14,6 +14,8 @@
 
 namespace cutcell {
 
+// Per axis. The _deg fields are rad2deg of the raw error for every axis (historic); a linear
+// axis's error in mm is deg2rad of them — reportToJson() writes each axis in its own unit.
 struct AxisErrorStats {
     double max_abs_deg = 0;
     double rms_deg = 0;
@@ -28,14 +30,16 @@ struct TrackingReport {
     double simulated_s = 0;
     long steps = 0;
     double max_direction_deviation_deg = 0;
-    std::array<AxisErrorStats, kAxisCount> joints{};
+    int axis_count = kAxisCount;              // axes in joints / cruise_joints
+    std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
+    std::array<AxisErrorStats, kMaxAxes> joints{};
     Vec3 cartesian_max_abs_mm = Vec3::Zero(); // tip, base frame
     Vec3 cartesian_min_mm = Vec3::Zero();
     Vec3 cartesian_max_mm = Vec3::Zero();
     Vec3 on_pipe_max_abs_mm = Vec3::Zero(); // tip relative to the work pipe (chuck error included)
     double max_torque_fraction = 0;         // peak |u| / torque limit over all axes
     // The same figures over the constant-speed part of the cut only (ramps excluded).
-    std::array<AxisErrorStats, kAxisCount> cruise_joints{};
+    std::array<AxisErrorStats, kMaxAxes> cruise_joints{};
     Vec3 cruise_cartesian_max_abs_mm = Vec3::Zero();
     Vec3 cruise_on_pipe_max_abs_mm = Vec3::Zero();
 };
@@ -90,6 +94,9 @@ class TrackingStats {
     double maxTorqueFraction_ = 0;
 };
 
-json::Value reportToJson(const TrackingReport& r);
+// Axes 0 .. axis_count-1, each in its unit (rotary: *_deg, linear: *_mm), named by `names`
+// when given (else the pipe robot's names).
+json::Value reportToJson(const TrackingReport& r,
+                         const std::array<std::string, kMaxAxes>* names = nullptr);
 
 } // namespace cutcell

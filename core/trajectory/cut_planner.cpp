@@ -124,7 +124,7 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
             havePrevious = true;
         }
         p.q[0] = chuck;
-        p.q.tail<kArmJointCount>() = p.ik.ok() ? p.ik.q : previous;
+        p.q.segment<kArmJointCount>(1) = p.ik.ok() ? p.ik.q : previous;
         q[k] = p.q;
 
         if (plan.first_bad < 0) {

@@ -12,8 +12,8 @@ TorchFeedback SimulatedTorch::read(double now_s) {
     TorchFeedback fb;
     fb.on = on_;
     fb.fault_code = fault_.load(std::memory_order_relaxed);
-    fb.arc_ok = on_ && now_s - onSince_ + 1e-9 >= ignitionDelay_ &&
-                !arcLost_.load(std::memory_order_relaxed) && fb.fault_code == 0;
+    fb.process_ok = on_ && now_s - onSince_ + 1e-9 >= ignitionDelay_ &&
+                    !arcLost_.load(std::memory_order_relaxed) && fb.fault_code == 0;
     return fb;
 }
 

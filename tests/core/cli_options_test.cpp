@@ -345,7 +345,7 @@ TEST(CliMachines, JsonListsEveryRegisteredMachineWithAxesAndUnits) {
             EXPECT_EQ(a.find("min")->asNumber(), axes[k].min);
             EXPECT_EQ(a.find("max")->asNumber(), axes[k].max);
             EXPECT_LT(a.find("min")->asNumber(), a.find("max")->asNumber());
-            EXPECT_EQ(a.find("command_mode")->asString(), cutcell::toString(axes[k].mode));
+            EXPECT_EQ(a.find("command_mode")->asString(), cutcell::commandModeName(axes[k].mode));
         }
         const auto exports = m.exports();
         ASSERT_EQ(e.find("exports")->asArray().size(), exports.size()) << m.id();

@@ -33,14 +33,14 @@ TEST(Planner, RotatingMethodKeepsTheTorchOnItsLine) {
             ASSERT_NEAR(onPipe.y(), 0, 1e-9);
             ASSERT_NEAR(onPipe.z(), workR, 1e-9);
             // ... where the torch tip is, on the line Y0 = 0, Z0 = R.
-            const Pose tool = robot.forward(p.q.tail<kArmJointCount>());
+            const Pose tool = robot.forward(p.q.segment<kArmJointCount>(1));
             ASSERT_LE((tool.translation() - onPipe).norm(), 1e-6);
             ASSERT_NEAR(p.deviation_deg, 0, 1e-6);
         }
         // Between knots the spline keeps the tip on the line too (joint 1 and the roll stay still).
         for (double t = 0; t <= plan.cut_time_s; t += 0.0137) {
             const JointVector q = plan.spline.evaluate(t).q;
-            const Vec3 tip = robot.forward(q.tail<kArmJointCount>()).translation();
+            const Vec3 tip = robot.forward(q.segment<kArmJointCount>(1)).translation();
             ASSERT_NEAR(tip.y(), 0, 1e-9);
             ASSERT_NEAR(tip.z(), workR, 0.01) << "t = " << t;
         }
@@ -76,7 +76,7 @@ TEST(Planner, StaticMethodHoldsTheChuckAndTiltsTheTorchIntoThePlane) {
     const PipeRobot robot(job.dh);
     for (const PlannedPoint& p : plan.knots) {
         ASSERT_EQ(p.q[0], deg2rad(job.cut.static_chuck_deg));
-        const Pose tool = robot.forward(p.q.tail<kArmJointCount>());
+        const Pose tool = robot.forward(p.q.segment<kArmJointCount>(1));
         ASSERT_LE((tool.translation() - robot.baseFromWork(p.q[0]) * p.cut.p_work).norm(), 1e-6);
         ASSERT_LE((tool.linear().col(2) - p.approach_base).norm(), 1e-9);
     }

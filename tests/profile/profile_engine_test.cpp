@@ -156,7 +156,7 @@ TEST(ProfileEngine, PiercesBeforeTheTorchMoves) {
         run.engine->runCycles(1, EngineState::Completed);
         TelemetrySample t;
         while (run.engine->popTelemetry(t)) {
-            if (arcAt < 0 && t.torch_on && t.arc_ok) {
+            if (arcAt < 0 && t.torch_on && t.process_ok) {
                 arcAt = t.time_s;
                 atArc = t.setpoint;
             } else if (arcAt >= 0 && movedAt < 0 && t.setpoint != atArc) {

@@ -52,7 +52,7 @@ void TstCellViewOffscreen::sceneGraphWorksWithoutOpenGl() {
     const PipeRobot robot(job.dh);
     const size_t k = plan.knots.size() / 3;
     view.setMachineState(plan.knots[k].q, double(k) / double(plan.knots.size() - 1), true);
-    const Vec3 tip = robot.forward(plan.knots[k].q.tail<kArmJointCount>()).translation();
+    const Vec3 tip = robot.forward(plan.knots[k].q.segment<kArmJointCount>(1)).translation();
     QVERIFY((view.torchTipWorld() - tip).norm() < 1e-6);
     QCOMPARE(view.doneCount(), int(k) + 1);
     // The machine's bounds contain the pipe, the torch and the robot's base.

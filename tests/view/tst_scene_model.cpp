@@ -19,7 +19,7 @@ namespace {
 constexpr double kTol = 1e-6;
 
 ArmVector arm(const JointVector& q) {
-    return q.tail<kArmJointCount>();
+    return q.segment<kArmJointCount>(1);
 }
 
 // Each job variant the scene must handle.

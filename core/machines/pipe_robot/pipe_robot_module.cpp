@@ -46,7 +46,8 @@ std::vector<AxisInfo> PipeRobotModule::axes(const Job& job) const {
     std::vector<AxisInfo> out;
     for (int i = 0; i < kAxisCount; ++i) {
         const DhRow& r = job.dh[static_cast<size_t>(i)];
-        out.push_back({kAxisNames[i], AxisUnit::Rotary, r.min_deg, r.max_deg, CommandMode::Torque});
+        out.push_back(
+            {kAxisNames[i], AxisUnit::Rotary, r.min_deg, r.max_deg, CommandMode::Position});
     }
     return out;
 }

@@ -11,7 +11,7 @@ namespace cutcell {
 
 Vec3 PipeRobotTipModel::tip(const JointVector& q) const {
     // The same expression as TrackingStats' pipe-robot path, so figures agree bit for bit.
-    return robot_.tip(q.tail<kArmJointCount>());
+    return robot_.tip(q.segment<kArmJointCount>(1));
 }
 
 Vec3 PipeRobotTipModel::tipOnWork(const JointVector& q, const Vec3& tipBase) const {

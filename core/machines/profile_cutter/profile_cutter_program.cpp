@@ -94,7 +94,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
 }
 
 json::Value profileRunReportJson(const TrackingReport& r) {
-    auto axes = [](const std::array<AxisErrorStats, kAxisCount>& j) {
+    auto axes = [](const std::array<AxisErrorStats, kMaxAxes>& j) {
         // TrackingStats converts every axis with rad2deg; X is in mm, so convert it back.
         return json::Array{json::Object{{"axis", 0},
                                         {"name", "A (pipe turn)"},

@@ -1,0 +1,81 @@
+#pragma once
+// A motion source: what a machine's program runs in the engine cycle instead of the joint
+// spline in time. One update(input, output) per cycle (Ruckig style), called on the engine
+// thread only; it must not allocate, lock or block. Two kinds besides the spline:
+//   - MasterFollower (core/engine/master_follower.h): axes geared or cammed to a master axis
+//     that the engine does not drive (a line encoder); PLCopen MC_GearInPos / MC_CamIn.
+//   - ControlLawSource (core/engine/control_law.h): a machine's control law that reads the
+//     sensors and axes and writes commands (torques in CST).
+// How feed hold, override, abort, emergency stop and faults act on each source is written in
+// core/engine/motion_engine.h.
+#include "core/common/types.h"
+#include "core/devices/device_interfaces.h"
+
+#include <array>
+#include <cstdint>
+
+namespace cutcell {
+
+inline constexpr int kMaxSensors = 4;
+
+// What the engine asks of the source this cycle.
+enum class SourceRequest : std::uint8_t {
+    Track,          // follow the engine's set-point (hold, home, jog, approach): control laws only
+    Run,            // run the program
+    FeedHold,       // come to rest where the program allows it (a saw finishes its cut first)
+    Abort,          // come to rest as soon as possible without a jump (tool off)
+    ControlledStop, // emergency stop / fault of category 1: come to rest, then torque is removed
+};
+const char* toString(SourceRequest r);
+
+enum class SourceStatus : std::uint8_t {
+    Working, // moving
+    AtRest,  // the requested hold / abort / stop is reached: the axes are at rest
+    Done,    // the program is finished, axes at rest
+    Fault,   // the source cannot go on (SourceOutput::fault says why)
+};
+
+struct SourceInput {
+    double now_s = 0;
+    double period_s = 0.001;
+    int axis_count = 0;
+    const std::array<DriveFeedback, kMaxAxes>* axes = nullptr;
+    const std::array<SensorReading, kMaxSensors>* sensors = nullptr;
+    // The engine's set-point of this cycle for Track (hold or a move), else the last output.
+    JointVector setpoint = JointVector::Zero();
+    JointVector setpoint_velocity = JointVector::Zero();
+    SourceRequest request = SourceRequest::Run;
+    double override_fraction = 1;
+    bool tool_ok = false; // the process tool reports "process OK"
+};
+
+struct SourceOutput {
+    // Position set-point of every axis (CSP command; the reference the following error is
+    // measured against for the other modes) and its velocity (CSV command, set-point lead).
+    JointVector position = JointVector::Zero();
+    JointVector velocity = JointVector::Zero();
+    JointVector torque = JointVector::Zero(); // CST command (N m or N)
+    // Following-error supervision of each axis this cycle; a source turns it off only where
+    // no position reference exists (open-loop torque), and says why.
+    std::array<bool, kMaxAxes> supervised{true, true, true, true, true, true, true, true};
+    const char* unsupervised_reason = ""; // static text
+    bool tool_on = false;
+    SourceStatus status = SourceStatus::Working;
+    const char* fault = "";     // static text when status == Fault
+    double progress = 0;        // 0..1 of the program
+    double master_position = 0; // MasterAxis: the filtered master (telemetry)
+    std::uint32_t point_index = 0, point_count = 0;
+};
+
+class MotionSource {
+  public:
+    virtual ~MotionSource() = default;
+    // Called on the engine thread when the program's motion begins (after approach and
+    // ignition): the input holds the axes where they are. Must not allocate.
+    virtual void start(const SourceInput& in) = 0;
+    virtual void update(const SourceInput& in, SourceOutput& out) = 0;
+    // A short name of the source's inner state for events and telemetry ("in sync").
+    virtual const char* stateName() const = 0;
+};
+
+} // namespace cutcell
