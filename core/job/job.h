@@ -2,6 +2,7 @@
 // The cutting job: everything an engineer sets up for one cut. Values carry SI-ish units
 // named in their JSON keys (mm, deg, s, mm/s); see resources/jobs/default_job.json.
 #include "core/common/types.h"
+#include "core/job/machine_spec.h"
 
 #include <array>
 #include <string>
@@ -142,6 +143,9 @@ struct Job {
     DeviceSpec devices;
     std::vector<OtherBranch> other_branches; // profile cutter, cut = "branch" only
     ProfileCutterSpec profile_cutter;
+    // The section of machines that keep their own struct (core/machines/<name>/): set by the
+    // module's defaultJob() and readSection(), read back with machine_spec.as<TheirSpec>().
+    MachineSpecHolder machine_spec;
 };
 
 const char* toString(CutTarget t);
