@@ -15,6 +15,7 @@
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
+#include "ui/panels/recovery_panel.h"
 #include "ui/panels/state_lamps.h"
 #include "ui/plan_worker.h"
 #include "ui/run_controller.h"
@@ -73,6 +74,7 @@ void MainWindow::buildLayout() {
     devices_->setChoiceVisible(false); // chosen in the "Cycle & devices" parameter tab
     dro_ = new DroPanel(this);
     alarms_ = new AlarmPanel(this);
+    recovery_ = new RecoveryPanel(this);
 
     auto* centre = new QSplitter(Qt::Vertical, this);
     centre->setObjectName("centreSplitter");
@@ -100,6 +102,7 @@ void MainWindow::buildLayout() {
     sv->setContentsMargins(0, 0, 0, 0);
     sv->addWidget(lamps_);
     sv->addWidget(progress_);
+    sv->addWidget(recovery_);
     sv->addWidget(dro_);
     sv->addStretch(1);
     auto* statusScroll = new QScrollArea(column);
@@ -220,6 +223,10 @@ void MainWindow::connectRun() {
                                              .arg(controls_->overridePercent()));
     });
     connect(run_, &RunController::runStopped, this, &MainWindow::onRunStopped);
+    connect(run_, &RunController::stopPointChanged, this,
+            [this](const cutcell::RunStopPoint& stop) { recovery_->setStopPoint(stop); });
+    connect(run_, &RunController::programLoaded, recovery_, &RecoveryPanel::setProgram);
+    connect(recovery_, &RecoveryPanel::startFromRequested, run_, &RunController::startFrom);
     connect(run_, &RunController::countersChanged, progress_, &ProgressPanel::setCycleFigures);
     connect(run_, &RunController::programLoaded, this,
             [this](std::shared_ptr<const cutcell::MotionProgram> program) {
@@ -315,6 +322,7 @@ void MainWindow::onSamples(const std::vector<cutcell::TelemetrySample>& batch) {
     cell_->setSample(last);
     lamps_->setTorch(last.torch_on);
     controls_->setState(last.state, last.homed);
+    recovery_->setState(last.state, last.homed);
 }
 
 void MainWindow::onState(EngineState s) {
@@ -322,6 +330,7 @@ void MainWindow::onState(EngineState s) {
     dro_->setState(s);
     alarms_->setState(s);
     controls_->setState(s, run_->bridge()->last().homed);
+    recovery_->setState(s, run_->bridge()->last().homed);
     plots_->setPaused(s == EngineState::Paused);
     stateLabel_->setText(QString::fromLatin1(cutcell::toString(s)));
     if (s == EngineState::EmergencyStop || s == EngineState::Fault) lamps_->setTorch(false);

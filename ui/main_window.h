@@ -26,6 +26,7 @@ class DevicePanel;
 namespace CutCell::ui {
 
 class AlarmPanel;
+class RecoveryPanel;
 class CellViewPanel;
 class DroPanel;
 class ControlPanel;
@@ -79,6 +80,7 @@ class MainWindow : public QMainWindow {
     cutcell::ui::DevicePanel* devicePanel() const { return devices_; }
     DroPanel* dro() const { return dro_; }
     AlarmPanel* alarms() const { return alarms_; }
+    RecoveryPanel* recovery() const { return recovery_; }
     QWidget* operatorColumn() const { return column_; }
 
   protected:
@@ -108,6 +110,7 @@ class MainWindow : public QMainWindow {
     cutcell::ui::DevicePanel* devices_ = nullptr;
     DroPanel* dro_ = nullptr;
     AlarmPanel* alarms_ = nullptr;
+    RecoveryPanel* recovery_ = nullptr;
     QWidget* column_ = nullptr;
     QTimer* deviceTimer_ = nullptr;
     QTabWidget* bottomTabs_ = nullptr; // event log, devices

@@ -190,12 +190,16 @@ void RunController::onState(EngineState s) {
         lastCycleS_ = bridge_->last().elapsed_s;
         emit countersChanged(parts_, lastCycleS_);
     }
+    const bool stopped =
+        ((s == EngineState::EmergencyStop || s == EngineState::Fault) && was != s && wasCutting) ||
+        (s == EngineState::Ready && wasCutting);
     if (s == EngineState::EmergencyStop && was != s)
         emit runStopped(s, tr("emergency stop"));
     else if (s == EngineState::Fault && was != s)
         emit runStopped(s, tr("fault"));
     else if (s == EngineState::Ready && wasCutting)
         emit runStopped(s, tr("abort"));
+    if (stopped) fetchStopPoint(0);
     if (s != EngineState::Jogging) jogging_ = false;
     if (programPending_ && !busyState(s)) loadProgram();
     updateBlocked();
@@ -269,6 +273,24 @@ void RunController::start() {
     if (!rig_ || !blocked_.isEmpty()) return;
     emit runStarting();
     rig_->engine().start();
+}
+void RunController::startFrom(double pathTime_s) {
+    if (!rig_ || !blocked_.isEmpty()) return;
+    emit runStarting();
+    rig_->engine().startFrom(pathTime_s);
+}
+
+void RunController::fetchStopPoint(int attempt) {
+    // The engine publishes the run's result in the cycle it stops; the state may be seen first.
+    if (!rig_) return;
+    cutcell::TrackingReport report;
+    cutcell::RunStopPoint stop;
+    if (rig_->engine().lastRunReport(report, nullptr, &stop) && stop.valid) {
+        emit stopPointChanged(stop);
+        return;
+    }
+    if (attempt < 10)
+        QTimer::singleShot(50, this, [this, attempt] { fetchStopPoint(attempt + 1); });
 }
 void RunController::feedHold() {
     if (rig_) rig_->engine().feedHold();

@@ -53,6 +53,8 @@ class RunController : public QObject {
     void enable();
     void home();
     void start();
+    // Cut recovery: the rest of the cut from this path time (s) of the loaded program.
+    void startFrom(double pathTime_s);
     void feedHold();
     void resume();
     void abort();
@@ -87,6 +89,8 @@ class RunController : public QObject {
     // A cut began (Ready -> Running) / ended short of its end (emergency stop, fault, abort).
     void runStarted();
     void runStopped(cutcell::EngineState state, const QString& how);
+    // Where the run that ended short stopped (the engine's stop point, for cut recovery).
+    void stopPointChanged(const cutcell::RunStopPoint& stop);
     void countersChanged(int parts, double lastCycleS);
 
   private:
@@ -94,6 +98,7 @@ class RunController : public QObject {
     void loadProgram();
     void onState(cutcell::EngineState state);
     void stepAutoRun();
+    void fetchStopPoint(int attempt);
     void updateBlocked();
     bool rigMatches(const cutcell::Job& job) const;
     bool engineBusy() const;

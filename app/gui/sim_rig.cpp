@@ -1,10 +1,69 @@
+// The GUI's rig factory: the job's machine's simulated devices (devices/machines/, the same rig
+// `cutcell-cli run` uses) under an engine thread, or the CANopen cell (can_rig.h).
 #include "sim_rig.h"
-#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include "can_rig.h"
-#include "machines/sim_rigs.h"
+#include "core/machine/machine_registry.h"
+#include "devices/machines/sim_rig_registry.h"
+
+#include <cstdio>
 
 namespace cutcell::app {
+namespace {
+
+class SimulatedMachineRig : public CutCell::ui::EngineRig {
+  public:
+    SimulatedMachineRig(const Job& job, ClockMode clock, std::unique_ptr<MachineSimRig> rig)
+        : clock_(clock), rig_(std::move(rig)) {
+        EngineConfig config;
+        config.period_s = job.sim.period_s;
+        rig_->configure(config);
+        period_ = config.period_s;
+        config.clock = clock;
+        config.spec = job.engine;
+        // As fast as possible the engine outruns any display: every 10th cycle keeps the
+        // telemetry ring (8192 samples) from overflowing between two 30 Hz GUI ticks, so the
+        // plots cover the whole cut. Real time keeps every cycle.
+        if (clock == ClockMode::AsFastAsPossible) config.telemetry_every_n_cycles = 10;
+        engine_ = std::make_unique<MotionEngine>(rig_->devices(), config);
+        engine_->startThread();
+    }
+    ~SimulatedMachineRig() override { engine_->stopThread(); }
+
+    MotionEngine& engine() override { return *engine_; }
+    std::string description() const override {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, ", %.3g ms cycle, %s", period_ * 1000.0,
+                      clock_ == ClockMode::RealTime ? "real time" : "as fast as possible");
+        return rig_->description() + buf;
+    }
+
+  private:
+    ClockMode clock_;
+    double period_ = 0;
+    std::unique_ptr<MachineSimRig> rig_;
+    std::unique_ptr<MotionEngine> engine_; // declared last: destroyed before the devices
+};
+
+std::unique_ptr<CutCell::ui::EngineRig> makeSimulatedMachineRig(const Job& job, ClockMode clock,
+                                                                std::string* error) {
+    try {
+        // The devices start where the machine's program puts them (its reference); the run
+        // controller loads its own program later. A job that does not plan (yet) still gets
+        // devices, at zero, so the operator can jog and fix the job.
+        const MachinePlan plan = machineFor(job).plan(job);
+        MotionProgram atZero;
+        const MotionProgram& start = plan.ok() && plan.program ? *plan.program : atZero;
+        auto rig = makeSimulatedRig(job, start, error);
+        if (!rig) return nullptr;
+        return std::make_unique<SimulatedMachineRig>(job, clock, std::move(rig));
+    } catch (const std::exception& e) {
+        if (error) *error = e.what();
+        return nullptr;
+    }
+}
+
+} // namespace
 
 std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                                                 std::string* error) {
@@ -15,12 +74,7 @@ std::unique_ptr<CutCell::ui::EngineRig> makeRig(const Job& job, ClockMode clock,
                      "\": this build of cutcell drives the simulated cell only";
         return nullptr;
     }
-    const auto make = simulatedRigFor(job.machine);
-    if (!make) {
-        if (error) *error = "no simulated rig for machine = \"" + job.machine + "\"";
-        return nullptr;
-    }
-    return make(job, clock, error);
+    return makeSimulatedMachineRig(job, clock, error);
 }
 
 } // namespace cutcell::app

@@ -1,5 +1,5 @@
 #pragma once
-// The factory the main window uses: the job's machine's simulated rig (machines/sim_rigs.h),
+// The factory the main window uses: the job's machine's simulated rig (devices/machines/),
 // or the CANopen cell (can_rig.h) for a job with devices.kind = "canopen".
 #include "ui/engine_rig.h"
 

@@ -173,7 +173,7 @@ void MotionEngine::Impl::captureStop() {
     if (!runActive || !program) return;
     const bool onPath =
         traj == TrajectoryKind::Path || phase == RunPhase::Finish || phase == RunPhase::Close;
-    const double t = onPath ? std::min(tau, program->cut_time_s) : 0;
+    const double t = onPath ? std::min(tau, program->cut_time_s) : startTau;
     stopPoint.valid = true;
     stopPoint.path_time_s = t;
     stopPoint.progress = program->cut_time_s > 0 ? t / program->cut_time_s : 0;
@@ -252,12 +252,23 @@ void MotionEngine::Impl::beginCut() {
                         std::memory_order_release);
     samples = 0;
     pathDone = false;
+    pathStarted = false;
     stats = TrackingStats(program->tip_model.get());
     cruise = TrackingStats(program->tip_model.get());
-    minRunSteps = static_cast<long>(std::ceil(program->min_run_s / T - 1e-9));
-    emitf(EventKind::RunStarted, Severity::Info, state, EngineState::Running,
-          "Run %u started: %s, %.1f mm in %.2f s", runId, program->name.c_str(), program->length_mm,
-          program->cut_time_s);
+    // A recovered cut covers the rest of the path: its minimum span shrinks by what it skips.
+    minRunSteps =
+        static_cast<long>(std::ceil(std::max(0.0, program->min_run_s - startTau) / T - 1e-9));
+    if (startTau > 0)
+        emitf(EventKind::RunStarted, Severity::Info, state, EngineState::Running,
+              "Run %u started: %s, cut recovery from path time %.3f s (point %u of %zu, %.1f of "
+              "%.1f mm)",
+              runId, program->name.c_str(), startTau,
+              static_cast<std::uint32_t>(startTau / program->spline.dt()), program->point_count,
+              startTau / program->cut_time_s * program->length_mm, program->length_mm);
+    else
+        emitf(EventKind::RunStarted, Severity::Info, state, EngineState::Running,
+              "Run %u started: %s, %.1f mm in %.2f s", runId, program->name.c_str(),
+              program->length_mm, program->cut_time_s);
     sourceStarted = false;
     sourceAtRest = false;
     if (program->source_kind == MotionSourceKind::ControlLaw) {
@@ -267,7 +278,9 @@ void MotionEngine::Impl::beginCut() {
         phaseSince = now;
         return;
     }
-    setState(EngineState::Running, EventKind::Transition, "Start: approach to the first cut point");
+    setState(EngineState::Running, EventKind::Transition,
+             startTau > 0 ? "Start: approach to the recovery point"
+                          : "Start: approach to the first cut point");
     phase = RunPhase::Approach;
     phaseSince = now;
     beginMove(startPosition(), EngineState::Running);
@@ -377,6 +390,18 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
             return refuse(c.type, "the cut is complete (Home, then Start)");
         if (inMotion(s)) return refuse(c.type, "motion in progress (%s)", toString(s));
         if (!homed) return refuse(c.type, "not homed (Home first)");
+        if (c.value != 0) {
+            if (isSourceProgram())
+                return refuse(c.type,
+                              "cut recovery needs a path in time; this machine's motion "
+                              "follows a %s source",
+                              toString(program->source_kind));
+            if (!(c.value > 0 && c.value < program->cut_time_s))
+                return refuse(c.type,
+                              "recovery from path time %.3f s is outside the cut (0 .. %.3f s)",
+                              c.value, program->cut_time_s);
+        }
+        startTau = c.value;
         return beginCut();
     case CommandType::FeedHold:
         if (s != EngineState::Running) return refuse(c.type, "not running (state %s)", toString(s));

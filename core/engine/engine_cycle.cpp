@@ -187,23 +187,19 @@ void MotionEngine::Impl::stepRunning() {
             note(first ? "%s: %s program running" : "%s: %s program resumed",
                  program->uses_tool && dev.torch ? "Process OK" : "Start",
                  toString(program->source_kind));
-        } else if (!isSourceProgram() && dev.torch && torchFb.process_ok && tau <= 0 &&
+        } else if (!isSourceProgram() && dev.torch && torchFb.process_ok && !pathStarted &&
                    program->pierce_s > 0) {
-            // At the first cut point the arc must go through the material before it moves.
+            // At the first cut point (or the recovery point) the arc must go through the
+            // material before it moves.
             phase = RunPhase::Pierce;
             phaseSince = now;
             note("Arc established: piercing for %.3f s", program->pierce_s);
         } else if (!isSourceProgram() && (!dev.torch || torchFb.process_ok)) {
             phase = RunPhase::Cut;
             traj = TrajectoryKind::Path;
-            if (tau <= 0) {
-                // The path starts at rest: full rate at once; sample 0 is this cycle.
-                rate = overrideTarget;
-                anchorTau = tau = 0;
-                anchorCycles = 0;
-                cutStartTime = now;
-            }
-            note(tau <= 0 ? "Arc established: cutting" : "Arc established: resuming the cut");
+            const bool first = !pathStarted;
+            if (first) startPath();
+            note(first ? "Arc established: cutting" : "Arc established: resuming the cut");
         } else if (now - phaseSince > cfg.ignition_timeout_s) {
             enterFault("torch: arc not established within %.1f s", cfg.ignition_timeout_s);
         }
@@ -216,10 +212,7 @@ void MotionEngine::Impl::stepRunning() {
         } else if (now - phaseSince >= program->pierce_s - 0.5 * T) {
             phase = RunPhase::Cut;
             traj = TrajectoryKind::Path;
-            rate = overrideTarget; // the path starts at rest: full rate at once
-            anchorTau = tau = 0;
-            anchorCycles = 0;
-            cutStartTime = now;
+            startPath();
             note("Pierced: cutting");
         }
         break;
@@ -276,7 +269,18 @@ JointSample MotionEngine::Impl::evaluate(double t) const {
 }
 
 JointVector MotionEngine::Impl::startPosition() const {
-    return isSourceProgram() ? program->start_position : program->spline.evaluate(0).q;
+    return isSourceProgram() ? program->start_position : program->spline.evaluate(startTau).q;
+}
+
+void MotionEngine::Impl::startPath() {
+    pathStarted = true;
+    anchorTau = tau = startTau;
+    anchorCycles = 0;
+    cutStartTime = now;
+    // At path time 0 the spline is at rest: full rate at once (sample 0 is this cycle, as in the
+    // offline simulation). A recovered cut starts where the path moves: the rate ramps up from
+    // rest (stepPathTime), so neither the set-point nor its velocity jumps.
+    rate = startTau > 0 ? 0.0 : overrideTarget;
 }
 
 bool MotionEngine::Impl::restReached() const {
@@ -508,7 +512,7 @@ void MotionEngine::Impl::publishTelemetry() {
                             phase == RunPhase::Close || state == EngineState::Completed;
         const double pathT = state == EngineState::Completed ? program->cut_time_s
                              : onPath                        ? std::min(tau, program->cut_time_s)
-                                                             : 0;
+                                      : startTau; // before the path moves: where it will start
         t.progress = program->cut_time_s > 0 ? pathT / program->cut_time_s : 0;
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(

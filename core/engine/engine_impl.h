@@ -121,6 +121,8 @@ struct MotionEngine::Impl {
     JointMove move;
     JointVector hold = JointVector::Zero();
     double tau = 0, rate = 0, anchorTau = 0;
+    double startTau = 0;      // path time the current run starts at (cut recovery: > 0)
+    bool pathStarted = false; // the path moved in this run (pierce only before that)
     std::uint64_t anchorCycles = 0;
     bool rateChanged = false;
     JointVector setpoint = JointVector::Zero(), setpointPrev = JointVector::Zero();
@@ -203,6 +205,7 @@ struct MotionEngine::Impl {
     void note(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
     JointSample evaluate(double t) const;
     JointVector startPosition() const; // where the approach goes
+    void startPath();                  // the path starts moving at startTau
     AxisCommandMode mode(int i) const {
         return program && i < program->axis_count ? program->axis_modes[static_cast<size_t>(i)]
                                                   : AxisCommandMode::Position;

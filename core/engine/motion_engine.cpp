@@ -67,6 +67,9 @@ bool MotionEngine::jog(int axis, double delta) {
 bool MotionEngine::start() {
     return pushCommand(CommandType::Start);
 }
+bool MotionEngine::startFrom(double pathTime_s) {
+    return pushCommand(CommandType::Start, 0, pathTime_s);
+}
 bool MotionEngine::feedHold() {
     return pushCommand(CommandType::FeedHold);
 }
@@ -137,7 +140,8 @@ RealtimeStatus MotionEngine::realtimeStatus() const {
                                                                 : RealtimeStatus{};
 }
 
-bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) const {
+bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome,
+                                 RunStopPoint* stop) const {
     const Impl& m = *impl_;
     for (int attempt = 0; attempt < 100; ++attempt) {
         const std::uint64_t g = m.resultGeneration.load(std::memory_order_acquire);
@@ -146,10 +150,12 @@ bool MotionEngine::lastRunReport(TrackingReport& out, std::string* outcome) cons
         TrackingReport copy = r.report;
         copy.method = r.method.data();
         std::string why = r.outcome.data();
+        const RunStopPoint where = r.stop;
         // The cycle writes the other slot; a changed generation means it may have lapped us.
         if (m.resultGeneration.load(std::memory_order_acquire) != g) continue;
         out = copy;
         if (outcome) *outcome = why;
+        if (stop) *stop = where;
         return true;
     }
     return false;

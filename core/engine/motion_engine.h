@@ -127,6 +127,13 @@ class MotionEngine {
     bool home();
     bool jog(int axis, double delta); // relative move of one axis while Ready
     bool start();
+    // Cut recovery: Start from path time pathTime_s of a joint-spline program (0 = start()):
+    // the approach goes to the path's set-point there (torch off), the torch is lit and the
+    // pierce dwell repeated, then the path rate ramps up from rest (no set-point or velocity
+    // jump) and the cut runs to its end. Refused (event) for other motion sources and for a
+    // time outside [0, cut_time_s). The caller picks the point (the stop point, minus a lead-in
+    // along the path, or a point the operator chose).
+    bool startFrom(double pathTime_s);
     bool feedHold();
     bool resume();
     bool setOverride(double fraction); // 0.10 .. 1.50
@@ -148,7 +155,9 @@ class MotionEngine {
 
     // The figures of the last run that ended (Completed, aborted, stopped or faulted), with the
     // same definitions as simulateCut(); false before the first run ended. Any thread.
-    bool lastRunReport(TrackingReport& out, std::string* outcome = nullptr) const;
+    // stop: where it stopped on its path (valid only for a run that ended short).
+    bool lastRunReport(TrackingReport& out, std::string* outcome = nullptr,
+                       RunStopPoint* stop = nullptr) const;
     // The folder of the current or last run log ("" when EngineSpec.runs_dir is empty or no
     // run started). Any thread.
     std::string lastRunDirectory() const;

@@ -16,16 +16,6 @@
 
 namespace cutcell {
 
-// Where a run that ended short (emergency stop, fault, abort) stopped on its path: summary.json's
-// "stop" object. Not valid for a completed run.
-struct RunStopPoint {
-    bool valid = false;
-    double path_time_s = 0; // s of the path's time (at 100 %)
-    double progress = 0;    // 0..1 of the path
-    double length_mm = 0;   // cut length done
-    double elapsed_s = 0;   // since Start
-    std::uint32_t point_index = 0, point_count = 0;
-};
 
 class RunLog {
   public:

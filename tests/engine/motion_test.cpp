@@ -165,3 +165,106 @@ TEST(EngineMotion, AbortStopsAlongThePathAndReturnsToReady) {
 
 } // namespace
 } // namespace cutcell::test
+
+namespace cutcell::test {
+namespace {
+
+// Path time of a telemetry sample on the path (progress is path time / cut time).
+double pathTimeOf(const TelemetrySample& s) {
+    return s.progress * testProgram()->cut_time_s;
+}
+
+// Cut recovery after an emergency stop: release, reset, enable, home, then Start from the stop
+// point minus a lead-in. The approach goes to the path's set-point there, the torch pierces
+// again, the path ramps up from rest with no jump, and the cut runs to its end: the two runs
+// together cover the whole path.
+TEST(EngineCutRecovery, AfterAnEmergencyStopTheCutResumesFromTheStopPointAndCompletes) {
+    SimCell cell;
+    cell.keepTelemetry = true;
+    cell.toCutting(6.0);
+    ASSERT_FALSE(cell.telemetry.empty());
+    const double stopTau = pathTimeOf(cell.telemetry.back());
+    ASSERT_GT(stopTau, 5.0);
+    cell.engine().emergencyStop();
+    cell.cycleOnce();
+    ASSERT_EQ(cell.engine().state(), EngineState::EmergencyStop);
+    // The engine kept where the torch stopped (the run log's and the GUI's stop point).
+    TrackingReport stopped;
+    std::string how;
+    RunStopPoint stop;
+    ASSERT_TRUE(cell.engine().lastRunReport(stopped, &how, &stop));
+    EXPECT_EQ(how, "emergency stop");
+    ASSERT_TRUE(stop.valid);
+    EXPECT_NEAR(stop.path_time_s, stopTau, 1.01 * testJob().sim.period_s);
+
+    // The same path with a pierce dwell (the robot's default job has none).
+    auto pierced = std::make_shared<MotionProgram>(*testProgram());
+    pierced->pierce_s = 0.4;
+    cell.engine().releaseEmergencyStop();
+    cell.engine().reset();
+    cell.run(5, EngineState::Fault);
+    ASSERT_TRUE(cell.engine().load(pierced));
+    cell.engine().enable();
+    cell.runUntil(EngineState::Ready);
+    cell.engine().home();
+    cell.run(5, EngineState::Fault);
+    cell.runUntil(EngineState::Ready);
+
+    const double leadIn_s = 0.5; // along the path, before the stop point
+    const double fromTau = stopTau - leadIn_s;
+    const size_t eventsBefore = cell.events.size();
+    cell.telemetry.clear();
+    ASSERT_TRUE(cell.engine().startFrom(fromTau));
+    cell.runUntil(EngineState::Completed, 400000);
+    const std::string text = cell.eventText(eventsBefore);
+    EXPECT_NE(text.find("cut recovery from path time"), std::string::npos) << text;
+    EXPECT_NE(text.find("approach to the recovery point"), std::string::npos) << text;
+    EXPECT_NE(text.find("piercing for 0.400 s"), std::string::npos) << text;
+
+    // The torch lights with the path still at the recovery point (the first torch-on sample is
+    // the path's own set-point there) ...
+    size_t firstLit = 0;
+    while (firstLit < cell.telemetry.size() && !cell.telemetry[firstLit].torch_on)
+        ++firstLit;
+    ASSERT_LT(firstLit, cell.telemetry.size());
+    const JointVector atFrom = testProgram()->spline.evaluate(fromTau).q;
+    EXPECT_LE((cell.telemetry[firstLit].setpoint - atFrom).cwiseAbs().maxCoeff(), 1e-3)
+        << "the torch lit away from the recovery point";
+    // ... it stays there for the pierce dwell ...
+    size_t moved = firstLit;
+    while (moved < cell.telemetry.size() &&
+           cell.telemetry[moved].setpoint == cell.telemetry[firstLit].setpoint)
+        ++moved;
+    const double T = testJob().sim.period_s;
+    EXPECT_GE(static_cast<double>(moved - firstLit) * T, 0.4 - 1.5 * T);
+    // ... then the path starts from rest without a jump in set-point or velocity.
+    const std::vector<TelemetrySample> cut(cell.telemetry.begin() + static_cast<long>(firstLit),
+                                           cell.telemetry.end());
+    expectNoJumps(cut, 1.0);
+    // The recovered run reaches the end of the path and covers it from the recovery point on.
+    EXPECT_NEAR(pathTimeOf(cell.telemetry.back()), testProgram()->cut_time_s, 1e-9);
+    double firstTau = 1e9;
+    for (size_t k = firstLit; k < cell.telemetry.size(); ++k)
+        if (cell.telemetry[k].torch_on)
+            firstTau = std::min(firstTau, pathTimeOf(cell.telemetry[k]));
+    EXPECT_NEAR(firstTau, fromTau, 1e-6);
+    EXPECT_LT(firstTau, stopTau) << "the recovered cut overlaps the first one (lead-in)";
+    TrackingReport report;
+    std::string outcome;
+    ASSERT_TRUE(cell.engine().lastRunReport(report, &outcome));
+    EXPECT_EQ(outcome, "completed");
+}
+
+TEST(EngineCutRecovery, AStartOutsideThePathIsRefusedWithTheRange) {
+    SimCell cell;
+    cell.toReady(true);
+    const size_t before = cell.events.size();
+    cell.engine().startFrom(testProgram()->cut_time_s + 1);
+    cell.run(3, EngineState::Fault);
+    EXPECT_EQ(cell.engine().state(), EngineState::Ready);
+    EXPECT_NE(cell.eventText(before).find("outside the cut"), std::string::npos)
+        << cell.eventText(before);
+}
+
+} // namespace
+} // namespace cutcell::test

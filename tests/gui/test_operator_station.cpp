@@ -16,6 +16,7 @@
 #include "ui/panels/dro_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
+#include "ui/panels/recovery_panel.h"
 #include "ui/run_controller.h"
 
 #include <QAbstractItemView>
@@ -41,6 +42,8 @@
 
 using cutcell::EngineState;
 using CutCell::ui::MainWindow;
+using CutCell::ui::EngineBridge;
+using CutCell::ui::RecoveryPanel;
 
 namespace {
 
@@ -377,6 +380,75 @@ class TestOperatorStation : public QObject {
         const QString help = CutCell::ui::ControlPanel::keysHelp();
         for (const char* k : {"F1", "F5", "F6", "F7", "F8", "F9", "F10"})
             QVERIFY2(help.contains(k), k);
+    }
+
+    // Cut recovery: after an E-STOP the panel offers the rest of the cut from the stop point
+    // (minus the lead-in) once the machine is Ready and homed; the resumed run approaches that
+    // point, lights the torch there and completes the cut.
+    void cutRecoveryResumesFromTheStopPointAndCompletes() {
+        MainWindow w(&cutcell::app::makeRig);
+        w.editor()->setJob(shortJob());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        std::vector<cutcell::TelemetrySample> lit;
+        QStringList events;
+        connect(w.run()->bridge(), &EngineBridge::samples, &w,
+                [&](const std::vector<cutcell::TelemetrySample>& batch) {
+                    for (const auto& t : batch)
+                        if (t.torch_on) lit.push_back(t);
+                });
+        connect(w.run()->bridge(), &EngineBridge::event, &w,
+                [&](const cutcell::EngineEvent& e) { events << QString::fromUtf8(e.text.data()); });
+        startManually(w);
+        RecoveryPanel* rec = w.recovery();
+        QVERIFY(!rec->resumeButton()->isEnabled()); // nothing stopped yet
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().progress > 0.3, 30000);
+        QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::EmergencyStop, 5000);
+        // The stop point is known; recovery is refused with the reason until Ready and homed.
+        QTRY_VERIFY_WITH_TIMEOUT(rec->resumePathTime() > 0, 2000);
+        QVERIFY(!rec->resumeButton()->isEnabled());
+        QVERIFY2(rec->reason().contains("Ready"), qPrintable(rec->reason()));
+        const auto program = w.run()->program();
+        QVERIFY(program);
+        const double leadIn_s =
+            rec->leadInField()->value() * program->cut_time_s / program->length_mm;
+        const double stopTau = rec->resumePathTime() + leadIn_s;
+        QTest::mouseClick(w.controls()->releaseButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controls()->resetButton()->isEnabled(), 2000);
+        QTest::mouseClick(w.controls()->resetButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Idle, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled(), 5000);
+        QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 5000);
+        QVERIFY2(rec->reason().contains("Home"), qPrintable(rec->reason()));
+        QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
+                                 30000);
+        QTRY_VERIFY2_WITH_TIMEOUT(rec->resumeButton()->isEnabled(), qPrintable(rec->reason()),
+                                  2000);
+        if (qEnvironmentVariableIsSet("CUTCELL_SHOT_DIR"))
+            w.grab().save(
+                QDir(qEnvironmentVariable("CUTCELL_SHOT_DIR")).filePath("cut_recovery.png"));
+        lit.clear();
+        QTest::mouseClick(rec->resumeButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Completed, 60000);
+        QVERIFY2(events.join('\n').contains("cut recovery from path time"),
+                 qPrintable(events.join('\n')));
+        // The torch was lit first at the recovery point (before the stop point: the lead-in
+        // re-cuts a little), and the resumed run reached the end of the path.
+        QVERIFY(!lit.empty());
+        const double firstTau = lit.front().progress * program->cut_time_s;
+        QVERIFY2(std::abs(firstTau - (stopTau - leadIn_s)) < 0.01,
+                 qPrintable(QString("torch lit at %1 s, recovery point %2 s")
+                                .arg(firstTau)
+                                .arg(stopTau - leadIn_s)));
+        QVERIFY(firstTau < stopTau);
+        QCOMPARE(w.run()->bridge()->last().progress, 1.0);
+        cutcell::TrackingReport report;
+        std::string outcome;
+        QVERIFY(w.run()->rig()->engine().lastRunReport(report, &outcome));
+        QCOMPARE(QString::fromStdString(outcome), QString("completed"));
     }
 
     void approachShowsProgressAndCyclesAreCounted() {

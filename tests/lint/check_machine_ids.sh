@@ -6,7 +6,7 @@
 # Usage: check_machine_ids.sh SOURCE_DIR   (exit 0 clean, 1 offenders listed, 2 set-up error)
 set -u
 cd "$1" || exit 2
-registry='^(ui/machines/register_machine_uis\.cpp|ui/machines/machines\.cmake|app/gui/machines/sim_rigs\.cpp|app/gui/machines/machines\.cmake):'
+registry='^(ui/machines/register_machine_uis\.cpp|ui/machines/machines\.cmake):'
 ids=$(for d in ui/machines/*/; do basename "$d"; done)
 n=$(echo "$ids" | grep -c .)
 if [ "$n" -lt 2 ]; then

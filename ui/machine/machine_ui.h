@@ -76,8 +76,9 @@ class MachineUi {
     // Common fields (Pipes, Cut, ...) this machine ignores, with the reason for the tooltip.
     virtual std::vector<std::pair<std::string, QString>> unusedCommonFields() const { return {}; }
 
-    // The axes in engine order (axis i of the telemetry).
-    virtual std::vector<AxisLabel> axes() const = 0;
+    // The axes in engine order (axis i of the telemetry): by default the core module's names
+    // and units, so the DRO, the plots, the events and the reports name an axis alike.
+    virtual std::vector<AxisLabel> axes() const;
     virtual TipErrorPlot tipErrorPlot() const = 0;
 
     // The exports of its Export menu (a robot job has no G-code).

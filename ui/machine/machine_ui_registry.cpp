@@ -33,10 +33,22 @@ const MachineUi* findMachineUi(std::string_view id) {
 const MachineUi* machineUiFor(const cutcell::Job& job) {
     // The core module decides which machine a job is for (schema-1 jobs without a machine key
     // get the default machine); the MachineUi is found by the module's id.
-    const cutcell::MachineModule* module = job.machine.empty()
-                                               ? cutcell::findMachine(cutcell::schema1DefaultMachine())
-                                               : cutcell::findMachine(job.machine);
+    const cutcell::MachineModule* module =
+        job.machine.empty() ? cutcell::findMachine(cutcell::schema1DefaultMachine())
+                            : cutcell::findMachine(job.machine);
     return module ? findMachineUi(module->id()) : nullptr;
+}
+
+std::vector<AxisLabel> MachineUi::axes() const {
+    // One source of the axis names: the core module's (the same as the program's, the events'
+    // and the reports'), with the unit of each axis.
+    std::vector<AxisLabel> out;
+    const cutcell::MachineModule* module = cutcell::findMachine(id());
+    if (!module) return out;
+    for (const cutcell::AxisInfo& a : module->axes(module->defaultJob()))
+        out.push_back(
+            {QString::fromStdString(a.name), QString::fromLatin1(cutcell::unitSymbol(a.unit))});
+    return out;
 }
 
 std::string MachineUi::exportText(ExportKind, const cutcell::Job&, QString*) const {

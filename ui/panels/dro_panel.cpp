@@ -36,7 +36,7 @@ DroPanel::DroPanel(QWidget* parent)
     grid_->setVerticalSpacing(2);
     grid_->setColumnStretch(0, 1);
     v->addLayout(grid_);
-    for (int i = 0; i < cutcell::kAxisCount; ++i) {
+    for (int i = 0; i < cutcell::kMaxAxes; ++i) {
         Row& r = rows_[static_cast<size_t>(i)];
         r.name = new QLabel(this);
         r.commanded = new QLabel(this);
@@ -89,10 +89,10 @@ DroPanel::DroPanel(QWidget* parent)
 
 void DroPanel::setProgram(const std::shared_ptr<const cutcell::MotionProgram>& program,
                           const std::vector<AxisLabel>& labels) {
-    axes_ = program ? std::clamp(program->axis_count, 0, cutcell::kAxisCount) : 0;
+    axes_ = program ? std::clamp(program->axis_count, 0, cutcell::kMaxAxes) : 0;
     const int chosen = axis_->currentIndex();
     axis_->clear();
-    for (int i = 0; i < cutcell::kAxisCount; ++i) {
+    for (int i = 0; i < cutcell::kMaxAxes; ++i) {
         const auto a = static_cast<size_t>(i);
         Row& r = rows_[a];
         const bool shown = i < axes_;
@@ -128,7 +128,7 @@ QString DroPanel::axisName(int axis) const {
 }
 
 QString DroPanel::unit(int axis) const {
-    return axis >= 0 && axis < cutcell::kAxisCount && linear_[static_cast<size_t>(axis)]
+    return axis >= 0 && axis < cutcell::kMaxAxes && linear_[static_cast<size_t>(axis)]
                ? QStringLiteral("mm")
                : QStringLiteral("deg");
 }

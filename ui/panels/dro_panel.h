@@ -76,11 +76,11 @@ class DroPanel : public QWidget {
     QComboBox* axis_;
     QPushButton* minus_;
     QPushButton* plus_;
-    std::array<QString, cutcell::kAxisCount> names_{};
-    std::array<Row, cutcell::kAxisCount> rows_{};
-    std::array<bool, cutcell::kAxisCount> linear_{};
-    std::array<double, cutcell::kAxisCount> commanded_{};
-    std::array<double, cutcell::kAxisCount> actual_{};
+    std::array<QString, cutcell::kMaxAxes> names_{};
+    std::array<Row, cutcell::kMaxAxes> rows_{};
+    std::array<bool, cutcell::kMaxAxes> linear_{};
+    std::array<double, cutcell::kMaxAxes> commanded_{};
+    std::array<double, cutcell::kMaxAxes> actual_{};
     int axes_ = 0;
     cutcell::EngineState state_ = cutcell::EngineState::Idle;
     bool continuousHeld_ = false;

@@ -110,7 +110,7 @@ void PlotsPanel::setMachine(const MachineUi& machine) {
 
 void PlotsPanel::setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot tip) {
     axes_ = axes;
-    if (axes_.size() > size_t(cutcell::kAxisCount)) axes_.resize(size_t(cutcell::kAxisCount));
+    if (axes_.size() > size_t(cutcell::kMaxAxes)) axes_.resize(size_t(cutcell::kMaxAxes));
     tip_ = tip;
     appended_ = 0;
     lastPlottedS_ = -1;
@@ -147,7 +147,7 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
             continue;
         lastPlottedS_ = s.elapsed_s;
 #ifdef CUTCELL_HAVE_PLOTS
-        double err[cutcell::kAxisCount];
+        double err[cutcell::kMaxAxes];
         const int n = static_cast<int>(axes_.size());
         for (int i = 0; i < n; ++i)
             err[i] = axes_[size_t(i)].linear() ? s.error[i] : cutcell::rad2deg(s.error[i]);

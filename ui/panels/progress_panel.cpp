@@ -65,7 +65,7 @@ QString ProgressPanel::formatDuration(double s) {
 
 void ProgressPanel::setApproachTarget(const cutcell::JointVector& q, int axisCount) {
     approachTarget_ = q;
-    axisCount_ = std::clamp(axisCount, 0, cutcell::kAxisCount);
+    axisCount_ = std::clamp(axisCount, 0, cutcell::kMaxAxes);
 }
 
 void ProgressPanel::beginRun() {

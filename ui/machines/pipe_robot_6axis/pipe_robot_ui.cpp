@@ -32,13 +32,6 @@ std::vector<FormPage> PipeRobotUi::formPages() const {
     };
 }
 
-std::vector<AxisLabel> PipeRobotUi::axes() const {
-    const QString deg = QStringLiteral("deg");
-    return {{QStringLiteral("q0 chuck"), deg},    {QStringLiteral("q1 base"), deg},
-            {QStringLiteral("q2 shoulder"), deg}, {QStringLiteral("q3 elbow"), deg},
-            {QStringLiteral("q4 wrist"), deg},    {QStringLiteral("q5 roll"), deg}};
-}
-
 std::vector<ExportKind> PipeRobotUi::exports() const {
     return {ExportKind::TemplateSvg, ExportKind::TemplatePdf};
 }

@@ -16,7 +16,6 @@ class PipeRobotUi : public MachineUi {
     QString title() const override;
     cutcell::Job defaultJob() const override;
     std::vector<FormPage> formPages() const override;
-    std::vector<AxisLabel> axes() const override;
     TipErrorPlot tipErrorPlot() const override { return TipErrorPlot::BaseXyz; }
     std::vector<ExportKind> exports() const override;
     cutcell::CutPlan plan(const cutcell::Job& job,

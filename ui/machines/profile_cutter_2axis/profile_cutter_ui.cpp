@@ -1,7 +1,7 @@
 #include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
 
-#include "core/machines/profile_cutter/gcode_export.h"
 #include "core/job/job_io.h"
+#include "core/machines/profile_cutter/gcode_export.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_form.h"
@@ -48,11 +48,6 @@ std::vector<std::pair<std::string, QString>> ProfileCutterUi::unusedCommonFields
     return {{"cut.bevel_deg", radial},
             {"cut.max_direction_deviation_deg",
              QObject::tr("The profile cutter's torch never tilts: no deviation limit.")}};
-}
-
-std::vector<AxisLabel> ProfileCutterUi::axes() const {
-    return {{QObject::tr("A chuck"), QStringLiteral("deg")},
-            {QObject::tr("X carriage"), QStringLiteral("mm")}};
 }
 
 std::vector<ExportKind> ProfileCutterUi::exports() const {

@@ -18,7 +18,6 @@ class ProfileCutterUi : public MachineUi {
     cutcell::Job defaultJob() const override;
     std::vector<FormPage> formPages() const override;
     std::vector<std::pair<std::string, QString>> unusedCommonFields() const override;
-    std::vector<AxisLabel> axes() const override;
     TipErrorPlot tipErrorPlot() const override { return TipErrorPlot::MissOnPipe; }
     std::vector<ExportKind> exports() const override;
     std::string exportText(ExportKind kind, const cutcell::Job& job, QString* what) const override;

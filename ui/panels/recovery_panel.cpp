@@ -1,0 +1,142 @@
+#include "ui/panels/recovery_panel.h"
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace CutCell::ui {
+
+using cutcell::EngineState;
+using cutcell::MotionSourceKind;
+
+RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("recoveryPanel");
+    auto* box = new QGroupBox(tr("Cut recovery"), this);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(box);
+    auto* g = new QGridLayout(box);
+    where_ = new QLabel(box);
+    where_->setObjectName("recoveryWhere");
+    where_->setWordWrap(true);
+    g->addWidget(where_, 0, 0, 1, 3);
+    g->addWidget(new QLabel(tr("Lead-in"), box), 1, 0);
+    leadIn_ = new QDoubleSpinBox(box);
+    leadIn_->setObjectName("recoveryLeadIn");
+    leadIn_->setRange(0, 50);
+    leadIn_->setDecimals(1);
+    leadIn_->setSuffix(tr(" mm"));
+    leadIn_->setValue(5);
+    leadIn_->setToolTip(tr("The resumed cut starts this far back along the path from the stop "
+                           "point, so the kerf joins (0 .. 50 mm)."));
+    g->addWidget(leadIn_, 1, 1);
+    resume_ = new QPushButton(tr("Resume from stop"), box);
+    resume_->setObjectName("recoveryResume");
+    g->addWidget(resume_, 1, 2);
+    g->addWidget(new QLabel(tr("From point"), box), 2, 0);
+    point_ = new QSpinBox(box);
+    point_->setObjectName("recoveryPoint");
+    point_->setToolTip(tr("Run the rest of the cut from this point of the path."));
+    g->addWidget(point_, 2, 1);
+    runFrom_ = new QPushButton(tr("Run from point"), box);
+    runFrom_->setObjectName("recoveryRunFrom");
+    g->addWidget(runFrom_, 2, 2);
+    reason_ = new QLabel(box);
+    reason_->setObjectName("recoveryReason");
+    reason_->setWordWrap(true);
+    g->addWidget(reason_, 3, 0, 1, 3);
+    connect(resume_, &QPushButton::clicked, this,
+            [this] { emit startFromRequested(resumePathTime()); });
+    connect(runFrom_, &QPushButton::clicked, this,
+            [this] { emit startFromRequested(pickedPathTime()); });
+    connect(leadIn_, &QDoubleSpinBox::valueChanged, this, [this] { refresh(); });
+    refresh();
+}
+
+void RecoveryPanel::setProgram(std::shared_ptr<const cutcell::MotionProgram> program) {
+    program_ = std::move(program);
+    stop_.reset();
+    const int points = program_ ? static_cast<int>(program_->point_count) : 0;
+    point_->setRange(0, std::max(0, points - 1));
+    refresh();
+}
+
+void RecoveryPanel::setStopPoint(const std::optional<cutcell::RunStopPoint>& stop) {
+    stop_ = stop && stop->valid ? stop : std::nullopt;
+    if (stop_) point_->setValue(static_cast<int>(stop_->point_index));
+    refresh();
+}
+
+void RecoveryPanel::setState(EngineState state, bool homed) {
+    if (state == state_ && homed == homed_) return;
+    state_ = state;
+    homed_ = homed;
+    refresh();
+}
+
+double RecoveryPanel::timeOfPoint(int point) const {
+    return program_ ? point * program_->spline.dt() : 0.0;
+}
+
+double RecoveryPanel::leadInTime() const {
+    if (!program_ || !(program_->length_mm > 0)) return 0;
+    // The cut runs at constant speed between its ramps: length and time are proportional.
+    return leadIn_->value() * program_->cut_time_s / program_->length_mm;
+}
+
+double RecoveryPanel::resumePathTime() const {
+    if (!stop_) return 0;
+    return std::clamp(stop_->path_time_s - leadInTime(), 0.0,
+                      program_ ? program_->cut_time_s : 0.0);
+}
+
+double RecoveryPanel::pickedPathTime() const {
+    if (!program_) return 0;
+    // The last point is the path's end: nothing left to cut from there.
+    return std::clamp(timeOfPoint(point_->value()), 0.0,
+                      std::max(0.0, program_->cut_time_s - program_->spline.dt()));
+}
+
+QString RecoveryPanel::reason() const {
+    if (!program_) return tr("No program loaded.");
+    if (program_->source_kind != MotionSourceKind::JointSpline)
+        return tr("This machine's motion follows %1, not a path in time: no cut recovery; start "
+                  "the cycle again.")
+            .arg(program_->source_kind == MotionSourceKind::MasterAxis ? tr("the line")
+                                                                       : tr("a control law"));
+    if (state_ != EngineState::Ready)
+        return tr("Recovery starts from Ready (state now: %1).")
+            .arg(QString::fromLatin1(cutcell::toString(state_)));
+    if (!homed_) return tr("Home first: the axes lost their reference.");
+    return {};
+}
+
+void RecoveryPanel::refresh() {
+    const QString why = reason();
+    const bool ok = why.isEmpty();
+    if (stop_)
+        where_->setText(tr("Stopped at point %1 / %2, %3 of %4 mm (path time %5 s). Resume "
+                           "starts at %6 s.")
+                            .arg(stop_->point_index)
+                            .arg(stop_->point_count)
+                            .arg(stop_->length_mm, 0, 'f', 1)
+                            .arg(program_ ? program_->length_mm : 0.0, 0, 'f', 1)
+                            .arg(stop_->path_time_s, 0, 'f', 2)
+                            .arg(resumePathTime(), 0, 'f', 2));
+    else
+        where_->setText(tr("No stopped cut to recover."));
+    resume_->setEnabled(ok && stop_.has_value());
+    runFrom_->setEnabled(ok);
+    leadIn_->setEnabled(stop_.has_value());
+    reason_->setText(why);
+    reason_->setVisible(!why.isEmpty());
+}
+
+} // namespace CutCell::ui
