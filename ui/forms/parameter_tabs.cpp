@@ -1,5 +1,4 @@
 #include "ui/forms/parameter_tabs.h"
-#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include "ui/forms/cut_form.h"
 #include "ui/forms/cycle_devices_form.h"

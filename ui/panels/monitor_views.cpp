@@ -1,5 +1,4 @@
 #include "ui/panels/monitor_views.h"
-#include "core/machines/profile_cutter/profile_cutter_module.h"
 
 #include <QLabel>
 #include <QPainter>
