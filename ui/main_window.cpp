@@ -218,13 +218,18 @@ void MainWindow::connectRun() {
         // The previous run's data goes at Start, whoever started it (button, key, auto run).
         plots_->clear();
         progress_->beginRun();
+        recovery_->setStopPoint(std::nullopt); // a stop of this run will bring a new one
+        cell_->setStopMark(-1);
         if (controls_->overridePercent() != 100)
             log_->add(Severity::Warning, tr("This run starts at a speed override of %1 %.")
                                              .arg(controls_->overridePercent()));
     });
     connect(run_, &RunController::runStopped, this, &MainWindow::onRunStopped);
     connect(run_, &RunController::stopPointChanged, this,
-            [this](const cutcell::RunStopPoint& stop) { recovery_->setStopPoint(stop); });
+            [this](const cutcell::RunStopPoint& stop) {
+                recovery_->setStopPoint(stop);
+                cell_->setStopMark(stop.progress);
+            });
     connect(run_, &RunController::programLoaded, recovery_, &RecoveryPanel::setProgram);
     connect(recovery_, &RecoveryPanel::startFromRequested, run_, &RunController::startFrom);
     connect(run_, &RunController::countersChanged, progress_, &ProgressPanel::setCycleFigures);

@@ -86,6 +86,14 @@ void CellViewPanel::setSample(const cutcell::TelemetrySample& s) {
 #endif
 }
 
+void CellViewPanel::setStopMark(double progressFraction) {
+#ifdef CUTCELL_HAVE_VIEW3D
+    if (view_) view_->setStopMark(progressFraction);
+#else
+    (void)progressFraction;
+#endif
+}
+
 PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     setObjectName("plotsPanel");
     auto* v = new QVBoxLayout(this);

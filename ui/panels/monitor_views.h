@@ -38,6 +38,8 @@ class CellViewPanel : public QWidget {
     void setPlan(const MachineUi& machine, const std::shared_ptr<const cutcell::CutPlan>& plan,
                  const cutcell::Job& job);
     void setSample(const cutcell::TelemetrySample& s);
+    // Where the last run stopped, marked on the path (fraction of the cut; < 0: none).
+    void setStopMark(double progressFraction);
     bool rendering() const;
     cutcell::view3d::CellView* view() const { return view_; }
     // Paints the current 3D frame over its place in `shot`, an image of `grabbed` taken with

@@ -94,6 +94,7 @@ void CellScene::setScene(const SceneModel& model) {
     d->hasScene = true;
     d->q = model.homeQ;
     d->progress = 0;
+    d->stopProgress = -1; // a new plan: the old stop point means nothing on it
     d->torchOn = false;
     d->done = -1;
     d->statusKey = -1;
@@ -116,6 +117,28 @@ void CellScene::setMachineState(const JointVector& q, double progressFraction, b
     d->updateDone(std::min(count, n));
     d->updateStatus();
     if (d->preset == ViewPreset::FollowTorch) d->applyCamera(ViewPreset::FollowTorch);
+}
+
+void CellScene::setStopMark(double progressFraction) {
+    d->stopProgress = std::isfinite(progressFraction) ? std::min(progressFraction, 1.0) : -1.0;
+    if (!d->hasScene) return;
+    d->placeStopMark();
+    d->place();
+}
+
+void CellScene::Impl::placeStopMark() {
+    if (!stopMark) return;
+    const size_t n = model.pathWork.size();
+    if (stopProgress < 0 || n == 0) {
+        stopMark->VisibilityOff();
+        return;
+    }
+    const size_t i = std::min(
+        n - 1, static_cast<size_t>(std::lround(stopProgress * static_cast<double>(n - 1))));
+    Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
+    local.block<3, 1>(0, 3) = liftedPathPoint(i, 2.4); // over the done part
+    workLocal[stopMarkSlot] = local;
+    stopMark->VisibilityOn();
 }
 
 void CellScene::Impl::build() {
@@ -255,6 +278,13 @@ void CellScene::Impl::build() {
     unreachableActor->GetProperty()->LightingOff();
     unreachableActor->SetVisibility(unreachable > 0);
     addWork(unreachableActor, I);
+
+    // The stop mark: a small block on the path where the last run stopped (cut recovery).
+    const double markMm = std::clamp(R * 0.08, 4.0, 14.0);
+    stopMark = addWork(makeActor(makeBox(markMm, markMm, markMm), colours::kStopMark), I);
+    stopMark->GetProperty()->LightingOff();
+    stopMarkSlot = workActors.size() - 1;
+    placeStopMark();
 
     // Arm: joints on the z axis of frames 0..n-1, links along z (d) then x (a), the last link
     // being the torch itself.

@@ -31,6 +31,10 @@ class CellScene {
     // progressFraction is the fraction of the plan's duration (path points are equally spaced
     // in time); values outside [0, 1] are clamped.
     void setMachineState(const JointVector& q, double progressFraction, bool torchOn);
+    // Marks the path point where a run stopped (fraction of the plan's duration, as
+    // setMachineState); a negative value removes the mark. Kept across setMachineState, cleared
+    // by setScene.
+    void setStopMark(double progressFraction);
 
     void setPreset(ViewPreset preset);
     ViewPreset preset() const;

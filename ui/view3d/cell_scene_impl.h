@@ -43,7 +43,10 @@ struct CellScene::Impl {
     vtkSmartPointer<vtkActor> pipe, path, doneActor, unreachableActor;
     vtkSmartPointer<vtkPolyData> donePoly;
     vtkSmartPointer<vtkPoints> donePts;
-    std::vector<size_t> drawnIndex; // plan point index of each drawn path point (ascending)
+    std::vector<size_t> drawnIndex;     // plan point index of each drawn path point (ascending)
+    vtkSmartPointer<vtkActor> stopMark; // where the last run stopped (hidden when none)
+    size_t stopMarkSlot = 0;            // its index in workActors / workLocal
+    double stopProgress = -1;           // < 0: no stop shown
     // Moved with the tool.
     vtkSmartPointer<vtkActor> torchBody, nozzle, flame;
     vtkSmartPointer<vtkActor> carriage;  // LinearCarriage only: the block riding the rail
@@ -57,6 +60,7 @@ struct CellScene::Impl {
     void build();
     void place();
     void updateDone(int count);
+    void placeStopMark();
     Vec3 liftedPathPoint(size_t i, double mm) const; // off the work pipe's surface, work frame
     void updateStatus();
     void applyCamera(ViewPreset p);

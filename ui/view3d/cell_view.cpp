@@ -143,6 +143,11 @@ void CellView::setMachineState(const JointVector& q, double progressFraction, bo
         requestRender();
 }
 
+void CellView::setStopMark(double progressFraction) {
+    scene_->setStopMark(progressFraction);
+    requestRender();
+}
+
 void CellView::setPreset(ViewPreset preset) {
     scene_->setPreset(preset);
     for (QAction* a : presets_->actions())

@@ -62,6 +62,7 @@ class CellView : public QWidget {
 
     void setScene(const SceneModel& model);
     void setMachineState(const JointVector& q, double progressFraction, bool torchOn);
+    void setStopMark(double progressFraction); // < 0: none (CellScene::setStopMark)
     void setPreset(ViewPreset preset);
     ViewPreset preset() const;
     void resetView();

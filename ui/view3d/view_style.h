@@ -25,6 +25,7 @@ inline constexpr Rgb kMating{0.45, 0.70, 0.80};
 inline constexpr double kMatingOpacity = 1.0; // wireframe ghost (opaque: no OIT pass)
 inline constexpr Rgb kPath{1.00, 0.78, 0.05};
 inline constexpr Rgb kDone{0.15, 1.00, 0.25};
+inline constexpr Rgb kStopMark{1.00, 0.20, 0.85}; // where a run stopped (cut recovery)
 inline constexpr Rgb kUnreachable{1.00, 0.08, 0.08};
 inline constexpr Rgb kTorchBody{1.00, 0.42, 0.02};
 inline constexpr Rgb kNozzle{0.92, 0.50, 0.18};
