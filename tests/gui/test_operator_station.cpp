@@ -389,7 +389,7 @@ class TestOperatorStation : public QObject {
         MainWindow w(&cutcell::app::makeRig);
         w.editor()->setJob(shortJob());
         w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(QTest::qWaitForWindowExposed(&w)); // also under Xvfb without a window manager
         std::vector<cutcell::TelemetrySample> lit;
         QStringList events;
         connect(w.run()->bridge(), &EngineBridge::samples, &w,
