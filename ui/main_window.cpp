@@ -228,6 +228,7 @@ void MainWindow::connectRun() {
     connect(run_, &RunController::stopPointChanged, this,
             [this](const cutcell::RunStopPoint& stop) {
                 recovery_->setStopPoint(stop);
+                progress_->setStopPoint(stop);
                 cell_->setStopMark(stop.progress);
             });
     connect(run_, &RunController::programLoaded, recovery_, &RecoveryPanel::setProgram);

@@ -41,8 +41,8 @@
 #include <cmath>
 
 using cutcell::EngineState;
-using CutCell::ui::MainWindow;
 using CutCell::ui::EngineBridge;
+using CutCell::ui::MainWindow;
 using CutCell::ui::RecoveryPanel;
 
 namespace {
@@ -131,6 +131,14 @@ void checkNothingCut(QWidget* root, const QString& where) {
 bool onScreen(const QWidget* w, const QWidget* window) {
     const QRect r(w->mapTo(window, QPoint(0, 0)), w->size());
     return window->rect().contains(r);
+}
+
+// The window as the operator sees it, with the 3D view's frame (a native GL window that
+// QWidget::grab() does not see), as `cutcell --screenshot` saves it.
+void saveShot(MainWindow& w, const QString& path) {
+    QImage shot = w.grab().toImage();
+    w.cellView()->paintFrameInto(shot, &w);
+    QVERIFY2(shot.save(path), qPrintable(path));
 }
 
 void startManually(MainWindow& w) {
@@ -327,7 +335,7 @@ class TestOperatorStation : public QObject {
         QVERIFY2(alarms->exportCsv(runs.filePath("alarms.csv"), &err), qPrintable(err));
         // For the docs: CUTCELL_SHOT_DIR=docs saves the window with its alarm list.
         if (qEnvironmentVariableIsSet("CUTCELL_SHOT_DIR"))
-            w.grab().save(QDir(qEnvironmentVariable("CUTCELL_SHOT_DIR")).filePath("alarms.png"));
+            saveShot(w, QDir(qEnvironmentVariable("CUTCELL_SHOT_DIR")).filePath("alarms.png"));
         // The run log's summary has the stop position too.
         QFile summary(QDir(dir).filePath("summary.json"));
         QTRY_VERIFY_WITH_TIMEOUT(summary.exists(), 2000);

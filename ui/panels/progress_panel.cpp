@@ -79,6 +79,7 @@ void ProgressPanel::beginRun() {
 void ProgressPanel::markStopped(const QString& how) {
     if (!lastCut_) return; // nothing ran
     stopped_ = true;
+    stopHow_ = how;
     const auto& s = *lastCut_;
     const double p = std::clamp(s.progress, 0.0, 1.0);
     const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
@@ -89,6 +90,22 @@ void ProgressPanel::markStopped(const QString& how) {
                              .arg(p * pathLengthMm_, 0, 'f', 1)
                              .arg(pathLengthMm_, 0, 'f', 1)
                              .arg(formatDuration(s.elapsed_s));
+    stop_->setText(text);
+    stop_->setToolTip(text);
+}
+
+void ProgressPanel::setStopPoint(const cutcell::RunStopPoint& stop) {
+    if (!stopped_ || !stop.valid) return;
+    // The engine's own stop point (taken in the cycle of the stop; the telemetry shown last may
+    // be up to a display frame older): the same figures as the cut recovery box and summary.json.
+    const auto shown = stop.point_count ? std::min(stop.point_index + 1, stop.point_count) : 0u;
+    const QString text = tr("Stopped (%1) at point %2 / %3, %4 of %5 mm, %6 after Start")
+                             .arg(stopHow_)
+                             .arg(shown)
+                             .arg(stop.point_count)
+                             .arg(stop.length_mm, 0, 'f', 1)
+                             .arg(pathLengthMm_, 0, 'f', 1)
+                             .arg(formatDuration(stop.elapsed_s));
     stop_->setText(text);
     stop_->setToolTip(text);
 }

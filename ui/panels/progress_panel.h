@@ -34,6 +34,9 @@ class ProgressPanel : public QWidget {
     void beginRun();
     // The run ended short: freeze the last figures and show where it stopped.
     void markStopped(const QString& how);
+    // The engine's stop point of that run (arrives just after markStopped): its figures replace
+    // those of the last telemetry sample shown.
+    void setStopPoint(const cutcell::RunStopPoint& stop);
     void setCycleFigures(int parts, double lastCycleS);
     void clear();
 
@@ -62,6 +65,7 @@ class ProgressPanel : public QWidget {
     std::optional<double> approachStart_; // distance to the target when the approach began
     std::optional<cutcell::TelemetrySample> lastCut_; // the last sample of the current run
     bool stopped_ = false;
+    QString stopHow_;
 };
 
 } // namespace CutCell::ui

@@ -64,13 +64,13 @@ void RecoveryPanel::setProgram(std::shared_ptr<const cutcell::MotionProgram> pro
     program_ = std::move(program);
     stop_.reset();
     const int points = program_ ? static_cast<int>(program_->point_count) : 0;
-    point_->setRange(0, std::max(0, points - 1));
+    point_->setRange(1, std::max(1, points)); // shown 1-based, as the progress panel does
     refresh();
 }
 
 void RecoveryPanel::setStopPoint(const std::optional<cutcell::RunStopPoint>& stop) {
     stop_ = stop && stop->valid ? stop : std::nullopt;
-    if (stop_) point_->setValue(static_cast<int>(stop_->point_index));
+    if (stop_) point_->setValue(static_cast<int>(stop_->point_index) + 1);
     refresh();
 }
 
@@ -82,7 +82,7 @@ void RecoveryPanel::setState(EngineState state, bool homed) {
 }
 
 double RecoveryPanel::timeOfPoint(int point) const {
-    return program_ ? point * program_->spline.dt() : 0.0;
+    return program_ ? (point - 1) * program_->spline.dt() : 0.0; // point 1 = path time 0
 }
 
 double RecoveryPanel::leadInTime() const {
@@ -124,7 +124,7 @@ void RecoveryPanel::refresh() {
     if (stop_)
         where_->setText(tr("Stopped at point %1 / %2, %3 of %4 mm (path time %5 s). Resume "
                            "starts at %6 s.")
-                            .arg(stop_->point_index)
+                            .arg(std::min(stop_->point_index + 1, stop_->point_count))
                             .arg(stop_->point_count)
                             .arg(stop_->length_mm, 0, 'f', 1)
                             .arg(program_ ? program_->length_mm : 0.0, 0, 'f', 1)
