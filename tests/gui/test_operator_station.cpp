@@ -436,8 +436,8 @@ class TestOperatorStation : public QObject {
         QTRY_VERIFY2_WITH_TIMEOUT(rec->resumeButton()->isEnabled(), qPrintable(rec->reason()),
                                   2000);
         if (qEnvironmentVariableIsSet("CUTCELL_SHOT_DIR"))
-            w.grab().save(
-                QDir(qEnvironmentVariable("CUTCELL_SHOT_DIR")).filePath("cut_recovery.png"));
+            saveShot(w,
+                     QDir(qEnvironmentVariable("CUTCELL_SHOT_DIR")).filePath("cut_recovery.png"));
         lit.clear();
         QTest::mouseClick(rec->resumeButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Completed, 60000);
