@@ -280,7 +280,7 @@ void CellScene::Impl::build() {
     addWork(unreachableActor, I);
 
     // The stop mark: a small block on the path where the last run stopped (cut recovery).
-    const double markMm = std::clamp(R * 0.08, 4.0, 14.0);
+    const double markMm = std::clamp(R * 0.2, 8.0, 24.0);
     stopMark = addWork(makeActor(makeBox(markMm, markMm, markMm), colours::kStopMark), I);
     stopMark->GetProperty()->LightingOff();
     stopMarkSlot = workActors.size() - 1;
