@@ -11,7 +11,7 @@
 namespace cutcell::view3d {
 
 Pose SceneModel::baseFromWork(const JointVector& q) const {
-    const double a = (chuckAxis >= 0 && chuckAxis < kAxisCount) ? q[chuckAxis] : 0.0;
+    const double a = (chuckAxis >= 0 && chuckAxis < kMaxAxes) ? q[chuckAxis] : 0.0;
     return baseFromWorkAtZero * Eigen::AngleAxisd(a, Vec3::UnitZ());
 }
 
@@ -24,7 +24,7 @@ Pose SceneModel::toolPose(const JointVector& q) const {
     p.linear().col(0) = x;
     p.linear().col(1) = z.cross(x);
     p.linear().col(2) = z;
-    const double travel = (carriageAxis >= 0 && carriageAxis < kAxisCount) ? q[carriageAxis] : 0.0;
+    const double travel = (carriageAxis >= 0 && carriageAxis < kMaxAxes) ? q[carriageAxis] : 0.0;
     p.translation() = carriageOrigin + travel * carriageDirection.normalized();
     return p;
 }
