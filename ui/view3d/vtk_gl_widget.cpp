@@ -1,4 +1,5 @@
 #include "ui/view3d/vtk_gl_widget.h"
+#include "ui/view3d/vtk_mouse_forwarding.h"
 
 // GL calls go through Qt's function resolvers; VTK's own GL state cache is reset before each
 // render, so Qt's changes to the state never confuse it. (vtk_glew.h is not needed here.)
@@ -144,73 +145,25 @@ void VtkGlWidget::onVtkEvent(vtkObject*, unsigned long event, void* callData) {
     }
 }
 
-void VtkGlWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent, bool doubleClick) {
-    const qreal dpr = devicePixelRatioF();
-    const QPointF p = e->position() * dpr;
-    const Qt::KeyboardModifiers mods = e->modifiers();
-    interactor_->SetEventInformationFlipY(
-        static_cast<int>(p.x()), static_cast<int>(p.y()), (mods & Qt::ControlModifier) ? 1 : 0,
-        (mods & Qt::ShiftModifier) ? 1 : 0, 0, doubleClick ? 1 : 0);
-    interactor_->SetAltKey((mods & Qt::AltModifier) ? 1 : 0);
-    interactor_->InvokeEvent(vtkEvent, e);
-    update();
-}
-
-namespace {
-unsigned long pressEvent(Qt::MouseButton b) {
-    switch (b) {
-    case Qt::LeftButton:
-        return vtkCommand::LeftButtonPressEvent;
-    case Qt::MiddleButton:
-        return vtkCommand::MiddleButtonPressEvent;
-    case Qt::RightButton:
-        return vtkCommand::RightButtonPressEvent;
-    default:
-        return vtkCommand::NoEvent;
-    }
-}
-unsigned long releaseEvent(Qt::MouseButton b) {
-    switch (b) {
-    case Qt::LeftButton:
-        return vtkCommand::LeftButtonReleaseEvent;
-    case Qt::MiddleButton:
-        return vtkCommand::MiddleButtonReleaseEvent;
-    case Qt::RightButton:
-        return vtkCommand::RightButtonReleaseEvent;
-    default:
-        return vtkCommand::NoEvent;
-    }
-}
-} // namespace
-
+// Mouse: the trackball camera (orbit, pan, zoom), in the render window's pixels.
 void VtkGlWidget::mousePressEvent(QMouseEvent* e) {
-    if (const unsigned long ev = pressEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev);
+    if (forwardMousePress(interactor_, e, devicePixelRatioF())) update();
 }
 
 void VtkGlWidget::mouseDoubleClickEvent(QMouseEvent* e) {
-    if (const unsigned long ev = pressEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev, true);
+    if (forwardMousePress(interactor_, e, devicePixelRatioF(), true)) update();
 }
 
 void VtkGlWidget::mouseReleaseEvent(QMouseEvent* e) {
-    if (const unsigned long ev = releaseEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev);
+    if (forwardMouseRelease(interactor_, e, devicePixelRatioF())) update();
 }
 
 void VtkGlWidget::mouseMoveEvent(QMouseEvent* e) {
-    if (e->buttons() != Qt::NoButton) forwardMouse(e, vtkCommand::MouseMoveEvent);
+    if (forwardMouseMove(interactor_, e, devicePixelRatioF())) update();
 }
 
 void VtkGlWidget::wheelEvent(QWheelEvent* e) {
-    const int delta = e->angleDelta().y();
-    if (delta == 0) return;
-    const QPointF p = e->position() * devicePixelRatioF();
-    interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()));
-    interactor_->InvokeEvent(
-        delta > 0 ? vtkCommand::MouseWheelForwardEvent : vtkCommand::MouseWheelBackwardEvent, e);
-    update();
-    e->accept();
+    if (forwardWheel(interactor_, e, devicePixelRatioF())) update();
 }
 
 } // namespace cutcell::view3d

@@ -46,7 +46,6 @@ class VtkGlWidget : public QOpenGLWidget {
   private:
     void onVtkEvent(vtkObject* caller, unsigned long event, void* callData);
     void releaseGl();
-    void forwardMouse(QMouseEvent* e, unsigned long vtkEvent, bool doubleClick = false);
 
     vtkGenericOpenGLRenderWindow* window_ = nullptr; // owned (reference counted)
     vtkGenericRenderWindowInteractor* interactor_ = nullptr;

@@ -1,4 +1,5 @@
 #include "ui/view3d/vtk_gl_window.h"
+#include "ui/view3d/vtk_mouse_forwarding.h"
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -25,30 +26,6 @@ constexpr int kMinIntervalMs = 33;
 constexpr double kBudgetFactor = 4.0;
 constexpr int kMaxIntervalMs = 500;
 
-unsigned long pressEvent(Qt::MouseButton b) {
-    switch (b) {
-    case Qt::LeftButton:
-        return vtkCommand::LeftButtonPressEvent;
-    case Qt::MiddleButton:
-        return vtkCommand::MiddleButtonPressEvent;
-    case Qt::RightButton:
-        return vtkCommand::RightButtonPressEvent;
-    default:
-        return vtkCommand::NoEvent;
-    }
-}
-unsigned long releaseEvent(Qt::MouseButton b) {
-    switch (b) {
-    case Qt::LeftButton:
-        return vtkCommand::LeftButtonReleaseEvent;
-    case Qt::MiddleButton:
-        return vtkCommand::MiddleButtonReleaseEvent;
-    case Qt::RightButton:
-        return vtkCommand::RightButtonReleaseEvent;
-    default:
-        return vtkCommand::NoEvent;
-    }
-}
 } // namespace
 
 VtkGlWindow::VtkGlWindow() : QOpenGLWindow(QOpenGLWindow::NoPartialUpdate) {
@@ -229,46 +206,25 @@ void VtkGlWindow::onVtkEvent(vtkObject*, unsigned long event, void* callData) {
     }
 }
 
-void VtkGlWindow::forwardMouse(QMouseEvent* e, unsigned long vtkEvent, bool doubleClick) {
-    const qreal dpr = devicePixelRatio() * scale_; // VTK's pixels (half while moving)
-    const QPointF p = e->position() * dpr;
-    const Qt::KeyboardModifiers mods = e->modifiers();
-    interactor_->SetEventInformationFlipY(
-        static_cast<int>(p.x()), static_cast<int>(p.y()), (mods & Qt::ControlModifier) ? 1 : 0,
-        (mods & Qt::ShiftModifier) ? 1 : 0, 0, doubleClick ? 1 : 0);
-    interactor_->SetAltKey((mods & Qt::AltModifier) ? 1 : 0);
-    interactor_->InvokeEvent(vtkEvent, e);
-    requestFrame();
-}
-
+// Mouse: the trackball camera (orbit, pan, zoom), in the render window's pixels.
 void VtkGlWindow::mousePressEvent(QMouseEvent* e) {
-    if (const unsigned long ev = pressEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev);
+    if (forwardMousePress(interactor_, e, devicePixelRatio() * scale_)) requestFrame();
 }
 
 void VtkGlWindow::mouseDoubleClickEvent(QMouseEvent* e) {
-    if (const unsigned long ev = pressEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev, true);
+    if (forwardMousePress(interactor_, e, devicePixelRatio() * scale_, true)) requestFrame();
 }
 
 void VtkGlWindow::mouseReleaseEvent(QMouseEvent* e) {
-    if (const unsigned long ev = releaseEvent(e->button()); ev != vtkCommand::NoEvent)
-        forwardMouse(e, ev);
+    if (forwardMouseRelease(interactor_, e, devicePixelRatio() * scale_)) requestFrame();
 }
 
 void VtkGlWindow::mouseMoveEvent(QMouseEvent* e) {
-    if (e->buttons() != Qt::NoButton) forwardMouse(e, vtkCommand::MouseMoveEvent);
+    if (forwardMouseMove(interactor_, e, devicePixelRatio() * scale_)) requestFrame();
 }
 
 void VtkGlWindow::wheelEvent(QWheelEvent* e) {
-    const int delta = e->angleDelta().y();
-    if (delta == 0) return;
-    const QPointF p = e->position() * devicePixelRatio() * scale_;
-    interactor_->SetEventInformationFlipY(static_cast<int>(p.x()), static_cast<int>(p.y()));
-    interactor_->InvokeEvent(
-        delta > 0 ? vtkCommand::MouseWheelForwardEvent : vtkCommand::MouseWheelBackwardEvent, e);
-    requestFrame();
-    e->accept();
+    if (forwardWheel(interactor_, e, devicePixelRatio() * scale_)) requestFrame();
 }
 
 } // namespace cutcell::view3d

@@ -63,7 +63,6 @@ class VtkGlWindow : public QOpenGLWindow {
   private:
     void onVtkEvent(vtkObject* caller, unsigned long event, void* callData);
     void releaseGl();
-    void forwardMouse(QMouseEvent* e, unsigned long vtkEvent, bool doubleClick = false);
     void draw();
 
     vtkGenericOpenGLRenderWindow* window_ = nullptr;
