@@ -17,8 +17,8 @@ double CrankPlant::accel(double q, double dq, double tau, double dist) {
     const WhitworthPose p = forwardKinematics(d_, q);
     if (!p.closes) return 0;
     const auto rho = extendedJacobian(d_, q, p);
-    const double M = p_.crank_inertia + p_.rocker_inertia * rho[2] * rho[2] +
-                     p_.slider_mass * rho[4] * rho[4];
+    const double M =
+        p_.crank_inertia + p_.rocker_inertia * rho[2] * rho[2] + p_.slider_mass * rho[4] * rho[4];
     constexpr double h = 1e-6;
     const double dM = (inertia(q + h) - inertia(q - h)) / (2 * h);
     const double y = p.y + d_.scale_offset, dy = rho[4] * dq;
@@ -40,8 +40,8 @@ double CrankPlant::step(double torque, double disturbance, double dt, int subste
         const double a1 = accel(q, v, tau, disturbance);
         contact = std::max(contact, lastContact_);
         const double a2 = accel(q + 0.5 * h * v, v + 0.5 * h * a1, tau, disturbance);
-        const double a3 = accel(q + 0.5 * h * (v + 0.5 * h * a1), v + 0.5 * h * a2, tau,
-                                disturbance);
+        const double a3 =
+            accel(q + 0.5 * h * (v + 0.5 * h * a1), v + 0.5 * h * a2, tau, disturbance);
         const double a4 = accel(q + h * (v + 0.5 * h * a2), v + h * a3, tau, disturbance);
         s_.q = q + h * v + h * h / 6 * (a1 + a2 + a3);
         s_.dq = v + h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);

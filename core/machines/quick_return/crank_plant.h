@@ -12,14 +12,14 @@
 namespace cutcell::quick_return {
 
 struct CrankPlantParams {
-    double slider_mass = 0.2;      // kg, m5 (slider + tool)
-    double crank_inertia = 0.01;   // kg m^2, motor rotor through the gear + crank + pin block
-    double rocker_inertia = 0.001; // kg m^2, about O3
-    double viscous = 0.01;         // N m s/rad
-    double coulomb = 0.05;         // N m
-    double torque_limit = 120;     // N m at the crank
-    double gravity = 9.81;         // m/s^2, along -y
-    double contact_force = 400;    // N, Eq. 40
+    double slider_mass = 0.2;         // kg, m5 (slider + tool)
+    double crank_inertia = 0.01;      // kg m^2, motor rotor through the gear + crank + pin block
+    double rocker_inertia = 0.001;    // kg m^2, about O3
+    double viscous = 0.01;            // N m s/rad
+    double coulomb = 0.05;            // N m
+    double torque_limit = 120;        // N m at the crank
+    double gravity = 9.81;            // m/s^2, along -y
+    double contact_force = 400;       // N, Eq. 40
     double cut_low = 0, cut_high = 0; // scale readings (m) between which the tool is in the work
     bool contact = false;             // Eq. 40 on (experiment 2) or off (experiment 1)
 };
@@ -30,8 +30,7 @@ struct CrankState {
 
 class CrankPlant {
   public:
-    CrankPlant(const WhitworthDims& dims, const CrankPlantParams& params)
-        : d_(dims), p_(params) {}
+    CrankPlant(const WhitworthDims& dims, const CrankPlantParams& params) : d_(dims), p_(params) {}
     void setState(double q, double dq) { s_ = {q, dq}; }
     const CrankState& state() const { return s_; }
     // One period of a held torque command; returns the torque applied (after the limit).

@@ -17,11 +17,11 @@ namespace cutcell::quick_return {
 struct ExperimentSetup {
     QuickReturnLawConfig law; // experiment, controller and gains set by the runners
     CrankPlantParams plant;
-    double sample_time = 0.001;      // s
+    double sample_time = 0.001;          // s
     double scale_resolution = 8.4667e-5; // m (300 counts per inch)
     double disturbance_amplitude = 0.2;  // N m, sinusoidal torque on the crank
     double disturbance_hz = 3;
-    double mse_window = 2; // s
+    double mse_window = 2;  // s
     double mse_scale = 100; // L
     int trace_every = 10;   // samples kept for plots (every n-th)
 };
@@ -47,9 +47,9 @@ struct CuttingResult {
     double velocity_error_max = 0; // m/s, |y_d' - y'| over the workpiece
     double velocity_error_rms = 0;
     int samples_in_work = 0;
-    double max_torque = 0;       // N m
-    double cycle_time = 0;       // s, from the first cut start to the last one (mean per stroke)
-    double return_time = 0;      // s, mean open-loop return
+    double max_torque = 0;  // N m
+    double cycle_time = 0;  // s, from the first cut start to the last one (mean per stroke)
+    double return_time = 0; // s, mean open-loop return
     std::vector<TracePoint> trace;
 };
 

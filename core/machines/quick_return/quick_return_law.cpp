@@ -64,8 +64,8 @@ double QuickReturnLaw::crankForSlider(double y) const {
 void QuickReturnLaw::start(const SourceInput& in) {
     const DriveFeedback& d = (*in.axes)[static_cast<size_t>(c_.axis)];
     phase_ = c_.experiment == Experiment::Tracking ? QrPhase::Tracking
-             : onCutBranch(d.position)              ? QrPhase::Cut
-                                                    : QrPhase::ReturnPush;
+             : onCutBranch(d.position)             ? QrPhase::Cut
+                                                   : QrPhase::ReturnPush;
     t0_ = in.now_s;
     strokes_ = 0;
     rest_ = 0;
@@ -133,8 +133,8 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
             const double w = c_.track_omega, A = c_.track_amplitude;
             yd = c_.track_offset + A * std::sin(w * tSince);
             dyd = A * w * std::cos(w * tSince);
-            tau = controlTorque(q, y, dy, yd, dyd, -A * w * w * std::sin(w * tSince), T, tSince,
-                                &u);
+            tau =
+                controlTorque(q, y, dy, yd, dyd, -A * w * w * std::sin(w * tSince), T, tSince, &u);
             qRef = q + wrapAngle(crankForSlider(yd) - q);
             dqRef = dq;
             supervised = true;
@@ -159,8 +159,8 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
                 reason = kBlendReason;
             }
             const bool past = !onCutBranch(q);
-            const bool arrived = tSince >= c_.profile.duration() &&
-                                 std::fabs(y - c_.stroke.y_bottom) < 0.002;
+            const bool arrived =
+                tSince >= c_.profile.duration() && std::fabs(y - c_.stroke.y_bottom) < 0.002;
             if (past || arrived) {
                 ++strokes_;
                 if (strokes_ >= c_.strokes) {

@@ -91,8 +91,7 @@ void TaskController::restart(double e1, double e2) {
     kx_ = 0;
 }
 
-double TaskController::update(double e1, double e2, double ddy_d, double dt,
-                              double t_since_start) {
+double TaskController::update(double e1, double e2, double ddy_d, double dt, double t_since_start) {
     const double m = p_.model_mass, ff = m * (ddy_d + p_.gravity);
     switch (kind_) {
     case ControllerKind::Ffc:

@@ -53,10 +53,10 @@ double lqtResidual(const ControllerParams& p, const Riccati2& r);
 // reduced problem: A_hat P + P A_hat - P A12 Q22^-1 A12 P + Q_bar = 0.
 struct OsmcSurface {
     double c1 = 0, c2 = 0;
-    double p = 0;                    // the ARE's solution
-    double a_hat = 0, a12 = 0;       // A11 - A12 Q22^-1 Q12^T, A12
-    double q_bar = 0, q22 = 0;       // of T^-T Q T^-1
-    double residual = 0;             // of the ARE at p
+    double p = 0;                            // the ARE's solution
+    double a_hat = 0, a12 = 0;               // A11 - A12 Q22^-1 Q12^T, A12
+    double q_bar = 0, q22 = 0;               // of T^-T Q T^-1
+    double residual = 0;                     // of the ARE at p
     double slope() const { return c1 / c2; } // e2 = -slope e1 on the surface
 };
 OsmcSurface osmcSurface(const ControllerParams& p);

@@ -71,9 +71,7 @@ WhitworthPose forwardKinematics(const WhitworthDims& d, double q) {
 std::array<double, 5> extendedJacobian(const WhitworthDims& d, double q, const WhitworthPose& p) {
     const double r2 = d.r2, ab = d.ab, r3 = p.r3, t3 = p.theta3, t4 = p.theta4;
     const double s4 = std::sin(t4);
-    return {1.0,
-            -r2 * std::sin(q - t3),
-            r2 * std::cos(q - t3) / r3,
+    return {1.0, -r2 * std::sin(q - t3), r2 * std::cos(q - t3) / r3,
             r2 * (ab * std::sin(q - 2 * t3) - (ab + 2 * r3) * std::sin(q)) / (2 * r3 * d.r4 * s4),
             r2 * (ab * std::sin(q - 2 * t3 + t4) - (ab + 2 * r3) * std::sin(q - t4)) /
                 (2 * r3 * s4)};

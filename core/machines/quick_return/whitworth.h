@@ -60,7 +60,7 @@ std::string describeRanges(const std::vector<AngleRange>& ranges);
 // the stroke. For increasing q: the cutting stroke runs from q_top (slider highest, the seed's
 // y_min) down to q_bottom (the seed's y_max); the return stroke from q_bottom back to q_top.
 struct StrokeInfo {
-    bool ok = false; // the crank turns fully and exactly two sign changes were found
+    bool ok = false;                // the crank turns fully and exactly two sign changes were found
     double q_top = 0, q_bottom = 0; // rad in [-pi, pi)
     double y_top = 0, y_bottom = 0; // scale readings (m): y_top > y_bottom
     double stroke = 0;              // y_top - y_bottom (m), the seed's L_c
