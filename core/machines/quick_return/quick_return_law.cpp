@@ -158,6 +158,20 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
             } else {
                 reason = kBlendReason;
             }
+            if (!onCutBranch(q) && dq < 0) {
+                out.status = SourceStatus::Fault;
+                out.fault = "cutting stroke: the crank was driven back through the top singular "
+                            "point (the controller cannot hold the slider against the contact "
+                            "force)";
+                return;
+            }
+            if (tSince > c_.profile.duration() + c_.cut_timeout) {
+                out.status = SourceStatus::Fault;
+                out.fault = "cutting stroke stalled: the slider did not reach the end of the "
+                            "stroke in time (the controller cannot push through the contact "
+                            "force)";
+                return;
+            }
             const bool past = !onCutBranch(q);
             const bool arrived =
                 tSince >= c_.profile.duration() && std::fabs(y - c_.stroke.y_bottom) < 0.002;

@@ -39,6 +39,8 @@ struct QuickReturnLawConfig {
     // Experiment 2
     int strokes = 3;
     double return_torque_1 = 8.65, return_torque_2 = -8; // N m
+    // A cut that has not reached the bottom this long after its profile ended is a fault.
+    double cut_timeout = 1.0; // s
     // Hold (Track requests) and braking: crank PD
     double hold_kp = 200, hold_kd = 10; // N m/rad, N m s/rad
     double rest_speed = 0.02;           // rad/s
