@@ -2,6 +2,8 @@
 
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
+#include "core/job/job_io.h"
+#include "core/machines/quick_return/quick_return_svg.h"
 #include "core/sim/tracking_stats.h"
 
 #include <cmath>
@@ -27,7 +29,9 @@ Job QuickReturnModule::defaultJob() const {
     // The crank's following error is the slider's divided by rho_y (~0.1 m/rad over the
     // work): the 400 N impact on the workpiece lags the crank ~2 deg, so 2 deg would trip.
     job.engine.following_error_limit_deg = 10;
-    return job;
+    // Normalised through the file form: the common Job's pipe and robot fields, which this
+    // machine does not keep, take the values a saved and reopened job has.
+    return jobFromJson(jobToJson(job));
 }
 
 void QuickReturnModule::readSection(const json::Value& section, Job& job) const {
@@ -102,14 +106,19 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) 
 }
 
 std::vector<ExportInfo> QuickReturnModule::exports() const {
-    return {{"report_json", "both experiments, all controllers (JSON)", "quick_return.json", false,
-             false}};
+    return {{"report_json", "both experiments, all controllers (JSON)", "quick_return.json", true,
+             false},
+            {"figures_svg", "mechanism, velocity profile, phase diagram, velocity error (SVG)",
+             "quick_return_cut.svg", true, false}};
 }
 
 std::string QuickReturnModule::exportFile(const std::string& exportId, const Job& job,
                                           const MachinePlan& plan) const {
     const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
     if (!data) throw std::invalid_argument("the plan has no quick-return set-up");
+    if (exportId == "figures_svg")
+        return cuttingFiguresSvg(data->setup,
+                                 runCutting(data->setup, quickReturnSpec(job).controller));
     if (exportId != "report_json")
         throw std::invalid_argument("the quick-return cutter has no export " +
                                     json::quote(exportId));
