@@ -151,6 +151,66 @@ TEST(QuickReturnControl, OsmcSurfaceSatisfiesItsRiccatiEquationAndMinimisesTheCo
     EXPECT_LT(lqtResidual(g, r), 1e-9 * g.lqt_q1);
 }
 
+TEST(QuickReturnControl, SwitchingCriterionBranchIsTheSignOfRhoY) {
+    QuickReturnLawConfig c;
+    c.stroke = strokeInfo(c.dims);
+    ASSERT_TRUE(c.stroke.ok);
+    const QuickReturnLaw law(c);
+    int checked = 0;
+    for (int i = 0; i < 720; ++i) {
+        const double q = -3 * kPi + 6 * kPi * (i + 0.5) / 720; // several turns
+        const WhitworthPose p = forwardKinematics(c.dims, q);
+        const double rho = extendedJacobian(c.dims, q, p)[4];
+        if (std::fabs(rho) < 1e-6) continue;
+        EXPECT_EQ(law.onCutBranch(q), rho < 0) << q; // cut: y falls while q rises
+        ++checked;
+    }
+    EXPECT_GT(checked, 700);
+    // crankForSlider inverts the FK on the cutting branch.
+    for (double y : {0.0, -0.1, -0.2, -0.3, -0.4}) {
+        const double q = law.crankForSlider(y);
+        EXPECT_NEAR(forwardKinematics(c.dims, q).y + c.dims.scale_offset, y, 1e-9);
+        EXPECT_TRUE(law.onCutBranch(q));
+    }
+}
+
+TEST(QuickReturnPlant, ContactForceActsOnlyOverTheWorkWhileCuttingDownwards) {
+    const WhitworthDims d;
+    const StrokeInfo st = strokeInfo(d);
+    CrankPlantParams p;
+    p.contact = true;
+    p.cut_low = -0.33;
+    p.cut_high = -0.03;
+    CrankPlant plant(d, p);
+    QuickReturnLawConfig c;
+    c.stroke = st;
+    const QuickReturnLaw law(c);
+    // Over the work, moving down (q rising on the cut branch): 400 N; moving up: none.
+    plant.setState(law.crankForSlider(-0.2), 1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), p.contact_force);
+    plant.setState(law.crankForSlider(-0.2), -1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), 0);
+    // Above the work, moving down: none.
+    plant.setState(law.crankForSlider(0.0), 1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), 0);
+    // Without torque, friction or contact the energy (kinetic + slider weight) is conserved.
+    p.contact = false;
+    p.viscous = p.coulomb = 0;
+    CrankPlant free(d, p);
+    free.setState(0.3, 2.0);
+    auto energy = [&] {
+        const double q = free.state().q, v = free.state().dq;
+        return 0.5 * free.inertia(q) * v * v + p.slider_mass * p.gravity * free.sliderPosition();
+    };
+    const double e0 = energy();
+    for (int i = 0; i < 2000; ++i)
+        free.step(0, 0, 1e-3);
+    EXPECT_NEAR(energy(), e0, 1e-4 * std::fabs(e0));
+}
+
 TEST(QuickReturnJob, RoundTripAndRefusals) {
     if (!findMachine(kQuickReturnId)) registerMachines();
     const MachineModule& m = *findMachine(kQuickReturnId);
