@@ -1,5 +1,6 @@
 // cutcell-cli bench: speed figures of the core (and of the engine once it exists). Printed,
 // never asserted: shared machines make timed assertions flaky.
+#include "bench_quick_return.h"
 #include "cli_commands.h"
 #ifdef CUTCELL_HAVE_DEVICES
 #include "bench_can.h"
@@ -81,6 +82,7 @@ int runBench(const BenchOptions& o) {
     out.emplace_back("simulate_seconds", best);
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
+    benchQuickReturn(out);
 #ifdef CUTCELL_HAVE_DEVICES
     if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif

@@ -1,0 +1,35 @@
+#include "bench_quick_return.h"
+
+#include "core/machine/machine_registry.h"
+#include "core/machines/quick_return/quick_return_module.h"
+
+#include <chrono>
+#include <string>
+
+namespace cutcell::cli {
+
+void benchQuickReturn(json::Object& out) {
+    using namespace quick_return;
+    const MachineModule* m = findMachine(kQuickReturnId);
+    if (!m) return;
+    const Job job = m->defaultJob();
+    ExperimentSetup s;
+    std::string problem;
+    if (!buildSetup(quickReturnSpec(job), &s, &problem)) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (ControllerKind k : kAllControllers) {
+        const std::string c = toString(k);
+        out.emplace_back("quick_return_exp1_mse_" + c, runTracking(s, k).mse);
+    }
+    for (ControllerKind k : kAllControllers) {
+        const std::string c = toString(k);
+        const CuttingResult r = runCutting(s, k);
+        out.emplace_back("quick_return_exp2_completed_" + c, r.completed ? 1.0 : 0.0);
+        out.emplace_back("quick_return_exp2_verr_max_m_s_" + c, r.velocity_error_max);
+        out.emplace_back("quick_return_exp2_verr_rms_m_s_" + c, r.velocity_error_rms);
+    }
+    out.emplace_back("quick_return_experiments_seconds",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+} // namespace cutcell::cli

@@ -1,0 +1,235 @@
+#include "core/machines/quick_return/quick_return_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cutcell::quick_return {
+
+namespace {
+constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr const char* kReturnReason = "open-loop torque return stroke";
+constexpr const char* kBlendReason = "near a singular point: no crank reference (parabolic blend)";
+constexpr const char* kBrakeReason = "braking the crank";
+} // namespace
+
+const char* toString(Experiment e) {
+    return e == Experiment::Tracking ? "tracking" : "cutting";
+}
+
+const char* toString(QrPhase p) {
+    switch (p) {
+    case QrPhase::Hold:
+        return "holding";
+    case QrPhase::Tracking:
+        return "tracking";
+    case QrPhase::Cut:
+        return "cutting stroke";
+    case QrPhase::ReturnPush:
+        return "open-loop return (push)";
+    case QrPhase::ReturnBrake:
+        return "open-loop return (brake)";
+    case QrPhase::Braking:
+        return "braking";
+    case QrPhase::Done:
+        return "done";
+    }
+    return "?";
+}
+
+QuickReturnLaw::QuickReturnLaw(const QuickReturnLawConfig& c) : c_(c) {
+    ctl_.configure(c_.controller, c_.gains);
+}
+
+bool QuickReturnLaw::onCutBranch(double q) const {
+    double d = std::fmod(q - c_.stroke.q_top, kTwoPi);
+    if (d < 0) d += kTwoPi;
+    return d > 0 && d < c_.stroke.cut_arc;
+}
+
+double QuickReturnLaw::crankForSlider(double y) const {
+    // y decreases monotonically along the cutting branch.
+    double lo = c_.stroke.q_top, hi = c_.stroke.q_top + c_.stroke.cut_arc;
+    for (int i = 0; i < 50; ++i) {
+        const double m = 0.5 * (lo + hi);
+        const double ym = forwardKinematics(c_.dims, m).y + c_.dims.scale_offset;
+        if (ym > y)
+            lo = m;
+        else
+            hi = m;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void QuickReturnLaw::start(const SourceInput& in) {
+    const DriveFeedback& d = (*in.axes)[static_cast<size_t>(c_.axis)];
+    phase_ = c_.experiment == Experiment::Tracking ? QrPhase::Tracking
+             : onCutBranch(d.position)             ? QrPhase::Cut
+                                                   : QrPhase::ReturnPush;
+    t0_ = in.now_s;
+    strokes_ = 0;
+    rest_ = 0;
+    restarted_ = false;
+}
+
+double QuickReturnLaw::controlTorque(double q, double y, double dy, double yd, double dyd,
+                                     double ddyd, double T, double tSince, double* u) {
+    if (!restarted_) {
+        ctl_.restart(yd - y, dyd - dy);
+        restarted_ = true;
+    }
+    *u = ctl_.update(yd - y, dyd - dy, ddyd, T, tSince);
+    double map;
+    if (c_.jacobian_compensator) {
+        // Eq. 33: K_rho sign(y'/q'), the sign known per branch (found offline).
+        map = onCutBranch(q) ? -c_.k_rho : c_.k_rho;
+    } else {
+        const WhitworthPose p = forwardKinematics(c_.dims, q);
+        map = p.closes ? extendedJacobian(c_.dims, q, p)[4] : 0;
+    }
+    return map * *u;
+}
+
+void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
+    const size_t a = static_cast<size_t>(c_.axis);
+    const SensorReading& s = (*in.sensors)[static_cast<size_t>(c_.sensor)];
+    const DriveFeedback& d = (*in.axes)[a];
+    out.position = in.setpoint;
+    out.velocity = in.setpoint_velocity;
+    out.torque.setZero();
+    out.point_count = static_cast<std::uint32_t>(c_.strokes);
+    if (!s.valid || !std::isfinite(s.position)) {
+        out.status = SourceStatus::Fault;
+        out.fault = "slider position sensor: reading not valid";
+        return;
+    }
+    now_ = in.now_s;
+    const double q = d.position, dq = d.velocity, T = in.period_s;
+    const double y = s.position / 1000; // mm -> m
+    const WhitworthPose pose = forwardKinematics(c_.dims, q);
+    const double dy = pose.closes ? extendedJacobian(c_.dims, q, pose)[4] * dq : 0;
+    double tau = 0, u = 0, yd = y, dyd = 0, qRef = q, dqRef = dq;
+    bool supervised = false;
+    const char* reason = kBrakeReason;
+
+    if (in.request == SourceRequest::Track) {
+        phase_ = QrPhase::Hold;
+        qRef = in.setpoint[static_cast<Eigen::Index>(a)];
+        dqRef = in.setpoint_velocity[static_cast<Eigen::Index>(a)];
+        tau = c_.hold_kp * (qRef - q) + c_.hold_kd * (dqRef - dq);
+        supervised = true;
+    } else {
+        const bool run = in.request == SourceRequest::Run;
+        if (!run && phase_ != QrPhase::Braking && phase_ != QrPhase::Done) {
+            phase_ = QrPhase::Braking;
+            rest_ = 0;
+            brakeAt_ = q;
+        }
+        const double tSince = now_ - t0_;
+        switch (phase_) {
+        case QrPhase::Hold:
+        case QrPhase::Tracking: {
+            phase_ = QrPhase::Tracking;
+            const double w = c_.track_omega, A = c_.track_amplitude;
+            yd = c_.track_offset + A * std::sin(w * tSince);
+            dyd = A * w * std::cos(w * tSince);
+            tau =
+                controlTorque(q, y, dy, yd, dyd, -A * w * w * std::sin(w * tSince), T, tSince, &u);
+            qRef = q + wrapAngle(crankForSlider(yd) - q);
+            dqRef = dq;
+            supervised = true;
+            if (tSince >= c_.track_duration) {
+                phase_ = QrPhase::Braking;
+                brakeAt_ = q;
+                rest_ = 0;
+            }
+            break;
+        }
+        case QrPhase::Cut: {
+            const ProfileSample r = sampleProfile(c_.profile, tSince);
+            yd = r.y;
+            dyd = r.dy;
+            tau = controlTorque(q, y, dy, r.y, r.dy, r.ddy, T, tSince, &u);
+            const double lo = std::min(c_.profile.y_a, c_.profile.y_b);
+            const double hi = std::max(c_.profile.y_a, c_.profile.y_b);
+            if (r.y >= lo && r.y <= hi) {
+                supervised = true;
+                qRef = q + wrapAngle(crankForSlider(r.y) - q);
+            } else {
+                reason = kBlendReason;
+            }
+            if (!onCutBranch(q) && dq < 0) {
+                out.status = SourceStatus::Fault;
+                out.fault = "cutting stroke: the crank was driven back through the top singular "
+                            "point (the controller cannot hold the slider against the contact "
+                            "force)";
+                return;
+            }
+            if (tSince > c_.profile.duration() + c_.cut_timeout) {
+                out.status = SourceStatus::Fault;
+                out.fault = "cutting stroke stalled: the slider did not reach the end of the "
+                            "stroke in time (the controller cannot push through the contact "
+                            "force)";
+                return;
+            }
+            const bool past = !onCutBranch(q);
+            const bool arrived =
+                tSince >= c_.profile.duration() && std::fabs(y - c_.stroke.y_bottom) < 0.002;
+            if (past || arrived) {
+                ++strokes_;
+                if (strokes_ >= c_.strokes) {
+                    phase_ = QrPhase::Braking;
+                    brakeAt_ = q;
+                    rest_ = 0;
+                } else {
+                    phase_ = QrPhase::ReturnPush;
+                }
+            }
+            break;
+        }
+        case QrPhase::ReturnPush:
+            reason = kReturnReason;
+            tau = c_.return_torque_1;
+            if (y >= 0.5 * (c_.stroke.y_top + c_.stroke.y_bottom)) phase_ = QrPhase::ReturnBrake;
+            break;
+        case QrPhase::ReturnBrake:
+            reason = kReturnReason;
+            tau = c_.return_torque_2;
+            if (dq <= 0) {
+                out.status = SourceStatus::Fault;
+                out.fault = "open-loop return stalled before the top of the stroke: raise "
+                            "return_torque_1 or lower |return_torque_2|";
+                return;
+            }
+            if (onCutBranch(q)) {
+                phase_ = QrPhase::Cut;
+                t0_ = now_;
+                restarted_ = false;
+            }
+            break;
+        case QrPhase::Braking:
+        case QrPhase::Done:
+            tau = c_.hold_kp * (brakeAt_ - q) - c_.hold_kd * dq;
+            rest_ = std::fabs(dq) < c_.rest_speed ? rest_ + 1 : 0;
+            if (rest_ >= c_.rest_cycles) {
+                if (run) phase_ = QrPhase::Done;
+                out.status = run ? SourceStatus::Done : SourceStatus::AtRest;
+            }
+            break;
+        }
+    }
+    tau = std::clamp(tau, -c_.torque_limit, c_.torque_limit);
+    const Eigen::Index ai = static_cast<Eigen::Index>(a);
+    out.position[ai] = supervised ? qRef : q;
+    out.velocity[ai] = supervised ? dqRef : dq;
+    out.torque[ai] = tau;
+    out.supervised[a] = supervised;
+    if (!supervised) out.unsupervised_reason = reason;
+    out.point_index = static_cast<std::uint32_t>(strokes_);
+    out.progress = c_.experiment == Experiment::Tracking
+                       ? std::min(1.0, (now_ - t0_) / c_.track_duration)
+                       : static_cast<double>(strokes_) / std::max(1, c_.strokes);
+    last_ = {now_ - t0_, y, dy, yd, dyd, u, tau, phase_};
+}
+
+} // namespace cutcell::quick_return

@@ -1,0 +1,87 @@
+#pragma once
+// The quick-return cutter's control law, run in the engine cycle (MotionSourceKind::ControlLaw):
+// one torque-mode crank axis (rad, N m) and the slider's linear scale (sensor, mm). The slider
+// velocity is rho_y(q) q' from the crank encoder (the scale's 85 um steps are too coarse to
+// differentiate at 1 kHz).
+//   Tracking  (experiment 1): y_d = offset + amplitude sin(omega t), the chosen controller.
+//   Cut       (experiment 2): Algorithm 1's profile from the top singular point, the chosen
+//             controller; the Jacobian compensator (Eq. 33) maps the slider force to torque.
+//   Return    open loop: +return_torque_1 until the slider passes mid-stroke, then
+//             return_torque_2, until the crank passes the top singular point (next cut).
+// Switching criterion (Fig. 4, made robust): the stroke is told by the sign of y'/q' = rho_y(q)
+// at the measured crank angle, compared with the cut's sign found offline; the printed
+// criterion y_min < y < y_max is empty since the seed's y_max < y_min.
+// Stops (feed hold, abort, category-1 stop): the crank is braked to rest (AtRest). An invalid
+// scale reading is a fault (no torque).
+#include "core/engine/motion_source.h"
+#include "core/machines/quick_return/task_controllers.h"
+#include "core/machines/quick_return/velocity_profile.h"
+#include "core/machines/quick_return/whitworth.h"
+
+namespace cutcell::quick_return {
+
+enum class Experiment { Tracking, Cutting };
+const char* toString(Experiment e);
+
+struct QuickReturnLawConfig {
+    int axis = 0, sensor = 0;
+    WhitworthDims dims;
+    StrokeInfo stroke;       // strokeInfo(dims)
+    VelocityProfile profile; // Algorithm 1 on the stroke
+    Experiment experiment = Experiment::Cutting;
+    ControllerKind controller = ControllerKind::Osmc;
+    ControllerParams gains;
+    bool jacobian_compensator = true; // Eq. 33; false: the model Jacobian rho_y (Eq. 11)
+    double k_rho = 0.2;               // m/rad, compensator gain
+    // Experiment 1
+    double track_offset = -0.2, track_amplitude = -0.2, track_omega = 3.14159265358979;
+    double track_duration = 10; // s
+    // Experiment 2
+    int strokes = 3;
+    double return_torque_1 = 8.65, return_torque_2 = -8; // N m
+    // A cut that has not reached the bottom this long after its profile ended is a fault.
+    double cut_timeout = 1.0; // s
+    // Hold (Track requests) and braking: crank PD
+    double hold_kp = 200, hold_kd = 10; // N m/rad, N m s/rad
+    double rest_speed = 0.02;           // rad/s
+    int rest_cycles = 20;
+    double torque_limit = 120; // N m (the law's own clamp)
+};
+
+enum class QrPhase : std::uint8_t { Hold, Tracking, Cut, ReturnPush, ReturnBrake, Braking, Done };
+const char* toString(QrPhase p);
+
+// What the law computed this cycle (for the offline experiments and plots).
+struct QrSample {
+    double t = 0, y = 0, dy = 0, y_d = 0, dy_d = 0, u = 0, torque = 0;
+    QrPhase phase = QrPhase::Hold;
+};
+
+class QuickReturnLaw : public MotionSource {
+  public:
+    explicit QuickReturnLaw(const QuickReturnLawConfig& c);
+    void start(const SourceInput& in) override;
+    void update(const SourceInput& in, SourceOutput& out) override;
+    const char* stateName() const override { return toString(phase_); }
+    QrPhase phase() const { return phase_; }
+    int strokesDone() const { return strokes_; }
+    const QrSample& last() const { return last_; }
+    const QuickReturnLawConfig& config() const { return c_; }
+    // Crank angle on the cutting branch where the slider reads y (scale, m); bisection.
+    double crankForSlider(double y) const;
+    // True when q is on the cutting branch (q_top .. q_bottom in increasing q).
+    bool onCutBranch(double q) const;
+
+  private:
+    double controlTorque(double q, double y, double dy, double yd, double dyd, double ddyd,
+                         double T, double tSince, double* u);
+    QuickReturnLawConfig c_;
+    TaskController ctl_;
+    QrPhase phase_ = QrPhase::Hold;
+    double t0_ = 0, now_ = 0, brakeAt_ = 0;
+    int strokes_ = 0, rest_ = 0;
+    bool restarted_ = false;
+    QrSample last_;
+};
+
+} // namespace cutcell::quick_return

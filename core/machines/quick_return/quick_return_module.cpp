@@ -1,0 +1,145 @@
+#include "core/machines/quick_return/quick_return_module.h"
+
+#include "core/common/c_format.h"
+#include "core/job/default_job.h"
+#include "core/job/job_io.h"
+#include "core/machines/quick_return/quick_return_svg.h"
+#include "core/sim/tracking_stats.h"
+
+#include <cmath>
+
+namespace cutcell {
+
+using namespace quick_return;
+
+std::vector<AxisInfo> QuickReturnModule::axes(const Job&) const {
+    // The crank turns without end: no travel limits.
+    return {{"crank", AxisUnit::Rotary, -1e9, 1e9, CommandMode::Torque}};
+}
+
+Job QuickReturnModule::defaultJob() const {
+    Job job = cutcell::defaultJob();
+    job.machine = kQuickReturnId;
+    job.name = "New quick-return cutter job";
+    job.description =
+        "Seed 004 cutting task on a consistent mechanism: O3 = (0.085, 0) m, r2 = 0.122 m, "
+        "AB = 0.1215 m, r4 = 0.366 m, Dx = -0.061 m turns fully with a stroke of 0.4665 m "
+        "(fits L_c = 0.4667 m) and L_d = 0.3 m; the seed's printed dimensions do not close.";
+    job.machine_spec.set(QuickReturnSpec{});
+    // The crank's following error is the slider's divided by rho_y (~0.1 m/rad over the
+    // work): the 400 N impact on the workpiece lags the crank ~2 deg, so 2 deg would trip.
+    job.engine.following_error_limit_deg = 10;
+    // Normalised through the file form: the common Job's pipe and robot fields, which this
+    // machine does not keep, take the values a saved and reopened job has.
+    return jobFromJson(jobToJson(job));
+}
+
+void QuickReturnModule::readSection(const json::Value& section, Job& job) const {
+    job.machine_spec.set(readQuickReturnSection(section));
+}
+
+json::Value QuickReturnModule::writeSection(const Job& job) const {
+    return writeQuickReturnSection(quickReturnSpec(job), id());
+}
+
+void QuickReturnModule::migrateSchema1(json::Object& section) const {
+    // Schema 1 knew no quick-return cutter: nothing of it to keep.
+    std::erase_if(section, [](const auto& kv) { return kv.first != "kind"; });
+}
+
+std::vector<JobIssue> QuickReturnModule::validate(const Job& job) const {
+    const QuickReturnSpec* s = job.machine_spec.as<QuickReturnSpec>();
+    if (!s) return {{"machine", "the job holds no quick-return cutter section"}};
+    return validateQuickReturn(*s);
+}
+
+bool QuickReturnModule::supportsCanOpen(std::string* why) const {
+    if (why)
+        *why = "the quick-return cutter runs on its simulated mechanism only so far (its crank "
+               "drive in CST and the slider scale have no CANopen mapping yet): use "
+               "devices.kind = \"simulated\"";
+    return false;
+}
+
+MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) const {
+    MachinePlan out;
+    const QuickReturnSpec& spec = quickReturnSpec(job);
+    auto data = std::make_shared<QuickReturnPlanData>();
+    std::string problem;
+    if (!buildSetup(spec, &data->setup, &problem)) {
+        out.problem = "not feasible: " + problem;
+        return out;
+    }
+    const ExperimentSetup& s = data->setup;
+    const StrokeInfo& st = s.law.stroke;
+    const VelocityProfile& p = s.law.profile;
+    auto law = std::make_shared<QuickReturnLaw>(s.law);
+    auto prog = std::make_shared<MotionProgram>();
+    prog->machine = id();
+    prog->method = std::string(toString(spec.experiment)) + "/" + toString(spec.controller);
+    prog->axis_count = 1;
+    prog->axis_names[0] = "crank";
+    prog->axis_linear[0] = false;
+    prog->axis_modes[0] = AxisCommandMode::Torque;
+    prog->source_kind = MotionSourceKind::ControlLaw;
+    prog->source = law;
+    const double q0 = spec.experiment == Experiment::Tracking
+                          ? law->crankForSlider(spec.track_offset)
+                          : st.q_bottom + 0.01;
+    prog->reference[0] = q0;
+    prog->start_position[0] = q0;
+    prog->sensors_used = 1u;
+    prog->uses_tool = false;
+    prog->point_count = static_cast<size_t>(spec.strokes);
+    prog->min_run_s = 0;
+    prog->name = job.name;
+    prog->source_text = jobText;
+    out.program = prog;
+    out.data = data;
+    out.summary =
+        formatC("%s with %s: stroke %.4f m (y_min %.4f, y_max %.4f m at q %.4f, %.4f rad), "
+                "t_a %.4f s, t_c %.4f s, y_a %.4f m, y_b %.4f m",
+                toString(spec.experiment), toString(spec.controller), st.stroke, st.y_top,
+                st.y_bottom, st.q_top, st.q_bottom, p.t_a, p.t_c, p.y_a, p.y_b);
+    out.status = PlanStatus::Ok;
+    return out;
+}
+
+std::vector<ExportInfo> QuickReturnModule::exports() const {
+    return {{"report_json", "both experiments, all controllers (JSON)", "quick_return.json", true,
+             false},
+            {"figures_svg", "mechanism, velocity profile, phase diagram, velocity error (SVG)",
+             "quick_return_cut.svg", true, false}};
+}
+
+std::string QuickReturnModule::exportFile(const std::string& exportId, const Job& job,
+                                          const MachinePlan& plan) const {
+    const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
+    if (!data) throw std::invalid_argument("the plan has no quick-return set-up");
+    if (exportId == "figures_svg")
+        return cuttingFiguresSvg(data->setup,
+                                 runCutting(data->setup, quickReturnSpec(job).controller));
+    if (exportId != "report_json")
+        throw std::invalid_argument("the quick-return cutter has no export " +
+                                    json::quote(exportId));
+    std::string table;
+    return json::write(quickReturnReport(quickReturnSpec(job), data->setup, &table));
+}
+
+bool QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                      std::string* text, std::string* why) const {
+    const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
+    if (!data || !plan.ok()) {
+        if (why) *why = plan.problem;
+        return false;
+    }
+    *json = json::write(quickReturnReport(quickReturnSpec(job), data->setup, text));
+    return true;
+}
+
+json::Value QuickReturnModule::runReport(const Job&, const MachinePlan&,
+                                         const TrackingReport& report) const {
+    return reportToJson(report);
+}
+
+} // namespace cutcell

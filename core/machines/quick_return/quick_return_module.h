@@ -1,0 +1,44 @@
+#pragma once
+// The quick-return (inverted Whitworth) cutter of seed 004: one crank in torque mode run by a
+// task-space control law on the slider's linear scale (quick_return_law.h). Job section:
+// quick_return_spec.h. `cutcell-cli simulate` runs both experiments offline for the four
+// controllers (experiments.h); `cutcell-cli run` runs the job's experiment and controller in
+// the engine on the simulated mechanism (devices/machines/quick_return_sim_rig.cpp).
+#include "core/machine/machine_module.h"
+#include "core/machines/quick_return/quick_return_spec.h"
+
+namespace cutcell {
+
+// MachinePlan::data of the quick-return cutter's plans.
+struct QuickReturnPlanData {
+    quick_return::ExperimentSetup setup;
+};
+
+// Both experiments for all four controllers as the report's JSON and a text table.
+json::Value quickReturnReport(const QuickReturnSpec& spec, const quick_return::ExperimentSetup& s,
+                              std::string* table);
+
+class QuickReturnModule : public MachineModule {
+  public:
+    std::string id() const override { return kQuickReturnId; }
+    std::string title() const override {
+        return "Quick-return (Whitworth) cutter, crank in torque mode";
+    }
+    std::vector<AxisInfo> axes(const Job& job) const override;
+    Job defaultJob() const override;
+    void readSection(const json::Value& section, Job& job) const override;
+    json::Value writeSection(const Job& job) const override;
+    void migrateSchema1(json::Object& section) const override;
+    std::vector<JobIssue> validate(const Job& job) const override;
+    bool supportsCanOpen(std::string* why) const override;
+    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    std::vector<ExportInfo> exports() const override;
+    std::string exportFile(const std::string& exportId, const Job& job,
+                           const MachinePlan& plan) const override;
+    bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                       std::string* text, std::string* why) const override;
+    json::Value runReport(const Job& job, const MachinePlan& plan,
+                          const TrackingReport& report) const override;
+};
+
+} // namespace cutcell

@@ -1,0 +1,247 @@
+// The quick-return cutter of seed 004: mechanism (B.1-B.3) against its own loop equations and
+// finite differences, singular points, Algorithm 1 by hand, the printed mechanism refused, the
+// OSMC surface against its Riccati equation and its cost, the job round trip and refusals.
+#include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
+#include "core/machines/quick_return/quick_return_module.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace cutcell::quick_return {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Central difference of the secondary coordinates of B.2 (theta unwrapped).
+std::array<double, 5> numericRho(const WhitworthDims& d, double q) {
+    const double h = 1e-6;
+    const WhitworthPose a = forwardKinematics(d, q - h), b = forwardKinematics(d, q + h);
+    auto dAngle = [](double x, double y) { return std::remainder(y - x, 2 * kPi); };
+    return {1.0, (b.r3 - a.r3) / (2 * h), dAngle(a.theta3, b.theta3) / (2 * h),
+            dAngle(a.theta4, b.theta4) / (2 * h), (b.y - a.y) / (2 * h)};
+}
+
+TEST(QuickReturnMechanism, ForwardKinematicsSatisfiesTheLoopEquations) {
+    const WhitworthDims d;
+    for (int i = 0; i < 360; ++i) {
+        const double q = -kPi + 2 * kPi * i / 360;
+        const WhitworthPose p = forwardKinematics(d, q);
+        ASSERT_TRUE(p.closes) << q;
+        EXPECT_NEAR(p.r3 * std::cos(p.theta3) - d.r2 * std::cos(q) + d.o3x, 0, 1e-12);
+        EXPECT_NEAR(p.r3 * std::sin(p.theta3) - d.r2 * std::sin(q) + d.o3y, 0, 1e-12);
+        EXPECT_NEAR(d.o3x + (p.r3 + d.ab) * std::cos(p.theta3) + d.r4 * std::cos(p.theta4) - d.dx,
+                    0, 1e-12);
+        EXPECT_NEAR(d.o3y + (p.r3 + d.ab) * std::sin(p.theta3) + d.r4 * std::sin(p.theta4) - p.y, 0,
+                    1e-12);
+        EXPECT_LT(std::sin(p.theta4), 0) << "assembly branch: link below B";
+    }
+}
+
+TEST(QuickReturnMechanism, JacobianRowsMatchFiniteDifferencesAndPrintedRow4IsTheTypo) {
+    const WhitworthDims d;
+    int row4Wrong = 0;
+    for (int i = 0; i < 90; ++i) {
+        const double q = -kPi + 2 * kPi * (i + 0.37) / 90;
+        const WhitworthPose p = forwardKinematics(d, q);
+        const auto rho = extendedJacobian(d, q, p), num = numericRho(d, q);
+        const auto printed = printedJacobian(d, q, p);
+        for (int r = 0; r < 5; ++r)
+            EXPECT_NEAR(rho[r], num[r], 1e-6) << "row " << r + 1 << " at q = " << q;
+        for (int r : {0, 1, 2, 4})
+            EXPECT_NEAR(printed[r], num[r], 1e-6) << "printed row " << r + 1;
+        if (std::fabs(printed[3] - num[3]) > 1e-3) ++row4Wrong;
+    }
+    EXPECT_GT(row4Wrong, 80) << "B.3 row 4 as printed (2 r3 r2 sin theta4) is wrong";
+}
+
+TEST(QuickReturnMechanism, SingularAnglesAreWhereNumericRhoYChangesSign) {
+    const WhitworthDims d;
+    const StrokeInfo s = strokeInfo(d);
+    ASSERT_TRUE(s.ok);
+    for (double q : {s.q_top, s.q_bottom}) {
+        const double h = 1e-4;
+        const double before = numericRho(d, q - h)[4], after = numericRho(d, q + h)[4];
+        EXPECT_LT(before * after, 0) << "rho_y changes sign at q = " << q;
+    }
+    EXPECT_GT(numericRho(d, s.q_top - 1e-3)[4], 0);
+    EXPECT_LT(numericRho(d, s.q_top + 1e-3)[4], 0);
+    // y_min / y_max are the extremes of y over a fine scan.
+    double hi = -1e9, lo = 1e9;
+    for (int i = 0; i < 20000; ++i) {
+        const double y = forwardKinematics(d, -kPi + 2 * kPi * i / 20000).y + d.scale_offset;
+        hi = std::max(hi, y);
+        lo = std::min(lo, y);
+    }
+    EXPECT_NEAR(s.y_top, hi, 1e-6);
+    EXPECT_NEAR(s.y_bottom, lo, 1e-6);
+    // The default fits the seed's L_c and turns with a quick return (cut arc > return arc).
+    EXPECT_NEAR(s.stroke, 0.4667, 0.001);
+    EXPECT_GT(s.cut_arc, s.return_arc);
+}
+
+TEST(QuickReturnMechanism, PrintedDimensionsDoNotCloseOverMostOfTheTurn) {
+    const WhitworthDims d = seedPrintedDims();
+    const auto open = openRanges(d);
+    ASSERT_FALSE(open.empty());
+    double openLength = 0;
+    for (const AngleRange& r : open) {
+        openLength += r.to - r.from;
+        const double mid = 0.5 * (r.from + r.to);
+        EXPECT_FALSE(forwardKinematics(d, mid).closes);
+        EXPECT_TRUE(forwardKinematics(d, r.from - 1e-3).closes || r.from <= -kPi + 1e-9);
+    }
+    EXPECT_GT(openLength, kPi);
+    EXPECT_FALSE(strokeInfo(d).ok);
+}
+
+TEST(QuickReturnProfile, Algorithm1MatchesHandComputedValues) {
+    // Seed: L_d 0.3, L_c 0.4667, y_min 0.05428; the printed times belong to |v| = 0.762.
+    VelocityProfile p = algorithm1(0.05428, 0.05428 - 0.4667, 0.4667, 0.3, -0.762);
+    ASSERT_TRUE(p.ok);
+    EXPECT_NEAR(p.t_c, 0.3 / 0.762, 1e-12);                  // 0.39370
+    EXPECT_NEAR(p.t_a, 0.4667 / 0.762 - 0.3 / 0.762, 1e-12); // 0.21877
+    EXPECT_NEAR(p.t_c, 0.3937, 5e-5);
+    EXPECT_NEAR(p.t_a, 0.2187, 1e-4);
+    EXPECT_NEAR(p.y_a, 0.05428 - 0.1667 / 2, 1e-12); // -0.02907
+    EXPECT_NEAR(p.y_b, p.y_a - 0.3, 1e-12);          // -0.32907
+    // With the printed v = -1.25 the times differ from the printed ones.
+    p = algorithm1(0.05428, 0.05428 - 0.4667, 0.4667, 0.3, -1.25);
+    EXPECT_NEAR(p.t_c, 0.24, 1e-12);
+    EXPECT_NEAR(p.t_a, 0.13336, 1e-12);
+    // Another input: L_c 1, L_d 0.5, v 2 upwards from 0.
+    p = algorithm1(0, 1, 1, 0.5, 2);
+    EXPECT_NEAR(p.t_c, 0.25, 1e-12);
+    EXPECT_NEAR(p.t_a, 0.25, 1e-12);
+    EXPECT_NEAR(p.y_a, 0.25, 1e-12);
+    EXPECT_NEAR(p.y_b, 0.75, 1e-12);
+    // The profile is continuous and ends at y_end at rest.
+    const ProfileSample end = sampleProfile(p, p.duration() - 1e-9);
+    EXPECT_NEAR(end.y, 1, 1e-8);
+    EXPECT_NEAR(end.dy, 0, 1e-6);
+    EXPECT_NEAR(sampleProfile(p, p.t_a).y, p.y_a, 1e-12);
+    EXPECT_NEAR(sampleProfile(p, p.t_a + p.t_c).y, p.y_b, 1e-12);
+    EXPECT_FALSE(algorithm1(0, 1, 1, 1.2, 2).ok);  // L_d > L_c
+    EXPECT_FALSE(algorithm1(0, 1, 1, 0.5, -2).ok); // wrong direction
+}
+
+TEST(QuickReturnControl, OsmcSurfaceSatisfiesItsRiccatiEquationAndMinimisesTheCost) {
+    ControllerParams g;
+    for (double q12 : {0.0, 5.0}) {
+        g.osmc_q11 = 900;
+        g.osmc_q12 = q12;
+        g.osmc_q22 = 1;
+        const OsmcSurface s = osmcSurface(g);
+        EXPECT_NEAR(s.residual, 0, 1e-9 * s.q_bar);
+        EXPECT_GT(s.p, 0);
+        EXPECT_NEAR(s.c2 * (1 / g.model_mass), 1, 1e-12) << "C B = 1";
+    }
+    // With Q diagonal the sliding motion e' = -c e costs e0^2 (q11 + q22 c^2) / (2 c): the
+    // surface's slope is its minimum, the printed transform's (T Q T^-1) is not.
+    g.osmc_q12 = 0;
+    const double c = osmcSurface(g).slope();
+    auto cost = [&](double x) { return (g.osmc_q11 + g.osmc_q22 * x * x) / (2 * x); };
+    EXPECT_LT(cost(c), cost(c * 1.01));
+    EXPECT_LT(cost(c), cost(c * 0.99));
+    EXPECT_GT(cost(osmcSurfacePrinted(g).slope()), cost(c) * 1.01);
+    // LQT: the ARE holds.
+    const Riccati2 r = lqtRiccati(g);
+    EXPECT_LT(lqtResidual(g, r), 1e-9 * g.lqt_q1);
+}
+
+TEST(QuickReturnControl, SwitchingCriterionBranchIsTheSignOfRhoY) {
+    QuickReturnLawConfig c;
+    c.stroke = strokeInfo(c.dims);
+    ASSERT_TRUE(c.stroke.ok);
+    const QuickReturnLaw law(c);
+    int checked = 0;
+    for (int i = 0; i < 720; ++i) {
+        const double q = -3 * kPi + 6 * kPi * (i + 0.5) / 720; // several turns
+        const WhitworthPose p = forwardKinematics(c.dims, q);
+        const double rho = extendedJacobian(c.dims, q, p)[4];
+        if (std::fabs(rho) < 1e-6) continue;
+        EXPECT_EQ(law.onCutBranch(q), rho < 0) << q; // cut: y falls while q rises
+        ++checked;
+    }
+    EXPECT_GT(checked, 700);
+    // crankForSlider inverts the FK on the cutting branch.
+    for (double y : {0.0, -0.1, -0.2, -0.3, -0.4}) {
+        const double q = law.crankForSlider(y);
+        EXPECT_NEAR(forwardKinematics(c.dims, q).y + c.dims.scale_offset, y, 1e-9);
+        EXPECT_TRUE(law.onCutBranch(q));
+    }
+}
+
+TEST(QuickReturnPlant, ContactForceActsOnlyOverTheWorkWhileCuttingDownwards) {
+    const WhitworthDims d;
+    const StrokeInfo st = strokeInfo(d);
+    CrankPlantParams p;
+    p.contact = true;
+    p.cut_low = -0.33;
+    p.cut_high = -0.03;
+    CrankPlant plant(d, p);
+    QuickReturnLawConfig c;
+    c.stroke = st;
+    const QuickReturnLaw law(c);
+    // Over the work, moving down (q rising on the cut branch): 400 N; moving up: none.
+    plant.setState(law.crankForSlider(-0.2), 1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), p.contact_force);
+    plant.setState(law.crankForSlider(-0.2), -1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), 0);
+    // Above the work, moving down: none.
+    plant.setState(law.crankForSlider(0.0), 1.0);
+    plant.step(0, 0, 1e-4, 1);
+    EXPECT_EQ(plant.contactForce(), 0);
+    // Without torque, friction or contact the energy (kinetic + slider weight) is conserved.
+    p.contact = false;
+    p.viscous = p.coulomb = 0;
+    CrankPlant free(d, p);
+    free.setState(0.3, 2.0);
+    auto energy = [&] {
+        const double q = free.state().q, v = free.state().dq;
+        return 0.5 * free.inertia(q) * v * v + p.slider_mass * p.gravity * free.sliderPosition();
+    };
+    const double e0 = energy();
+    for (int i = 0; i < 2000; ++i)
+        free.step(0, 0, 1e-3);
+    EXPECT_NEAR(energy(), e0, 1e-4 * std::fabs(e0));
+}
+
+TEST(QuickReturnJob, RoundTripAndRefusals) {
+    if (!findMachine(kQuickReturnId)) registerMachines();
+    const MachineModule& m = *findMachine(kQuickReturnId);
+    Job job = m.defaultJob();
+    EXPECT_TRUE(m.validate(job).empty());
+    const json::Value doc = jobToJson(job);
+    const Job back = jobFromJson(json::parse(json::write(doc)));
+    EXPECT_EQ(json::write(jobToJson(back)), json::write(doc));
+
+    // The printed prototype is refused with the ranges where the loop does not close.
+    QuickReturnSpec s = quickReturnSpec(job);
+    s.dims = seedPrintedDims();
+    Job printed = job;
+    printed.machine_spec.set(s);
+    const auto issues = m.validate(printed);
+    ASSERT_FALSE(issues.empty());
+    EXPECT_NE(issues[0].message.find("does not close for crank angles"), std::string::npos)
+        << issues[0].message;
+    EXPECT_NE(issues[0].message.find("-1.74"), std::string::npos) << issues[0].message;
+
+    // Unknown keys, bad values.
+    std::string text = json::write(doc);
+    const std::string withTypo = text.replace(text.find("\"k1\""), 4, "\"kk1\"");
+    EXPECT_THROW(parseJob(withTypo), JobError);
+    s = quickReturnSpec(job);
+    s.workpiece_length = 0.6;
+    Job tooLong = job;
+    tooLong.machine_spec.set(s);
+    ASSERT_FALSE(m.validate(tooLong).empty());
+    EXPECT_EQ(m.validate(tooLong)[0].key, "cut.workpiece_length_m");
+}
+
+} // namespace
+} // namespace cutcell::quick_return
