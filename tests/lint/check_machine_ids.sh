@@ -7,7 +7,10 @@
 set -u
 cd "$1" || exit 2
 registry='^(ui/machines/register_machine_uis\.cpp|ui/machines/machines\.cmake):'
-ids=$(for d in ui/machines/*/; do basename "$d"; done)
+# The ids: the GUI folders, and every core module's id constant (machines without a GUI yet).
+ids=$( (for d in ui/machines/*/; do basename "$d"; done
+        sed -n 's/.*constexpr const char\* k[A-Za-z]*Id = "\([a-z0-9_]*\)".*/\1/p' core/machines/*/*.h) |
+      sort -u)
 n=$(echo "$ids" | grep -c .)
 if [ "$n" -lt 2 ]; then
     echo "expected at least the two shipped machines under ui/machines/, found: $ids"
@@ -15,8 +18,11 @@ if [ "$n" -lt 2 ]; then
 fi
 status=0
 for id in $ids; do
-    own="^(ui|app/gui)/machines/$id/"
-    bad=$(grep -rnF -I -- "$id" ui plots app/gui | grep -Ev "$own" | grep -Ev "$registry")
+    # Its own folders: ui/machines/<id>/ and, in the core, the module's folder (the one file
+    # that defines the id constant); everything else names the machine through the constant.
+    core=$(grep -rlF -- "\"$id\"" core/machines | head -1 | xargs -r dirname)
+    own="^(ui/machines/$id/|${core:-core/machines/none}/)"
+    bad=$(grep -rnF -I -- "\"$id\"" core devices app ui plots | grep -Ev "$own" | grep -Ev "$registry")
     if [ -n "$bad" ]; then
         echo "machine id \"$id\" outside its folders and the registries:"
         echo "$bad"
