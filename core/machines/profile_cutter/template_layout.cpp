@@ -81,12 +81,15 @@ std::vector<std::string> zeroAndWrap(const Job& job, const TemplateDrawing& d, d
         t.push_back("Wrap round the main pipe, printed side out, top edge toward its fixed end "
                     "(X = 0, at the chuck):");
     }
-    t.push_back(
-        "seen from that end, A grows counter-clockwise (arrow). The 0 deg edge goes over the "
-        "glue tab.");
+    // The wrap edges are 0 / 360 deg on the branch end and -180 / 180 deg on the hole.
+    const double left = d.a_low_deg, right = d.a_low_deg + 360;
+    t.push_back(fmt("seen from that end, A grows counter-clockwise (arrow). The %.0f deg edge goes "
+                    "over the glue tab.",
+                    left));
     t.push_back(fmt("glue tab %.0f mm wide right of the last edge; pipe OD %.2f mm, circumference "
-                    "%.2f mm (0 .. 360 deg).",
-                    d.glue_tab_mm, odMm, d.circumference_mm));
+                    "%.2f mm",
+                    d.glue_tab_mm, odMm, d.circumference_mm) +
+                fmt(" (%.0f .. %.0f deg).", left, right));
     return t;
 }
 
