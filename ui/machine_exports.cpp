@@ -1,9 +1,10 @@
 #include "ui/machine_exports.h"
 
+#include "core/job/job_io.h"
 #include "core/machines/profile_cutter/template_layout.h"
 #include "core/machines/profile_cutter/template_pdf.h"
 #include "core/machines/profile_cutter/template_svg.h"
-#include "core/job/job_io.h"
+#include "core/machines/profile_cutter/template_tiles.h"
 #include "ui/forms/job_editor.h"
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/panels/event_log_panel.h"
@@ -16,7 +17,7 @@
 namespace CutCell::ui {
 
 bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QString* error,
-               QString* summary) {
+               QString* summary, const QString& paperName) {
     const auto fail = [&](const QString& why) {
         if (error) *error = QObject::tr("Export to %1 failed: %2").arg(path, why);
         return false;
@@ -33,13 +34,30 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
         std::string text;
         QString what;
         if (kind == ExportKind::TemplateSvg || kind == ExportKind::TemplatePdf) {
+            const auto paper = cutcell::paperByName(paperName.toStdString());
+            if (!paper)
+                return fail(QObject::tr("paper \"%1\" is not single, A4 or A3").arg(paperName));
             const cutcell::TemplateDrawing drawing = cutcell::buildTemplate(job);
             const bool svg = kind == ExportKind::TemplateSvg;
-            text = svg ? cutcell::templateSvg(drawing) : cutcell::templatePdf(drawing);
             what = QObject::tr("cutting template (%1, 1:1): %2 x %3 mm")
                        .arg(svg ? "SVG" : "PDF")
                        .arg(drawing.width_mm, 0, 'f', 1)
                        .arg(drawing.height_mm, 0, 'f', 1);
+            if (paper->short_mm <= 0) {
+                text = svg ? cutcell::templateSvg(drawing) : cutcell::templatePdf(drawing);
+            } else {
+                const cutcell::TiledTemplate tiles =
+                    cutcell::tileTemplate(drawing, *paper, job.name);
+                text =
+                    svg ? cutcell::templateSvg(tiles)
+                        : cutcell::templatePdf(cutcell::templatePages(drawing, *paper, job.name));
+                what += QObject::tr(" on %1 sheets of %2 %3 (%4 x %5)")
+                            .arg(tiles.tiles.size())
+                            .arg(paperName, tiles.landscape ? QObject::tr("landscape")
+                                                            : QObject::tr("portrait"))
+                            .arg(tiles.rows)
+                            .arg(tiles.cols);
+            }
         } else {
             text = machine->exportText(kind, job, &what);
         }
@@ -58,9 +76,10 @@ void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPan
     const MachineUi* machine = machineUiFor(editor->job());
     menu->setEnabled(machine != nullptr);
     if (!machine) return;
-    for (const ExportKind kind : machine->exports()) {
+    const auto addExport = [=](QMenu* into, ExportKind kind, const QString& text,
+                               const QString& paper) {
         const QString label = exportLabel(kind);
-        QAction* a = menu->addAction(label, parent, [=] {
+        QAction* a = into->addAction(text, parent, [=] {
             const QString p = QFileDialog::getSaveFileName(parent, label, {}, exportFilter(kind));
             if (p.isEmpty()) return;
             if (!editor->valid()) {
@@ -69,12 +88,28 @@ void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPan
                 return;
             }
             QString err, summary;
-            if (exportCut(kind, editor->job(), p, &err, &summary))
+            if (exportCut(kind, editor->job(), p, &err, &summary, paper))
                 log->add(cutcell::Severity::Info, summary);
             else
                 log->add(cutcell::Severity::Error, err);
         });
         a->setData(static_cast<int>(kind));
+        a->setProperty("cutcellPaper", paper);
+    };
+    for (const ExportKind kind : machine->exports()) {
+        if (kind != ExportKind::TemplateSvg && kind != ExportKind::TemplatePdf) {
+            addExport(menu, kind, exportLabel(kind), QStringLiteral("single"));
+            continue;
+        }
+        // Templates: the paper as a submenu (no modal question before the file dialog).
+        QMenu* papers = menu->addMenu(exportLabel(kind).remove("..."));
+        papers->menuAction()->setData(static_cast<int>(kind));
+        addExport(papers, kind, QObject::tr("&Single sheet (template size)..."),
+                  QStringLiteral("single"));
+        addExport(papers, kind, QObject::tr("A&4 tiles (1:1, alignment crosses)..."),
+                  QStringLiteral("A4"));
+        addExport(papers, kind, QObject::tr("A&3 tiles (1:1, alignment crosses)..."),
+                  QStringLiteral("A3"));
     }
 }
 

@@ -21,13 +21,16 @@ class JobEditor;
 // Writes the export; on success *summary says what was written, on failure *error names the
 // file and the reason (a machine without this export, an invalid job, a cut off the carriage,
 // an I/O error).
+// paper: cutting templates only, "single" (one sheet of the template's size), "A4" or "A3"
+// (1:1 tiles, core/machines/profile_cutter/template_tiles.h).
 bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QString* error,
-               QString* summary = nullptr);
+               QString* summary = nullptr, const QString& paper = QStringLiteral("single"));
 
 // Adds the "Export cut" submenu (object name "exportMenu") to a menu. Its entries are the
 // exports of the editor's job's machine, rebuilt when the machine changes: each asks for a
 // file, exports the editor's current job and logs the outcome. Each action's data() is its
-// ExportKind (int).
+// ExportKind (int). A template is a submenu of papers (single sheet / A4 / A3): its menu action
+// and each entry carry the kind, each entry its paper in the property "cutcellPaper".
 QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log);
 
 } // namespace CutCell::ui

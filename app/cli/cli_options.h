@@ -47,6 +47,7 @@ struct ExportOptions {
     std::string job;
     // One file per export id of the machine's module; empty: not written.
     std::string gcode, template_svg, template_pdf, path_csv, joints_csv;
+    std::string paper = "single"; // cutting templates: "single", "A4", "A3"
 };
 
 struct MachinesOptions {

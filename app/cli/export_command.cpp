@@ -58,7 +58,7 @@ int runExport(const ExportOptions& o) {
             return kUnreachable;
         }
         for (const auto& [id, file] : wanted) {
-            const std::string text = module.exportFile(id, job, plan);
+            const std::string text = module.exportFileWith(id, job, plan, {o.paper});
             writeFileAtomically(file, text);
             for (const auto& e : offered)
                 if (e.id == id)

@@ -6,6 +6,8 @@
 #include "option_checks.h"
 #include "realtime_options.h"
 
+#include "core/machine/machine_module.h"
+
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -117,6 +119,10 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
         ->type_name("FILE");
     exportCmd->add_option("--joints-csv", o.exportFiles.joints_csv, "joint trajectory (CSV)")
         ->type_name("FILE");
+    addChoice(*exportCmd, "--paper", o.exportFiles.paper, ExportSettings::papers(),
+              "paper of the cutting templates: single = one sheet of the template's size "
+              "(default), A4 / A3 = 1:1 tiles with overlap and alignment crosses, one PDF page "
+              "each");
     exportCmd->footer("Give at least one of the files.");
 
     CLI::App* machinesCmd =

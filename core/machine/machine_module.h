@@ -63,6 +63,14 @@ struct ExportInfo {
     bool binary = false;      // PDF
 };
 
+// How to write an export, beyond the job: the paper of a cutting template ("single", "A4",
+// "A3"; core/machines/profile_cutter/template_tiles.h). Exports that take none ignore it.
+struct ExportSettings {
+    std::string paper = "single";
+    // The accepted papers, for option lists (machine_registry.cpp).
+    static const std::vector<std::string>& papers();
+};
+
 class MachineModule {
   public:
     virtual ~MachineModule() = default;
@@ -99,6 +107,12 @@ class MachineModule {
     // std::invalid_argument for an unknown id or a plan that cannot give it.
     virtual std::string exportFile(const std::string& exportId, const Job& job,
                                    const MachinePlan& plan) const = 0;
+    // exportFile with settings; the default ignores them (machines without templates).
+    virtual std::string exportFileWith(const std::string& exportId, const Job& job,
+                                       const MachinePlan& plan,
+                                       const ExportSettings& /*settings*/) const {
+        return exportFile(exportId, job, plan);
+    }
 
     // The offline report of `cutcell-cli simulate` (JSON text) and a few lines for the
     // terminal; false + *why when the machine has none (it runs in the engine only).

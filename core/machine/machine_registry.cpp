@@ -1,4 +1,5 @@
 #include "core/machine/machine_registry.h"
+#include "core/machines/profile_cutter/template_tiles.h"
 
 #include <mutex>
 
@@ -16,6 +17,10 @@ void ensureRegistered() {
 }
 
 } // namespace
+
+const std::vector<std::string>& ExportSettings::papers() {
+    return paperNames(); // the cutting templates' papers
+}
 
 void registerMachine(std::unique_ptr<MachineModule> module) {
     for (const auto& m : modules())

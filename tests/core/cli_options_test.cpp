@@ -86,7 +86,7 @@ std::vector<CommandSpec> commands() {
         {"simulate", simulate, job},
         {"bench", {"--json", "--quick", "--job", "--no-engine", "--no-can"}, "--quick"},
         {"export",
-         {"--gcode", "--template-svg", "--template-pdf", "--path-csv", "--joints-csv"},
+         {"--gcode", "--template-svg", "--template-pdf", "--path-csv", "--joints-csv", "--paper"},
          job + " --template-svg " + (refusedDir() / "t.svg").string()},
         {"machines", {"--json"}, "--json"},
         {"upgrade", {"--out"}, job + " --out " + (refusedDir() / "new.json").string()},
@@ -228,6 +228,8 @@ TEST(CliOptions, ValuesOutsideTheirRangeNameOptionValueUnitAndLimit) {
          "--devices = \"cann\" is not one of \"simulated\", \"canopen\""},
         {"simulate " + defaultJob() + " --method diagonal",
          "--method = \"diagonal\" is not one of \"static_pipe\", \"rotating_pipe\""},
+        {"export " + defaultJob() + " --template-pdf t.pdf --paper A5",
+         "--paper = \"A5\" is not one of \"single\", \"A4\", \"A3\""},
     };
 #ifdef CUTCELL_CLI_HAS_DEVICES
     const std::map<std::string, std::string> drivesim{

@@ -10,6 +10,8 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/profile_cutter/gcode_export.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/template_pdf.h"
+#include "core/machines/profile_cutter/template_tiles.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -197,6 +199,19 @@ class TestGuiProfile : public QObject {
         QFile s(svg), p(pdf);
         QVERIFY(s.open(QIODevice::ReadOnly) && s.readAll().contains("<svg"));
         QVERIFY(p.open(QIODevice::ReadOnly) && p.read(5) == "%PDF-");
+        // On A4 the PDF is the core's tiles, one page each, as `cutcell-cli export --paper A4`.
+        const QString a4 = dir.filePath("t_a4.pdf");
+        QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplatePdf, job, a4, &err, &summary, "A4"),
+                 qPrintable(err));
+        const auto drawing = cutcell::buildTemplate(job);
+        const auto a4Paper = *cutcell::paperByName("A4");
+        QFile t(a4);
+        QVERIFY(t.open(QIODevice::ReadOnly));
+        QCOMPARE(t.readAll().toStdString(),
+                 cutcell::templatePdf(cutcell::templatePages(drawing, a4Paper, job.name)));
+        QVERIFY2(summary.contains("sheets of A4"), qPrintable(summary));
+        QVERIFY(!CutCell::ui::exportCut(ExportKind::TemplatePdf, job, a4, &err, nullptr, "A5"));
+        QVERIFY2(err.contains("A5"), qPrintable(err));
         // A robot job has no G-code; a directory that does not exist cannot be written.
         const QString robotNgc = dir.filePath("robot.ngc");
         QVERIFY(!CutCell::ui::exportCut(ExportKind::Gcode, cutcell::defaultJob(), robotNgc, &err));

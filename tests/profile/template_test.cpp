@@ -1,4 +1,5 @@
 // The unrolled cutting template: its geometry, the SVG and the PDF (structure, 1:1 size, render).
+#include "core/geometry/pipe_intersection.h"
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/template_pdf.h"
 #include "core/machines/profile_cutter/template_svg.h"
@@ -51,7 +52,7 @@ double numberAfter(const std::string& text, const std::string& key, size_t* end 
 }
 
 // The branch template's curve spans exactly one circumference, and every drawn point is the
-// cut's (A, X) developed at 1:1: u = R_w (A - A_low), v = top + (X_top - X).
+// cut's (A, X) developed at 1:1: u = R_w (A - A_low), v = top + y_per_x (X - X_top).
 TEST(Template, DevelopedCurveIsTheCutAtFullScale) {
     for (const Job& job : jobs()) {
         const TemplateDrawing d = buildTemplate(job, 720);
@@ -67,7 +68,7 @@ TEST(Template, DevelopedCurveIsTheCutAtFullScale) {
             const ProfilePoint p = cut.closedAt(i);
             EXPECT_NEAR(pts[i].x(),
                         d.origin_u_mm + cut.work_radius_mm * deg2rad(p.a_deg - d.a_low_deg), 1e-3);
-            EXPECT_NEAR(pts[i].y(), d.top_mm + d.x_top_mm - p.x_mm, 1e-3);
+            EXPECT_NEAR(pts[i].y(), d.top_mm + d.y_per_x * (p.x_mm - d.x_top_mm), 1e-3);
             umin = std::min(umin, pts[i].x());
             umax = std::max(umax, pts[i].x());
         }
@@ -201,6 +202,103 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
     EXPECT_TRUE(err.empty()) << err; // poppler prints syntax warnings here
     EXPECT_GT(std::filesystem::file_size(dir / "page-1.png"), 1000u);
     std::filesystem::remove_all(dir);
+}
+
+// The sheet wrapped as it says (printed side out, top edge toward the end it names, the 0 deg
+// line on the generator it names, A counter-clockwise seen from that end) lies on the 3D cut:
+// every drawn point, wrapped round the pipe, is the cut point (angle and axial position).
+TEST(Template, WrappedAsPrintedTheSheetLiesOnTheCut) {
+    for (const Job& job : jobs()) {
+        const TemplateDrawing d = buildTemplate(job, 720);
+        const ProfileCut cut = computeProfileCut(job, 720);
+        const PipeIntersection pi(profileIntersectionSpec(job));
+        const bool branch = job.cut.target == CutTarget::Branch;
+        std::string notes;
+        for (const auto& t : d.texts)
+            notes += t.text + "\n";
+        // What the sheet says: the pipe's axis through o, the end the top edge points to
+        // (up), the 0 deg generator's outward direction r0.
+        Vec3 o, up, r0;
+        if (branch) {
+            // "top edge toward the end being cut": X (= l) grows toward the main pipe, -b.
+            ASSERT_NE(notes.find("top edge toward the end being cut"), std::string::npos);
+            // "square to the plane of both pipe axes, on the side a positive eccentricity
+            // moves the branch to": main +x.
+            ASSERT_NE(notes.find("square to the plane of both"), std::string::npos);
+            o = pi.branchOrigin();
+            up = -pi.branchAxis();
+            r0 = Vec3(1, 0, 0);
+        } else {
+            // "top edge toward its fixed end (X = 0)": X = S + z, so -z.
+            ASSERT_NE(notes.find("top edge toward its fixed end"), std::string::npos);
+            // "in line with the branch axis (the crown on the branch side)": main +y.
+            ASSERT_NE(notes.find("in line with the branch"), std::string::npos);
+            o = Vec3::Zero();
+            up = Vec3(0, 0, -1);
+            r0 = Vec3(0, 1, 0);
+        }
+        ASSERT_NE(notes.find("counter-clockwise"), std::string::npos);
+        // Printed side out: page right = up x outward normal, i.e. counter-clockwise about up.
+        const Vec3 right0 = up.cross(r0);
+        const double R = cut.work_radius_mm;
+        double axialPlusY = 0;
+        for (size_t i = 0; i < cut.points.size(); ++i) {
+            const ProfilePoint& p = cut.points[i];
+            const double u = d.origin_u_mm + R * deg2rad(p.a_deg - d.a_low_deg);
+            const double y = d.top_mm + d.y_per_x * (p.x_mm - d.x_top_mm);
+            const double theta = (u - d.zero_u_mm) / R;
+            const Vec3 wrapped = std::cos(theta) * r0 + std::sin(theta) * right0;
+            const Vec3 rel = p.p_main - o;
+            const Vec3 radial = (rel - rel.dot(up) * up).normalized();
+            EXPECT_LT((radial - wrapped).norm(), 1e-9) << "point " << i;
+            // Up the sheet (smaller page y) is along up on the pipe, mm for mm.
+            if (i == 0) axialPlusY = rel.dot(up) + y;
+            EXPECT_NEAR(rel.dot(up) + y, axialPlusY, 1e-6) << "point " << i;
+        }
+    }
+}
+
+// The wrap aids are on the sheet: glue tab right of the last edge, 0 deg mark, wrap arrow, the
+// pipe OD and circumference, the job name, the scale bar.
+TEST(Template, SheetCarriesTabZeroMarkWrapArrowAndPipeData) {
+    for (const Job& job : jobs()) {
+        const TemplateDrawing d = buildTemplate(job, 360);
+        const double C = d.circumference_mm;
+        std::string text;
+        for (const auto& t : d.texts)
+            text += t.text + "\n";
+        int tabs = 0, zeros = 0, wraps = 0;
+        for (const auto& l : d.lines) {
+            if (l.id == "tab") {
+                ++tabs;
+                double xmax = -1e300;
+                for (const auto& p : l.points)
+                    xmax = std::max(xmax, p.x());
+                EXPECT_NEAR(xmax - (d.origin_u_mm + C), d.glue_tab_mm, 1e-9);
+            }
+            if (l.id == "zero") {
+                ++zeros;
+                EXPECT_NEAR(l.points[0].x(), d.zero_u_mm, 1e-9);
+            }
+            wraps += l.id == "wrap";
+        }
+        EXPECT_EQ(tabs, 1);
+        EXPECT_EQ(zeros, 1);
+        EXPECT_EQ(wraps, 2); // shaft and head
+        EXPECT_GE(d.glue_tab_mm, 10);
+        char expect[128];
+        std::snprintf(expect, sizeof expect, "glue tab %.0f mm", d.glue_tab_mm);
+        EXPECT_NE(text.find(expect), std::string::npos);
+        std::snprintf(expect, sizeof expect, "pipe OD %.2f mm, circumference %.2f mm",
+                      2 * computeProfileCut(job, 8).work_radius_mm, C);
+        EXPECT_NE(text.find(expect), std::string::npos) << text;
+        EXPECT_NE(text.find(job.name), std::string::npos);
+        EXPECT_NE(text.find(" mm at 1:1"), std::string::npos);
+        EXPECT_NEAR(d.zero_u_mm,
+                    d.origin_u_mm +
+                        computeProfileCut(job, 8).work_radius_mm * deg2rad(0 - d.a_low_deg),
+                    1e-9);
+    }
 }
 
 } // namespace

@@ -10,8 +10,10 @@
 #include "core/machines/profile_cutter/template_layout.h"
 #include "core/machines/profile_cutter/template_pdf.h"
 #include "core/machines/profile_cutter/template_svg.h"
+#include "core/machines/profile_cutter/template_tiles.h"
 
 #include <cmath>
+#include <optional>
 
 namespace cutcell {
 namespace {
@@ -226,9 +228,28 @@ std::vector<ExportInfo> ProfileCutterModule::exports() const {
 
 std::string ProfileCutterModule::exportFile(const std::string& exportId, const Job& job,
                                             const MachinePlan& plan) const {
+    return exportFileWith(exportId, job, plan, ExportSettings{});
+}
+
+std::string ProfileCutterModule::exportFileWith(const std::string& exportId, const Job& job,
+                                                const MachinePlan& plan,
+                                                const ExportSettings& settings) const {
     const auto* data = static_cast<const ProfileCutterPlanData*>(plan.data.get());
-    if (exportId == "template_svg") return templateSvg(buildTemplate(job));
-    if (exportId == "template_pdf") return templatePdf(buildTemplate(job));
+    if (exportId == "template_svg" || exportId == "template_pdf") {
+        const std::optional<Paper> paper = paperByName(settings.paper);
+        if (!paper) {
+            std::string names;
+            for (const std::string& n : paperNames())
+                names += (names.empty() ? "" : ", ") + n;
+            throw std::invalid_argument("paper " + json::quote(settings.paper) + " is not one of " +
+                                        names);
+        }
+        const TemplateDrawing drawing = buildTemplate(job);
+        if (exportId == "template_pdf")
+            return templatePdf(templatePages(drawing, *paper, job.name));
+        if (paper->short_mm <= 0) return templateSvg(drawing);
+        return templateSvg(tileTemplate(drawing, *paper, job.name));
+    }
     if (!data) throw std::invalid_argument("the plan has no profile cut");
     if (exportId == "path_csv") return profilePathCsv(data->cut, data->schedule);
     if (exportId == "gcode") return profileGcode(job, data->cut);

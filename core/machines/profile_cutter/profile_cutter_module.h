@@ -35,6 +35,10 @@ class ProfileCutterModule : public MachineModule {
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;
+    // The templates on settings.paper (single sheet or tiles); std::invalid_argument names
+    // the accepted papers for another value.
+    std::string exportFileWith(const std::string& exportId, const Job& job, const MachinePlan& plan,
+                               const ExportSettings& settings) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
 };

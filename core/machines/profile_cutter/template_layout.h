@@ -8,7 +8,14 @@
 // Contents: the cut curve (one full turn for the branch end, a closed loop for the hole), the two
 // wrap edges (u = 0 and u = circumference: the template's developed length), quadrant marks at
 // every 90 deg of A, a reference line to align with a line scribed round the pipe, the pipe data,
-// and a 1:1 scale bar with 10 mm ticks.
+// a 1:1 scale bar with 10 mm ticks, a glue tab beyond the last edge, a mark on the 0 deg line
+// (A = 0 of the G-code: the generator under the torch at chuck zero) and the wrap direction.
+//
+// Wrap rule (the sentence printed on the sheet; tests/profile/template_test.cpp checks it in 3D):
+// printed side out, the sheet's top edge toward the end of the pipe given by top_toward; page x
+// grows with A, which is then counter-clockwise seen from that end. For this the branch end has
+// X growing upward (top = the end being cut) and the hole X growing downward (top = the main
+// pipe's fixed end): the other way round the sheet would lie mirrored on the pipe.
 #include "core/job/job.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
 
@@ -24,6 +31,7 @@ struct TemplateDrawing {
         std::vector<Eigen::Vector2d> points;
         double width_mm = 0.25;
         bool closed = false;
+        bool dashed = false; // trim lines of tiles
     };
     struct Text {
         Eigen::Vector2d pos; // baseline start (or centre with centred = true)
@@ -39,8 +47,21 @@ struct TemplateDrawing {
     double origin_u_mm = 0;      // page x of A = a_low_deg
     double a_low_deg = 0;        // A at the left wrap edge
     double x_top_mm = 0;         // X at page y = top of the drawing area
-    double top_mm = 0;           // page y of x_top_mm (page y = top + (x_top - X))
+    double top_mm = 0;           // page y of x_top_mm: page y = top + y_per_x (X - x_top)
+    double y_per_x = -1;         // -1: X grows upward (branch end), +1: downward (hole)
+    double zero_u_mm = 0;        // page x of the 0 deg line (A = 0)
+    double glue_tab_mm = 0;      // width of the glue tab right of the last wrap edge
     double scale_bar_mm = 0;
+
+    // A tile of a larger drawing (template_tiles.h): lines and texts are clipped to this
+    // rectangle (page mm); marks and mark_texts (crosses, trim lines, labels) are not.
+    struct Rect {
+        double x = 0, y = 0, w = 0, h = 0;
+    };
+    bool clipped = false;
+    Rect clip;
+    std::vector<Polyline> marks;
+    std::vector<Text> mark_texts;
 };
 
 // samples: points of the cut curve per turn (the drawing is smoother than the NC grid).
