@@ -21,6 +21,7 @@
 #include "ui/main_window.h"
 #include "ui/panels/bus_panel.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/event_log_panel.h"
 #include "ui/run_controller.h"
 
 #include <QCanBus>
@@ -61,6 +62,15 @@ QStringList cia402(const MainWindow& w) {
 
 bool all(const QStringList& l, const QString& s) {
     return l.size() == cutcell::kAxisCount && l.count(s) == l.size();
+}
+
+// The event log's last lines, for a failure's message.
+QString lastLog(const MainWindow& w, int lines = 8) {
+    QStringList out;
+    const int n = w.eventLog()->rowCount();
+    for (int r = std::max(0, n - lines); r < n; ++r)
+        out << w.eventLog()->message(r);
+    return out.join(QStringLiteral("\n"));
 }
 
 int staleRows(const MainWindow& w) {
@@ -185,18 +195,17 @@ class TestGuiCanLink : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(cable.open(), 0, 2000); // the connection is released
         QCOMPARE(w.run()->bridge()->state(), EngineState::Idle);
         qInfo("GUI thread: longest stall during the failed bring-up %lld ms", probe.maxMs());
-        QVERIFY2(probe.maxMs() < 250, qPrintable(QString::number(probe.maxMs())));
+        QVERIFY2(probe.maxMs() < 150, qPrintable(QString::number(probe.maxMs())));
 
         // The drives are there now: Enable again connects, configures and enables them.
         auto sim = startSimulator(job);
         QVERIFY(sim);
-        const int before = cable.accepted();
         click(w.controls()->enableButton());
         QTRY_VERIFY2_WITH_TIMEOUT(all(cia402(w), "Operation enabled"),
                                   qPrintable(cia402(w).join(", ")), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(w.run()->bridge()->state(), EngineState::Ready, 5000);
         QCOMPARE(linkState(w), RigLink::State::Up);
-        QCOMPARE(cable.accepted(), before + 1);
+        QTRY_COMPARE_WITH_TIMEOUT(cable.open(), 1, 2000); // the master's one connection
         QTRY_COMPARE_WITH_TIMEOUT(staleRows(w), 0, 2000);
         QVERIFY(statusBarText(w).contains("bus up"));
         screenshot(w, "can_bus_up.png");
@@ -263,7 +272,8 @@ class TestGuiCanLink : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(w.run()->bridge()->state(), EngineState::Idle, 2000);
         QTRY_COMPARE_WITH_TIMEOUT(linkState(w), RigLink::State::Up, 10000);
         click(w.controls()->enableButton()); // once failed here with 0x8100 (bus lost)
-        QTRY_COMPARE_WITH_TIMEOUT(w.run()->bridge()->state(), EngineState::Ready, 5000);
+        QTRY_VERIFY2_WITH_TIMEOUT(w.run()->bridge()->state() == EngineState::Ready,
+                                  qPrintable(lastLog(w)), 5000);
         QTRY_VERIFY2_WITH_TIMEOUT(all(cia402(w), "Operation enabled"),
                                   qPrintable(cia402(w).join(", ")), 5000);
         click(w.controls()->eStopButton());
@@ -284,7 +294,6 @@ class TestGuiCanLink : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(w.run()->bridge()->state(), EngineState::EmergencyStop, 1000);
         qInfo("E-STOP during the bring-up: engine in EmergencyStop %lld ms after the click",
               pressed.elapsed());
-        QCOMPARE(linkState(w), RigLink::State::Connecting); // still coming up meanwhile
         QTRY_COMPARE_WITH_TIMEOUT(linkState(w), RigLink::State::Up, 10000);
         QTest::qWait(500);
         QVERIFY2(!cia402(w).contains("Operation enabled"), qPrintable(cia402(w).join(", ")));
