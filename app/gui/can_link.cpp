@@ -157,6 +157,7 @@ class CanLink::Worker {
         }
         started_ = true;
         deadlineMs_ = nowMs() + timing_.configure_timeout_ms;
+        settleUntilMs_ = 0;
         publish(State::Connecting, "connected to " + where_ + "; configuring the nodes", 0);
     }
 
@@ -172,6 +173,22 @@ class CanLink::Worker {
         const int count = static_cast<int>(s.nodes.size());
         if (busGone(s.bus)) return fail("the bus went away while configuring (" + s.bus_text + ")");
         if (ready == count && master_.allOperational()) {
+            // Operational is not yet "ready to enable": a drive still in Fault from before
+            // (a bus lost while enabled) gets the fault reset the engine asked for in its first
+            // cycles. Wait for every drive's state, a moment at most, so an Enable right away
+            // does not meet that Fault.
+            bool settled = true;
+            for (const CanNodeSnapshot& n : s.nodes)
+                settled = settled && n.state != Cia402State::Unknown &&
+                          n.state != Cia402State::Fault &&
+                          n.state != Cia402State::FaultReactionActive;
+            if (!settled && settleUntilMs_ == 0) settleUntilMs_ = nowMs() + kSettleMs;
+            if (!settled && nowMs() < settleUntilMs_) {
+                publish(State::Connecting,
+                        "every node operational on " + where_ + "; reading the drives' states",
+                        ready);
+                return;
+            }
             phase_ = State::Up;
             publish(State::Up,
                     "up on " + where_ + ": " + std::to_string(count) + " nodes operational", ready);
@@ -231,6 +248,8 @@ class CanLink::Worker {
     bool inStart_ = false;
     std::uint32_t seenUp_ = 0, seenReconnect_ = 0;
     std::int64_t deadlineMs_ = 0;
+    std::int64_t settleUntilMs_ = 0; // 0: not waiting for the drives' states
+    static constexpr std::int64_t kSettleMs = 300;
     mutable std::mutex mutex_;
     RigLink status_;
 };
