@@ -82,8 +82,8 @@ void BusPanel::setLink(const RigLink& link) {
     link_ = link;
     setVisible(link.state != State::None);
     const QString where = QString::fromStdString(link.where);
-    state_->setText(tr("Bus %1").arg(QString::fromLatin1(toString(link.state))).toUpper() +
-                    (where.isEmpty() ? QString() : QStringLiteral("  ") + where));
+    state_->setText(tr("Bus %1").arg(QString::fromLatin1(toString(link.state))).toUpper());
+    state_->setToolTip(where);
     state_->setStyleSheet(
         QStringLiteral("font-weight: bold; color: %1").arg(stateColor(link.state)));
     const QString text = QString::fromStdString(link.text);
