@@ -35,8 +35,9 @@ struct DevicePanelSnapshot {
     bool can = false;  // false: simulated in-process drives (no bus to show)
     QString bus_state; // "error active", "bus off", "disconnected", ...
     bool bus_error = false;
-    double load = 0;   // fraction of the bit rate (worst-case stuffing)
-    QString load_text; // the figures behind it
+    double load = 0;                 // fraction of the bit rate (worst-case stuffing)
+    QString load_text;               // the figures behind it
+    double heartbeat_timeout_ms = 0; // a node row older than this is stale (0: not judged)
     std::vector<DevicePanelNode> nodes;
 };
 

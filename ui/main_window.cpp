@@ -10,6 +10,7 @@
 #include "ui/machine_exports.h"
 #include "ui/machine_views.h"
 #include "ui/panels/alarm_panel.h"
+#include "ui/panels/bus_panel.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/dro_panel.h"
 #include "ui/panels/event_log_panel.h"
@@ -75,6 +76,7 @@ void MainWindow::buildLayout() {
     dro_ = new DroPanel(this);
     alarms_ = new AlarmPanel(this);
     recovery_ = new RecoveryPanel(this);
+    bus_ = new BusPanel(this); // shown for a rig with a bus
 
     auto* centre = new QSplitter(Qt::Vertical, this);
     centre->setObjectName("centreSplitter");
@@ -101,6 +103,7 @@ void MainWindow::buildLayout() {
     auto* sv = new QVBoxLayout(status);
     sv->setContentsMargins(0, 0, 0, 0);
     sv->addWidget(lamps_);
+    sv->addWidget(bus_);
     sv->addWidget(progress_);
     sv->addWidget(recovery_);
     sv->addWidget(dro_);
@@ -257,6 +260,8 @@ void MainWindow::connectRun() {
     connect(run_, &RunController::message, log_,
             [this](Severity s, const QString& m) { log_->add(s, m); });
     connect(run_, &RunController::rigChanged, rigLabel_, &QLabel::setText);
+    connect(run_, &RunController::linkChanged, bus_, &BusPanel::setLink);
+    connect(bus_, &BusPanel::reconnectRequested, run_, &RunController::reconnect);
     // The device panel at ~5 Hz from the rig (a short mutex in the CAN master, no bus wait).
     deviceTimer_ = new QTimer(this);
     deviceTimer_->setInterval(200);
@@ -502,6 +507,7 @@ void MainWindow::refreshDevicePanel() {
     cutcell::ui::DevicePanelSnapshot snapshot; // can = false: simulated in-process drives
     if (EngineRig* rig = run_->rig()) rig->deviceSnapshot(snapshot);
     devices_->setSnapshot(snapshot);
+    bus_->setSnapshot(snapshot);
     // A bus just came up: show it (the operator can switch back to the log).
     if (snapshot.can && !showingBus_) bottomTabs_->setCurrentWidget(devices_);
     showingBus_ = snapshot.can;

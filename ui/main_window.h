@@ -26,6 +26,7 @@ class DevicePanel;
 namespace CutCell::ui {
 
 class AlarmPanel;
+class BusPanel;
 class RecoveryPanel;
 class CellViewPanel;
 class DroPanel;
@@ -81,6 +82,7 @@ class MainWindow : public QMainWindow {
     DroPanel* dro() const { return dro_; }
     AlarmPanel* alarms() const { return alarms_; }
     RecoveryPanel* recovery() const { return recovery_; }
+    BusPanel* busPanel() const { return bus_; }
     QWidget* operatorColumn() const { return column_; }
 
   protected:
@@ -111,6 +113,7 @@ class MainWindow : public QMainWindow {
     DroPanel* dro_ = nullptr;
     AlarmPanel* alarms_ = nullptr;
     RecoveryPanel* recovery_ = nullptr;
+    BusPanel* bus_ = nullptr;
     QWidget* column_ = nullptr;
     QTimer* deviceTimer_ = nullptr;
     QTabWidget* bottomTabs_ = nullptr; // event log, devices

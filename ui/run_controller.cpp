@@ -3,6 +3,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "ui/forms/job_editor.h"
+#include "ui/link_control.h"
 #include "ui/plan_worker.h"
 
 #include "ui/machine/machine_ui_registry.h"
@@ -41,7 +42,7 @@ bool busyState(EngineState s) {
 RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObject* parent)
     : QObject(parent), editor_(editor), factory_(std::move(factory)),
       planner_(new PlanWorker(this)), bridge_(new EngineBridge(this)),
-      replanTimer_(new QTimer(this)) {
+      replanTimer_(new QTimer(this)), link_(new LinkControl(this)) {
     replanTimer_->setSingleShot(true);
     replanTimer_->setInterval(400); // replan after a pause in typing, not at every keystroke
     connect(replanTimer_, &QTimer::timeout, this, &RunController::replanNow);
@@ -72,6 +73,18 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
         emit message(Severity::Error, tr("Planning failed: %1").arg(m));
         updateBlocked();
     });
+    connect(link_, &LinkControl::message, this, &RunController::message);
+    connect(link_, &LinkControl::changed, this, &RunController::onLinkChanged);
+    connect(link_, &LinkControl::enableDue, this, [this] {
+        // The bus came up after Enable: enable now unless the machine left Idle meanwhile.
+        if (rig_ && !estopPressed_ && bridge_->state() == EngineState::Idle)
+            rig_->engine().enable();
+    });
+    connect(link_, &LinkControl::enableFailed, this, [this](const QString& why) {
+        if (!autoRun_) return;
+        autoRun_ = false;
+        emit autoRunFinished(false, tr("the CAN bus did not come up: %1").arg(why));
+    });
     connect(bridge_, &EngineBridge::stateChanged, this, &RunController::onState);
     connect(bridge_, &EngineBridge::samples, this, [this] {
         updateBlocked(); // e.g. homed may change within one tick without a visible state change
@@ -81,6 +94,7 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
 }
 
 RunController::~RunController() {
+    link_->setRig(nullptr);
     bridge_->setEngine(nullptr);
     if (rig_) rig_->engine().emergencyStop(); // never leave a machine moving
     rig_.reset();
@@ -146,6 +160,7 @@ void RunController::loadProgram() {
     }
     programPending_ = false;
     if (!rig_ || rigKey(rigJob_) != rigKey(planJob_)) {
+        link_->setRig(nullptr);
         bridge_->setEngine(nullptr);
         rig_.reset();
         std::string err;
@@ -154,12 +169,16 @@ void RunController::loadProgram() {
             programError_ = tr("machine not available: %1")
                                 .arg(QString::fromStdString(err.empty() ? "no rig factory" : err));
             emit message(Severity::Error, programError_);
+            rigDescription_.clear();
+            emit rigChanged(tr("no machine: %1").arg(QString::fromStdString(err)));
             updateBlocked();
             return;
         }
         rigJob_ = planJob_;
         bridge_->setEngine(&rig_->engine());
-        emit rigChanged(QString::fromStdString(rig_->description()));
+        rigDescription_ = QString::fromStdString(rig_->description());
+        emit rigChanged(rigDescription_);
+        link_->setRig(rig_.get());
     }
     try {
         const MachineUi* machine = machineUiFor(planJob_);
@@ -228,7 +247,7 @@ void RunController::updateBlocked() {
     else {
         switch (s) {
         case EngineState::Idle:
-            r = tr("drives disabled - press Enable");
+            r = link_->ready() ? tr("drives disabled - press Enable") : linkBlockedReason();
             break;
         case EngineState::Ready:
             if (!bridge_->last().homed) r = tr("axes not homed - press Home");
@@ -253,7 +272,10 @@ void RunController::updateBlocked() {
                               : tr("EMERGENCY STOP latched - press Reset");
             break;
         case EngineState::Fault:
-            r = tr("fault - see the event log, then press Reset");
+            r = link_->needsReconnect()
+                    ? tr("fault - CAN bus %1: press Reset (it reconnects the bus), then Enable")
+                          .arg(QString::fromLatin1(toString(link_->link().state)))
+                    : tr("fault - see the event log, then press Reset");
             break;
         }
     }
@@ -263,8 +285,50 @@ void RunController::updateBlocked() {
     }
 }
 
+QString RunController::linkBlockedReason() const {
+    const RigLink& l = link_->link();
+    const QString text = QString::fromStdString(l.text);
+    switch (l.state) {
+    case RigLink::State::Down:
+        return tr("drives disabled, CAN bus not connected - press Enable (it connects the bus)");
+    case RigLink::State::Connecting:
+        return link_->enablePending()
+                   ? tr("connecting the CAN bus - %1; the drives are enabled when every node "
+                        "is up")
+                         .arg(text)
+                   : tr("connecting the CAN bus - %1").arg(text);
+    case RigLink::State::Failed:
+        return tr("CAN bus not up - %1 - press Enable to try again").arg(text);
+    case RigLink::State::Lost:
+        return tr("CAN bus lost - %1 - press Reconnect or Reset, then Enable").arg(text);
+    default:
+        return {};
+    }
+}
+
+void RunController::onLinkChanged(const RigLink& link) {
+    if (!rigDescription_.isEmpty() && link.state != RigLink::State::None)
+        emit rigChanged(
+            tr("%1 - bus %2").arg(rigDescription_, QString::fromLatin1(toString(link.state))));
+    updateBlocked();
+    emit linkChanged(link);
+}
+
 void RunController::enable() {
-    if (rig_) rig_->engine().enable();
+    if (rig_ && link_->requestEnable()) rig_->engine().enable();
+}
+
+void RunController::reconnect() {
+    if (!rig_) return;
+    const EngineState s = bridge_->state();
+    if (s != EngineState::Idle && s != EngineState::Fault && s != EngineState::EmergencyStop) {
+        emit message(Severity::Warning,
+                     tr("Reconnect refused: the drives are enabled (%1); a reconnection takes "
+                        "their torque away. Abort or stop first.")
+                         .arg(QString::fromLatin1(cutcell::toString(s))));
+        return;
+    }
+    link_->reconnect();
 }
 void RunController::home() {
     if (rig_) rig_->engine().home();
@@ -313,12 +377,24 @@ void RunController::reset() {
                         "first)."));
         return;
     }
+    const EngineState s = bridge_->state();
+    const bool latched = s == EngineState::Fault || s == EngineState::EmergencyStop;
+    if (link_->needsReconnect()) {
+        // A lost or failed bus: the drives' faults cannot clear without it. Reset clears the
+        // latch and reconnects; Enable follows by the operator once the bus is up.
+        if (latched) rig_->engine().reset();
+        emit message(Severity::Info, tr("Reset: reconnecting the CAN bus; press Enable when it "
+                                        "is up (the bus box shows it)."));
+        link_->reconnect();
+        return;
+    }
     rig_->engine().reset();
 }
 
 void RunController::emergencyStop() {
     emit message(Severity::Error, tr("EMERGENCY STOP pressed by the operator."));
     if (rig_) rig_->engine().emergencyStop();
+    link_->cancelEnable(); // a bus coming up now enables nothing
     if (!estopPressed_) {
         estopPressed_ = true;
         emit eStopPressedChanged(true);
@@ -379,7 +455,10 @@ void RunController::stepAutoRun() {
     };
     switch (s) {
     case EngineState::Idle:
-        if (!autoEnableSent_) autoEnableSent_ = engine.enable();
+        if (!autoEnableSent_) {
+            autoEnableSent_ = true;
+            if (link_->requestEnable()) autoEnableSent_ = engine.enable();
+        }
         break;
     case EngineState::Ready:
         if (!bridge_->last().homed) {

@@ -19,6 +19,7 @@ class QTimer;
 namespace CutCell::ui {
 
 class JobEditor;
+class LinkControl;
 class MachineUi;
 class PlanWorker;
 
@@ -35,6 +36,8 @@ class RunController : public QObject {
     QString startBlockedReason() const { return blocked_; }
     bool planning() const;
     EngineRig* rig() const { return rig_.get(); } // null until a plan was loaded
+    // The rig's link to its drives (a CAN bus): its state, Enable's wait for it.
+    LinkControl* link() const { return link_; }
     // Plans the current job now (after an open or a New; edits replan after a short pause).
     void replanNow();
 
@@ -58,7 +61,11 @@ class RunController : public QObject {
     void feedHold();
     void resume();
     void abort();
-    void reset(); // clears a fault, or an emergency stop that was released
+    // Clears a fault, or an emergency stop that was released; after a lost or failed bus it
+    // also reconnects the bus (Enable follows by the operator).
+    void reset();
+    // Takes the bus down and up again (bus box); refused while the drives are enabled.
+    void reconnect();
     void emergencyStop();
     void releaseEmergencyStop();
     // Jog one axis while Ready: by `delta` (rad or mm), or continuously toward `direction`
@@ -80,6 +87,7 @@ class RunController : public QObject {
     void startBlockedChanged(const QString& reason);
     void message(cutcell::Severity severity, const QString& text);
     void rigChanged(const QString& description);
+    void linkChanged(const CutCell::ui::RigLink& link);
     void autoRunFinished(bool ok, const QString& reason);
     void programLoaded(std::shared_ptr<const cutcell::MotionProgram> program);
     void eStopPressedChanged(bool pressed);
@@ -100,6 +108,8 @@ class RunController : public QObject {
     void stepAutoRun();
     void fetchStopPoint(int attempt);
     void updateBlocked();
+    QString linkBlockedReason() const;
+    void onLinkChanged(const RigLink& link);
     bool rigMatches(const cutcell::Job& job) const;
     bool engineBusy() const;
 
@@ -109,7 +119,9 @@ class RunController : public QObject {
     EngineBridge* bridge_;
     QTimer* replanTimer_;
     cutcell::ClockMode clock_ = cutcell::ClockMode::RealTime;
+    LinkControl* link_;
     std::unique_ptr<EngineRig> rig_;
+    QString rigDescription_;
     cutcell::Job rigJob_;
     std::shared_ptr<const cutcell::CutPlan> plan_;
     cutcell::Job planJob_;

@@ -5,17 +5,30 @@
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/emcy.h"
 #include "ui/device_panel.h"
+#include "ui/engine_rig.h"
 
 namespace cutcell::app {
 
+// link: the connection's state, null when the master's own bus state holds (a master that is
+// not started keeps its last bus state: the link says what holds now).
 inline ui::DevicePanelSnapshot toPanelSnapshot(const canopen::CanBusSnapshot& s,
-                                               const std::vector<QString>& axisNames) {
+                                               const std::vector<QString>& axisNames,
+                                               const CutCell::ui::RigLink* link = nullptr,
+                                               double heartbeatTimeoutMs = 0) {
     using namespace cutcell::canopen;
+    using LinkState = CutCell::ui::RigLink::State;
     ui::DevicePanelSnapshot p;
     p.can = true;
-    p.bus_state = QString::fromStdString(s.bus_text.empty() ? toString(s.bus) : s.bus_text);
-    p.bus_error = s.bus == BusState::BusOff || s.bus == BusState::Disconnected ||
-                  s.bus == BusState::ErrorPassive;
+    p.heartbeat_timeout_ms = heartbeatTimeoutMs;
+    if (!link || link->state == LinkState::Up) {
+        p.bus_state = QString::fromStdString(s.bus_text.empty() ? toString(s.bus) : s.bus_text);
+        p.bus_error = s.bus == BusState::BusOff || s.bus == BusState::Disconnected ||
+                      s.bus == BusState::ErrorPassive;
+    } else {
+        p.bus_state = QString::fromLatin1(toString(link->state)) + QStringLiteral(": ") +
+                      QString::fromStdString(link->text);
+        p.bus_error = link->state == LinkState::Lost || link->state == LinkState::Failed;
+    }
     p.load = s.load;
     p.load_text = QString::fromStdString(s.load_text);
     for (size_t i = 0; i < s.nodes.size(); ++i) {

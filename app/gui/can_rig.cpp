@@ -1,5 +1,6 @@
 #include "can_rig.h"
 
+#include "can_link.h"
 #include "can_panel_feed.h"
 
 #include "devices/canopen/cell_safe_stop.h"
@@ -8,17 +9,17 @@
 #include "devices/sim/simulated_torch.h"
 #include "ui/machine/machine_ui_registry.h"
 
-#include <QCoreApplication>
-#include <QDeadlineTimer>
-
 #include <atomic>
 #include <cstdio>
+#include <stdexcept>
 
 namespace cutcell::app {
 namespace {
 
 using namespace cutcell::canopen;
 
+// The rig exists with the bus down: the engine runs (drives read "disabled"), and the bus is
+// brought up by the link worker when the operator asks (Enable, Reconnect), never here.
 class CanRig : public CutCell::ui::EngineRig {
   public:
     explicit CanRig(const Job& job)
@@ -28,36 +29,14 @@ class CanRig : public CutCell::ui::EngineRig {
         if (const auto* machine = CutCell::ui::machineUiFor(job))
             for (const auto& axis : machine->axes())
                 axisNames_.push_back(axis.name);
-    }
-    ~CanRig() override {
-        safeStop("the window was closed"); // torch off, drives disabled on the bus, logged
-        safeStopRegistration_.reset();
-        if (engine_) engine_->stopThread();
-        if (master_) master_->stop();
-    }
-    // Any ending of the program (signal, std::terminate, closing the window): once.
-    void safeStop(const std::string& why) {
-        if (!engine_ || safeStopped_.exchange(true)) return;
-        safeStopCanCell(engine_.get(), master_.get(), why, "cutcell");
-    }
-
-    // Connects and configures every node; the wait is bounded (5 s) and keeps this thread's
-    // event loop running (it may host the virtualcan bus).
-    bool start(const Job& job, std::string* error) {
         master_ = std::make_unique<CanOpenMaster>(config_);
-        if (!master_->start(error)) return false;
-        QDeadlineTimer deadline(5000);
-        while (!master_->allOperational()) {
-            if (deadline.hasExpired()) {
-                *error = "not every CAN node became operational within 5 s";
-                for (const CanNodeSnapshot& n : master_->snapshot().nodes)
-                    if (!n.configured)
-                        *error += "; node " + std::to_string(n.node) + ": " +
-                                  (n.fault_text.empty() ? "no answer" : n.fault_text);
-                return false;
-            }
-            QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents, 5);
-        }
+        // Refused at once, without touching the bus: bus load, plugin, interface.
+        if (std::string why; !master_->checkConfig(&why)) throw std::runtime_error(why);
+        // The master's events (node configured, heartbeat lost, EMCY) into the run log too.
+        master_->setEventSink([this](const MasterEvent& e) {
+            if (MotionEngine* engine = engineForEvents_.load(std::memory_order_acquire))
+                engine->logExternalEvent(e.error ? Severity::Warning : Severity::Info, e.text);
+        });
         EngineDevices devices;
         for (int i = 0; i < kAxisCount; ++i)
             devices.axes[static_cast<size_t>(i)] = master_->drive(i);
@@ -69,38 +48,70 @@ class CanRig : public CutCell::ui::EngineRig {
         tuneEngineForCan(config, job, period_);
         engine_ = std::make_unique<MotionEngine>(devices, config);
         engine_->startThread();
-        safeStopRegistration_ =
-            SafeShutdown::add([this](const std::string& why) { safeStop(why); });
-        return true;
+        engineForEvents_.store(engine_.get(), std::memory_order_release);
+        link_ = std::make_unique<CanLink>(*master_, where());
+        link_->setFinalAction(
+            [this](bool masterRunning) { safeStop("the window was closed", masterRunning); });
+        safeStopRegistration_ = SafeShutdown::add([this](const std::string& why) {
+            const auto s = link_->status().state;
+            using L = CutCell::ui::RigLink::State;
+            safeStop(why, s == L::Up || s == L::Connecting || s == L::Lost);
+        });
+    }
+    ~CanRig() override {
+        engine_->emergencyStop(); // torch off now, from this thread
+        safeStopRegistration_.reset();
+        link_.reset(); // on the worker: the safe stop (drives disabled, logged), master stopped
+        engineForEvents_.store(nullptr, std::memory_order_release);
+        engine_->stopThread();
+    }
+    // Any ending of the program (signal, std::terminate, closing the window): once.
+    void safeStop(const std::string& why, bool masterRunning) {
+        if (safeStopped_.exchange(true)) return;
+        safeStopCanCell(engine_.get(), masterRunning ? master_.get() : nullptr, why, "cutcell");
     }
 
     MotionEngine& engine() override { return *engine_; }
     std::string description() const override {
         char buf[200];
         std::snprintf(buf, sizeof buf,
-                      "CANopen cell: 6 drives on %s %s at %d kbit/s + simulated torch, %.3g ms "
+                      "CANopen cell: 6 drives on %s at %d kbit/s + simulated torch, %.3g ms "
                       "SYNC, real time",
-                      config_.plugin.toUtf8().constData(), config_.interface.toUtf8().constData(),
-                      config_.bitrate_bps / 1000, period_ * 1000.0);
+                      where().c_str(), config_.bitrate_bps / 1000, period_ * 1000.0);
         return buf;
     }
     bool deviceSnapshot(ui::DevicePanelSnapshot& out) override {
-        out = toPanelSnapshot(master_->snapshot(), axisNames_);
+        const CutCell::ui::RigLink link = link_->status();
+        out = toPanelSnapshot(master_->snapshot(), axisNames_, &link,
+                              config_.heartbeat_timeout_s * 1e3);
         return true;
     }
-    void faultReset(int /*node*/) override {
-        // A bus fault needs a reconnection; drive faults are reset by the engine's reset.
-        const BusState bus = master_->snapshot().bus;
-        if (bus == BusState::BusOff || bus == BusState::Disconnected) master_->recoverBus();
+    // Drive faults are reset by the engine's reset; the bus by reconnectLink() (RunController).
+    void faultReset(int /*node*/) override {}
+
+    CutCell::ui::RigLink link() const override { return link_->status(); }
+    void connectLink() override { link_->requestUp(); }
+    void reconnectLink() override { link_->requestReconnect(); }
+    std::vector<CutCell::ui::RigLinkEvent> drainLinkEvents() override {
+        std::vector<CutCell::ui::RigLinkEvent> out;
+        for (const MasterEvent& e : master_->drainEvents())
+            out.push_back({e.error, e.text});
+        return out;
     }
 
   private:
+    std::string where() const {
+        return config_.plugin.toStdString() + " " + config_.interface.toStdString();
+    }
+
     double period_;
     CanOpenMasterConfig config_;
     std::vector<QString> axisNames_;
     std::unique_ptr<CanOpenMaster> master_;
     SimulatedTorch torch_;
-    std::unique_ptr<MotionEngine> engine_; // declared last: destroyed before the devices
+    std::unique_ptr<MotionEngine> engine_; // destroyed before the devices
+    std::atomic<MotionEngine*> engineForEvents_{nullptr};
+    std::unique_ptr<CanLink> link_; // destroyed first: it stops the master
     std::atomic<bool> safeStopped_{false};
     SafeShutdown::Registration safeStopRegistration_;
 };
@@ -111,9 +122,7 @@ std::unique_ptr<CutCell::ui::EngineRig> makeCanRig(const Job& job, std::string* 
     std::string ignored;
     if (!error) error = &ignored;
     try {
-        auto rig = std::make_unique<CanRig>(job);
-        if (!rig->start(job, error)) return nullptr;
-        return rig;
+        return std::make_unique<CanRig>(job);
     } catch (const std::exception& e) {
         *error = e.what();
         return nullptr;

@@ -91,9 +91,27 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     };
     if (m.thread) return true;
     if (m.wakeFd < 0 || m.syncFd < 0) return fail("cannot create eventfd for the CAN master");
-    if (m.cfg.nodes.empty()) return fail("no CAN nodes configured");
-    if (m.load > m.cfg.bus_load_limit) return fail("CAN bus load too high: " + m.loadText);
-    if (std::string why; !checkCanInterface(m.cfg.plugin, m.cfg.interface, &why)) return fail(why);
+    if (std::string why; !checkConfig(&why)) return fail(why);
+    // A new connection: nothing of the previous one's nodes stands (the master thread is not
+    // running, the engine only reads these atomics).
+    m.stopping = false;
+    for (size_t i = 0; i < m.shared.size(); ++i) {
+        NodeShared& s = m.shared[i];
+        s.configured = false;
+        s.master_fault.store(0, std::memory_order_release);
+        s.last_emcy.store(0, std::memory_order_release);
+        s.nmt.store(static_cast<std::uint8_t>(NmtState::Unknown), std::memory_order_release);
+        s.statusword.store(0, std::memory_order_release);
+        s.tpdo_count.store(0, std::memory_order_release);
+        // The start-up phases begin again; a fault reset the engine asked for while the bus
+        // was down (seen_resets behind the counter) is still sent once the node runs.
+        const std::uint32_t seenResets = m.rt[i].seen_resets;
+        m.rt[i] = NodeRuntime{};
+        m.rt[i].seen_resets = seenResets;
+        std::lock_guard lock(m.mutex);
+        m.faultText[i].clear();
+        m.emcyText[i].clear();
+    }
     m.thread = std::make_unique<QThread>();
     m.thread->setObjectName(QStringLiteral("canopen-master"));
     m.context = new QObject;
@@ -145,6 +163,19 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
         });
     }
     return true;
+}
+
+bool CanOpenMaster::checkConfig(std::string* error) const {
+    const Impl& m = *impl_;
+    std::string why;
+    if (m.cfg.nodes.empty())
+        why = "no CAN nodes configured";
+    else if (m.load > m.cfg.bus_load_limit)
+        why = "CAN bus load too high: " + m.loadText;
+    else if (checkCanInterface(m.cfg.plugin, m.cfg.interface, &why))
+        return true;
+    if (error) *error = why;
+    return false;
 }
 
 void CanOpenMaster::stop() {

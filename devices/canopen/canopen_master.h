@@ -133,8 +133,12 @@ class CanOpenMaster {
     CanOpenMaster(const CanOpenMaster&) = delete;
     CanOpenMaster& operator=(const CanOpenMaster&) = delete;
 
-    // False with the reason (bus load over the limit with the figures, plugin or interface
-    // missing, another master on the bus, no connection within timeout_ms).
+    // What start() checks before it touches the bus (nodes configured, bus load within the
+    // limit, plugin installed and offering the interface): false with the reason. Any thread.
+    bool checkConfig(std::string* error) const;
+    // False with the reason (checkConfig's, another master on the bus, no connection within
+    // timeout_ms). May be called again after stop(): each start begins afresh (the nodes'
+    // master-side faults, EMCY texts and states of the previous connection are cleared).
     bool start(std::string* error, int timeout_ms = 3000);
     // Disables every drive (controlword disable voltage on RPDO2, then NMT pre-operational to
     // all), flushes the frames to the bus and closes. Any one controlling thread.

@@ -8,6 +8,7 @@
 #include "devices/canopen/nmt.h"
 #include "devices/canopen/qt_can_frame.h"
 #include "devices/canopen/sdo.h"
+#include "devices/canopen/virtualcan_host.h"
 
 #include <QCanBus>
 #include <QCoreApplication>
@@ -43,6 +44,8 @@ bool CanOpenMaster::Impl::send(const CanFrame& f) {
 }
 
 void CanOpenMaster::Impl::openDevice() {
+    // This thread ends with stop(): the virtualcan bus, if this process hosts it, must not.
+    hostVirtualCanBus(cfg.plugin, cfg.interface);
     QString err;
     device = QCanBus::instance()->createDevice(cfg.plugin, cfg.interface, &err);
     auto fail = [this](const std::string& why) {
