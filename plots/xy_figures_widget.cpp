@@ -2,7 +2,7 @@
 
 #include <qcustomplot.h>
 
-#include <QHBoxLayout>
+#include <QBoxLayout>
 
 #include <cmath>
 #include <limits>
@@ -15,13 +15,14 @@ struct XyFiguresWidget::Impl {
     std::vector<int> points;
 };
 
-XyFiguresWidget::XyFiguresWidget(int panels, QWidget* parent)
+XyFiguresWidget::XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent)
     : QWidget(parent), d(std::make_unique<Impl>()) {
-    auto* row = new QHBoxLayout(this);
+    auto* row = new QBoxLayout(
+        orientation == Qt::Horizontal ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom, this);
     row->setContentsMargins(0, 0, 0, 0);
     for (int i = 0; i < panels; ++i) {
         auto* p = new QCustomPlot(this);
-        p->setMinimumSize(220, 200);
+        p->setMinimumSize(220, 230);
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->plotLayout()->insertRow(0);
         auto* title = new QCPTextElement(p, QString(), QFont(font().family(), 9, QFont::Bold));

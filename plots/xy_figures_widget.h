@@ -25,7 +25,8 @@ struct XyCurve {
 class XyFiguresWidget : public QWidget {
     Q_OBJECT
   public:
-    explicit XyFiguresWidget(int panels, QWidget* parent = nullptr);
+    // The panels side by side (Horizontal) or stacked (Vertical, for a narrow dock).
+    XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent = nullptr);
     ~XyFiguresWidget() override;
 
     int panelCount() const;

@@ -518,7 +518,9 @@ void CellScene::Impl::updateStatus() {
     if (key == statusKey) return;
     statusKey = key;
     char buf[200];
-    if (unreachable > 0)
+    if (model.linkage) // no planned path: the machine follows a control law
+        std::snprintf(buf, sizeof buf, "progress %d %%", percent);
+    else if (unreachable > 0)
         std::snprintf(buf, sizeof buf,
                       "progress %d %%   torch %s   %d path points NOT reachable (red)", percent,
                       torchOn ? "ON" : "off", unreachable);

@@ -7,6 +7,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <limits>
 
 namespace CutCell::ui {
@@ -20,8 +21,7 @@ QuickReturnFiguresForm::QuickReturnFiguresForm(JobEditor* editor, QWidget* paren
     summary_ = new QLabel(tr("Not simulated yet."), this);
     summary_->setWordWrap(true);
     summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    figures_ = new cutcell::plots::XyFiguresWidget(3, this);
-    figures_->setMinimumHeight(260);
+    figures_ = new cutcell::plots::XyFiguresWidget(3, Qt::Vertical, this);
     figures_->setPanel(0, tr("Velocity profile"), tr("t (s)"), tr("y' (m/s)"));
     figures_->setPanel(1, tr("Phase diagram"), tr("y (m)"), tr("y' (m/s)"));
     figures_->setPanel(2, tr("Velocity error in the cut"), tr("y (m)"), tr("y_d' - y' (m/s)"));
@@ -50,18 +50,22 @@ bool QuickReturnFiguresForm::simulate(QString* why) {
     XyCurve phase{tr("y'(y)"), {}, {}, QColor(20, 90, 200)};
     XyCurve phaseD{tr("y_d'(y)"), {}, {}, QColor(220, 60, 30), true};
     XyCurve err{tr("y_d' - y'"), {}, {}, QColor(30, 140, 60)};
+    const double workLow = std::min(setup.law.profile.y_a, setup.law.profile.y_b);
+    const double workHigh = std::max(setup.law.profile.y_a, setup.law.profile.y_b);
     bool wasCutting = false;
     for (const qr::TracePoint& p : r.trace) {
         v.x.push_back(p.t), v.y.push_back(p.dy);
         vd.x.push_back(p.t), vd.y.push_back(p.dy_d);
         phase.x.push_back(p.y), phase.y.push_back(p.dy);
-        if (p.cutting) {
+        // Over the workpiece, as the core's max and RMS count it.
+        const bool inWork = p.cutting && p.y >= workLow && p.y <= workHigh;
+        if (inWork) {
             phaseD.x.push_back(p.y), phaseD.y.push_back(p.dy_d);
             err.x.push_back(p.y), err.y.push_back(p.dy_d - p.dy);
         } else if (wasCutting) { // a gap between strokes
             err.x.push_back(gap), err.y.push_back(gap);
         }
-        wasCutting = p.cutting;
+        wasCutting = inWork;
     }
     figures_->setCurves(0, {v, vd});
     figures_->setCurves(1, {phase, phaseD});

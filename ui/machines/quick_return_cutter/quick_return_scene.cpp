@@ -10,8 +10,9 @@ namespace cutcell::view3d {
 
 namespace {
 
-// Depths (world y, mm) of the planes the parts move in.
-constexpr double kCrankY = -28, kRockerY = 0, kLinkY = 28, kGuideY = 52;
+// Depths (world y, mm) of the planes the parts move in; the views look from -y, so the frame
+// stands behind the moving parts and the link, the slider and the work are in front.
+constexpr double kCrankY = 28, kRockerY = 0, kLinkY = -28, kFrameY = 75;
 
 Vec3 world(const std::array<double, 2>& p, double depth) {
     return {p[0] * 1000, depth, p[1] * 1000};
@@ -60,27 +61,30 @@ SceneModel buildQuickReturnScene(const Job& job) {
         const Vec3 s = world(p.slider, kLinkY);
         const double railTop = top + 60, railBottom = bottom - 60;
         std::vector<LinkagePiece> out;
-        // Frame: the bearings' pedestals down to the floor, the slider's guide rail.
-        out.push_back(block({o2.x(), kCrankY - 40, (o2.z() + floor) / 2}, {40, 24, o2.z() - floor},
+        // Frame: the bearings' pedestals and the slider's guide rail on its column, behind.
+        out.push_back(block({o2.x(), kFrameY, (o2.z() + floor) / 2}, {44, 24, o2.z() - floor},
                             LinkagePiece::Frame));
-        out.push_back(block({o3.x(), kRockerY - 60, (o3.z() + floor) / 2}, {40, 24, o3.z() - floor},
+        out.push_back(block({o3.x(), kFrameY, (o3.z() + floor) / 2}, {44, 24, o3.z() - floor},
                             LinkagePiece::Frame));
         out.push_back(
-            bar({dxMm, kGuideY, railBottom}, {dxMm, kGuideY, railTop}, 7, LinkagePiece::Frame));
-        out.push_back(block({dxMm, kGuideY + 20, (railTop + floor) / 2}, {30, 16, railTop - floor},
+            bar({dxMm, kLinkY, railBottom}, {dxMm, kLinkY, railTop}, 7, LinkagePiece::Frame));
+        out.push_back(block({dxMm, kFrameY, (railTop + floor) / 2}, {30, 24, railTop - floor},
                             LinkagePiece::Frame));
+        out.push_back(
+            bar({dxMm, kLinkY, railTop}, {dxMm, kFrameY, railTop}, 7, LinkagePiece::Frame));
+        out.push_back(
+            bar({dxMm, kLinkY, railBottom}, {dxMm, kFrameY, railBottom}, 7, LinkagePiece::Frame));
         // Crank with its pin, rocker with its pins, link.
-        out.push_back(pin(o2, kCrankY - 40, kCrankY + 8, 14));
+        out.push_back(pin(o2, kCrankY - 8, kFrameY, 14));
         out.push_back(bar(o2, a, 9, LinkagePiece::Link));
-        out.push_back(pin(a, kCrankY, kRockerY + 6, 8));
-        out.push_back(pin(o3, kRockerY - 60, kRockerY + 8, 12));
+        out.push_back(pin(a, kRockerY - 6, kCrankY, 8));
+        out.push_back(pin(o3, kRockerY - 8, kFrameY, 12));
         out.push_back(bar(o3, b, 8, LinkagePiece::Link));
         out.push_back(block(world(p.a, kRockerY), {26, 20, 26}, LinkagePiece::Joint)); // pin block
-        out.push_back(pin(b, kRockerY, kLinkY + 6, 7));
-        out.push_back(bar(b, s, 6, LinkagePiece::Link));
+        out.push_back(pin(b, kLinkY - 6, kRockerY, 7));
+        out.push_back(bar(world(p.b, kLinkY), s, 6, LinkagePiece::Link));
         // Slider on the rail, the tool at the workpiece.
-        out.push_back(
-            block({dxMm, (kLinkY + kGuideY) / 2, s.z()}, {46, 46, 60}, LinkagePiece::Link));
+        out.push_back(block({dxMm, kLinkY, s.z()}, {46, 40, 60}, LinkagePiece::Link));
         out.push_back(block({dxMm + side * 42, kLinkY, s.z()}, {40, 12, 12}, LinkagePiece::Tool));
         // Workpiece beside the slider line, over the cut window [y_b, y_a].
         const double lo = std::min(cutA, cutB), hi = std::max(cutA, cutB);
