@@ -19,10 +19,13 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace cutcell {
+
+struct MachinePlan; // core/machine/machine_module.h
 
 struct PlannedPoint {
     double t_s = 0;
@@ -47,6 +50,9 @@ struct CutPlan {
     std::string problem; // one sentence naming the point, the joint and the limit
     double max_deviation_deg = 0;
     bool cancelled = false;
+    // A machine planned by its MachineModule (the GUI's ModulePlannedMachineUi): the module's
+    // plan with its program; the fields above then carry only reachable, problem, cut_time_s.
+    std::shared_ptr<const MachinePlan> machine_plan;
 };
 
 // Arc length travelled at time t for the speed profile (cosine ramps, cruise in between).

@@ -40,6 +40,27 @@ TEST(QuickReturnMechanism, ForwardKinematicsSatisfiesTheLoopEquations) {
     }
 }
 
+// The drawn joints (3D view, SVG): the crank pin A on the rocker between O3 and B, |O3 B| =
+// r3 + AB, the link |B S| = r4, the slider on the line x = dx at the pose's y.
+TEST(QuickReturnMechanism, MechanismPointsAreALinkageOfTheGivenLengths) {
+    const WhitworthDims d;
+    const auto dist = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+        return std::hypot(b[0] - a[0], b[1] - a[1]);
+    };
+    for (int i = 0; i < 72; ++i) {
+        const double q = -kPi + 2 * kPi * i / 72;
+        const WhitworthPoints p = mechanismPoints(d, q);
+        const WhitworthPose pose = forwardKinematics(d, q);
+        ASSERT_TRUE(p.closes);
+        EXPECT_NEAR(dist(p.o2, p.a), d.r2, 1e-12);
+        EXPECT_NEAR(dist(p.o3, p.a) + dist(p.a, p.b), dist(p.o3, p.b), 1e-12); // A on O3-B
+        EXPECT_NEAR(dist(p.a, p.b), d.ab, 1e-12);
+        EXPECT_NEAR(dist(p.b, p.slider), d.r4, 1e-12);
+        EXPECT_EQ(p.slider[0], d.dx);
+        EXPECT_EQ(p.slider[1], pose.y);
+    }
+}
+
 TEST(QuickReturnMechanism, JacobianRowsMatchFiniteDifferencesAndPrintedRow4IsTheTypo) {
     const WhitworthDims d;
     int row4Wrong = 0;

@@ -11,8 +11,12 @@ set(CUTCELL_MACHINE_UI_SOURCES
   ${_m}/profile_cutter_2axis/profile_cutter_ui.cpp
   ${_m}/profile_cutter_2axis/profile_cutter_plan.cpp
   ${_m}/profile_cutter_2axis/profile_cutter_form.cpp
+  ${_m}/quick_return_cutter/quick_return_ui.cpp
+  ${_m}/quick_return_cutter/quick_return_form.cpp
+  ${_m}/quick_return_cutter/quick_return_figures.cpp
 )
 # Scenes for the 3D view (plain data, built only with CutCell::view3d).
 set(CUTCELL_MACHINE_UI_VIEW3D_SOURCES
   ${_m}/profile_cutter_2axis/profile_scene.cpp
+  ${_m}/quick_return_cutter/quick_return_scene.cpp
 )

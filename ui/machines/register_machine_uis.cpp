@@ -2,12 +2,14 @@
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
+#include "ui/machines/quick_return_cutter/quick_return_ui.h"
 
 namespace CutCell::ui {
 
 void registerMachineUis(MachineUiRegistry& registry) {
     registry.add(std::make_unique<PipeRobotUi>());
     registry.add(std::make_unique<ProfileCutterUi>());
+    registry.add(std::make_unique<QuickReturnUi>());
 }
 
 } // namespace CutCell::ui

@@ -147,6 +147,53 @@ void CellScene::Impl::build() {
     workLocal.clear();
     arm.clear();
     fixedActors.clear();
+    linkageActors.clear();
+    pipe = path = doneActor = unreachableActor = stopMark = nullptr;
+    torchBody = nozzle = flame = carriage = direction = nullptr;
+    donePoly = nullptr;
+    donePts = nullptr;
+    drawnIndex.clear();
+    if (model.linkage)
+        buildLinkage();
+    else
+        buildPipeCell();
+    buildFloorAndTexts();
+}
+
+void CellScene::Impl::buildLinkage() {
+    const std::vector<LinkagePiece> pieces = model.linkage(model.homeQ);
+    vtkSmartPointer<vtkPolyData> unitBar = makeFrustum(1, 1, 0, 1, 24, true);
+    vtkSmartPointer<vtkPolyData> unitBlock = makeBox(1, 1, 1);
+    for (const LinkagePiece& p : pieces) {
+        const Rgb c = p.colour == LinkagePiece::Frame   ? colours::kMachine
+                      : p.colour == LinkagePiece::Joint ? colours::kArmJoint
+                      : p.colour == LinkagePiece::Work  ? colours::kPipe
+                      : p.colour == LinkagePiece::Tool  ? colours::kTorchBody
+                                                        : colours::kArmLink;
+        auto a = makeActor(p.kind == LinkagePiece::Bar ? unitBar : unitBlock, c);
+        renderer->AddActor(a);
+        linkageActors.push_back(a);
+    }
+    placeLinkage();
+}
+
+void CellScene::Impl::placeLinkage() {
+    const std::vector<LinkagePiece> pieces = model.linkage(q);
+    for (size_t i = 0; i < std::min(pieces.size(), linkageActors.size()); ++i) {
+        const LinkagePiece& p = pieces[i];
+        if (p.kind == LinkagePiece::Bar) {
+            if ((p.b - p.a).norm() > 1e-9)
+                setPose(linkageActors[i], segmentMatrix(p.a, p.b, p.radius_mm));
+            continue;
+        }
+        Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+        m.diagonal().head<3>() = p.b.cwiseMax(1e-3);
+        m.block<3, 1>(0, 3) = p.a;
+        setPose(linkageActors[i], m);
+    }
+}
+
+void CellScene::Impl::buildPipeCell() {
     const SceneModel& m = model;
     const auto addWork = [&](vtkSmartPointer<vtkActor> a, const Eigen::Matrix4d& local) {
         renderer->AddActor(a);
@@ -343,7 +390,10 @@ void CellScene::Impl::build() {
     direction = makeActor(makeFrustum(1, 0, 0, 1, 24, true), colours::kDirection);
     direction->GetProperty()->SetAmbient(0.5);
     renderer->AddActor(direction);
+}
 
+void CellScene::Impl::buildFloorAndTexts() {
+    const SceneModel& m = model;
     // Floor grid and axes triad around what is drawn.
     double b[6];
     renderer->ComputeVisiblePropBounds(b);
@@ -382,6 +432,10 @@ void CellScene::Impl::build() {
 }
 
 void CellScene::Impl::place() {
+    if (model.linkage) {
+        placeLinkage();
+        return;
+    }
     const Pose work = model.baseFromWork(q);
     for (size_t i = 0; i < workActors.size(); ++i)
         setPose(workActors[i], work.matrix() * workLocal[i]);
@@ -428,7 +482,7 @@ void CellScene::Impl::place() {
 }
 
 void CellScene::Impl::updateDone(int count) {
-    if (count == done) return;
+    if (count == done || !donePoly) return;
     done = count;
     vtkNew<vtkCellArray> lines;
     if (count >= 2) {
@@ -464,7 +518,9 @@ void CellScene::Impl::updateStatus() {
     if (key == statusKey) return;
     statusKey = key;
     char buf[200];
-    if (unreachable > 0)
+    if (model.linkage) // no planned path: the machine follows a control law
+        std::snprintf(buf, sizeof buf, "progress %d %%", percent);
+    else if (unreachable > 0)
         std::snprintf(buf, sizeof buf,
                       "progress %d %%   torch %s   %d path points NOT reachable (red)", percent,
                       torchOn ? "ON" : "off", unreachable);

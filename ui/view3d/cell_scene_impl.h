@@ -57,7 +57,14 @@ struct CellScene::Impl {
     std::vector<vtkSmartPointer<vtkActor>> fixedActors;
     vtkSmartPointer<vtkTextActor> title, status;
 
+    // Linkage machines (SceneModel::linkage): one actor per piece.
+    std::vector<vtkSmartPointer<vtkActor>> linkageActors;
+
     void build();
+    void buildPipeCell();
+    void buildLinkage();
+    void placeLinkage();
+    void buildFloorAndTexts();
     void place();
     void updateDone(int count);
     void placeStopMark();

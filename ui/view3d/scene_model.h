@@ -17,6 +17,7 @@
 #include "core/kinematics/dh_chain.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,15 @@ struct PipeShape {
     double radius_mm = 0; // outer
     double wall_mm = 0;
     double length_mm = 0;
+};
+
+// A rigid piece of a machine drawn as a linkage (SceneModel::linkage), in the world (mm): a bar
+// (a cylinder from `a` to `b`) or an axis-aligned block (centre `a`, edge lengths `b`).
+struct LinkagePiece {
+    enum Kind { Bar, Block } kind = Bar;
+    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+    double radius_mm = 10; // Bar
+    enum Colour { Frame, Link, Joint, Work, Tool } colour = Link;
 };
 
 struct SceneModel {
@@ -66,6 +76,11 @@ struct SceneModel {
     Vec3 carriageOrigin = Vec3::Zero();
     Vec3 carriageDirection = Vec3::UnitX();
     Vec3 carriageApproach = -Vec3::UnitZ();
+
+    // A machine that is a planar linkage (the quick-return cutter): its pieces as a function
+    // of the joint vector, computed by the machine's forward kinematics. When set, the view
+    // draws these pieces (the same count for every q) instead of the pipe, path and tool.
+    std::function<std::vector<LinkagePiece>(const JointVector&)> linkage;
 
     // Where to put the floor (world z) and the default joint vector (first path point).
     double floorZ_mm = 0;

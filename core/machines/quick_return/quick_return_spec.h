@@ -16,6 +16,8 @@
 //                ffc { wn2, xi }, lqt { q1, q2, r }, smc { c, eta, phi },
 //                osmc { q11, q12, q22, lambda, k1, k2 } }
 #include "core/job/job.h"
+#include "core/job/job_io.h"
+#include "core/json/json.h"
 #include "core/job/machine_spec.h"
 #include "core/machines/quick_return/experiments.h"
 

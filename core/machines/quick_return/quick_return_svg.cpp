@@ -59,12 +59,11 @@ void range(const std::vector<double>& v, double* lo, double* hi) {
 }
 
 std::string mechanism(const Panel& p, const WhitworthDims& d, double q, const char* color) {
-    const WhitworthPose pose = forwardKinematics(d, q);
-    if (!pose.closes) return {};
-    const double ax = d.r2 * std::cos(q), ay = d.r2 * std::sin(q);
-    const double bx = d.o3x + (pose.r3 + d.ab) * std::cos(pose.theta3);
-    const double by = d.o3y + (pose.r3 + d.ab) * std::sin(pose.theta3);
-    const double sx = d.dx, sy = pose.y;
+    const WhitworthPoints pts = mechanismPoints(d, q);
+    if (!pts.closes) return {};
+    const double ax = pts.a[0], ay = pts.a[1];
+    const double bx = pts.b[0], by = pts.b[1];
+    const double sx = pts.slider[0], sy = pts.slider[1];
     std::string s;
     s += polyline(p, {0, ax}, {0, ay}, color, 3);         // crank
     s += polyline(p, {d.o3x, bx}, {d.o3y, by}, color, 2); // rocker

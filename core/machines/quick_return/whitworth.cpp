@@ -68,6 +68,19 @@ WhitworthPose forwardKinematics(const WhitworthDims& d, double q) {
     return p;
 }
 
+WhitworthPoints mechanismPoints(const WhitworthDims& d, double q) {
+    const WhitworthPose pose = forwardKinematics(d, q);
+    WhitworthPoints p;
+    p.closes = pose.closes;
+    p.o2 = {0, 0};
+    p.a = {d.r2 * std::cos(q), d.r2 * std::sin(q)};
+    p.o3 = {d.o3x, d.o3y};
+    p.b = {d.o3x + (pose.r3 + d.ab) * std::cos(pose.theta3),
+           d.o3y + (pose.r3 + d.ab) * std::sin(pose.theta3)};
+    p.slider = {d.dx, pose.y};
+    return p;
+}
+
 std::array<double, 5> extendedJacobian(const WhitworthDims& d, double q, const WhitworthPose& p) {
     const double r2 = d.r2, ab = d.ab, r3 = p.r3, t3 = p.theta3, t4 = p.theta4;
     const double s4 = std::sin(t4);

@@ -40,6 +40,15 @@ struct WhitworthPose {
 // B.2 with the branch above. `closes` false when |c| > 1 (theta4, y then meaningless).
 WhitworthPose forwardKinematics(const WhitworthDims& d, double q);
 
+// The joints of the mechanism at crank angle q in the crank frame (m), from B.2: the crank
+// pivot O2, the crank pin A, the rocker pivot O3, the rocker's end B and the slider's point on
+// the line x = dx. For drawings (the GUI's 3D view, the SVG figures). closes as the pose's.
+struct WhitworthPoints {
+    bool closes = false;
+    std::array<double, 2> o2{}, a{}, o3{}, b{}, slider{};
+};
+WhitworthPoints mechanismPoints(const WhitworthDims& d, double q);
+
 // B.3: rho = d(q, r3, theta3, theta4, y)/dq at a closed pose, corrected (row 4 divides by
 // r4, not r2). Rows 4 and 5 are infinite where sin theta4 = 0 (the link horizontal).
 std::array<double, 5> extendedJacobian(const WhitworthDims& d, double q, const WhitworthPose& p);

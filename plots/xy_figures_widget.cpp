@@ -1,0 +1,90 @@
+#include "plots/xy_figures_widget.h"
+
+#include <qcustomplot.h>
+
+#include <QBoxLayout>
+
+#include <cmath>
+#include <limits>
+
+namespace cutcell::plots {
+
+struct XyFiguresWidget::Impl {
+    std::vector<QCustomPlot*> plots;
+    std::vector<QCPTextElement*> titles;
+    std::vector<int> points;
+};
+
+XyFiguresWidget::XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent)
+    : QWidget(parent), d(std::make_unique<Impl>()) {
+    auto* row = new QBoxLayout(
+        orientation == Qt::Horizontal ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom, this);
+    row->setContentsMargins(0, 0, 0, 0);
+    for (int i = 0; i < panels; ++i) {
+        auto* p = new QCustomPlot(this);
+        p->setMinimumSize(220, 230);
+        p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        p->plotLayout()->insertRow(0);
+        auto* title = new QCPTextElement(p, QString(), QFont(font().family(), 9, QFont::Bold));
+        p->plotLayout()->addElement(0, 0, title);
+        p->legend->setVisible(true);
+        p->legend->setFont(QFont(font().family(), 8));
+        p->legend->setBrush(QColor(255, 255, 255, 200));
+        row->addWidget(p, 1);
+        d->plots.push_back(p);
+        d->titles.push_back(title);
+        d->points.push_back(0);
+    }
+}
+
+XyFiguresWidget::~XyFiguresWidget() = default;
+
+int XyFiguresWidget::panelCount() const {
+    return static_cast<int>(d->plots.size());
+}
+
+void XyFiguresWidget::setPanel(int panel, const QString& title, const QString& xLabel,
+                               const QString& yLabel) {
+    QCustomPlot* p = d->plots.at(static_cast<size_t>(panel));
+    d->titles[static_cast<size_t>(panel)]->setText(title);
+    p->xAxis->setLabel(xLabel);
+    p->yAxis->setLabel(yLabel);
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void XyFiguresWidget::setCurves(int panel, const std::vector<XyCurve>& curves) {
+    QCustomPlot* p = d->plots.at(static_cast<size_t>(panel));
+    p->clearPlottables();
+    int points = 0;
+    for (const XyCurve& c : curves) {
+        auto* curve = new QCPCurve(p->xAxis, p->yAxis);
+        curve->setName(c.name);
+        QPen pen(c.colour, 1.6);
+        if (c.dashed) pen.setStyle(Qt::DashLine);
+        curve->setPen(pen);
+        QVector<double> t, x, y;
+        const int n = static_cast<int>(std::min(c.x.size(), c.y.size()));
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (int i = 0; i < n; ++i) {
+            const bool ok = std::isfinite(c.x[i]) && std::isfinite(c.y[i]);
+            t.push_back(i);
+            x.push_back(ok ? c.x[i] : nan); // QCustomPlot leaves a gap at NaN
+            y.push_back(ok ? c.y[i] : nan);
+            points += ok ? 1 : 0;
+        }
+        curve->setData(t, x, y, true);
+    }
+    d->points[static_cast<size_t>(panel)] = points;
+    p->rescaleAxes();
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int XyFiguresWidget::curveCount(int panel) const {
+    return d->plots.at(static_cast<size_t>(panel))->plottableCount();
+}
+
+int XyFiguresWidget::pointCount(int panel) const {
+    return d->points.at(static_cast<size_t>(panel));
+}
+
+} // namespace cutcell::plots

@@ -1,0 +1,66 @@
+#include "ui/machines/quick_return_cutter/quick_return_ui.h"
+
+#include "ui/machines/quick_return_cutter/quick_return_form.h"
+
+#include <QObject>
+
+#ifdef CUTCELL_HAVE_PLOTS
+#include "ui/machines/quick_return_cutter/quick_return_figures.h"
+#endif
+#ifdef CUTCELL_HAVE_VIEW3D
+#include "ui/machines/quick_return_cutter/quick_return_scene.h"
+#endif
+
+namespace CutCell::ui {
+
+QString QuickReturnUi::title() const {
+    return QObject::tr("Quick-return (Whitworth) cutter: crank in torque mode");
+}
+
+std::vector<FormPage> QuickReturnUi::formPages() const {
+    std::vector<FormPage> pages{
+        {QObject::tr("Mechanism"),
+         [](JobEditor* e) -> JobForm* { return new QuickReturnMechanismForm(e); }},
+        {QObject::tr("Controller"),
+         [](JobEditor* e) -> JobForm* { return new QuickReturnControllerForm(e); }}};
+#ifdef CUTCELL_HAVE_PLOTS
+    pages.push_back({QObject::tr("Cut figures"),
+                     [](JobEditor* e) -> JobForm* { return new QuickReturnFiguresForm(e); }});
+#endif
+    return pages;
+}
+
+std::vector<std::pair<std::string, QString>> QuickReturnUi::unusedCommonFields() const {
+    const QString why =
+        QObject::tr("The quick-return cutter planes a flat workpiece along its stroke: no pipes, "
+                    "its cut is set on the Mechanism page.");
+    std::vector<std::pair<std::string, QString>> out;
+    for (const char* pipe : {"main_pipe", "branch_pipe"})
+        for (const char* field : {".radius_mm", ".wall_mm", ".length_mm"})
+            out.push_back({std::string(pipe) + field, why});
+    for (const char* key :
+         {"angle_deg", "eccentricity_mm", "cut.target", "cut.bevel_deg", "cut.speed_mm_s",
+          "cut.ramp_s", "cut.knot_spacing_mm", "cut.max_direction_deviation_deg",
+          "cut.start_phi_auto", "cut.start_phi_deg"})
+        out.push_back({key, why});
+    return out;
+}
+
+bool QuickReturnUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan&,
+                               cutcell::view3d::SceneModel* out, QString* why) const {
+#ifdef CUTCELL_HAVE_VIEW3D
+    try {
+        *out = cutcell::view3d::buildQuickReturnScene(job);
+        return true;
+    } catch (const std::exception& e) {
+        if (why) *why = QString::fromUtf8(e.what());
+        return false;
+    }
+#else
+    (void)job, (void)out;
+    if (why) *why = QObject::tr("3D view not built in this configuration.");
+    return false;
+#endif
+}
+
+} // namespace CutCell::ui
