@@ -188,7 +188,7 @@ TEST(SawCam, SharpRectangleFollowsSeedEquationsFourteenToSeventeenInTheirSegment
 
 FlyingSawSpec testSpec() {
     FlyingSawSpec s;
-    s.queue = {{3000, 12}};
+    s.queue = {{4000, 12}};
     s.line_sim.step_interval_s = 6;
     return s;
 }
@@ -227,7 +227,7 @@ TEST(SawPlan, StrokeTooShortAndUnreachableSpeedAreRefusedWithTheFigures) {
 
 TEST(SawSimulation, SyncInAtTheCommandedMasterPosition) {
     FlyingSawSpec s = testSpec();
-    s.queue = {{3000, 2}};
+    s.queue = {{4000, 2}};
     s.first_sync_master_mm = 1234.5; // MC_GearInPos: S_0 in master mm (the line starts at 0)
     const FlyingSawPlan plan = planFlyingSaw(s);
     ASSERT_TRUE(plan.ok) << plan.problem;
@@ -303,17 +303,17 @@ TEST(SawSimulation, SetPointHasNoJumpInVelocityOrAccelerationOverAWholeCycle) {
 
 TEST(SawSimulation, AChangedQueueAppliesFromTheNextPiece) {
     FlyingSawSpec s = testSpec();
-    s.queue = {{3000, 8}};
+    s.queue = {{4000, 8}};
     const FlyingSawPlan plan = planFlyingSaw(s);
     ASSERT_TRUE(plan.ok) << plan.problem;
     SawSimOptions o;
     int publishedDuringCut = -1;
     o.each_cycle = [&](double, FlyingSawSource& src) {
-        // While cut 3 (the end of piece 3) is in the wall: from now on, 2500 mm pieces, 3 of them.
+        // While cut 3 (the end of piece 3) is in the wall: from now on, 3500 mm pieces, 3 of them.
         if (publishedDuringCut < 0 && src.cutIndex() == 3 && src.bladeInWall()) {
             PieceQueue* q = src.queue().beginWrite();
             ASSERT_NE(q, nullptr);
-            q->entries[0] = {2500, 3};
+            q->entries[0] = {3500, 3};
             q->size = 1;
             src.queue().publish();
             publishedDuringCut = src.cutIndex();
@@ -324,7 +324,7 @@ TEST(SawSimulation, AChangedQueueAppliesFromTheNextPiece) {
     ASSERT_EQ(publishedDuringCut, 3);
     ASSERT_EQ(r.pieces.size(), 6u); // 3 of the first queue, then the 3 of the new one
     for (const PieceRecord& p : r.pieces) {
-        EXPECT_EQ(p.ordered_mm, p.piece <= 3 ? 3000 : 2500) << "piece " << p.piece;
+        EXPECT_EQ(p.ordered_mm, p.piece <= 3 ? 4000 : 3500) << "piece " << p.piece;
         EXPECT_NEAR(p.length_mm, p.ordered_mm, 0.5) << "piece " << p.piece;
     }
 }

@@ -60,6 +60,17 @@ FlyingSawPlan planFlyingSaw(const FlyingSawSpec& spec) {
         return p;
     }
     p.cam_max_between_points_mm = camBetweenPoints(p.saw);
+    {
+        const CamTable& t = p.saw.cam;
+        const int n = t.count - 1;
+        const double h = t.period / n, w = deg2rad(spec.saw.turntable_deg_s);
+        for (int i = 0; i < n; ++i) {
+            const auto y = [&](int k) { return t.slave[static_cast<size_t>(((k % n) + n) % n)]; };
+            p.feed_accel_peak_mm_s2 =
+                std::max(p.feed_accel_peak_mm_s2,
+                         std::fabs(y(i + 1) - 2 * y(i) + y(i - 1)) / (h * h) * w * w);
+        }
+    }
     const double T2 = p.saw.duration();
     p.T1 = p.forward.d1 / V;
     p.T2 = T2;
@@ -78,7 +89,8 @@ FlyingSawPlan planFlyingSaw(const FlyingSawSpec& spec) {
     }
     p.forward_travel_mm = p.forward.d1 / 2 + V * T2 + p.forward.d3 / 2;
     p.reverse = fastestReverse(p.stroke_needed_mm, lim);
-    const ReverseProfile nominalReverse = fastestReverse(p.forward_travel_mm, lim);
+    p.nominal_reverse = fastestReverse(p.forward_travel_mm, lim);
+    const ReverseProfile& nominalReverse = p.nominal_reverse;
     p.T4 = p.T6 = nominalReverse.ta;
     p.T5 = nominalReverse.ts;
     p.k = nominalReverse.v / V;

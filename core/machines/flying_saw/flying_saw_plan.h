@@ -25,9 +25,13 @@ struct FlyingSawPlan {
     double stroke_needed_mm = 0;          // at the highest line speed
     double forward_travel_mm = 0;         // at the nominal line speed
     ReverseProfile reverse;               // at the highest line speed's forward travel
+    ReverseProfile nominal_reverse;       // at the nominal line speed's forward travel
     double shortest_length_mm = 0;        // shortest piece at the highest line speed
     double cycle_time_s = 0;              // sync-in to back at rest (nominal speed)
     double cam_max_between_points_mm = 0; // blade tip off the outline between table points
+    // Peak radial-feed acceleration the cam asks for at the turntable's full speed (the feed
+    // follows corners: d2 feed / d theta2 * omega^2; a sharp inner corner makes it large).
+    double feed_accel_peak_mm_s2 = 0;
 };
 
 // The tube's outer outline in the cut plane.

@@ -62,7 +62,7 @@ struct FlyingSawSpec : MachineSpecOf<FlyingSawSpec> {
     bool gauge_enabled = true;
     int gauge_delay_pieces = 1;
     double gauge_noise_mm = 0.02;
-    double gauge_gain = 1;
+    double gauge_gain = 0.5;
     LineSimSpec line_sim;
 
     double lineSpeedMmS() const { return line_speed_m_min * 1000.0 / 60.0; }

@@ -21,13 +21,13 @@ namespace cutcell {
 
 struct SawSettings {
     double settle_s = 0.1;          // C -> D: stabilisation in sync before the saw moves
-    double fast_feed_mm_s = 400;    // radial feed speed in air
+    double fast_feed_mm_s = 150;    // radial feed speed in air
     double slow_feed_mm_s = 40;     // through the wall
     double approach_gap_mm = 2;     // fast feed stops this far outside the outline
     double overcut_mm = 1;          // the tip goes this far past the bore
     double clearance_mm = 5;        // retracted tip outside the outline's largest radius
     double retract_mm_s = 400;      // radial retract speed
-    double turntable_deg_s = 360;   // turntable speed during the half turn
+    double turntable_deg_s = 180;   // turntable speed during the half turn
     double turntable_deg_s2 = 3600; // its acceleration limit
     int table_points = 900;         // cam table intervals per 180 deg (the seed's 900)
 };
