@@ -4,6 +4,9 @@
 // their figures, and the offline simulation (sync-in at the commanded master position, the
 // queue, slip correction by the length gauge, the cut-length figures).
 #include "core/common/types.h"
+#include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
+#include "core/machines/flying_saw/flying_saw_module.h"
 #include "core/machines/flying_saw/flying_saw_plan.h"
 #include "core/machines/flying_saw/saw_cycle.h"
 #include "core/machines/flying_saw/saw_simulation.h"
@@ -12,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -381,6 +385,92 @@ TEST(SawSimulation, CpkFollowsItsDefinition) {
     EXPECT_DOUBLE_EQ(st.std, sd);
     EXPECT_DOUBLE_EQ(st.max_abs, 0.3);
     EXPECT_NEAR(st.cpk, (1.0 - 0.05) / (3 * sd), 1e-12);
+}
+
+} // namespace
+} // namespace cutcell::test
+
+namespace cutcell::test {
+namespace {
+
+// ---- the module: job section, refusals, exports ----------------------------------------------
+
+const MachineModule& sawModule() {
+    const MachineModule* m = findMachine(kFlyingSawId);
+    EXPECT_NE(m, nullptr);
+    return *m;
+}
+
+TEST(SawModule, JobRoundTripWriteReadKeepsEveryKey) {
+    Job job = sawModule().defaultJob();
+    FlyingSawSpec& s = *job.machine_spec.as<FlyingSawSpec>();
+    s.shape = TubeShape::Round;
+    s.diameter_mm = 48.3;
+    s.queue = {{6000, 3}, {4500.5, 7}};
+    s.first_sync_master_mm = 1500;
+    s.saw.table_points = 720;
+    s.line_sim.slip_fraction = 0.002;
+    s.gauge_enabled = false;
+    const std::string text = json::write(jobToJson(job));
+    const Job back = parseJob(text);
+    EXPECT_EQ(json::write(jobToJson(back)), text);
+    const FlyingSawSpec* b = back.machine_spec.as<FlyingSawSpec>();
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->shape, TubeShape::Round);
+    EXPECT_EQ(b->queue.size(), 2u);
+    EXPECT_EQ(b->queue[1].length_mm, 4500.5);
+    EXPECT_EQ(b->first_sync_master_mm, 1500);
+    EXPECT_TRUE(validateJob(back).empty()) << validateJob(back)[0].message;
+}
+
+TEST(SawModule, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
+    const std::string good = json::write(jobToJson(sawModule().defaultJob()));
+    std::string bad = good;
+    bad.replace(bad.find("\"overcut_mm\""), 12, "\"overcut_mmm\"");
+    try {
+        parseJob(bad);
+        FAIL() << "unknown key accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("machine.saw.overcut_mmm"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("overcut_mm\""), std::string::npos) << e.what();
+    }
+    Job job = sawModule().defaultJob();
+    job.machine_spec.as<FlyingSawSpec>()->line_speed_m_min = 900;
+    const auto issues = validateJob(job);
+    ASSERT_FALSE(issues.empty());
+    EXPECT_NE(issues[0].message.find("machine.line.speed_m_min = 900 m/min is outside [0.1, 300]"),
+              std::string::npos)
+        << issues[0].message;
+}
+
+TEST(SawModule, PlanRefusesWithTheFiguresAndExportsTheCamTable) {
+    Job job = sawModule().defaultJob();
+    MachinePlan plan = sawModule().plan(job, {});
+    ASSERT_TRUE(plan.ok()) << plan.problem;
+    ASSERT_TRUE(plan.program);
+    EXPECT_EQ(plan.program->source_kind, MotionSourceKind::MasterAxis);
+    const std::string csv = sawModule().exportFile("cam_csv", job, plan);
+    EXPECT_EQ(csv.rfind("index,theta_deg,feed_mm,feed_blade2_mm,tip_radius_mm\n", 0), 0u);
+    // 901 rows of five fields (a decimal comma would add fields), angles 0 .. 180 deg.
+    int lines = 0, badRows = 0;
+    size_t from = csv.find('\n') + 1;
+    while (from < csv.size()) {
+        const size_t end = csv.find('\n', from);
+        const std::string row = csv.substr(from, end - from);
+        badRows += std::count(row.begin(), row.end(), ',') != 4;
+        ++lines;
+        from = end + 1;
+    }
+    EXPECT_EQ(lines, 901);
+    EXPECT_EQ(badRows, 0);
+    EXPECT_NE(csv.find("\n900,180,"), std::string::npos);
+    job.machine_spec.as<FlyingSawSpec>()->queue = {{500, 2}};
+    plan = sawModule().plan(job, {});
+    EXPECT_FALSE(plan.ok());
+    EXPECT_NE(plan.problem.find("machine.cut.queue[0].length_mm = 500 mm is too short"),
+              std::string::npos)
+        << plan.problem;
 }
 
 } // namespace
