@@ -104,7 +104,7 @@ std::vector<ExportInfo> FlyingSawModule::exports() const {
     return {
         {"cam_csv", "saw cam table: turntable angle, feed (CSV)", "cam.csv", true, false},
         {"cycle_csv", "carriage cycle s, v, a with the periods (CSV)", "cycle.csv", true, false},
-        {"pieces_csv", "simulated cut length of every piece (CSV)", "pieces.csv", false, false}};
+        {"pieces_csv", "simulated cut length of every piece (CSV)", "pieces.csv", true, false}};
 }
 
 std::string FlyingSawModule::exportFile(const std::string& exportId, const Job&,
