@@ -36,7 +36,13 @@ std::vector<AxisInfo> FlyingSawModule::axes(const Job& job) const {
 }
 
 Job FlyingSawModule::defaultJob() const {
-    Job job = cutcell::defaultJob(); // the common part (sim, engine, devices)
+    // Only the common part (sim, engine, devices) of the built-in job: none of the pipe
+    // robot's fields, which this machine's section neither reads nor writes.
+    const Job common = cutcell::defaultJob();
+    Job job;
+    job.sim = common.sim;
+    job.engine = common.engine;
+    job.devices = common.devices;
     job.machine = kFlyingSawId;
     job.name = "New flying saw job";
     job.description = "Square tube 60 x 60 x 2 mm (corner radius 4 mm), 6 m pieces at 60 m/min";
