@@ -236,7 +236,7 @@ TEST(SawSimulation, SyncInAtTheCommandedMasterPosition) {
     const FlyingSawPlan plan = planFlyingSaw(s);
     ASSERT_TRUE(plan.ok) << plan.problem;
     const double xSync = s.wait_position_mm + plan.forward.d1 / 2;
-    double masterAtSync = -1, spAtSync = 0, tAtSync = 0;
+    double masterAtSync = -1, tAtSync = 0;
     SawPhase prev = SawPhase::Waiting;
     SawSimOptions o;
     o.each_cycle = [&](double t, FlyingSawSource& src) {
@@ -246,7 +246,6 @@ TEST(SawSimulation, SyncInAtTheCommandedMasterPosition) {
         }
         prev = src.phase();
     };
-    o.record_cycle = false;
     const SawSimResult r = simulateFlyingSaw(s, plan, o);
     ASSERT_TRUE(r.completed) << r.problem;
     EXPECT_EQ(r.first_sync_master_mm, 1234.5);
@@ -255,7 +254,6 @@ TEST(SawSimulation, SyncInAtTheCommandedMasterPosition) {
     EXPECT_GE(masterAtSync, 1234.5);
     EXPECT_LE(masterAtSync - 1234.5, 1.03 + 0.05);
     EXPECT_GT(tAtSync, 1.0);
-    (void)spAtSync;
     // While in sync, the set-point is x_sync + (line - S_k) for the true line, within the
     // encoder's quantisation (0.025 mm) and the filter's lag on the speed changes.
     EXPECT_LT(r.max_sync_error_mm, 0.1);
