@@ -11,6 +11,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
+#include "core/machine/machine_registry.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
@@ -83,6 +84,8 @@ int runBench(const BenchOptions& o) {
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
     benchQuickReturn(out);
+    for (const MachineModule* m : machines())
+        m->addBenchFigures(quick, out);
 #ifdef CUTCELL_HAVE_DEVICES
     if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif

@@ -118,6 +118,12 @@ class MachineModule {
     // terminal; false + *why when the machine has none (it runs in the engine only).
     virtual bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                std::string* text, std::string* why) const;
+    // The machine's own figures for `cutcell-cli bench` (printed, never asserted), keys
+    // prefixed by the machine; none by default.
+    virtual void addBenchFigures(bool quick, json::Object& out) const {
+        (void)quick;
+        (void)out;
+    }
     // The report of an engine run (`cutcell-cli run`, the GUI's run) in the machine's units.
     virtual json::Value runReport(const Job& job, const MachinePlan& plan,
                                   const TrackingReport& report) const = 0;

@@ -1,6 +1,7 @@
 #include "devices/machines/sim_rig_registry.h"
 
 #include "core/machine/machine_registry.h"
+#include "core/machines/flying_saw/flying_saw_module.h"
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "core/machines/profile_cutter/profile_cutter_module.h"
 #include "core/machines/quick_return/quick_return_spec.h"
@@ -19,6 +20,7 @@ const struct {
     {kPipeRobotId, makePipeRobotSimRig},
     {kProfileCutterId, makeProfileCutterSimRig},
     {kQuickReturnId, makeQuickReturnSimRig},
+    {kFlyingSawId, makeFlyingSawSimRig},
 };
 
 } // namespace

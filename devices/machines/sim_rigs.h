@@ -5,6 +5,7 @@
 namespace cutcell {
 
 std::unique_ptr<MachineSimRig> makePipeRobotSimRig(const Job& job, const MotionProgram& program);
+std::unique_ptr<MachineSimRig> makeFlyingSawSimRig(const Job& job, const MotionProgram& program);
 std::unique_ptr<MachineSimRig> makeProfileCutterSimRig(const Job& job,
                                                        const MotionProgram& program);
 std::unique_ptr<MachineSimRig> makeQuickReturnSimRig(const Job& job, const MotionProgram& program);

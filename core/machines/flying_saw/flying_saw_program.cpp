@@ -1,0 +1,81 @@
+#include "core/machines/flying_saw/flying_saw_program.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcell {
+
+FlyingSawConfig sawSourceConfig(const FlyingSawSpec& spec, const FlyingSawPlan& plan) {
+    FlyingSawConfig c;
+    c.master_sensor = 0;
+    c.filter_alpha = spec.filter_alpha;
+    c.forward = plan.forward;
+    c.saw = plan.saw;
+    c.limits = spec.carriage;
+    c.wait_position_mm = spec.wait_position_mm;
+    c.kerf_mm = spec.blade_kerf_mm;
+    c.queue.size = 0;
+    for (const PieceOrder& o : spec.queue) {
+        if (c.queue.size >= PieceQueue::kCapacity) break;
+        c.queue.entries[static_cast<size_t>(c.queue.size++)] = {o.length_mm, o.count};
+    }
+    c.gauge_gain = spec.gauge_gain;
+    c.first_sync = spec.first_sync_master_mm;
+    return c;
+}
+
+std::shared_ptr<MotionProgram> buildFlyingSawProgram(const Job& job, const FlyingSawSpec& spec,
+                                                     const FlyingSawPlan& plan,
+                                                     const std::string& jobText) {
+    auto p = std::make_shared<MotionProgram>();
+    p->method = "flying_saw";
+    p->source_kind = MotionSourceKind::MasterAxis;
+    p->source = std::make_shared<FlyingSawSource>(sawSourceConfig(spec, plan));
+    p->axis_count = 4;
+    p->axis_names = {"carriage", "turntable", "feed 1", "feed 2"};
+    p->axis_linear = {true, false, true, true};
+    p->axis_modes = {AxisCommandMode::Position, AxisCommandMode::Position,
+                     AxisCommandMode::Position, AxisCommandMode::Position};
+    JointVector start = JointVector::Zero();
+    start[0] = spec.wait_position_mm;
+    p->start_position = start;
+    p->reference = start;
+    p->min_position = JointVector::Constant(-1e9);
+    p->max_position = JointVector::Constant(1e9);
+    p->min_position[0] = std::min(0.0, spec.wait_position_mm);
+    p->max_position[0] = spec.stroke_mm;
+    p->min_position[2] = p->min_position[3] = 0;
+    p->max_position[2] = p->max_position[3] = plan.saw.retract_radius;
+    p->sensors_used = 1u;
+    p->uses_tool = true;
+    // The run's length: every piece at the nominal line speed, plus the first sync-in.
+    const double pieces = spec.pieceCount();
+    double metres = 0;
+    for (const PieceOrder& o : spec.queue)
+        metres += o.length_mm * o.count;
+    p->cut_time_s = (metres + plan.forward.d1 * 2) / plan.line_speed_mm_s + plan.cycle_time_s;
+    p->length_mm = metres;
+    p->point_count = static_cast<size_t>(pieces);
+    p->name = job.name;
+    p->source_text = jobText;
+    return p;
+}
+
+PidGains sawAxisGains() {
+    PidGains g;
+    g.kp = 10.8;
+    g.ki = 216;
+    g.kd = 0.175;
+    g.tau_f = 0.002;
+    return g;
+}
+
+JointPlantParams sawAxisPlant() {
+    JointPlantParams p;
+    p.inertia_kg_m2 = 0.001;
+    p.viscous_nm_s_per_rad = 0.005;
+    p.torque_limit_nm = 50;
+    return p;
+}
+
+} // namespace cutcell
