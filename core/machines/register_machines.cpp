@@ -3,12 +3,14 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "core/machines/profile_cutter/profile_cutter_module.h"
+#include "core/machines/section_steel/section_steel_module.h"
 
 namespace cutcell {
 
 void registerMachines() {
     registerMachine(std::make_unique<PipeRobotModule>());
     registerMachine(std::make_unique<ProfileCutterModule>());
+    registerMachine(std::make_unique<SectionSteelModule>());
 }
 
 } // namespace cutcell

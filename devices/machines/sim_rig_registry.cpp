@@ -3,6 +3,7 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "core/machines/profile_cutter/profile_cutter_module.h"
+#include "core/machines/section_steel/section_steel_module.h"
 #include "devices/machines/sim_rigs.h"
 
 namespace cutcell {
@@ -17,6 +18,7 @@ const struct {
 } kRigs[] = {
     {kPipeRobotId, makePipeRobotSimRig},
     {kProfileCutterId, makeProfileCutterSimRig},
+    {kSectionSteelId, makeSectionSteelSimRig},
 };
 
 } // namespace

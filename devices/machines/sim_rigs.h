@@ -7,5 +7,7 @@ namespace cutcell {
 std::unique_ptr<MachineSimRig> makePipeRobotSimRig(const Job& job, const MotionProgram& program);
 std::unique_ptr<MachineSimRig> makeProfileCutterSimRig(const Job& job,
                                                        const MotionProgram& program);
+std::unique_ptr<MachineSimRig> makeSectionSteelSimRig(const Job& job,
+                                                      const MotionProgram& program);
 
 } // namespace cutcell
