@@ -11,6 +11,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
+#include "core/machines/section_steel/section_steel_bench.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 
@@ -81,6 +82,7 @@ int runBench(const BenchOptions& o) {
     out.emplace_back("simulate_seconds", best);
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
+    section_steel::benchSectionSteel(quick, out);
 #ifdef CUTCELL_HAVE_DEVICES
     if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif
