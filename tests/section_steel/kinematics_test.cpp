@@ -130,6 +130,7 @@ TEST(SectionSteelGrooveArm, TableReproducesTheConsistentElementsOfEq1) {
         const SeedEq1 e = seedEq1(q);
         const auto& R = T.linear();
         const Vec3 p = T.translation();
+        EXPECT_NEAR(R(1, 0), e.ny, 1e-12);
         EXPECT_NEAR(R(2, 0), e.nz, 1e-12);
         EXPECT_NEAR(R(2, 1), e.oz, 1e-12);
         EXPECT_NEAR(R(0, 2), e.ax, 1e-12);
