@@ -30,6 +30,12 @@ class SectionSteelModule : public MachineModule {
                            const MachinePlan& plan) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
+    // Arms "path" and "groove" (section_steel_kinematics_json.cpp).
+    bool forwardKinematics(const Job& job, const std::string& arm,
+                           const std::vector<double>& jointsDeg, json::Value* out,
+                           std::string* why) const override;
+    bool inverseKinematics(const Job& job, const std::string& arm, const std::vector<double>& pose,
+                           json::Value* out, std::string* why) const override;
 };
 
 } // namespace cutcell
