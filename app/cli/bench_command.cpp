@@ -13,6 +13,7 @@
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
+#include "core/machines/section_steel/section_steel_bench.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 
@@ -86,6 +87,7 @@ int runBench(const BenchOptions& o) {
     benchQuickReturn(out);
     for (const MachineModule* m : machines())
         m->addBenchFigures(quick, out);
+    section_steel::benchSectionSteel(quick, out);
 #ifdef CUTCELL_HAVE_DEVICES
     if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif

@@ -54,6 +54,13 @@ struct MachinesOptions {
     bool json = false;
 };
 
+// cutcell-cli fk / ik (arm machines): the arm, and the joints (deg) or the torch pose.
+struct KinematicsOptions {
+    std::string job;
+    std::string arm;
+    std::string values; // comma-separated numbers (C locale)
+};
+
 struct UpgradeOptions {
     std::string job; // the old (schema 1) job file
     std::string out; // the schema-2 file, written atomically

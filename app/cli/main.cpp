@@ -28,6 +28,7 @@ struct AllOptions {
     DriveSimOptions drivesim;
     MachinesOptions machines;
     UpgradeOptions upgrade;
+    KinematicsOptions fk, ik;
 };
 
 struct Command {
@@ -129,6 +130,17 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
         add("machines", "list every machine: id, title, axes (unit, limits, command), exports",
             [&] { return runMachines(o.machines); });
     machinesCmd->add_flag("--json", o.machines.json, "print the list as JSON");
+
+    CLI::App* fk = add("fk", "arm machines: torch tip and direction for joint values (JSON)",
+                       [&] { return runFk(o.fk); });
+    addJob(*fk, o.fk.job);
+    fk->add_option("--arm", o.fk.arm, "the machine's arm (section-steel: path | groove)");
+    fk->add_option("--joints", o.fk.values, "joint values in deg, comma-separated")->required();
+    CLI::App* ik = add("ik", "arm machines: every IK branch with its status (JSON)",
+                       [&] { return runIk(o.ik); });
+    addJob(*ik, o.ik.job);
+    ik->add_option("--arm", o.ik.arm, "the machine's arm (section-steel: path | groove)");
+    ik->add_option("--pose", o.ik.values, "x,y,z (mm),tx,ty,tz (torch direction)")->required();
 
     CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
                             [&] { return runUpgrade(o.upgrade); });

@@ -124,6 +124,15 @@ class MachineModule {
         (void)quick;
         (void)out;
     }
+    // Arm machines (`cutcell-cli fk` / `ik`): the torch of one arm for joint values (deg), and
+    // every IK branch (each with its status) for a torch pose {x, y, z mm, tx, ty, tz} in the
+    // machine's frame, as JSON. The default: false + *why "... is not an arm machine".
+    virtual bool forwardKinematics(const Job& job, const std::string& arm,
+                                   const std::vector<double>& jointsDeg, json::Value* out,
+                                   std::string* why) const;
+    virtual bool inverseKinematics(const Job& job, const std::string& arm,
+                                   const std::vector<double>& pose, json::Value* out,
+                                   std::string* why) const;
     // The report of an engine run (`cutcell-cli run`, the GUI's run) in the machine's units.
     virtual json::Value runReport(const Job& job, const MachinePlan& plan,
                                   const TrackingReport& report) const = 0;

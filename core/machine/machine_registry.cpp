@@ -93,4 +93,16 @@ bool MachineModule::offlineReport(const Job&, const MachinePlan&, std::string*, 
     return false;
 }
 
+bool MachineModule::forwardKinematics(const Job&, const std::string&, const std::vector<double>&,
+                                      json::Value*, std::string* why) const {
+    if (why) *why = "machine " + json::quote(id()) + " is not an arm machine (no fk)";
+    return false;
+}
+
+bool MachineModule::inverseKinematics(const Job&, const std::string&, const std::vector<double>&,
+                                      json::Value*, std::string* why) const {
+    if (why) *why = "machine " + json::quote(id()) + " is not an arm machine (no ik)";
+    return false;
+}
+
 } // namespace cutcell

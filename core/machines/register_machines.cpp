@@ -5,6 +5,7 @@
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "core/machines/profile_cutter/profile_cutter_module.h"
 #include "core/machines/quick_return/quick_return_module.h"
+#include "core/machines/section_steel/section_steel_module.h"
 
 namespace cutcell {
 
@@ -13,6 +14,7 @@ void registerMachines() {
     registerMachine(std::make_unique<ProfileCutterModule>());
     registerMachine(std::make_unique<QuickReturnModule>());
     registerMachine(std::make_unique<FlyingSawModule>());
+    registerMachine(std::make_unique<SectionSteelModule>());
 }
 
 } // namespace cutcell

@@ -5,6 +5,7 @@
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "core/machines/profile_cutter/profile_cutter_module.h"
 #include "core/machines/quick_return/quick_return_spec.h"
+#include "core/machines/section_steel/section_steel_module.h"
 #include "devices/machines/sim_rigs.h"
 
 namespace cutcell {
@@ -21,6 +22,7 @@ const struct {
     {kProfileCutterId, makeProfileCutterSimRig},
     {kQuickReturnId, makeQuickReturnSimRig},
     {kFlyingSawId, makeFlyingSawSimRig},
+    {kSectionSteelId, makeSectionSteelSimRig},
 };
 
 } // namespace

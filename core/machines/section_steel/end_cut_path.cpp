@@ -1,0 +1,188 @@
+#include "core/machines/section_steel/end_cut_path.h"
+
+#include "core/trajectory/cut_planner.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcell::section_steel {
+namespace {
+
+// A stretch of the pass: along the outline, or a turn of the torch at a sharp corner.
+struct Primitive {
+    bool turn = false;
+    double s0 = 0, s1 = 0; // outline length (travel); s0 = the corner (turn)
+    double a0 = 0, da = 0; // normal angle at the start and its change (turn)
+    double effective = 0;  // length equivalent at the cutting speed
+};
+
+double angleOf(const Vec2& v) {
+    return std::atan2(v.y(), v.x());
+}
+
+} // namespace
+
+const char* toString(GrooveType g) {
+    switch (g) {
+    case GrooveType::None:
+        return "none";
+    case GrooveType::V:
+        return "V";
+    case GrooveType::Y:
+        return "Y";
+    case GrooveType::K:
+        return "K";
+    }
+    return "?";
+}
+
+EndCut::EndCut(const SectionSteelSpec& spec)
+    : spec_(spec), outline_(spec.section), tanV_(std::tan(deg2rad(spec.cut.mitre_vertical_deg))),
+      tanH_(std::tan(deg2rad(spec.cut.mitre_horizontal_deg))),
+      square_(spec.cut.mitre_vertical_deg == 0 && spec.cut.mitre_horizontal_deg == 0) {}
+
+double EndCut::planeX(double y, double z) const {
+    return y * tanV_ + (z - spec_.section.h_mm / 2) * tanH_;
+}
+
+Vec3 EndCut::planeNormal() const {
+    return Vec3(1, -tanV_, -tanH_).normalized();
+}
+
+const GrooveSpec* EndCut::grooveOf(size_t segment) const {
+    const OutlineSegment& g = outline_.segments()[segment];
+    const GrooveSpec* s = g.kind == FaceKind::Flange ? &spec_.cut.flanges
+                          : g.kind == FaceKind::Web  ? &spec_.cut.web
+                                                     : nullptr;
+    if (!s || s->type == GrooveType::None) return nullptr;
+    if ((s->type == GrooveType::V || s->type == GrooveType::Y) && !g.groove_side) return nullptr;
+    return s;
+}
+
+bool EndCut::hasGroove() const {
+    for (size_t i = 0; i < outline_.segments().size(); ++i)
+        if (grooveOf(i)) return true;
+    return false;
+}
+
+double EndCut::tiltAt(size_t segment, double s, double* depth) const {
+    *depth = 0;
+    const GrooveSpec* gs = grooveOf(segment);
+    if (!gs) return 0;
+    const OutlineSegment& g = outline_.segments()[segment];
+    const double u = s - outline_.segmentStart(segment);
+    const double blend = std::max(1e-9, spec_.blend_mm);
+    const double ramp = std::clamp(std::min(u, g.length - u) / blend, 0.0, 1.0);
+    const double T = g.thickness_mm;
+    switch (gs->type) {
+    case GrooveType::V:
+        *depth = T;
+        break;
+    case GrooveType::Y:
+        *depth = T - gs->root_face_mm;
+        break;
+    case GrooveType::K:
+        *depth = (T - gs->root_face_mm) / 2;
+        break;
+    case GrooveType::None:
+        break;
+    }
+    return ramp * deg2rad(gs->angle_deg);
+}
+
+TorchTarget EndCut::target(const OutlinePoint& o, double s, bool groovePass) const {
+    TorchTarget t;
+    t.yz = o.p;
+    t.s_mm = s;
+    t.segment = o.segment;
+    const Vec3 m = planeNormal();
+    const Vec3 N(0, o.normal.x(), o.normal.y());
+    const Vec2& d = o.tangent;
+    t.edge = Vec3(d.x() * tanV_ + d.y() * tanH_, d.x(), d.y()).normalized();
+    Vec3 u = m.cross(t.edge).normalized();
+    if (u.dot(N) > 0) u = -u;
+    t.t0 = u;
+    double depth = 0;
+    t.tilt_rad = groovePass ? tiltAt(o.segment, s, &depth) : 0;
+    t.t = std::cos(t.tilt_rad) * u + std::sin(t.tilt_rad) * m;
+    t.p = Vec3(planeX(o.p.x(), o.p.y()), o.p.x(), o.p.y());
+    if (t.tilt_rad != 0) {
+        // The bevel starts on the face, D tan(beta) before the cut plane, so that the bevel
+        // face meets the cut plane at the depth D of the groove (V: T, Y: T - c, K: (T - c)/2).
+        Vec3 w = N.cross(t.edge).normalized();
+        if (w.dot(m) < 0) w = -w;
+        t.p -= depth * std::tan(t.tilt_rad) / w.dot(m) * w;
+    }
+    return t;
+}
+
+std::vector<CutPass> EndCut::passes(double dt) const {
+    // Travel and turn primitives along the outline.
+    std::vector<Primitive> prims;
+    const auto& segs = outline_.segments();
+    const double v = spec_.speed_mm_s, w = deg2rad(spec_.reorient_deg_s);
+    for (size_t i = 0; i < segs.size(); ++i) {
+        const double s0 = outline_.segmentStart(i);
+        if (segs[i].length > 0)
+            prims.push_back({false, s0, s0 + segs[i].length, 0, 0, segs[i].length});
+        if (i + 1 < segs.size()) {
+            const double a0 = angleOf(segs[i].n1);
+            const double da = std::remainder(angleOf(segs[i + 1].n0) - a0, 2 * kPi);
+            if (std::fabs(da) > 1e-9)
+                prims.push_back({true, s0 + segs[i].length, 0, a0, da, std::fabs(da) / w * v});
+        }
+    }
+    std::vector<CutPass> out;
+    auto makePass = [&](const std::string& name, bool grooveArm, bool groovePass,
+                        const std::vector<Primitive>& ps) {
+        double total = 0;
+        for (const auto& p : ps)
+            total += p.effective;
+        const SpeedProfile profile(total, v, spec_.ramp_s);
+        CutPass pass;
+        pass.name = name;
+        pass.groove_arm = grooveArm;
+        pass.duration_s = profile.duration();
+        for (const auto& p : ps)
+            pass.length_mm += p.turn ? 0 : p.s1 - p.s0;
+        const size_t n = static_cast<size_t>(std::floor(profile.duration() / dt)) + 1;
+        size_t pi = 0;
+        double primStart = 0;
+        for (size_t k = 0; k <= n; ++k) {
+            const double dist =
+                profile.distance(std::min(static_cast<double>(k) * dt, profile.duration()));
+            while (pi + 1 < ps.size() && dist > primStart + ps[pi].effective) {
+                primStart += ps[pi].effective;
+                ++pi;
+            }
+            const Primitive& p = ps[pi];
+            const double f =
+                p.effective > 0 ? std::clamp((dist - primStart) / p.effective, 0.0, 1.0) : 0;
+            if (!p.turn) {
+                const double s = p.s0 + f * (p.s1 - p.s0);
+                pass.samples.push_back(target(outline_.at(s), s, groovePass));
+            } else {
+                OutlinePoint o = outline_.at(p.s0);
+                const double a = p.a0 + f * p.da;
+                o.normal = Vec2(std::cos(a), std::sin(a));
+                o.tangent = Vec2(-o.normal.y(), o.normal.x());
+                TorchTarget t = target(o, p.s0, false);
+                t.turning = true;
+                pass.samples.push_back(t);
+            }
+        }
+        out.push_back(std::move(pass));
+    };
+    makePass("square", !square_, false, prims);
+    // The groove arm bevels face by face (its torch cannot turn round the toes: turning the
+    // torch in the cut plane swings its whole 2R arm); a joint move links the faces.
+    for (size_t i = 0; i < segs.size(); ++i)
+        if (grooveOf(i) && segs[i].length > 0) {
+            const double s0 = outline_.segmentStart(i);
+            makePass("groove " + segs[i].name, true, true,
+                     {{false, s0, s0 + segs[i].length, 0, 0, segs[i].length}});
+        }
+    return out;
+}
+
+} // namespace cutcell::section_steel

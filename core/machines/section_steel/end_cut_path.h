@@ -1,0 +1,60 @@
+#pragma once
+// The torch path of an end cut: the section's outline in the (square or mitred) cut plane, the
+// torch at every point perpendicular to the cut edge and pointing into the material, tilted by
+// the groove angle towards the bar end (in the plane normal to the cut edge). Pass "square"
+// separates the bar (tilt 0); pass "groove" follows the outline again with the bevel on the
+// faces that have one (the tilt ramps in and out over blend_mm; fillets and toes stay square).
+// At sharp corners (toes) the torch turns about its tip at reorient_deg_s.
+#include "core/common/types.h"
+#include "core/machines/section_steel/section_outline.h"
+#include "core/machines/section_steel/section_steel_spec.h"
+
+#include <string>
+#include <vector>
+
+namespace cutcell::section_steel {
+
+struct TorchTarget {
+    Vec3 p{0, 0, 0};      // tip, world (mm)
+    Vec3 t{0, 0, 0};      // torch direction into the material, world (unit)
+    Vec3 edge{0, 0, 0};   // cut edge direction (unit), world
+    Vec3 t0{0, 0, 0};     // the untilted direction (in the cut plane, normal to the edge)
+    Vec2 yz{0, 0};        // point of the outline (the tip without the bevel offset)
+    double tilt_rad = 0;  // groove tilt at this point
+    double s_mm = 0;      // along the outline
+    size_t segment = 0;   // outline segment (face)
+    bool turning = false; // torch turning at a sharp corner (tip at rest)
+};
+
+struct CutPass {
+    std::string name; // "square", "groove"
+    bool groove_arm = false;
+    std::vector<TorchTarget> samples; // at equal time steps dt
+    double duration_s = 0, length_mm = 0;
+};
+
+class EndCut {
+  public:
+    EndCut(const SectionSteelSpec& spec);
+    const SectionOutline& outline() const { return outline_; }
+    // x of the cut plane at (y, z) and its unit normal (towards the bar end, +x).
+    double planeX(double y, double z) const;
+    Vec3 planeNormal() const;
+    bool square() const { return square_; }
+    bool hasGroove() const;
+    // The groove spec of an outline segment and whether this face is bevelled.
+    const GrooveSpec* grooveOf(size_t segment) const;
+    // The passes of the cut, sampled every dt seconds.
+    std::vector<CutPass> passes(double dt) const;
+    // The target at outline length s of a pass with the given groove scale (0..1 ramps).
+    TorchTarget target(const OutlinePoint& o, double s, bool groovePass) const;
+
+  private:
+    double tiltAt(size_t segment, double s, double* depth) const;
+    SectionSteelSpec spec_;
+    SectionOutline outline_;
+    double tanV_, tanH_;
+    bool square_;
+};
+
+} // namespace cutcell::section_steel

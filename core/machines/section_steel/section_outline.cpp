@@ -1,0 +1,246 @@
+#include "core/machines/section_steel/section_outline.h"
+
+#include "core/common/types.h"
+#include "core/job/section_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcell::section_steel {
+namespace {
+
+struct Corner {
+    Vec2 v;
+    double r; // fillet radius at this corner (0 = sharp)
+};
+struct Edge {
+    const char* name;
+    FaceKind kind;
+    double thickness;
+    bool grooveSide;
+};
+
+Vec2 outward(const Vec2& d) {
+    return {d.y(), -d.x()}; // right of the direction: material is on the left
+}
+
+double angleOf(const Vec2& v) {
+    return std::atan2(v.y(), v.x());
+}
+
+} // namespace
+
+const char* toString(FaceKind k) {
+    switch (k) {
+    case FaceKind::Flange:
+        return "flange";
+    case FaceKind::Web:
+        return "web";
+    case FaceKind::Toe:
+        return "toe";
+    case FaceKind::Fillet:
+        return "root fillet";
+    case FaceKind::Leg:
+        return "leg";
+    }
+    return "?";
+}
+
+SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
+    const double h = d.h_mm, b = d.b_mm, tw = d.tw_mm, tf = d.tf_mm, r = d.r_mm;
+    std::vector<Corner> c;
+    std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1]; the last corner ends the chain
+    using K = FaceKind;
+    switch (d.family) {
+    case SectionFamily::I:
+        c = {{{b / 2, 0}, 0},        {{b / 2, tf}, 0},   {{tw / 2, tf}, r}, {{tw / 2, h - tf}, r},
+             {{b / 2, h - tf}, 0},   {{b / 2, h}, 0},    {{-b / 2, h}, 0},  {{-b / 2, h - tf}, 0},
+             {{-tw / 2, h - tf}, r}, {{-tw / 2, tf}, r}, {{-b / 2, tf}, 0}, {{-b / 2, 0}, 0}};
+        e = {{"bottom flange, toe +y", K::Toe, tf, false},
+             {"bottom flange, upper face +y", K::Flange, tf, true},
+             {"web, face +y", K::Web, tw, true},
+             {"top flange, lower face +y", K::Flange, tf, false},
+             {"top flange, toe +y", K::Toe, tf, false},
+             {"top flange, upper face", K::Flange, tf, true},
+             {"top flange, toe -y", K::Toe, tf, false},
+             {"top flange, lower face -y", K::Flange, tf, false},
+             {"web, face -y", K::Web, tw, false},
+             {"bottom flange, upper face -y", K::Flange, tf, true},
+             {"bottom flange, toe -y", K::Toe, tf, false}};
+        break;
+    case SectionFamily::U:
+        c = {{{b / 2, 0}, 0},        {{b / 2, tf}, 0},
+             {{-b / 2 + tw, tf}, r}, {{-b / 2 + tw, h - tf}, r},
+             {{b / 2, h - tf}, 0},   {{b / 2, h}, 0},
+             {{-b / 2, h}, 0},       {{-b / 2, 0}, 0}};
+        e = {{"bottom flange, toe", K::Toe, tf, false},
+             {"bottom flange, upper face", K::Flange, tf, true},
+             {"web, inner face", K::Web, tw, true},
+             {"top flange, lower face", K::Flange, tf, false},
+             {"top flange, toe", K::Toe, tf, false},
+             {"top flange, upper face", K::Flange, tf, true},
+             {"web, outer face", K::Web, tw, false}};
+        break;
+    case SectionFamily::L:
+        c = {{{b / 2, 0}, 0},       {{b / 2, tf}, 0}, {{-b / 2 + tw, tf}, r},
+             {{-b / 2 + tw, h}, 0}, {{-b / 2, h}, 0}, {{-b / 2, 0}, 0}};
+        e = {{"horizontal leg, toe", K::Toe, tf, false},
+             {"horizontal leg, upper face", K::Flange, tf, true},
+             {"vertical leg, inner face", K::Web, tw, true},
+             {"vertical leg, toe", K::Toe, tw, false},
+             {"vertical leg, outer face", K::Web, tw, false}};
+        break;
+    }
+    // Round the corners: every corner of these sections is 90 deg, so a fillet of radius r
+    // touches both edges at r from the corner and has its centre at v - r d_in + r d_out.
+    auto dir = [&](size_t i) { return Vec2((c[i + 1].v - c[i].v).normalized()); };
+    for (size_t i = 0; i < e.size(); ++i) {
+        const Vec2 d = dir(i);
+        const double cutStart = c[i].r, cutEnd = c[i + 1].r;
+        OutlineSegment s;
+        s.name = e[i].name;
+        s.kind = e[i].kind;
+        s.thickness_mm = e[i].thickness;
+        s.groove_side = e[i].grooveSide;
+        s.p0 = c[i].v + cutStart * d;
+        s.p1 = c[i + 1].v - cutEnd * d;
+        s.n0 = s.n1 = outward(d);
+        s.length = (s.p1 - s.p0).norm();
+        segments_.push_back(s);
+        if (cutEnd > 0 && i + 1 < e.size()) {
+            const Vec2 dOut = dir(i + 1);
+            OutlineSegment f;
+            f.name = std::string("root fillet (") + e[i].name + " / " + e[i + 1].name + ")";
+            f.kind = FaceKind::Fillet;
+            f.thickness_mm = std::min(e[i].thickness, e[i + 1].thickness);
+            f.arc = true;
+            f.radius = cutEnd;
+            f.centre = c[i + 1].v - cutEnd * d + cutEnd * dOut;
+            f.p0 = s.p1;
+            f.p1 = c[i + 1].v + cutEnd * dOut;
+            f.a0 = angleOf(f.p0 - f.centre);
+            double a1 = angleOf(f.p1 - f.centre);
+            while (a1 - f.a0 > kPi)
+                a1 -= 2 * kPi;
+            while (a1 - f.a0 < -kPi)
+                a1 += 2 * kPi;
+            f.a1 = a1;
+            f.n0 = outward(d);
+            f.n1 = outward(dOut);
+            f.length = cutEnd * std::fabs(f.a1 - f.a0);
+            segments_.push_back(f);
+        }
+    }
+    for (const auto& s : segments_) {
+        starts_.push_back(length_);
+        length_ += s.length;
+    }
+    // Closed polygon: the outline (arcs as 8 chords) and the table face back to the start.
+    for (const auto& s : segments_) {
+        if (!s.arc) {
+            polygon_.push_back(s.p0);
+            continue;
+        }
+        for (int k = 0; k < 8; ++k) {
+            const double a = s.a0 + (s.a1 - s.a0) * k / 8.0;
+            polygon_.push_back(s.centre + s.radius * Vec2(std::cos(a), std::sin(a)));
+        }
+    }
+    polygon_.push_back(segments_.back().p1);
+}
+
+OutlinePoint SectionOutline::at(double s) const {
+    s = std::clamp(s, 0.0, length_);
+    size_t i =
+        static_cast<size_t>(std::upper_bound(starts_.begin(), starts_.end(), s) - starts_.begin());
+    i = i == 0 ? 0 : i - 1;
+    while (i + 1 < segments_.size() && segments_[i].length == 0)
+        ++i;
+    const OutlineSegment& g = segments_[i];
+    const double u = g.length > 0 ? std::clamp((s - starts_[i]) / g.length, 0.0, 1.0) : 0.0;
+    OutlinePoint o;
+    o.segment = i;
+    if (!g.arc) {
+        o.p = g.p0 + u * (g.p1 - g.p0);
+        o.tangent = (g.p1 - g.p0).normalized();
+        o.normal = g.n0;
+    } else {
+        const double a = g.a0 + u * (g.a1 - g.a0);
+        const Vec2 radial(std::cos(a), std::sin(a));
+        o.p = g.centre + g.radius * radial;
+        const double sgn = g.a1 > g.a0 ? 1.0 : -1.0;
+        o.tangent = sgn * Vec2(-radial.y(), radial.x());
+        o.normal = {o.tangent.y(), -o.tangent.x()};
+    }
+    return o;
+}
+
+bool SectionOutline::contains(const Vec2& q) const {
+    bool in = false;
+    const size_t n = polygon_.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {
+        const Vec2& a = polygon_[i];
+        const Vec2& b = polygon_[j];
+        if ((a.y() > q.y()) != (b.y() > q.y()) &&
+            q.x() < (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y()) + a.x())
+            in = !in;
+    }
+    return in;
+}
+
+double SectionOutline::distanceToOutline(const Vec2& q) const {
+    double best = 1e300;
+    for (const auto& g : segments_) {
+        double dist;
+        if (!g.arc) {
+            const Vec2 d = g.p1 - g.p0;
+            const double L2 = d.squaredNorm();
+            const double u = L2 > 0 ? std::clamp((q - g.p0).dot(d) / L2, 0.0, 1.0) : 0.0;
+            dist = (q - (g.p0 + u * d)).norm();
+        } else {
+            const double a = angleOf(q - g.centre);
+            double lo = std::min(g.a0, g.a1), hi = std::max(g.a0, g.a1);
+            double aa = a;
+            while (aa < lo)
+                aa += 2 * kPi;
+            dist = aa <= hi ? std::fabs((q - g.centre).norm() - g.radius)
+                            : std::min((q - g.p0).norm(), (q - g.p1).norm());
+        }
+        best = std::min(best, dist);
+    }
+    return best;
+}
+
+std::vector<std::pair<std::string, std::string>> checkSectionDims(const SectionDims& d,
+                                                                  const std::string& k) {
+    std::vector<std::pair<std::string, std::string>> out;
+    auto range = [&](const char* f, double v, double lo, double hi) {
+        if (!(v >= lo && v <= hi))
+            out.push_back({k + "." + f, k + "." + f + " = " + num(v) + " mm is outside [" +
+                                            num(lo) + ", " + num(hi) + "] mm"});
+    };
+    range("h_mm", d.h_mm, 10, 1200);
+    range("b_mm", d.b_mm, 10, 600);
+    range("tw_mm", d.tw_mm, 1, 100);
+    range("tf_mm", d.tf_mm, 1, 100);
+    range("r_mm", d.r_mm, 0, 100);
+    if (!out.empty()) return out;
+    const bool isI = d.family == SectionFamily::I;
+    const double webRoom = isI ? (d.b_mm - d.tw_mm) / 2 : d.b_mm - d.tw_mm;
+    if (d.r_mm >= webRoom)
+        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
+                                        " mm leaves no flat flange: it must be below " +
+                                        num(webRoom) + " mm (flange outstand)"});
+    const double clear = d.family == SectionFamily::L ? d.h_mm - d.tf_mm : d.h_mm - 2 * d.tf_mm;
+    if (2 * d.r_mm >= clear && d.family != SectionFamily::L)
+        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
+                                        " mm: two root radii do not fit between the flanges (" +
+                                        num(clear) + " mm)"});
+    if (d.r_mm >= clear && d.family == SectionFamily::L)
+        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
+                                        " mm does not fit on the vertical leg (" + num(clear) +
+                                        " mm)"});
+    return out;
+}
+
+} // namespace cutcell::section_steel

@@ -1,0 +1,47 @@
+#include "core/machines/section_steel/section_steel_bench.h"
+
+#include "core/machines/section_steel/section_steel_planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <vector>
+
+namespace cutcell::section_steel {
+
+void benchSectionSteel(bool quick, json::Object& out) {
+    using Clock = std::chrono::steady_clock;
+    const GrooveArm arm;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-kPi, kPi);
+    std::vector<Pose> poses;
+    for (int i = 0; i < 1000; ++i)
+        poses.push_back(arm.forward({u(rng), u(rng), u(rng), u(rng), u(rng)}));
+    volatile size_t sink = 0;
+    const int repeats = quick ? 2 : 20;
+    auto t0 = Clock::now();
+    for (int r = 0; r < repeats; ++r)
+        for (const Pose& p : poses)
+            sink = sink + arm.inverse(p).size();
+    double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
+    out.emplace_back("section_ik_ns_per_solve", ns / (static_cast<double>(poses.size()) * repeats));
+
+    const size_t torchPoses = quick ? 50 : 300;
+    t0 = Clock::now();
+    for (size_t i = 0; i < torchPoses; ++i)
+        sink = sink + arm.inverseTorch(poses[i].translation(), poses[i].linear().col(0)).size();
+    ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
+    out.emplace_back("section_torch_ik_ns_per_solve", ns / static_cast<double>(torchPoses));
+
+    const SectionSteelSpec spec = defaultSectionSteelSpec();
+    double best = 1e300;
+    for (int r = 0; r < (quick ? 1 : 5); ++r) {
+        t0 = Clock::now();
+        const SteelPlan plan = planEndCut(spec);
+        sink = sink + plan.knots.size();
+        best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    out.emplace_back("section_end_cut_plan_ms", best);
+}
+
+} // namespace cutcell::section_steel

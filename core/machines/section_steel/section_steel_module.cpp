@@ -1,0 +1,134 @@
+#include "core/machines/section_steel/section_steel_module.h"
+
+#include "core/common/c_format.h"
+#include "core/job/default_job.h"
+#include "core/job/issue_checker.h"
+#include "core/machines/section_steel/section_steel_planner.h"
+#include "core/machines/section_steel/section_steel_program.h"
+#include "core/machines/section_steel/section_steel_section.h"
+#include "core/sim/tracking_stats.h"
+
+namespace cutcell {
+
+using namespace section_steel;
+
+namespace {
+
+const SectionSteelSpec& specOf(const Job& job) {
+    const SectionSteelSpec* s = job.machine_spec.as<SectionSteelSpec>();
+    if (!s) throw std::invalid_argument("the job holds no section-steel machine section");
+    return *s;
+}
+
+const char* const kAxisNames[kSteelAxes] = {"path theta1",   "path theta2",   "path theta3",
+                                            "groove theta1", "groove theta2", "groove theta3",
+                                            "groove theta4", "groove theta5"};
+
+} // namespace
+
+std::vector<AxisInfo> SectionSteelModule::axes(const Job& job) const {
+    const SectionSteelSpec& s = specOf(job);
+    std::vector<AxisInfo> out;
+    for (size_t i = 0; i < 3; ++i)
+        out.push_back({kAxisNames[i], AxisUnit::Rotary, s.path_limits[i].min_deg,
+                       s.path_limits[i].max_deg, CommandMode::Position});
+    for (size_t i = 0; i < 5; ++i)
+        out.push_back({kAxisNames[3 + i], AxisUnit::Rotary, s.groove_limits[i].min_deg,
+                       s.groove_limits[i].max_deg, CommandMode::Position});
+    return out;
+}
+
+Job SectionSteelModule::defaultJob() const {
+    Job job = cutcell::defaultJob();
+    job.machine = kSectionSteelId;
+    job.name = "Seed 001 - IPE 300 square end";
+    job.description =
+        "Section-steel cutting cell of seed 001 (Xu): a 3R cutting-path arm (links 1000, 1110, "
+        "310 mm) working in the square cut plane, its base 1500 mm above the table on the bar "
+        "axis, and a 5-DOF groove arm (modified DH) beside the bar end (base 120 mm past the cut, "
+        "900 mm to the side, 700 mm high; its 2R arm in a plane parallel to the cut plane, the "
+        "bevel head "
+        "tilting the torch about the nozzle). The bar lies on the table along x, web vertical; "
+        "the path arm cuts the square end round the outline, the groove arm bevels face by face. "
+        "The seed gives no layout: this one is a plausible design.";
+    job.machine_spec.set(defaultSectionSteelSpec());
+    job.sim.duration_s = 1; // the run lasts the program (at least 1 s)
+    return job;
+}
+
+void SectionSteelModule::readSection(const json::Value& section, Job& job) const {
+    SectionReader m(section, "machine");
+    m.get("kind");
+    job.machine_spec.set(readSteelSection(m));
+    m.finish();
+}
+
+json::Value SectionSteelModule::writeSection(const Job& job) const {
+    json::Object s{{"kind", id()}};
+    writeSteelSection(specOf(job), s);
+    return s;
+}
+
+std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
+    IssueChecker c;
+    checkSteelSpec(c, specOf(job), job.sim.period_s);
+    return c.issues;
+}
+
+bool SectionSteelModule::supportsCanOpen(std::string* why) const {
+    if (why)
+        *why = "the section-steel cell has 8 axes; devices.node_ids and counts_per_unit hold 6 "
+               "(core/job/job.h): use devices.kind = \"simulated\"";
+    return false;
+}
+
+MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText) const {
+    MachinePlan out;
+    const SectionSteelSpec& s = specOf(job);
+    auto plan = std::make_shared<SteelPlan>(planEndCut(s));
+    out.data = plan;
+    const std::string name = s.section.designation.empty()
+                                 ? std::string("user-defined ") + toString(s.section.family)
+                                 : s.section.designation;
+    std::string passes;
+    for (const auto& p : plan->passes)
+        passes += (passes.empty() ? "" : " + ") + p.name +
+                  (p.groove_arm ? " (groove arm)" : " (path arm)");
+    out.summary = formatC("%s, mitre %.1f/%.1f deg, %s, %.1f mm at %.2f mm/s (%.1f s)",
+                          name.c_str(), s.cut.mitre_vertical_deg, s.cut.mitre_horizontal_deg,
+                          passes.c_str(), plan->length_mm, s.speed_mm_s, plan->cut_time_s);
+    if (!plan->ok) {
+        out.status = PlanStatus::Infeasible;
+        out.problem = plan->problem;
+        if (plan->failed_points > 1)
+            out.problem += formatC(" (and %zu more points)", plan->failed_points - 1);
+        return out;
+    }
+    out.program = buildSectionSteelProgram(job, s, *plan, jobText);
+    out.status = PlanStatus::Ok;
+    return out;
+}
+
+std::vector<ExportInfo> SectionSteelModule::exports() const {
+    return {
+        {"path_csv", "torch path with torch directions and joints (CSV)", "path.csv", true, false}};
+}
+
+std::string SectionSteelModule::exportFile(const std::string& exportId, const Job& job,
+                                           const MachinePlan& plan) const {
+    const SteelPlan* p = static_cast<const SteelPlan*>(plan.data.get());
+    if (!p || !plan.ok()) throw std::invalid_argument("the plan has no feasible cut");
+    if (exportId == "path_csv") return steelPathCsv(specOf(job), *p);
+    throw std::invalid_argument("the section-steel cutter has no export " + json::quote(exportId));
+}
+
+json::Value SectionSteelModule::runReport(const Job&, const MachinePlan& plan,
+                                          const TrackingReport& report) const {
+    std::array<std::string, kMaxAxes> names{};
+    for (size_t i = 0; i < kSteelAxes; ++i)
+        names[i] = kAxisNames[i];
+    (void)plan;
+    return reportToJson(report, &names);
+}
+
+} // namespace cutcell

@@ -1,0 +1,41 @@
+#pragma once
+// The section-steel cutting cell of seed 001: a 3R cutting-path arm (axes 0..2) and a 5-DOF
+// groove arm (axes 3..7), all rotary, position-commanded (CSP) joints behind PID drives; the
+// program is a joint spline (MotionSourceKind::JointSpline). Its `machine` section: section
+// (designation or dimensions), end_cut (mitres, grooves of flanges and web), motion, path_arm,
+// groove_arm, park_deg[8], drives[8]. See README "Section-steel cutter".
+#include "core/machine/machine_module.h"
+
+namespace cutcell {
+
+inline constexpr const char* kSectionSteelId = "section_steel_cutter";
+
+// MachinePlan::data of its plans is the section_steel::SteelPlan.
+class SectionSteelModule : public MachineModule {
+  public:
+    std::string id() const override { return kSectionSteelId; }
+    std::string title() const override {
+        return "Section-steel cutter (3R path arm + 5-DOF groove arm)";
+    }
+    std::vector<AxisInfo> axes(const Job& job) const override;
+    Job defaultJob() const override;
+    void readSection(const json::Value& section, Job& job) const override;
+    json::Value writeSection(const Job& job) const override;
+    void migrateSchema1(json::Object&) const override {}
+    std::vector<JobIssue> validate(const Job& job) const override;
+    bool supportsCanOpen(std::string* why) const override;
+    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    std::vector<ExportInfo> exports() const override;
+    std::string exportFile(const std::string& exportId, const Job& job,
+                           const MachinePlan& plan) const override;
+    json::Value runReport(const Job& job, const MachinePlan& plan,
+                          const TrackingReport& report) const override;
+    // Arms "path" and "groove" (section_steel_kinematics_json.cpp).
+    bool forwardKinematics(const Job& job, const std::string& arm,
+                           const std::vector<double>& jointsDeg, json::Value* out,
+                           std::string* why) const override;
+    bool inverseKinematics(const Job& job, const std::string& arm, const std::vector<double>& pose,
+                           json::Value* out, std::string* why) const override;
+};
+
+} // namespace cutcell

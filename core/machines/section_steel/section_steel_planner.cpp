@@ -1,0 +1,233 @@
+#include "core/machines/section_steel/section_steel_planner.h"
+
+#include "core/common/c_format.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cutcell::section_steel {
+namespace {
+
+const char* const kPathJointNames[3] = {"theta1", "theta2", "theta3"};
+const char* const kGrooveJointNames[5] = {"theta1", "theta2", "theta3", "theta4", "theta5"};
+
+template <size_t N> void unwrapTo(std::array<double, N>& q, const std::array<double, N>& ref) {
+    for (size_t i = 0; i < N; ++i)
+        q[i] = ref[i] + wrapAngle(q[i] - ref[i]);
+}
+
+template <size_t N>
+double distance(const std::array<double, N>& a, const std::array<double, N>& b) {
+    double s = 0;
+    for (size_t i = 0; i < N; ++i)
+        s += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(s);
+}
+
+// The first joint outside its limits ("" when all are inside).
+template <size_t N>
+std::string limitViolation(const std::array<double, N>& q, const std::array<JointLimit, N>& lim,
+                           const char* const* names, const char* arm) {
+    for (size_t i = 0; i < N; ++i) {
+        const double d = rad2deg(q[i]);
+        if (d < lim[i].min_deg - 1e-9 || d > lim[i].max_deg + 1e-9)
+            return formatC("%s joint %s = %.2f deg is outside its limits [%.1f, %.1f] deg", arm,
+                           names[i], d, lim[i].min_deg, lim[i].max_deg);
+    }
+    return {};
+}
+
+// Picks among IK solutions: inside the limits, nearest to ref (unwrapped to it). *why says
+// why none fits.
+template <size_t N>
+bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& ref,
+          const std::array<JointLimit, N>& lim, const char* const* names, const char* arm,
+          std::array<double, N>& out, std::string* why, bool unwrap = true) {
+    if (sols.empty()) {
+        *why = std::string(arm) + ": no inverse-kinematics solution (out of reach)";
+        return false;
+    }
+    double best = 1e300;
+    std::string firstViolation;
+    for (auto& q : sols) {
+        // From a rest position (the first point) the joints take their principal values; along
+        // the path they stay continuous (wrist joints may turn past +-180 deg).
+        if (unwrap) unwrapTo(q, ref);
+        const std::string v = limitViolation(q, lim, names, arm);
+        if (!v.empty()) {
+            if (firstViolation.empty()) firstViolation = v;
+            continue;
+        }
+        const double d = distance(q, ref);
+        if (d < best) {
+            best = d;
+            out = q;
+        }
+    }
+    if (best < 1e300) return true;
+    *why = firstViolation + formatC(" (all %zu branches)", sols.size());
+    return false;
+}
+
+} // namespace
+
+SteelCell::SteelCell(const SectionSteelSpec& s)
+    : path(s.path_links_mm[0], s.path_links_mm[1], s.path_links_mm[2]) {
+    Eigen::Matrix3d R;
+    R.col(0) = Vec3(0, 0, -1);
+    R.col(1) = Vec3(0, -1, 0);
+    R.col(2) = Vec3(-1, 0, 0);
+    groove_base.linear() = R;
+    groove_base.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
+    path_base_y = s.path_base_y_mm;
+    path_base_z = s.path_base_z_mm;
+}
+
+void SteelCell::pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const {
+    const PlanarPose pp = path.forward(q);
+    p = Vec3(0, path_base_y + pp.x_mm, path_base_z + pp.y_mm);
+    t = Vec3(0, std::cos(pp.phi_rad), std::sin(pp.phi_rad));
+}
+
+void SteelCell::grooveTorch(const Q5& q, Vec3& p, Vec3& t) const {
+    const Pose T = groove_base * groove.forward(q);
+    p = T.translation();
+    t = T.linear().col(0);
+}
+
+std::string describePoint(const EndCut& cut, const CutPass& pass, size_t k) {
+    const TorchTarget& t = pass.samples[k];
+    return formatC("point %zu of pass %s (%s%s, s = %.1f mm)", k, pass.name.c_str(),
+                   cut.outline().segments()[t.segment].name.c_str(),
+                   t.turning ? ", turning at the corner" : "", t.s_mm);
+}
+
+SteelPlan planEndCut(const SectionSteelSpec& spec) {
+    SteelPlan plan;
+    const EndCut cut(spec);
+    const SteelCell cell(spec);
+    plan.dt = spec.knot_spacing_mm / spec.speed_mm_s;
+    plan.passes = cut.passes(plan.dt);
+    JointVector park = JointVector::Zero();
+    for (int i = 0; i < kSteelAxes; ++i)
+        park[i] = deg2rad(spec.park_deg[static_cast<size_t>(i)]);
+    auto fail = [&](const std::string& msg) {
+        if (plan.problem.empty()) plan.problem = msg;
+        ++plan.failed_points;
+    };
+    JointVector cur = park;
+    // Larger joint steps than this between two points are a change of IK branch: the torch
+    // turns at most reorient_deg_s at a corner, the tip moves knot_spacing_mm.
+    const double jump = 0.3 + 2 * plan.dt * deg2rad(spec.reorient_deg_s);
+    for (size_t pi = 0; pi < plan.passes.size(); ++pi) {
+        const CutPass& pass = plan.passes[pi];
+        std::vector<JointVector> knots;
+        std::array<double, 3> qp{park[0], park[1], park[2]};
+        Q5 qg{park[3], park[4], park[5], park[6], park[7]};
+        bool first = true;
+        for (size_t k = 0; k < pass.samples.size(); ++k) {
+            const TorchTarget& tt = pass.samples[k];
+            std::string why;
+            // Torch body: behind the tip, outside the material.
+            const bool squarePass = pass.name == "square";
+            for (double b = 3; b <= spec.torch_length_mm; b += 2) {
+                const Vec3 q = tt.p - b * tt.t;
+                const Vec2 yz(q.y(), q.z());
+                // During the square pass the offcut is still there: material on both sides.
+                const bool material = squarePass || q.x() < cut.planeX(q.y(), q.z()) - 0.5;
+                if (material && cut.outline().contains(yz)) {
+                    fail(describePoint(cut, pass, k) +
+                         formatC(": the torch body hits the section %.0f mm behind the tip at "
+                                 "y = %.1f, z = %.1f mm (torch_length_mm = %.0f)",
+                                 b, q.y(), q.z(), spec.torch_length_mm));
+                    break;
+                }
+            }
+            Vec3 p, t;
+            if (!pass.groove_arm) {
+                const double phi = std::atan2(tt.t.z(), tt.t.y());
+                const PlanarPose pose{tt.p.y() - cell.path_base_y, tt.p.z() - cell.path_base_z,
+                                      phi};
+                std::vector<std::array<double, 3>> sols;
+                for (const auto& s : cell.path.inverse(pose))
+                    sols.push_back(s.q);
+                std::array<double, 3> q{};
+                if (!pick(sols, qp, spec.path_limits, kPathJointNames, "path arm", q, &why,
+                          !first)) {
+                    fail(describePoint(cut, pass, k) + ": " + why);
+                } else {
+                    if (!first && distance(q, qp) > jump)
+                        fail(describePoint(cut, pass, k) +
+                             formatC(": path arm changes branch (joint jump %.1f deg)",
+                                     rad2deg(distance(q, qp))));
+                    qp = q;
+                }
+                cell.pathTorch(qp, p, t);
+            } else {
+                const Vec3 pb = cell.groove_base.inverse() * tt.p;
+                const Vec3 tb = cell.groove_base.linear().transpose() * tt.t;
+                Q5 q = qg;
+                bool ok = !first && cell.groove.trackTorch(pb, tb, q);
+                if (ok) {
+                    unwrapTo(q, qg);
+                    ok = limitViolation(q, spec.groove_limits, kGrooveJointNames, "groove arm")
+                             .empty() &&
+                         distance(q, qg) < jump;
+                }
+                if (!ok) {
+                    std::vector<Q5> sols;
+                    for (const auto& s : cell.groove.inverseTorch(pb, tb))
+                        sols.push_back(s.q);
+                    if (!pick(sols, qg, spec.groove_limits, kGrooveJointNames, "groove arm", q,
+                              &why, !first)) {
+                        fail(describePoint(cut, pass, k) + ": " + why);
+                        q = qg;
+                    } else if (!first && distance(q, qg) > jump) {
+                        fail(describePoint(cut, pass, k) +
+                             formatC(": groove arm changes branch (joint jump %.1f deg)",
+                                     rad2deg(distance(q, qg))));
+                    }
+                }
+                qg = q;
+                cell.grooveTorch(qg, p, t);
+            }
+            if (why.empty())
+                plan.max_torch_error_mm = std::max(plan.max_torch_error_mm, (p - tt.p).norm());
+            first = false;
+            JointVector j = JointVector::Zero();
+            for (int i = 0; i < 3; ++i)
+                j[i] = qp[static_cast<size_t>(i)];
+            for (int i = 0; i < 5; ++i)
+                j[3 + i] = qg[static_cast<size_t>(i)];
+            knots.push_back(j);
+        }
+        // Transition from the previous pass (joint move, cosine blend, <= 30 deg/s).
+        if (!plan.knots.empty() && !knots.empty()) {
+            const JointVector from = cur, to = knots.front();
+            const double span = (to - from).cwiseAbs().maxCoeff();
+            const double T = std::max(2.0, span / deg2rad(30.0));
+            const size_t n = static_cast<size_t>(std::ceil(T / plan.dt));
+            for (size_t k = 1; k < n; ++k) {
+                const double f =
+                    0.5 - 0.5 * std::cos(kPi * static_cast<double>(k) / static_cast<double>(n));
+                plan.knots.push_back(from + f * (to - from));
+                plan.info.push_back({-1, k});
+            }
+        }
+        for (size_t k = 0; k < knots.size(); ++k) {
+            plan.knots.push_back(knots[k]);
+            plan.info.push_back({static_cast<int>(pi), k});
+        }
+        if (!knots.empty()) cur = knots.back();
+        plan.length_mm += pass.length_mm;
+    }
+    plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2;
+    if (plan.knots.size() < 2 && plan.problem.empty()) plan.problem = "the cut has no path";
+    if (plan.ok) {
+        plan.spline = JointSpline(plan.knots, plan.dt);
+        plan.cut_time_s = plan.spline.duration();
+    }
+    return plan;
+}
+
+} // namespace cutcell::section_steel

@@ -1,0 +1,50 @@
+#pragma once
+// Plans an end cut of the section-steel cell: the passes of EndCut, the inverse kinematics of
+// the arm that cuts each pass at every point (the other arm waits at its park position), the
+// joint limits and the torch-body collision per point, and the 8-axis joint spline.
+#include "core/machines/section_steel/end_cut_path.h"
+#include "core/machines/section_steel/groove_arm.h"
+#include "core/machines/section_steel/path_arm.h"
+#include "core/trajectory/joint_spline.h"
+
+#include <string>
+#include <vector>
+
+namespace cutcell::section_steel {
+
+// The two arms placed in the cell (frames as in section_steel_spec.h).
+struct SteelCell {
+    explicit SteelCell(const SectionSteelSpec& spec);
+    PathArm path;
+    GrooveArm groove;
+    Pose groove_base = Pose::Identity(); // world <- groove arm base
+    double path_base_y = 0, path_base_z = 0;
+    // Torch tip and direction (world) of the arms at the joints (rad).
+    void pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const;
+    void grooveTorch(const Q5& q, Vec3& p, Vec3& t) const;
+};
+
+struct KnotInfo {
+    int pass = -1; // -1: transition between passes
+    size_t sample = 0;
+};
+
+struct SteelPlan {
+    bool ok = false;
+    std::string problem; // the first point that fails: point, face, arm, joint, limit
+    size_t failed_points = 0;
+    std::vector<CutPass> passes;
+    std::vector<JointVector> knots; // rad, axes 0..2 path arm, 3..7 groove arm
+    std::vector<KnotInfo> info;
+    JointSpline spline;
+    double dt = 0, cut_time_s = 0, length_mm = 0;
+    double max_torch_error_mm = 0; // FK of the chosen joints against the targets
+};
+
+SteelPlan planEndCut(const SectionSteelSpec& spec);
+
+// A description of the point for messages: "point 37 of pass groove (top flange, upper face,
+// s = 120.0 mm)".
+std::string describePoint(const EndCut& cut, const CutPass& pass, size_t k);
+
+} // namespace cutcell::section_steel
