@@ -94,6 +94,9 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
 }
 
 RunController::~RunController() {
+    // The window's widgets that listen to the link may already be gone (children are deleted
+    // before their parent's members): detach the rig without telling anyone.
+    link_->blockSignals(true);
     link_->setRig(nullptr);
     bridge_->setEngine(nullptr);
     if (rig_) rig_->engine().emergencyStop(); // never leave a machine moving
