@@ -1,6 +1,5 @@
 // cutcell-cli bench: speed figures of the core (and of the engine once it exists). Printed,
 // never asserted: shared machines make timed assertions flaky.
-#include "bench_quick_return.h"
 #include "cli_commands.h"
 #ifdef CUTCELL_HAVE_DEVICES
 #include "bench_can.h"
@@ -13,7 +12,6 @@
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
-#include "core/machines/section_steel/section_steel_bench.h"
 #include "core/sim/cut_simulation.h"
 #include "core/trajectory/cut_planner.h"
 
@@ -84,10 +82,8 @@ int runBench(const BenchOptions& o) {
     out.emplace_back("simulate_seconds", best);
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
-    benchQuickReturn(out);
     for (const MachineModule* m : machines())
         m->addBenchFigures(quick, out);
-    section_steel::benchSectionSteel(quick, out);
 #ifdef CUTCELL_HAVE_DEVICES
     if (!o.no_engine) benchEngine(job, quick, realtime, out);
 #endif

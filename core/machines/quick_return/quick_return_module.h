@@ -39,6 +39,8 @@ class QuickReturnModule : public MachineModule {
                        std::string* text, std::string* why) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
+    // Experiment 1 MSE and experiment 2 velocity error of every controller (default job).
+    void addBenchFigures(bool quick, json::Object& out) const override;
 };
 
 } // namespace cutcell

@@ -1,4 +1,5 @@
 #include "core/machines/section_steel/section_steel_bench.h"
+#include "core/machines/section_steel/section_steel_module.h"
 
 #include "core/machines/section_steel/section_steel_planner.h"
 
@@ -45,3 +46,11 @@ void benchSectionSteel(bool quick, json::Object& out) {
 }
 
 } // namespace cutcell::section_steel
+
+namespace cutcell {
+
+void SectionSteelModule::addBenchFigures(bool quick, json::Object& out) const {
+    section_steel::benchSectionSteel(quick, out);
+}
+
+} // namespace cutcell
