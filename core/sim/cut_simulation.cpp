@@ -37,16 +37,16 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     JointVector actual = JointVector::Zero();
     for (long k = 0; k <= steps; ++k) {
         const double t = static_cast<double>(k) * T;
-        const JointSample ref = plan.spline.evaluate(t);
+        const JointVector ref = plan.spline.position(t);
         for (int i = 0; i < kAxisCount; ++i)
             actual[i] = plant[static_cast<size_t>(i)].position();
         // The tips are computed once and shared by the overall and the cruise figures.
-        const TipSample tips = stats.tips(ref.q, actual);
-        stats.add(ref.q, actual, tips);
-        if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref.q, actual, tips);
+        const TipSample tips = stats.tips(ref, actual);
+        stats.add(ref, actual, tips);
+        if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref, actual, tips);
         for (int i = 0; i < kAxisCount; ++i) {
             const size_t a = static_cast<size_t>(i);
-            const double u = plant[a].step(pid[a].step(ref.q[i] - actual[i]));
+            const double u = plant[a].step(pid[a].step(ref[i] - actual[i]));
             stats.addTorqueFraction(std::fabs(u) / plant[a].torqueLimit());
         }
     }

@@ -31,8 +31,8 @@ TipSample tipSample(const TipModel* model, const JointVector& commanded,
 TipSample TrackingStats::tips(const JointVector& commanded, const JointVector& actual) const {
     if (!robot_) return tipSample(model_, commanded, actual);
     TipSample s;
-    s.commanded = robot_->tip(commanded.segment<kArmJointCount>(1));
-    s.actual = robot_->tip(actual.segment<kArmJointCount>(1));
+    robot_->tipPair(commanded.segment<kArmJointCount>(1), actual.segment<kArmJointCount>(1),
+                    s.commanded, s.actual);
     // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
     s.commanded_on_work = robot_->workFromBase(commanded[0], s.commanded);
     s.actual_on_work = robot_->workFromBase(actual[0], s.actual);

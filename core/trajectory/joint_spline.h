@@ -35,10 +35,14 @@ class JointSpline {
     JointSample evaluate(double t) const;
     // Evaluate inside segment i with local time u in [0, dt] (tests of continuity).
     JointSample evaluateSegment(size_t i, double u) const;
+    // The position alone, bit-identical to evaluate(t).q (the offline simulation's hot loop
+    // needs no velocity or acceleration).
+    JointVector position(double t) const;
 
   private:
     std::vector<JointVector> knots_;
     std::vector<JointVector> m_; // second derivatives at the knots
+    std::vector<JointVector> c_; // knot / dt - m dt / 6: the position's linear terms
     double dt_ = 1;
 };
 

@@ -188,6 +188,15 @@ TEST(Kinematics, TipOnlyForwardEqualsTheFullForwardTranslation) {
             const Vec3 tip = robot.tip(q);
             ASSERT_LE((tip - full).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, full.norm()))
                 << "table " << table << " q " << q.transpose();
+            // Two samples at once (the simulation's commanded and actual tips): each lane is
+            // tip() of its own sample exactly.
+            ArmVector other;
+            for (int j = 0; j < kArmJointCount; ++j)
+                other[j] = angle(rng);
+            Vec3 pairA, pairB;
+            robot.tipPair(q, other, pairA, pairB);
+            ASSERT_EQ(pairA, tip) << "table " << table << " q " << q.transpose();
+            ASSERT_EQ(pairB, robot.tip(other)) << "table " << table << " q " << other.transpose();
         }
     }
 }

@@ -56,3 +56,22 @@ TEST(Spline, ClampsOutsideItsDuration) {
     EXPECT_EQ(s.evaluate(5).q, knots.back());
     EXPECT_EQ(s.evaluate(5).qd, JointVector::Zero());
 }
+
+// position() is the hot loop's shortcut: it must be evaluate().q exactly, everywhere.
+TEST(Spline, PositionIsTheEvaluatedPositionExactly) {
+    std::mt19937 rng(3);
+    std::normal_distribution<double> n(0, 1);
+    std::vector<JointVector> knots(40);
+    for (auto& k : knots)
+        for (int i = 0; i < kMaxAxes; ++i)
+            k[i] = n(rng);
+    const JointSpline s(knots, 0.037);
+    std::uniform_real_distribution<double> t(-0.1, s.duration() + 0.1);
+    for (int k = 0; k < 20000; ++k) {
+        const double at = t(rng);
+        ASSERT_EQ(s.position(at), s.evaluate(at).q) << "t " << at;
+    }
+    for (size_t i = 0; i < knots.size(); ++i)
+        ASSERT_EQ(s.position(0.037 * static_cast<double>(i)),
+                  s.evaluate(0.037 * static_cast<double>(i)).q);
+}

@@ -62,6 +62,8 @@ class PipeRobot {
     // once, no homogeneous 4x4 algebra and no last rotation. The products are summed in the
     // order Eigen uses for the full pose, so the result is the same bit for bit (tested).
     Vec3 tip(const ArmVector& q) const;
+    // tip() of two samples at once (commanded and actual), each equal to tip() bit for bit.
+    void tipPair(const ArmVector& qa, const ArmVector& qb, Vec3& a, Vec3& b) const;
     // Frames 0..5 of the arm for drawing (6 poses).
     void armFrames(const ArmVector& q, Pose* out6) const;
 
