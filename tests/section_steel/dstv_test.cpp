@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <clocale>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -251,6 +252,67 @@ TEST(Dstv, ImportedJobsRoundTripThroughTheJobFile) {
         const Job back = parseJob(text);
         EXPECT_EQ(json::write(jobToJson(back)), text) << f;
     }
+}
+
+namespace {
+
+// An NC1 text of an IPE 300 whose end (x = L) is cut at the given angles, the end edges of the
+// web (v) and both flanges (o, u) carrying the given weld preparations ("" for none).
+std::string mitredPiece(double webDeg, double flangeDeg, const std::string& webPrep,
+                        const std::string& flangePrep) {
+    const double L = 4000, h = 300, b = 150;
+    const auto f = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3f", v);
+        return std::string(buf);
+    };
+    std::string t = "ST\n  O\n  D\n  1\n  P\n  S355\n  1\n  IPE300\n  I\n  " + f(L) +
+                    "\n  300\n  150\n  10.7\n  7.1\n  15\n  42.2\n  1.16\n  0\n  " + f(webDeg) +
+                    "\n  0\n  " + f(flangeDeg) + "\n";
+    const auto face = [&](char c, double width, double deg, const std::string& prep) {
+        const double top = L - width * std::tan(deg * 3.14159265358979323846 / 180);
+        t += std::string("AK\n  ") + c + " 0 0 0\n  " + c + " " + f(L) + " 0 0 " + prep + "\n  " +
+             c + " " + f(top) + " " + f(width) + " 0\n  " + c + " 0 " + f(width) + " 0\n  " + c +
+             " 0 0 0\n";
+    };
+    face('v', h, webDeg, webPrep);
+    face('o', b, flangeDeg, flangePrep);
+    face('u', b, flangeDeg, flangePrep);
+    return t + "EN\n";
+}
+
+} // namespace
+
+// Written angles and preparations come back as the job's mitres and grooves, with no report
+// line but the start end (which this job never cuts).
+TEST(Dstv, MitresAndGroovesRoundTripThroughWrittenFiles) {
+    const struct {
+        const char* prep;
+        GrooveType type;
+    } preps[] = {{"", GrooveType::None},
+                 {"25 0", GrooveType::V},
+                 {"35 3", GrooveType::Y},
+                 {"40 2 40 2", GrooveType::K}};
+    int checked = 0;
+    for (double web = -45; web <= 45; web += 7.5)
+        for (double flange = -45; flange <= 45; flange += 15)
+            for (const auto& wp : preps)
+                for (const auto& fp : preps) {
+                    const ImportResult r = importDstv(mitredPiece(web, flange, wp.prep, fp.prep));
+                    const SectionSteelSpec& s = specOf(r.job);
+                    ASSERT_NEAR(s.cut.mitre_horizontal_deg, web, 1e-9);
+                    ASSERT_NEAR(s.cut.mitre_vertical_deg, flange, 1e-9);
+                    ASSERT_EQ(s.cut.web.type, wp.type) << wp.prep;
+                    ASSERT_EQ(s.cut.flanges.type, fp.type) << fp.prep;
+                    if (fp.type == GrooveType::Y) {
+                        EXPECT_EQ(s.cut.flanges.angle_deg, 35);
+                        EXPECT_EQ(s.cut.flanges.root_face_mm, 3);
+                    }
+                    ASSERT_EQ(r.report.size(), 1u) << all(r.report);
+                    EXPECT_NE(r.report[0].find("start end"), std::string::npos);
+                    ++checked;
+                }
+    EXPECT_EQ(checked, 13 * 7 * 16);
 }
 
 // The reader never consults the locale: the same job under a decimal-comma C locale.
