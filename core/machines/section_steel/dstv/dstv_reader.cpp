@@ -298,6 +298,11 @@ class Reader {
         if (n < 20) {
             const int where =
                 at_ < lines_.size() ? lines_[at_].number : static_cast<int>(lines_.size()) + 1;
+            if (at_ < lines_.size() && !isBlockCode(lines_[at_].text.substr(0, 2)))
+                throw DstvError(where, std::string("ST header field ") + std::to_string(n + 1) +
+                                           " (" + names[n] + ") " +
+                                           json::quote(trim(lines_[at_].text)) +
+                                           ": header lines start with two blanks");
             throw DstvError(where, "ST header truncated: field " + std::to_string(n + 1) + " (" +
                                        names[n] + ") missing; the header has 20 lines " +
                                        "(order .. flange end cut) and up to 4 text lines");
