@@ -5,6 +5,7 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
+#include "ui/job_import.h"
 #include "ui/machine/machine_choice.h"
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machine_exports.h"
@@ -176,6 +177,7 @@ void MainWindow::buildMenus() {
         if (!p.isEmpty()) openJob(p);
     });
     recentMenu_ = file->addMenu(tr("Open &recent"));
+    addImportActions(file, this, [this](const std::string& name) { importFromMenu(name); });
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
     file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { saveAs(); });
     file->addSeparator();
@@ -401,6 +403,38 @@ bool MainWindow::openJob(const QString& path, QString* error) {
     }
     log_->add(Severity::Info, tr("Opened %1").arg(document_->path()));
     return true;
+}
+
+bool MainWindow::importJob(const std::string& importer, const QString& path, QString* error) {
+    ImportOutcome imported;
+    QString err;
+    if (!importJobFile(importer, path, &imported, &err)) {
+        log_->add(Severity::Error, err);
+        showFileError(tr("Cannot import the file"), err);
+        if (error) *error = err;
+        return false;
+    }
+    document_->newJob(imported.job);
+    const QString file = QFileInfo(path).fileName();
+    for (const QString& line : imported.report)
+        log_->add(Severity::Warning, QStringLiteral("%1: %2").arg(file, line));
+    log_->add(Severity::Info, tr("Imported %1 as a new job (%2 report lines); save it to keep it.")
+                                  .arg(path)
+                                  .arg(imported.report.size()));
+    if (importReportPrompt_)
+        importReportPrompt_(path, imported.report);
+    else if (isVisible())
+        showImportReport(this, path, imported.report);
+    return true;
+}
+
+void MainWindow::importFromMenu(const std::string& importer) {
+    if (!maybeSave()) return;
+    cutcell::JobImporter i;
+    if (!cutcell::findJobImporter(importer, &i)) return;
+    const QString p = QFileDialog::getOpenFileName(
+        this, tr("Import %1").arg(QString::fromStdString(i.title)), {}, importFileFilter(i));
+    if (!p.isEmpty()) importJob(importer, p);
 }
 
 void MainWindow::newJobFromMenu() {

@@ -62,6 +62,14 @@ class MainWindow : public QMainWindow {
     }
     // File -> New as the menu does it: unsaved changes, the machine, the new job.
     void newJobFromMenu();
+    // File -> Import <format>: the file through that importer as a new document; its report
+    // lines go to the event log (warnings) and, while the window is on screen, a dialog.
+    bool importJob(const std::string& importer, const QString& path, QString* error = nullptr);
+    void importFromMenu(const std::string& importer);
+    // Replaces the import report dialog (tests): gets the file and the report lines.
+    void setImportReportPrompt(std::function<void(const QString&, const QStringList&)> prompt) {
+        importReportPrompt_ = std::move(prompt);
+    }
     // Replaces the file error dialog (tests, unattended runs): gets the title and the message.
     // Without it the dialog is shown while the window is on screen (the log always has it).
     void setErrorPrompt(std::function<void(const QString&, const QString&)> prompt) {
@@ -129,6 +137,7 @@ class MainWindow : public QMainWindow {
     std::function<int()> savePrompt_;
     std::function<std::string()> machinePrompt_;
     std::function<void(const QString&, const QString&)> errorPrompt_;
+    std::function<void(const QString&, const QStringList&)> importReportPrompt_;
     // Display frames: the panels follow the telemetry at most every kDisplayFrameMs.
     static constexpr int kDisplayFrameMs = 60;
     QElapsedTimer sinceDisplayFrame_;

@@ -23,6 +23,7 @@ int runMachines(const MachinesOptions& o); // machines_command.cpp
 int runUpgrade(const UpgradeOptions& o);   // machines_command.cpp
 int runFk(const KinematicsOptions& o);     // kinematics_command.cpp
 int runIk(const KinematicsOptions& o);     // kinematics_command.cpp
+int runImport(const ImportOptions& o);     // import_command.cpp
 int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const DriveSimOptions& o); // drivesim_command.cpp
 int runSimulateCan(const Job& job, const CutPlan& plan, const SimulateOptions& o); // can_run.cpp

@@ -66,6 +66,13 @@ struct UpgradeOptions {
     std::string out; // the schema-2 file, written atomically
 };
 
+// cutcell-cli import-<name> (one command per registered importer).
+struct ImportOptions {
+    std::string importer; // the importer's name ("dstv")
+    std::string file;     // the file to import
+    std::string out;      // the job file, written atomically
+};
+
 struct RunOptions {
     std::string job;
     bool realtime = false;

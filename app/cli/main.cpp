@@ -6,10 +6,12 @@
 #include "option_checks.h"
 #include "realtime_options.h"
 
+#include "core/machine/job_importer.h"
 #include "core/machine/machine_module.h"
 
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <functional>
 
 namespace cutcell::cli {
@@ -29,6 +31,7 @@ struct AllOptions {
     MachinesOptions machines;
     UpgradeOptions upgrade;
     KinematicsOptions fk, ik;
+    std::deque<ImportOptions> imports; // one per importer (stable addresses for CLI11)
 };
 
 struct Command {
@@ -141,6 +144,26 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     addJob(*ik, o.ik.job);
     ik->add_option("--arm", o.ik.arm, "the machine's arm (section-steel: path | groove)");
     ik->add_option("--pose", o.ik.values, "x,y,z (mm),tx,ty,tz (torch direction)")->required();
+
+    // import-<name>: one command per registered importer (MachineModule::importers()).
+    for (const JobImporter& importer : jobImporters()) {
+        ImportOptions& io = o.imports.emplace_back();
+        io.importer = importer.name;
+        const std::string name = "import-" + importer.name;
+        std::string patterns;
+        for (const std::string& p : importer.patterns)
+            patterns += (patterns.empty() ? "" : " ") + p;
+        CLI::App* imp = add(name.c_str(),
+                            (importer.description + " (" + patterns +
+                             "); prints what the job "
+                             "does not do, line by line")
+                                .c_str(),
+                            [&io] { return runImport(io); });
+        imp->add_option("FILE", io.file, "the file to import")->type_name("FILE")->required();
+        imp->add_option("--out", io.out, "the job file (written atomically)")
+            ->type_name("JOB.json")
+            ->required();
+    }
 
     CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
                             [&] { return runUpgrade(o.upgrade); });

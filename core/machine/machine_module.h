@@ -15,6 +15,7 @@
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
 #include "core/job/job_io.h"
+#include "core/machine/job_importer.h"
 #include "core/json/json.h"
 
 #include <memory>
@@ -133,6 +134,9 @@ class MachineModule {
     virtual bool inverseKinematics(const Job& job, const std::string& arm,
                                    const std::vector<double>& pose, json::Value* out,
                                    std::string* why) const;
+    // File formats this machine turns into jobs (File -> Import..., `cutcell-cli
+    // import-<name>`; core/machine/job_importer.h); none by default.
+    virtual std::vector<JobImporter> importers() const { return {}; }
     // The report of an engine run (`cutcell-cli run`, the GUI's run) in the machine's units.
     virtual json::Value runReport(const Job& job, const MachinePlan& plan,
                                   const TrackingReport& report) const = 0;

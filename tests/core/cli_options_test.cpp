@@ -90,6 +90,10 @@ std::vector<CommandSpec> commands() {
          job + " --template-svg " + (refusedDir() / "t.svg").string()},
         {"machines", {"--json"}, "--json"},
         {"upgrade", {"--out"}, job + " --out " + (refusedDir() / "new.json").string()},
+        {"import-dstv",
+         {"--out"},
+         std::string(CUTCELL_SOURCE_DIR) + "/tests/data/dstv/ipe300_square.nc1 --out " +
+             (refusedDir() / "imported.json").string()},
     };
 #ifdef CUTCELL_CLI_HAS_DEVICES
     std::vector<std::string> run{"--realtime", "--quiet", "--report", "--runs"};

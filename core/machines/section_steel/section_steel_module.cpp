@@ -3,6 +3,7 @@
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/issue_checker.h"
+#include "core/machines/section_steel/dstv/dstv_import.h"
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_program.h"
 #include "core/machines/section_steel/section_steel_section.h"
@@ -120,6 +121,10 @@ std::string SectionSteelModule::exportFile(const std::string& exportId, const Jo
     if (!p || !plan.ok()) throw std::invalid_argument("the plan has no feasible cut");
     if (exportId == "path_csv") return steelPathCsv(specOf(job), *p);
     throw std::invalid_argument("the section-steel cutter has no export " + json::quote(exportId));
+}
+
+std::vector<JobImporter> SectionSteelModule::importers() const {
+    return {dstvImporter()};
 }
 
 json::Value SectionSteelModule::runReport(const Job&, const MachinePlan& plan,

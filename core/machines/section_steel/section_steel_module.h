@@ -30,6 +30,8 @@ class SectionSteelModule : public MachineModule {
                            const MachinePlan& plan) const override;
     // section_ik_ns_per_solve, section_torch_ik_ns_per_solve, section_end_cut_plan_ms.
     void addBenchFigures(bool quick, json::Object& out) const override;
+    // "dstv": DSTV (NC1) pieces (dstv/dstv_import.h).
+    std::vector<JobImporter> importers() const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
     // Arms "path" and "groove" (section_steel_kinematics_json.cpp).
