@@ -137,12 +137,14 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     CLI::App* fk = add("fk", "arm machines: torch tip and direction for joint values (JSON)",
                        [&] { return runFk(o.fk); });
     addJob(*fk, o.fk.job);
-    fk->add_option("--arm", o.fk.arm, "the machine's arm (section-steel: path | groove)");
+    fk->add_option("--arm", o.fk.arm,
+                   "the machine's arm (pipe robot: arm; section-steel: path | groove)");
     fk->add_option("--joints", o.fk.values, "joint values in deg, comma-separated")->required();
     CLI::App* ik = add("ik", "arm machines: every IK branch with its status (JSON)",
                        [&] { return runIk(o.ik); });
     addJob(*ik, o.ik.job);
-    ik->add_option("--arm", o.ik.arm, "the machine's arm (section-steel: path | groove)");
+    ik->add_option("--arm", o.ik.arm,
+                   "the machine's arm (pipe robot: arm; section-steel: path | groove)");
     ik->add_option("--pose", o.ik.values, "x,y,z (mm),tx,ty,tz (torch direction)")->required();
 
     // import-<name>: one command per registered importer (MachineModule::importers()).

@@ -1,6 +1,8 @@
 // cutcell-cli as a user runs it: exit codes, messages and the files it writes.
+#include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
+#include "core/json/json.h"
 
 #include <gtest/gtest.h>
 
@@ -143,4 +145,38 @@ TEST(Cli, UnknownCommandAndMissingArgumentsAreUsageErrors) {
     EXPECT_EQ(runCli("frobnicate").code, 64);
     EXPECT_EQ(runCli("plan " + defaultJobPath()).code, 64);
     EXPECT_EQ(runCli("validate /nonexistent/job.json").code, 1);
+}
+
+// cutcell-cli fk / ik on the pipe robot: the pose of some joints, then every IK branch of
+// that pose; the joints come back as an "ok" branch. Bad input names the option.
+TEST(Cli, PipeRobotForwardThenInverseListsTheJoints) {
+    const double q[5] = {20, 35, -25, 30, 10};
+    const Result fk = runCli("fk " + defaultJobPath() + " --joints 20,35,-25,30,10", false);
+    ASSERT_EQ(fk.code, 0) << fk.output;
+    const json::Value f = json::parse(fk.output);
+    const auto& tip = f.find("tip_mm")->asArray();
+    const auto& torch = f.find("torch")->asArray();
+    std::string pose;
+    for (const auto* a : {&tip, &torch})
+        for (const auto& v : *a)
+            pose += (pose.empty() ? "" : ",") + formatC("%.17g", v.asNumber());
+    const Result ik = runCli("ik " + defaultJobPath() + " --pose " + pose + ",10", false);
+    ASSERT_EQ(ik.code, 0) << ik.output;
+    const json::Value i = json::parse(ik.output);
+    bool found = false;
+    for (const auto& b : i.find("branches")->asArray()) {
+        if (b.find("status")->asString() != "ok") continue;
+        const auto& j = b.find("joints_deg")->asArray();
+        double d = 0;
+        for (size_t k = 0; k < 5; ++k)
+            d += std::fabs(j[k].asNumber() - q[k]);
+        found = found || d < 1e-6;
+    }
+    EXPECT_TRUE(found) << ik.output;
+    const Result bad = runCli("fk " + defaultJobPath() + " --joints 1,2,3");
+    EXPECT_EQ(bad.code, 64);
+    EXPECT_NE(bad.output.find("--joints needs 5 values"), std::string::npos) << bad.output;
+    const Result arm = runCli("ik " + defaultJobPath() + " --arm path --pose 1,2,3,0,0,1");
+    EXPECT_EQ(arm.code, 64);
+    EXPECT_NE(arm.output.find("--arm"), std::string::npos) << arm.output;
 }

@@ -70,6 +70,44 @@ TEST(Kinematics, InverseOfForwardGivesBackTheJoints) {
             EXPECT_GE(branch[behind][down], 10) << "behind " << behind << ", elbow down " << down;
 }
 
+// Every branch `cutcell-cli ik` lists: an "ok" branch reaches the tip and the torch axis, the
+// true configuration is among them, and solve() (no reference) returns one of them.
+TEST(Kinematics, EveryListedBranchReachesThePose) {
+    const PipeRobot robot(seedDhTable());
+    std::mt19937 rng(8);
+    int okBranches = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const ArmVector q = randomInLimits(robot, rng);
+        const Pose T = robot.forward(q);
+        const Vec3 tip = T.translation(), axis = T.linear().col(2);
+        const IkBranches all = robot.solveBranches(tip, axis, q[4]);
+        ASSERT_GE(all.count, 1);
+        ASSERT_LE(all.count, 4);
+        bool trueFound = false;
+        for (int b = 0; b < all.count; ++b) {
+            const IkResult& r = all.branch[static_cast<size_t>(b)];
+            if (!r.ok()) {
+                EXPECT_FALSE(describe(r).empty());
+                continue;
+            }
+            ++okBranches;
+            const Pose Tb = robot.forward(r.q);
+            ASSERT_LE((Tb.translation() - tip).norm(), 1e-9) << "i = " << i << " branch " << b;
+            ASSERT_LE((Tb.linear().col(2) - axis).norm(), 1e-9) << "i = " << i << " branch " << b;
+            for (int j = 0; j < kArmJointCount; ++j)
+                ASSERT_TRUE(robot.withinLimits(j + 1, r.q[j])) << "i = " << i << " joint " << j;
+            trueFound = trueFound || (r.q - q).cwiseAbs().maxCoeff() < 1e-7;
+        }
+        EXPECT_TRUE(trueFound) << "i = " << i << " q " << q.transpose();
+        const IkResult chosen = robot.solve(tip, axis, q[4]);
+        bool listed = false;
+        for (int b = 0; b < all.count; ++b)
+            listed = listed || all.branch[static_cast<size_t>(b)].q == chosen.q;
+        EXPECT_TRUE(listed) << "i = " << i;
+    }
+    EXPECT_GT(okBranches, 2000); // more than one branch is usually reachable
+}
+
 TEST(Kinematics, ForwardOfInverseGivesBackThePose) {
     const PipeRobot robot(seedDhTable());
     std::mt19937 rng(3);

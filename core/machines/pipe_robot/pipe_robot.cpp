@@ -198,12 +198,12 @@ void PipeRobot::armFrames(const ArmVector& q, Pose* out6) const {
 
 IkResult PipeRobot::solve(const Vec3& tip, const Vec3& approach, double roll,
                           const ArmVector* previous) const {
-    return solveImpl(tip, approach, nullptr, roll, previous);
+    return solveImpl(tip, approach, nullptr, roll, previous, nullptr);
 }
 
 IkResult PipeRobot::solve(const Pose& tool, const ArmVector* previous) const {
     const Vec3 n = tool.linear().col(0);
-    return solveImpl(tool.translation(), tool.linear().col(2), &n, 0, previous);
+    return solveImpl(tool.translation(), tool.linear().col(2), &n, 0, previous, nullptr);
 }
 
 // The angle equal to `value` modulo 2 pi that lies within the axis limits and nearest to
@@ -229,8 +229,16 @@ double PipeRobot::nearestWithinLimits(int axis, double value, double reference, 
     return best;
 }
 
+IkBranches PipeRobot::solveBranches(const Vec3& tip, const Vec3& approach, double roll) const {
+    IkBranches all;
+    const IkResult chosen = solveImpl(tip, approach, nullptr, roll, nullptr, &all);
+    // Refused before any branch (singular base, torch off the joint-1 plane): that reason.
+    if (all.count == 0) all.branch[all.count++] = chosen;
+    return all;
+}
+
 IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, double roll,
-                              const ArmVector* previous) const {
+                              const ArmVector* previous, IkBranches* all) const {
     IkResult out;
     const Vec3 a = aIn.normalized();
     const ArmVector ref = previous ? *previous : ArmVector::Zero();
@@ -278,6 +286,7 @@ IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, dou
             f.residual = D > 1 ? dist - (a2_ + a3_) : std::fabs(a2_ - a3_) - dist;
             if (!haveReachFailure) reachFailure = f;
             haveReachFailure = true;
+            if (all) all->branch[all->count++] = f; // one entry for both elbows
             continue;
         }
         const double c3 = std::clamp(D, -1.0, 1.0);
@@ -318,6 +327,7 @@ IkResult PipeRobot::solveImpl(const Vec3& p, const Vec3& aIn, const Vec3* n, dou
                 cand.axis = 3;
                 allOk = false;
             }
+            if (all) all->branch[all->count++] = cand;
             if (allOk) {
                 if (cost < bestCost) {
                     bestCost = cost;

@@ -38,6 +38,13 @@ struct IkResult {
     bool ok() const { return status == IkStatus::Ok; }
 };
 
+// Every IK branch of a pose (shoulder facing the tip or reaching over, elbow up or down), each
+// with its status; a pose refused before any branch gives that one result.
+struct IkBranches {
+    std::array<IkResult, 4> branch{};
+    int count = 0;
+};
+
 // One sentence for the user, e.g. "joint 3 = 97.2 deg is past its limit 90 deg by 7.2 deg".
 std::string describe(const IkResult& r);
 
@@ -72,12 +79,14 @@ class PipeRobot {
     // angles are unwrapped toward it, so a path stays continuous.
     IkResult solve(const Vec3& tip, const Vec3& approach, double roll,
                    const ArmVector* previous = nullptr) const;
+    // Every branch of solve(tip, approach, roll) with its status, none chosen (cutcell-cli ik).
+    IkBranches solveBranches(const Vec3& tip, const Vec3& approach, double roll) const;
     // Full tool pose: theta5 follows from the n column.
     IkResult solve(const Pose& tool, const ArmVector* previous = nullptr) const;
 
   private:
     IkResult solveImpl(const Vec3& p, const Vec3& a, const Vec3* n, double roll,
-                       const ArmVector* previous) const;
+                       const ArmVector* previous, IkBranches* all) const;
     double nearestWithinLimits(int axis, double value, double reference, bool* ok) const;
 
     // Per arm link: cos/sin of alpha, a, d and the theta offset (for tip()).

@@ -32,6 +32,12 @@ class PipeRobotModule : public MachineModule {
                        std::string* text, std::string* why) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
+    // Arm "arm": theta1..theta5 (deg, optionally theta0 first) -> torch; a pose -> every branch.
+    bool forwardKinematics(const Job& job, const std::string& arm,
+                           const std::vector<double>& jointsDeg, json::Value* out,
+                           std::string* why) const override;
+    bool inverseKinematics(const Job& job, const std::string& arm, const std::vector<double>& pose,
+                           json::Value* out, std::string* why) const override;
 };
 
 } // namespace cutcell
