@@ -27,6 +27,8 @@ class XyFiguresWidget : public QWidget {
   public:
     // The panels side by side (Horizontal) or stacked (Vertical, for a narrow dock).
     XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent = nullptr);
+    // The panels in a grid of `columns`, row by row (e.g. four controllers side by side).
+    XyFiguresWidget(int panels, int columns, QWidget* parent = nullptr);
     ~XyFiguresWidget() override;
 
     int panelCount() const;

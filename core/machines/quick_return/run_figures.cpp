@@ -53,7 +53,7 @@ bool RunFigures::add(const TelemetrySample& s) {
     if (hasPrev1_) {
         // Central difference at prev1 (backward for the run's first sample).
         const Raw& from = hasPrev2_ ? prev2_ : prev1_;
-        emit(prev1_, (cur.y - from.y) / (cur.t - from.t));
+        push(prev1_, (cur.y - from.y) / (cur.t - from.t));
     }
     prev2_ = prev1_;
     hasPrev2_ = hasPrev1_;
@@ -66,13 +66,13 @@ void RunFigures::flush() {
     if (hasPrev1_) {
         const double dy =
             hasPrev2_ && prev1_.t > prev2_.t ? (prev1_.y - prev2_.y) / (prev1_.t - prev2_.t) : 0;
-        emit(prev1_, dy);
+        push(prev1_, dy);
     }
     hasPrev1_ = hasPrev2_ = false;
     if (inStroke_) finishStroke();
 }
 
-void RunFigures::emit(const Raw& r, double dy) {
+void RunFigures::push(const Raw& r, double dy) {
     if (r.cutting && !inStroke_) {
         inStroke_ = true;
         t0Refined_ = false;

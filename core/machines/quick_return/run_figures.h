@@ -57,7 +57,9 @@ class RunFigures {
     // Ends the pending sample as the last of the run (done by add() for a non-run state).
     void flush();
 
-    bool active() const { return active_; }      // within a run (Running or Paused)
+    bool active() const { return active_; } // within a run (Running or Paused)
+    // The last sample was of a run: a Running sample now continues it (else it begins one).
+    bool lastWasRun() const { return lastWasRun_; }
     std::uint64_t runs() const { return runs_; } // runs begun since construction
     const std::vector<RunFigurePoint>& points() const { return points_; }
     std::uint64_t droppedPoints() const { return dropped_; }
@@ -69,7 +71,7 @@ class RunFigures {
         double t = 0, y = 0, torque = 0, setpointY = 0;
         bool cutting = false, supervised = false;
     };
-    void emit(const Raw& r, double dy);
+    void push(const Raw& r, double dy); // (not "emit": a Qt macro)
     void finishStroke();
     void refreshPoint(RunFigurePoint& p) const; // y_d, y_d' from t0_
     void refreshStroke();                       // of the current stroke's points
