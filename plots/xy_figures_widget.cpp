@@ -4,6 +4,7 @@
 
 #include <QBoxLayout>
 #include <QGridLayout>
+#include <QLocale>
 
 #include <algorithm>
 
@@ -22,6 +23,7 @@ namespace {
 
 QCustomPlot* makePanel(QWidget* parent, std::vector<QCPTextElement*>* titles) {
     auto* p = new QCustomPlot(parent);
+    p->setLocale(QLocale::c()); // tick labels with a decimal point under any locale
     p->setMinimumSize(220, 230);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->plotLayout()->insertRow(0);
@@ -56,7 +58,9 @@ XyFiguresWidget::XyFiguresWidget(int panels, int columns, QWidget* parent)
     columns = std::max(1, columns);
     for (int i = 0; i < panels; ++i) {
         QCustomPlot* p = makePanel(this, &d->titles);
-        grid->addWidget(p, i / columns, i % columns);
+        // The last panel spans what is left of its row.
+        const int span = i == panels - 1 ? columns - i % columns : 1;
+        grid->addWidget(p, i / columns, i % columns, 1, span);
         d->plots.push_back(p);
         d->points.push_back(0);
     }
@@ -103,6 +107,12 @@ void XyFiguresWidget::setCurves(int panel, const std::vector<XyCurve>& curves) {
     }
     d->points[static_cast<size_t>(panel)] = points;
     p->rescaleAxes();
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void XyFiguresWidget::setLegendAlignment(int panel, Qt::Alignment alignment) {
+    QCustomPlot* p = d->plots.at(static_cast<size_t>(panel));
+    p->axisRect()->insetLayout()->setInsetAlignment(0, alignment);
     p->replot(QCustomPlot::rpQueuedReplot);
 }
 

@@ -62,6 +62,9 @@ QuickReturnFiguresForm::QuickReturnFiguresForm(JobEditor* editor, QWidget* paren
     figures_->setPanel(0, tr("Velocity profile"), tr("t (s)"), tr("y' (m/s)"));
     figures_->setPanel(1, tr("Phase diagram"), tr("y (m)"), tr("y' (m/s)"));
     figures_->setPanel(2, tr("Velocity error in the work"), tr("y (m)"), tr("y_d' - y' (m/s)"));
+    // Inside the phase diagram's loop (the return's hump above, the cut below) nothing is drawn.
+    figures_->setLegendAlignment(1, Qt::AlignCenter);
+    figures_->setLegendAlignment(2, Qt::AlignBottom | Qt::AlignLeft);
     mainLayout()->addWidget(button_);
     mainLayout()->addWidget(sourceLabel_);
     mainLayout()->addWidget(summary_);

@@ -76,7 +76,12 @@ QuickReturnTrackingForm::QuickReturnTrackingForm(JobEditor* editor, QWidget* par
         for (int c = 1; c < 4; ++c)
             table_->setItem(r, c, new QTableWidgetItem(QStringLiteral("-")));
     }
-    figures_ = new cutcell::plots::XyFiguresWidget(5, 2, this); // 2 columns: 3 rows
+    // Exactly the four rows: no empty band below them.
+    table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
+                           4 * table_->verticalHeader()->defaultSectionSize() +
+                           2 * table_->frameWidth());
+    // Two rows: FFC, LQT, SMC; OSMC and the four errors (twice as wide).
+    figures_ = new cutcell::plots::XyFiguresWidget(5, 3, this);
     for (int i = 0; i < 4; ++i)
         figures_->setPanel(i, tr("%1: y and y_d").arg(upper(qr::kAllControllers[size_t(i)])),
                            tr("t (s)"), tr("y (m)"));
