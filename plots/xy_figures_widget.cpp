@@ -3,6 +3,10 @@
 #include <qcustomplot.h>
 
 #include <QBoxLayout>
+#include <QGridLayout>
+#include <QLocale>
+
+#include <algorithm>
 
 #include <cmath>
 #include <limits>
@@ -15,26 +19,53 @@ struct XyFiguresWidget::Impl {
     std::vector<int> points;
 };
 
+namespace {
+
+QCustomPlot* makePanel(QWidget* parent, std::vector<QCPTextElement*>* titles) {
+    auto* p = new QCustomPlot(parent);
+    p->setLocale(QLocale::c()); // tick labels with a decimal point under any locale
+    p->setMinimumSize(220, 230);
+    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    p->plotLayout()->insertRow(0);
+    auto* title = new QCPTextElement(p, QString(), QFont(parent->font().family(), 9, QFont::Bold));
+    p->plotLayout()->addElement(0, 0, title);
+    p->legend->setVisible(true);
+    p->legend->setFont(QFont(parent->font().family(), 8));
+    p->legend->setBrush(QColor(255, 255, 255, 200));
+    titles->push_back(title);
+    return p;
+}
+
+} // namespace
+
 XyFiguresWidget::XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent)
     : QWidget(parent), d(std::make_unique<Impl>()) {
     auto* row = new QBoxLayout(
         orientation == Qt::Horizontal ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom, this);
     row->setContentsMargins(0, 0, 0, 0);
     for (int i = 0; i < panels; ++i) {
-        auto* p = new QCustomPlot(this);
-        p->setMinimumSize(220, 230);
-        p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-        p->plotLayout()->insertRow(0);
-        auto* title = new QCPTextElement(p, QString(), QFont(font().family(), 9, QFont::Bold));
-        p->plotLayout()->addElement(0, 0, title);
-        p->legend->setVisible(true);
-        p->legend->setFont(QFont(font().family(), 8));
-        p->legend->setBrush(QColor(255, 255, 255, 200));
+        QCustomPlot* p = makePanel(this, &d->titles);
         row->addWidget(p, 1);
         d->plots.push_back(p);
-        d->titles.push_back(title);
         d->points.push_back(0);
     }
+}
+
+XyFiguresWidget::XyFiguresWidget(int panels, int columns, QWidget* parent)
+    : QWidget(parent), d(std::make_unique<Impl>()) {
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    columns = std::max(1, columns);
+    for (int i = 0; i < panels; ++i) {
+        QCustomPlot* p = makePanel(this, &d->titles);
+        // The last panel spans what is left of its row.
+        const int span = i == panels - 1 ? columns - i % columns : 1;
+        grid->addWidget(p, i / columns, i % columns, 1, span);
+        d->plots.push_back(p);
+        d->points.push_back(0);
+    }
+    for (int c = 0; c < columns; ++c)
+        grid->setColumnStretch(c, 1);
 }
 
 XyFiguresWidget::~XyFiguresWidget() = default;
@@ -76,6 +107,12 @@ void XyFiguresWidget::setCurves(int panel, const std::vector<XyCurve>& curves) {
     }
     d->points[static_cast<size_t>(panel)] = points;
     p->rescaleAxes();
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void XyFiguresWidget::setLegendAlignment(int panel, Qt::Alignment alignment) {
+    QCustomPlot* p = d->plots.at(static_cast<size_t>(panel));
+    p->axisRect()->insetLayout()->setInsetAlignment(0, alignment);
     p->replot(QCustomPlot::rpQueuedReplot);
 }
 

@@ -4,6 +4,8 @@
 // beside its live plots (the quick-return cutter's velocity profile, phase diagram and
 // velocity error). QCustomPlot stays behind the pimpl.
 //
+// Tick labels are written in the C locale (decimal point), whatever the default locale.
+//
 // Threading contract: GUI thread only.
 #include <QColor>
 #include <QString>
@@ -27,12 +29,17 @@ class XyFiguresWidget : public QWidget {
   public:
     // The panels side by side (Horizontal) or stacked (Vertical, for a narrow dock).
     XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent = nullptr);
+    // The panels in a grid of `columns`, row by row (e.g. four controllers side by side); the
+    // last panel spans the rest of its row.
+    XyFiguresWidget(int panels, int columns, QWidget* parent = nullptr);
     ~XyFiguresWidget() override;
 
     int panelCount() const;
     void setPanel(int panel, const QString& title, const QString& xLabel, const QString& yLabel);
     // Replaces the panel's curves and rescales its axes to them.
     void setCurves(int panel, const std::vector<XyCurve>& curves);
+    // Where the panel's legend sits inside its axes (default top right).
+    void setLegendAlignment(int panel, Qt::Alignment alignment);
     int curveCount(int panel) const;
     int pointCount(int panel) const; // drawn points over the panel's curves
 

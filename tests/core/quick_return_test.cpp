@@ -4,10 +4,12 @@
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/quick_return/quick_return_module.h"
+#include "core/machines/quick_return/run_figures.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace cutcell::quick_return {
@@ -262,6 +264,59 @@ TEST(QuickReturnJob, RoundTripAndRefusals) {
     tooLong.machine_spec.set(s);
     ASSERT_FALSE(m.validate(tooLong).empty());
     EXPECT_EQ(m.validate(tooLong)[0].key, "cut.workpiece_length_m");
+}
+
+// RunFigures on hand-made telemetry: a run is the Running/Paused samples from a Running one
+// after any other state; a stop ends it (figures kept), the next Start begins anew; y is B.2 of
+// the crank angle, y' the central difference of those y.
+TEST(QuickReturnRunFigures, RunsBeginAtStartEndAtAStopAndDifferentiateTheCrankPosition) {
+    QuickReturnLawConfig law;
+    law.stroke = strokeInfo(law.dims);
+    law.profile = algorithm1(law.stroke.y_top, law.stroke.y_bottom, 0.3, -0.762);
+    ASSERT_TRUE(law.stroke.ok && law.profile.ok);
+    RunFigures f(law);
+    const auto sample = [&](EngineState st, double t, double q, const char* phase) {
+        TelemetrySample s;
+        s.state = st;
+        s.elapsed_s = t;
+        s.actual[0] = s.setpoint[0] = q;
+        s.command[0] = 2 * q;
+        std::snprintf(s.source_state.data(), s.source_state.size(), "%s", phase);
+        return s;
+    };
+    const auto y = [&](double q) {
+        return forwardKinematics(law.dims, q).y + law.dims.scale_offset;
+    };
+    const double q0 = law.stroke.q_top + 0.5, w = 3.0, T = 0.001;
+    EXPECT_FALSE(f.add(sample(EngineState::Ready, 0, q0, "holding")));
+    EXPECT_FALSE(f.active());
+    EXPECT_TRUE(f.add(sample(EngineState::Running, 0, q0, "cutting stroke")));
+    for (int i = 1; i <= 10; ++i)
+        EXPECT_FALSE(f.add(sample(EngineState::Running, i * T, q0 + w * i * T, "cutting stroke")));
+    EXPECT_TRUE(f.active());
+    EXPECT_EQ(f.points().size(), 10u); // the last one waits for its successor
+    f.add(sample(EngineState::EmergencyStop, 0, q0, "braking"));
+    EXPECT_FALSE(f.active());
+    ASSERT_EQ(f.points().size(), 11u); // ended: the last one with a backward difference
+    EXPECT_EQ(f.runs(), 1u);
+    EXPECT_EQ(f.stats().cuts, 1);
+    for (size_t k = 1; k + 1 < f.points().size(); ++k) {
+        const RunFigurePoint& p = f.points()[k];
+        const double i = static_cast<double>(k);
+        const double qa = q0 + w * (i - 1.0) * T, qb = q0 + w * (i + 1.0) * T;
+        EXPECT_NEAR(p.y, y(q0 + w * i * T), 1e-12);
+        EXPECT_NEAR(p.dy, (y(qb) - y(qa)) / (2 * T), 1e-9);
+        EXPECT_TRUE(p.cutting);
+        EXPECT_EQ(p.stroke, 0);
+        EXPECT_DOUBLE_EQ(p.torque, 2 * (q0 + w * i * T));
+    }
+    // Samples after the stop are not the run's; the next Start begins a new one.
+    f.add(sample(EngineState::Ready, 0, q0, "holding"));
+    EXPECT_EQ(f.points().size(), 11u);
+    EXPECT_TRUE(f.add(sample(EngineState::Running, 0, q0, "open-loop return (push)")));
+    EXPECT_EQ(f.runs(), 2u);
+    EXPECT_TRUE(f.points().empty());
+    EXPECT_EQ(f.stats().cuts, 0);
 }
 
 } // namespace

@@ -1,9 +1,12 @@
 // The quick-return (Whitworth) cutter of seed 004 in the operator station (issue 15): File ->
 // New offers it with its pages; its default job plans through the core module; a run on the
 // simulated mechanism completes in the fast clock; EMERGENCY STOP removes the crank torque in
-// the very next sample; the 3D linkage follows the core's forward kinematics; the figures page
-// simulates the cut. With CUTCELL_QR_SCREENSHOT=<file.png> (under xvfb-run) the window with the
-// mechanism and the phase diagram is saved there.
+// the very next sample; the 3D linkage follows the core's forward kinematics; the Cut figures
+// page draws the last run from its telemetry (live) or simulates the cut off the GUI thread; the
+// Experiment 1 page runs the four controllers off the GUI thread and writes its table in the C
+// locale. Under xvfb-run, CUTCELL_QR_SCREENSHOT=<file.png> saves the window with the mechanism
+// and the last run's phase diagram, CUTCELL_QR_EXP1_SCREENSHOT=<file.png> the window with the
+// experiment-1 table and plots (xvfb-run -a -s "-screen 0 1600x1200x24").
 #include "sim_rig.h"
 
 #include "core/machine/machine_module.h"
@@ -17,6 +20,7 @@
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machines/quick_return_cutter/quick_return_figures.h"
 #include "ui/machines/quick_return_cutter/quick_return_scene.h"
+#include "ui/machines/quick_return_cutter/quick_return_tracking_page.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/monitor_views.h"
@@ -28,7 +32,9 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSplitter>
 #include <QTabWidget>
+#include <QTableWidget>
 
 #include <QtTest>
 
@@ -55,6 +61,13 @@ void newQuickReturnJob(MainWindow& w) {
     QCOMPARE(QString::fromStdString(job.machine), QString(kId));
     job.engine.runs_dir = ""; // no run logs in the source tree
     w.editor()->setJob(job);
+}
+
+// Shows the parameter page `page` (its tab in the parameter tabs).
+void showPage(QWidget* page) {
+    for (QWidget* p = page; p && p->parentWidget(); p = p->parentWidget())
+        if (auto* tabs = qobject_cast<QTabWidget*>(p->parentWidget()->parentWidget()))
+            if (tabs->indexOf(p) >= 0) tabs->setCurrentWidget(p);
 }
 
 } // namespace
@@ -163,6 +176,13 @@ class TestGuiQuickReturn : public QObject {
             QCOMPARE(seen[i].command[0], 0.0);
             QCOMPARE(seen[i].state, EngineState::EmergencyStop);
         }
+        // The Cut figures page saw the run and ended it at the stop: its points are the run's.
+        auto* figures = w.findChild<CutCell::ui::QuickReturnFiguresForm*>();
+        QVERIFY(figures);
+        QCOMPARE(figures->source(), CutCell::ui::QuickReturnFiguresForm::Source::LastRun);
+        QVERIFY(!figures->runFigures().active());
+        QVERIFY(!figures->runFigures().points().empty());
+        QVERIFY(figures->runFigures().points().back().t <= seen[first - 1].elapsed_s);
     }
 
     void sceneFollowsTheCoreKinematics() {
@@ -208,35 +228,128 @@ class TestGuiQuickReturn : public QObject {
             QVERIFY(std::isfinite(v));
     }
 
-    void figuresPageSimulatesTheCut() {
+    void figuresPageSimulatesTheCutOffTheGuiThread() {
         MainWindow w(&cutcell::app::makeRig);
         newQuickReturnJob(w);
         auto* figures = w.findChild<CutCell::ui::QuickReturnFiguresForm*>();
         QVERIFY(figures);
+        QSignalSpy done(figures, &CutCell::ui::QuickReturnFiguresForm::simulated);
         QString why;
-        QVERIFY2(figures->simulate(&why), qPrintable(why));
+        QVERIFY2(figures->startSimulation(&why), qPrintable(why));
+        // Returned at once: the simulation runs on a pool thread, the button waits for it.
+        QVERIFY(figures->simulating());
+        QVERIFY(!figures->simulateButton()->isEnabled());
+        QVERIFY(!figures->startSimulation(&why)); // one at a time
+        QVERIFY(done.wait(60000));
+        QVERIFY(done.at(0).at(0).toBool());
+        QCOMPARE(figures->source(), CutCell::ui::QuickReturnFiguresForm::Source::Simulation);
+        QVERIFY(figures->simulateButton()->isEnabled());
         for (int panel = 0; panel < 3; ++panel)
             QVERIFY(figures->figures()->pointCount(panel) > 10);
         QVERIFY(figures->summary()->text().contains("RMS"));
-        if (qEnvironmentVariableIsSet("CUTCELL_QR_SCREENSHOT")) screenshot(w, figures);
+    }
+
+    // Experiment 1 from the GUI: the four controllers with the job's parameters, computed off the
+    // GUI thread; the table holds the core's MSE, written with a decimal point under de_DE.
+    void experiment1RunsTheFourControllersOffTheGuiThread() {
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        MainWindow w(&cutcell::app::makeRig);
+        newQuickReturnJob(w);
+        auto* page = w.findChild<CutCell::ui::QuickReturnTrackingForm*>();
+        QVERIFY(page);
+        QVERIFY(w.parameters()->tabShown("Experiment 1"));
+        QSignalSpy done(page, &CutCell::ui::QuickReturnTrackingForm::finished);
+        QString why;
+        QVERIFY2(page->startExperiment(&why), qPrintable(why));
+        QVERIFY(page->running());
+        QVERIFY(!page->runButton()->isEnabled());
+        QVERIFY(done.wait(120000));
+        QLocale::setDefault(before);
+        const CutCell::ui::TrackingBatch& b = page->lastBatch();
+        QVERIFY(b.offGuiThread);
+        QVERIFY(!b.cancelled);
+        QCOMPARE(b.results.size(), size_t(4));
+        QTableWidget* table = page->table();
+        QCOMPARE(table->rowCount(), 4);
+        for (int row = 0; row < 4; ++row) {
+            const auto kind = cutcell::quick_return::kAllControllers[size_t(row)];
+            QCOMPARE(table->item(row, 0)->text(),
+                     QString::fromUtf8(cutcell::quick_return::toString(kind)).toUpper());
+            // The core's own figure for the same set-up (runTracking is deterministic).
+            const auto core = cutcell::quick_return::runTracking(page->lastSetup(), kind);
+            for (int col = 1; col < 4; ++col) {
+                const QString text = table->item(row, col)->text();
+                QVERIFY2(!text.contains(QLatin1Char(',')), qPrintable(text));
+                bool ok = false;
+                text.toDouble(&ok); // QString::toDouble reads the C locale only
+                QVERIFY2(ok, qPrintable(text));
+            }
+            QCOMPARE(table->item(row, 1)->text().toDouble(), std::round(core.mse * 1e4) / 1e4);
+            QCOMPARE(table->item(row, 2)->text().toDouble(),
+                     std::round(core.max_abs_error * 1e6) / 1e3);
+            QVERIFY(page->figures()->pointCount(row) > 100); // y and y_d over the run
+        }
+        QVERIFY(page->figures()->pointCount(4) > 400); // the four errors
+        QVERIFY(page->status()->text().contains("Lowest MSE"));
+        if (qEnvironmentVariableIsSet("CUTCELL_QR_EXP1_SCREENSHOT"))
+            screenshot(w, page, qEnvironmentVariable("CUTCELL_QR_EXP1_SCREENSHOT"), 1000);
+    }
+
+    // The Cut figures page follows a run on the engine from its telemetry: drawn while it runs,
+    // complete when it ends, with the strokes, the work's velocity error and the torque.
+    void cutFiguresFollowTheRunFromItsTelemetry() {
+        MainWindow w(&cutcell::app::makeRig); // real time: telemetry every cycle, ~3 s
+        newQuickReturnJob(w);
+        auto* figures = w.findChild<CutCell::ui::QuickReturnFiguresForm*>();
+        QVERIFY(figures);
+        QCOMPARE(figures->runController(), w.run()); // found in the window
+        w.show();
+        showPage(figures);
+        int liveDraws = 0;
+        connect(figures, &CutCell::ui::QuickReturnFiguresForm::runFiguresDrawn, this,
+                [&] { liveDraws += figures->runFigures().active() ? 1 : 0; });
+        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
+        w.run()->startAutoRun();
+        QVERIFY(done.wait(240000));
+        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
+        QTRY_VERIFY(!figures->runFigures().active());
+        QCOMPARE(figures->source(), CutCell::ui::QuickReturnFiguresForm::Source::LastRun);
+        QVERIFY(liveDraws >= 2); // redrawn while the run was on (every 0.5 s)
+        const auto st = figures->runFigures().stats();
+        const auto* spec = w.editor()->job().machine_spec.as<cutcell::QuickReturnSpec>();
+        QCOMPARE(st.cuts, spec->strokes);
+        QVERIFY(st.samples_in_work > 10);
+        QVERIFY(st.velocity_error_max >= st.velocity_error_rms && st.velocity_error_rms > 0);
+        QVERIFY(st.max_torque > 0 && st.max_torque <= spec->plant.torque_limit + 1e-9);
+        for (int panel = 0; panel < 3; ++panel)
+            QVERIFY(figures->figures()->pointCount(panel) > 10);
+        QVERIFY(figures->sourceLabel()->text().contains("ended"));
+        QVERIFY(figures->summary()->text().contains("RMS"));
+        // The points are the telemetry's: none after the run's last sample.
+        QVERIFY(figures->runFigures().points().back().t <= w.run()->bridge()->last().elapsed_s);
+        if (qEnvironmentVariableIsSet("CUTCELL_QR_SCREENSHOT"))
+            screenshot(w, figures, qEnvironmentVariable("CUTCELL_QR_SCREENSHOT"), 640);
     }
 
   private:
-    // The window with the figures page open and the mechanism mid-stroke, for docs/.
-    void screenshot(MainWindow& w, CutCell::ui::QuickReturnFiguresForm* figures) {
-        w.resize(1600, 1000);
+    // The window with `page` open beside the mechanism, for docs/. The parameter pane is
+    // widened to `paneWidth` px so the plots are readable.
+    void screenshot(MainWindow& w, QWidget* page, const QString& file, int paneWidth) {
+        w.resize(1600, 1200);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QSignalSpy planned(w.run(), &CutCell::ui::RunController::planChanged);
-        w.run()->replanNow();
-        QVERIFY(planned.wait(60000));
-        for (QWidget* p = figures; p && p->parentWidget(); p = p->parentWidget())
-            if (auto* tabs = qobject_cast<QTabWidget*>(p->parentWidget()->parentWidget()))
-                if (tabs->indexOf(p) >= 0) tabs->setCurrentWidget(p);
+        if (auto* top = qobject_cast<QSplitter*>(w.parameters()->parentWidget()))
+            top->setSizes({paneWidth, 1600 - 320 - paneWidth});
+        if (w.run()->bridge()->state() != EngineState::Completed) {
+            QSignalSpy planned(w.run(), &CutCell::ui::RunController::planChanged);
+            w.run()->replanNow();
+            QVERIFY(planned.wait(60000));
+        }
+        showPage(page);
         QTest::qWait(1500);
         QImage shot = w.grab().toImage();
         w.cellView()->paintFrameInto(shot, &w);
-        const QString file = qEnvironmentVariable("CUTCELL_QR_SCREENSHOT");
         QVERIFY2(shot.save(file), qPrintable(file));
     }
 };

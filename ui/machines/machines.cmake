@@ -14,6 +14,7 @@ set(CUTCELL_MACHINE_UI_SOURCES
   ${_m}/quick_return_cutter/quick_return_ui.cpp
   ${_m}/quick_return_cutter/quick_return_form.cpp
   ${_m}/quick_return_cutter/quick_return_figures.cpp
+  ${_m}/quick_return_cutter/quick_return_tracking_page.cpp
 )
 # Scenes for the 3D view (plain data, built only with CutCell::view3d).
 set(CUTCELL_MACHINE_UI_VIEW3D_SOURCES

@@ -6,6 +6,7 @@
 
 #ifdef CUTCELL_HAVE_PLOTS
 #include "ui/machines/quick_return_cutter/quick_return_figures.h"
+#include "ui/machines/quick_return_cutter/quick_return_tracking_page.h"
 #endif
 #ifdef CUTCELL_HAVE_VIEW3D
 #include "ui/machines/quick_return_cutter/quick_return_scene.h"
@@ -26,6 +27,8 @@ std::vector<FormPage> QuickReturnUi::formPages() const {
 #ifdef CUTCELL_HAVE_PLOTS
     pages.push_back({QObject::tr("Cut figures"),
                      [](JobEditor* e) -> JobForm* { return new QuickReturnFiguresForm(e); }});
+    pages.push_back({QObject::tr("Experiment 1"),
+                     [](JobEditor* e) -> JobForm* { return new QuickReturnTrackingForm(e); }});
 #endif
     return pages;
 }

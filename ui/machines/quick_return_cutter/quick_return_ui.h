@@ -1,8 +1,9 @@
 #pragma once
 // The quick-return (Whitworth) cutter of seed 004 in the operator station: one crank in torque
 // mode under a task-space control law; its core module plans (ModulePlannedMachineUi). Pages:
-// the mechanism, the controller, the figures of the cutting experiment. 3D: the linkage
-// animated from the crank angle. None of the pipe fields apply.
+// the mechanism, the controller, the figures of the cutting experiment (the last run's
+// telemetry, live, or an offline simulation) and experiment 1 (all four controllers). 3D: the
+// linkage animated from the crank angle. None of the pipe fields apply.
 #include "ui/machine/module_planned_machine_ui.h"
 
 namespace CutCell::ui {
