@@ -33,6 +33,9 @@ class XyFiguresWidget : public QWidget {
     void setPanel(int panel, const QString& title, const QString& xLabel, const QString& yLabel);
     // Replaces the panel's curves and rescales its axes to them.
     void setCurves(int panel, const std::vector<XyCurve>& curves);
+    // The panel's legend: hidden (columns 0) or in rows of `columns` entries at its top left
+    // (default: one column at the top right).
+    void setLegendColumns(int panel, int columns);
     int curveCount(int panel) const;
     int pointCount(int panel) const; // drawn points over the panel's curves
 

@@ -225,8 +225,10 @@ class TestGuiFlyingSaw : public QObject {
         QVERIFY(figures->figures()->pointCount(Panel::CarriageS) > 100);
         QCOMPARE(figures->figures()->pointCount(Panel::Cam) / 2, spec->saw.table_points + 1);
         // One point per measured piece (the head cut starts the first piece).
-        QCOMPARE(figures->figures()->curveCount(Panel::Pieces), 4); // error, mean, +-tolerance
-        const int pieces = figures->figures()->pointCount(Panel::Pieces) - 6;
+        // Error, mean and, when it does not flatten the errors, the tolerance band.
+        const int curves = figures->figures()->curveCount(Panel::Pieces);
+        QVERIFY(curves == 2 || curves == 3);
+        const int pieces = figures->figures()->pointCount(Panel::Pieces) - 2 - (curves - 2) * 4;
         QCOMPARE(pieces, spec->pieceCount());
         QVERIFY2(figures->pieceStats()->text().contains("Cpk"),
                  qPrintable(figures->pieceStats()->text()));
@@ -356,7 +358,10 @@ class TestGuiFlyingSaw : public QObject {
         // Real time: wait until the blades are in the wall, half-way through the half turn.
         w.run()->startAutoRun();
         QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Running, 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().actual[1] > 1.2, 60000);
+        // The third cut (the turntable turns on by half a turn per cut): the live plots run from
+        // the second piece on (progress counts finished pieces).
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().actual[1] > 2 * cutcell::kPi + 1.2,
+                                 60000);
         QTest::qWait(100);
         QImage shot = w.grab().toImage();
         w.cellView()->paintFrameInto(shot, &w);

@@ -1,5 +1,6 @@
 #include "ui/machines/flying_saw/flying_saw_figures.h"
 
+#include "core/common/types.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
@@ -87,6 +88,9 @@ FlyingSawFiguresForm::FlyingSawFiguresForm(JobEditor* editor, QWidget* parent)
     stats_->setWordWrap(true);
     stats_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     figures_ = new cutcell::plots::XyFiguresWidget(PanelCount, Qt::Vertical, this);
+    figures_->setLegendColumns(CarriageS, 4); // the periods' colours, alike on s, v and a
+    figures_->setLegendColumns(CarriageV, 0);
+    figures_->setLegendColumns(CarriageA, 0);
     figures_->setPanel(CarriageS, tr("Carriage position over one cycle (nominal line speed)"),
                        tr("t (s)"), tr("s (mm)"));
     figures_->setPanel(CarriageV, tr("Carriage velocity"), tr("t (s)"), tr("v (mm/s)"));
@@ -150,7 +154,7 @@ bool FlyingSawFiguresForm::simulate(QString* why) {
     XyCurve feed{tr("feed, blades 1 and 2"), {}, {}, QColor(20, 90, 200)};
     XyCurve tip{tr("blade tip radius"), {}, {}, QColor(220, 60, 30), true};
     for (int i = 0; i < cam.count; ++i) {
-        const double theta = cam.period * i / (cam.count - 1) * 180.0 / M_PI;
+        const double theta = cutcell::rad2deg(cam.period * i / (cam.count - 1));
         const double f = cam.slave[static_cast<size_t>(i)];
         feed.x.push_back(theta), feed.y.push_back(f);
         tip.x.push_back(theta), tip.y.push_back(plan.saw.retract_radius - f);
@@ -164,17 +168,21 @@ bool FlyingSawFiguresForm::simulate(QString* why) {
     const double tol = d.spec.tolerance_mm;
     XyCurve err{tr("error"), {}, {}, QColor(20, 90, 200)};
     XyCurve mean{tr("mean"), {}, {}, QColor(30, 140, 60), true};
-    XyCurve upper{tr("± tolerance"), {}, {}, QColor(200, 40, 40), true};
-    XyCurve lower{QString(), {}, {}, QColor(200, 40, 40), true};
+    XyCurve band{tr("± tolerance"), {}, {}, QColor(200, 40, 40), true};
     for (const cutcell::PieceRecord& p : r.pieces)
         err.x.push_back(p.piece), err.y.push_back(p.error_mm);
+    // The tolerance band only where it does not flatten the errors to a line (the stats name
+    // it and the Cpk either way).
+    const bool showBand = r.stats.max_abs >= 0.2 * tol;
+    if (!showBand) err.name = tr("error (tolerance ± %1 mm far outside)").arg(tol, 0, 'g', 4);
     if (!r.pieces.empty()) {
         const double x0 = r.pieces.front().piece - 0.5, x1 = r.pieces.back().piece + 0.5;
         mean.x = {x0, x1}, mean.y = {r.stats.mean, r.stats.mean};
-        upper.x = {x0, x1}, upper.y = {tol, tol};
-        lower.x = {x0, x1}, lower.y = {-tol, -tol};
+        band.x = {x0, x1, kNaN, x0, x1}, band.y = {tol, tol, kNaN, -tol, -tol};
     }
-    figures_->setCurves(Pieces, {err, mean, upper, lower});
+    std::vector<XyCurve> pieceCurves{err, mean};
+    if (showBand) pieceCurves.push_back(band);
+    figures_->setCurves(Pieces, pieceCurves);
 
     summary_->setText(QString::fromStdString(mp.summary));
     QString stats = tr("%1 pieces measured: error mean %2 mm, std %3 mm, max |e| %4 mm, Cpk %5 "

@@ -1,11 +1,11 @@
 #pragma once
-// The flying saw's figures page, from the edited job's plan (core planFlyingSaw) and the offline
-// simulation of its queue (core simulateFlyingSaw: the simulated line with its wander, steps and
-// slip, the roller encoder, the motion source the engine runs, the carriage's servo, the
-// length gauge): the carriage's s, v and a over one cycle at the nominal line speed with the
-// periods AB, BC, CE, EF, FG, GH, HI each drawn in its own colour; the cam table (radial feed
-// against the turntable angle, both blades); the cut-length error of every piece with its mean,
-// standard deviation and Cpk against the job's tolerance. Exports the cam table as CSV
+// The flying saw's figures page (the mill's figure first), from the edited job's plan (core
+// planFlyingSaw) and the offline simulation of its queue (core simulateFlyingSaw: the simulated
+// line with its wander, steps and slip, the roller encoder, the motion source the engine runs, the
+// carriage's servo, the length gauge): the carriage's s, v and a over one cycle at the nominal line
+// speed with the periods AB, BC, CE, EF, FG, GH, HI each drawn in its own colour; the cam table
+// (radial feed against the turntable angle, both blades); the cut-length error of every piece with
+// its mean, standard deviation and Cpk against the job's tolerance. Exports the cam table as CSV
 // (the core's camTableCsv, written atomically).
 // Built only with the plots library (CUTCELL_HAVE_PLOTS).
 //
@@ -25,7 +25,7 @@ namespace CutCell::ui {
 class FlyingSawFiguresForm : public JobForm {
     Q_OBJECT
   public:
-    enum Panel { CarriageS, CarriageV, CarriageA, Cam, Pieces, PanelCount };
+    enum Panel { Pieces, CarriageS, CarriageV, CarriageA, Cam, PanelCount };
 
     explicit FlyingSawFiguresForm(JobEditor* editor, QWidget* parent = nullptr);
 

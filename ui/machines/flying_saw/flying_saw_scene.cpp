@@ -105,14 +105,14 @@ std::vector<LinkagePiece> drawSaw(const SawGeometry& g, const JointVector& q) {
                             {140, 70, z - railTop - 80}, LinkagePiece::Link));
     const double xRing = xc - 70;
     for (int i = 0; i < kRingSegments; ++i) {
-        const double a0 = 2 * M_PI * i / kRingSegments, a1 = 2 * M_PI * (i + 1) / kRingSegments;
+        const double a0 = 2 * kPi * i / kRingSegments, a1 = 2 * kPi * (i + 1) / kRingSegments;
         out.push_back(bar({xRing, g.ringR * std::cos(a0), z + g.ringR * std::sin(a0)},
                           {xRing, g.ringR * std::cos(a1), z + g.ringR * std::sin(a1)}, 26,
                           LinkagePiece::Frame));
     }
     // Both blades half a turn apart on the turntable, each on its radial feed.
     for (int i = 0; i < 2; ++i) {
-        const double psi = g.cornerA - q[1] + i * M_PI;
+        const double psi = g.cornerA - q[1] + i * kPi;
         const Vec3 dir(0, std::cos(psi), std::sin(psi)); // section (across, up) -> world (y, z)
         const double tip = g.retract - q[2 + i];
         const Vec3 centre = Vec3(xc, 0, z) + (tip + g.bladeR) * dir;
@@ -157,8 +157,8 @@ SceneModel buildFlyingSawScene(const Job& job, const CutPlan& cutPlan) {
     g.cutDoneMaster = p->line_speed_mm_s * p->saw.turnEnd();
     g.railL = std::min(0.0, s.wait_position_mm) - 300;
     g.railR = s.stroke_mm + 300;
-    g.windowL = g.railL - 900;
-    g.windowR = g.railR + 900;
+    g.windowL = g.railL - 700;
+    g.windowR = g.railR + 700;
     g.rollerR = s.roller_diameter_mm / 2;
     // S_0 as the source takes it (the line starts at 0: the master at start + d1 + 50 mm), then
     // one pitch (length + kerf) per piece of the queue.
