@@ -11,6 +11,7 @@
 #include "core/machine/machine_module.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
+#include "core/machines/flying_saw/flying_saw_source.h"
 #include "plots/xy_figures_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -263,6 +264,58 @@ class TestGuiFlyingSaw : public QObject {
         // A file the GUI cannot write: refused, the file named.
         QVERIFY(!figures->exportCamCsv(dir.filePath("no/such/dir/cam.csv"), &error));
         QVERIFY(error.contains("no/such/dir/cam.csv"));
+    }
+
+    void queueChangedWhileRunningAppliesFromTheNextPiece() {
+        MainWindow w(&cutcell::app::makeRig); // real time: the line runs while we edit
+        newSawJob(w);
+        auto job = w.editor()->job();
+        job.machine_spec.as<FlyingSawSpec>()->queue = {{3200, 3}};
+        w.editor()->setJob(job);
+        w.show();
+        auto* form = w.findChild<CutCell::ui::FlyingSawTubeLineForm*>();
+        QVERIFY(form);
+        QVERIFY(!form->sendQueueButton()->isVisibleTo(form));
+        QString why;
+        QVERIFY(!form->sendQueueToRunningLine(&why)); // nothing loaded yet
+        w.run()->startAutoRun();
+        QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Running, 30000);
+        // Locked while the machine moves, except the queue and its Send button.
+        auto* speed = w.parameters()->fieldFor("line.speed_m_min");
+        QTRY_VERIFY(!speed->isEnabled());
+        QVERIFY(form->queueTable()->isEnabled());
+        QVERIFY(form->sendQueueButton()->isVisibleTo(form));
+        QVERIFY(form->sendQueueButton()->isEnabled());
+        auto* length0 = form->queueTable()->findChild<QDoubleSpinBox*>("sawQueueLength0");
+        auto* count0 = form->queueTable()->findChild<QSpinBox*>("sawQueueCount0");
+        QVERIFY(length0 && count0 && length0->isEnabled());
+        // After the head cut, once the carriage is back: piece 1 has its length, piece 2 not
+        // yet (it gets one when the carriage is back after the next cut, ~3 s later).
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().actual[1] > cutcell::kPi - 0.01 &&
+                                     w.run()->bridge()->last().actual[0] < 1.0,
+                                 30000);
+        length0->setValue(3600);
+        count0->setValue(2);
+        QVERIFY2(form->sendQueueToRunningLine(&why), qPrintable(why));
+        auto* note = form->findChild<QLabel*>("sawQueueSendNote");
+        QVERIFY(note && note->text().contains("2 pieces"));
+        // The edited job is planned now and loaded when the engine is back at rest (a new rig:
+        // the machine section changed); the running program is the one that got the queue.
+        const auto program = w.run()->program();
+        QSignalSpy reloaded(w.run(), &CutCell::ui::RunController::programLoaded);
+        QVERIFY(reloaded.wait(120000));
+        // After the run (its engine thread is gone): the pieces begun before the change kept
+        // their length, the two of the new queue came next, nothing of the old queue after.
+        const auto* source = dynamic_cast<const cutcell::FlyingSawSource*>(program->source.get());
+        QVERIFY(source);
+        QCOMPARE(source->phase(), cutcell::SawPhase::Done);
+        const int total = source->totalPieces();
+        QCOMPARE(total, 3);
+        QCOMPARE(source->orderedLength(1), 3200.0);
+        QCOMPARE(source->orderedLength(2), 3600.0);
+        QCOMPARE(source->orderedLength(3), 3600.0);
+        QTRY_VERIFY(speed->isEnabled());
+        QVERIFY(!form->sendQueueButton()->isVisibleTo(form));
     }
 
     void sceneFollowsTheAxesAndTheLine() {

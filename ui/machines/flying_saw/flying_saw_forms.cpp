@@ -1,6 +1,8 @@
 #include "ui/machines/flying_saw/flying_saw_forms.h"
 
+#include "core/machines/flying_saw/flying_saw_source.h"
 #include "core/machines/flying_saw/flying_saw_spec.h"
+#include "ui/run_controller.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -151,7 +153,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
            "");
     mainLayout()->addWidget(line);
 
-    auto* cut = new QGroupBox(tr("Pieces: the queue of cut lengths"), this);
+    auto* cut = queueGroup_ = new QGroupBox(tr("Pieces: the queue of cut lengths"), this);
     auto* vc = new QVBoxLayout(cut);
     queue_ = new QTableWidget(0, 2, cut);
     queue_->setObjectName("sawQueue");
@@ -192,14 +194,76 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
         removeQueueRow(row);
         writeQueue();
     });
+    send_ = new QPushButton(tr("Send the queue to the running line (from the next piece)"), cut);
+    send_->setObjectName("sawQueueSend");
+    send_->hide();
+    sendNote_ = new QLabel(cut);
+    sendNote_->setObjectName("sawQueueSendNote");
+    sendNote_->setWordWrap(true);
+    sendNote_->hide();
+    vc->addWidget(send_);
+    vc->addWidget(sendNote_);
+    connect(send_, &QPushButton::clicked, this, [this] {
+        QString why;
+        sendQueueToRunningLine(&why);
+    });
     auto* fc = new QFormLayout;
     addRow(fc, tr("Length tolerance ±"),
-           dbl("cut.tolerance_mm", 3, [](FlyingSawSpec& s) -> double& { return s.tolerance_mm; }),
+           tolerance_ = dbl("cut.tolerance_mm", 3,
+                            [](FlyingSawSpec& s) -> double& { return s.tolerance_mm; }),
            "mm");
     vc->addLayout(fc);
     mainLayout()->addWidget(cut);
     mainLayout()->addStretch(1);
     connect(editor, &JobEditor::edited, this, [this] { updateDerived(this->editor()->job()); });
+}
+
+void FlyingSawTubeLineForm::setEditingLocked(bool locked) {
+    setEnabled(true);
+    for (QWidget* w : findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly))
+        if (w != queueGroup_ && w->objectName() != QLatin1String("formIssues"))
+            w->setEnabled(!locked);
+    tolerance_->setEnabled(!locked);
+    send_->setVisible(locked);
+    if (!locked) sendNote_->hide();
+}
+
+bool FlyingSawTubeLineForm::sendQueueToRunningLine(QString* why) {
+    const auto refuse = [&](const QString& text) {
+        sendNote_->setText(text);
+        sendNote_->show();
+        if (why) *why = text;
+        return false;
+    };
+    const RunController* run = window()->findChild<RunController*>();
+    const auto program = run ? run->program() : nullptr;
+    auto* source =
+        program ? dynamic_cast<cutcell::FlyingSawSource*>(program->source.get()) : nullptr;
+    if (!source) return refuse(tr("Not sent: no flying-saw program is loaded."));
+    for (const cutcell::JobIssue& issue : editor()->issues())
+        if (issue.key.rfind("cut.queue", 0) == 0)
+            return refuse(tr("Not sent: %1").arg(QString::fromStdString(issue.message)));
+    const FlyingSawSpec* s = specOf(editor()->job());
+    if (!s || s->queue.empty()) return refuse(tr("Not sent: the queue is empty."));
+    if (s->queue.size() > cutcell::PieceQueue::kCapacity)
+        return refuse(tr("Not sent: the queue has %1 entries; the line takes up to %2.")
+                          .arg(s->queue.size())
+                          .arg(cutcell::PieceQueue::kCapacity));
+    cutcell::PieceQueue* q = source->queue().beginWrite();
+    if (!q)
+        return refuse(tr("Not sent: the previous change is not taken yet (it is, when the "
+                         "carriage is back at its wait position)."));
+    q->size = 0;
+    for (const cutcell::PieceOrder& o : s->queue)
+        q->entries[static_cast<size_t>(q->size++)] = {o.length_mm, o.count};
+    source->queue().publish();
+    int pieces = 0;
+    for (const cutcell::PieceOrder& o : s->queue)
+        pieces += o.count;
+    sendNote_->setText(
+        tr("Sent: %1 pieces replace the pieces not begun yet, from the next piece.").arg(pieces));
+    sendNote_->show();
+    return true;
 }
 
 void FlyingSawTubeLineForm::showShapeRows(int shape) {

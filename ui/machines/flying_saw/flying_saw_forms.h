@@ -8,6 +8,7 @@
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QPushButton;
 class QTableWidget;
@@ -22,6 +23,14 @@ class FlyingSawTubeLineForm : public JobForm {
     QTableWidget* queueTable() const { return queue_; }
     // Appends a row (length, count) to the queue (the Add button).
     void addQueueRow(double length_mm, int count);
+    // While the machine moves only the queue stays editable, with "Send to the running line".
+    void setEditingLocked(bool locked) override;
+    // Publishes the edited job's queue to the running line's motion source (the button): it
+    // replaces the pieces not yet begun, from the next piece (FlyingSawSource::queue()).
+    // False + *why when there is no running flying-saw program, the queue has issues or the
+    // previous change was not taken yet.
+    bool sendQueueToRunningLine(QString* why = nullptr);
+    QPushButton* sendQueueButton() const { return send_; }
 
   protected:
     void reloadExtra(const cutcell::Job& job) override;
@@ -41,6 +50,10 @@ class FlyingSawTubeLineForm : public JobForm {
     QDoubleSpinBox* height_ = nullptr;
     QTableWidget* queue_ = nullptr;
     QLabel* queueTotal_ = nullptr;
+    QLabel* sendNote_ = nullptr;
+    QPushButton* send_ = nullptr;
+    QGroupBox* queueGroup_ = nullptr;
+    QWidget* tolerance_ = nullptr;
     QLabel* resolution_ = nullptr;
 };
 
