@@ -291,9 +291,12 @@ class TestGuiFlyingSaw : public QObject {
         QVERIFY(length0 && count0 && length0->isEnabled());
         // After the head cut, once the carriage is back: piece 1 has its length, piece 2 not
         // yet (it gets one when the carriage is back after the next cut, ~3 s later).
-        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().actual[1] > cutcell::kPi - 0.01 &&
-                                     w.run()->bridge()->last().actual[0] < 1.0,
-                                 30000);
+        const auto backAfterHeadCut = [&w] {
+            const cutcell::TelemetrySample& s = w.run()->bridge()->last();
+            return s.actual[1] > cutcell::kPi - 0.01 &&
+                   QLatin1String(s.source_state.data()) == QLatin1String("waiting");
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(backAfterHeadCut(), 30000);
         length0->setValue(3600);
         count0->setValue(2);
         QVERIFY2(form->sendQueueToRunningLine(&why), qPrintable(why));
