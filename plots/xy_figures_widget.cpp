@@ -116,6 +116,17 @@ void XyFiguresWidget::setLegendAlignment(int panel, Qt::Alignment alignment) {
     p->replot(QCustomPlot::rpQueuedReplot);
 }
 
+void XyFiguresWidget::setLegendColumns(int panel, int columns) {
+    QCustomPlot* p = d->plots.at(static_cast<size_t>(panel));
+    p->legend->setVisible(columns > 0);
+    if (columns > 0) {
+        p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+        p->legend->setWrap(columns);
+        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    }
+    p->replot(QCustomPlot::rpQueuedReplot);
+}
+
 int XyFiguresWidget::curveCount(int panel) const {
     return d->plots.at(static_cast<size_t>(panel))->plottableCount();
 }

@@ -40,6 +40,9 @@ class XyFiguresWidget : public QWidget {
     void setCurves(int panel, const std::vector<XyCurve>& curves);
     // Where the panel's legend sits inside its axes (default top right).
     void setLegendAlignment(int panel, Qt::Alignment alignment);
+    // The panel's legend: hidden (columns 0) or in rows of `columns` entries at its top left
+    // (default: one column at the top right).
+    void setLegendColumns(int panel, int columns);
     int curveCount(int panel) const;
     int pointCount(int panel) const; // drawn points over the panel's curves
 

@@ -36,6 +36,9 @@ class JobForm : public QWidget {
     std::vector<std::string> keys() const;
     // Number of fields currently marked invalid.
     int markedCount() const;
+    // While the machine moves (ParameterTabs): off by default; a form may keep the fields that
+    // can change during a run (the flying saw's queue of lengths) on.
+    virtual void setEditingLocked(bool locked) { setEnabled(!locked); }
 
   protected:
     using DoubleRef = std::function<double&(cutcell::Job&)>;

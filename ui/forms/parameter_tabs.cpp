@@ -135,7 +135,7 @@ void ParameterTabs::applyMachine() {
 
 void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
     for (auto* f : forms_)
-        f->setEnabled(!locked);
+        f->setEditingLocked(locked);
     lockNote_->setVisible(locked);
     lockNote_->setText(reason);
 }

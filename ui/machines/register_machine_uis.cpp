@@ -1,5 +1,6 @@
 // The machines of the operator station: one line per machine (README, "Adding a machine").
 #include "ui/machine/machine_ui_registry.h"
+#include "ui/machines/flying_saw/flying_saw_ui.h"
 #include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
 #include "ui/machines/quick_return_cutter/quick_return_ui.h"
@@ -10,6 +11,7 @@ void registerMachineUis(MachineUiRegistry& registry) {
     registry.add(std::make_unique<PipeRobotUi>());
     registry.add(std::make_unique<ProfileCutterUi>());
     registry.add(std::make_unique<QuickReturnUi>());
+    registry.add(std::make_unique<FlyingSawUi>());
 }
 
 } // namespace CutCell::ui

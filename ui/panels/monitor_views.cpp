@@ -5,6 +5,7 @@
 #include <QVBoxLayout>
 
 #ifdef CUTCELL_HAVE_VIEW3D
+#include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
 #include "ui/view3d/scene_model.h"
 #endif
@@ -77,7 +78,10 @@ void CellViewPanel::setSample(const cutcell::TelemetrySample& s) {
     const bool due = !sinceFrame_.isValid() || sinceFrame_.elapsed() >= kFrameIntervalMs;
     const bool torchChanged = s.torch_on != lastTorch_;
     if (view_ && (due || torchChanged || s.progress >= 1.0)) {
-        view_->setMachineState(s.actual, s.progress, s.torch_on);
+        cutcell::JointVector q = s.actual;
+        const int master = view_->scene().model().masterSlot;
+        if (master >= 0 && master < cutcell::kMaxAxes) q[master] = s.master_position;
+        view_->setMachineState(q, s.progress, s.torch_on);
         sinceFrame_.start();
         lastTorch_ = s.torch_on;
     }

@@ -81,6 +81,10 @@ struct SceneModel {
     // of the joint vector, computed by the machine's forward kinematics. When set, the view
     // draws these pieces (the same count for every q) instead of the pipe, path and tool.
     std::function<std::vector<LinkagePiece>(const JointVector&)> linkage;
+    // A linkage that also draws what its master axis measures (the flying saw's pipe on the
+    // line): the view puts the telemetry's master position (mm) into q[masterSlot] before
+    // placing the pieces. -1: none.
+    int masterSlot = -1;
 
     // Where to put the floor (world z) and the default joint vector (first path point).
     double floorZ_mm = 0;

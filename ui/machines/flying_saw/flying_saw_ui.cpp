@@ -1,0 +1,70 @@
+#include "ui/machines/flying_saw/flying_saw_ui.h"
+
+#include "core/machines/flying_saw/flying_saw_module.h"
+#include "ui/machines/flying_saw/flying_saw_forms.h"
+
+#include <QObject>
+
+#ifdef CUTCELL_HAVE_PLOTS
+#include "ui/machines/flying_saw/flying_saw_figures.h"
+#endif
+#ifdef CUTCELL_HAVE_VIEW3D
+#include "ui/machines/flying_saw/flying_saw_scene.h"
+#endif
+
+namespace CutCell::ui {
+
+std::string FlyingSawUi::id() const {
+    return cutcell::kFlyingSawId;
+}
+
+QString FlyingSawUi::title() const {
+    return QObject::tr("Flying saw on a welded-pipe line (carriage, turntable, 2 blade feeds)");
+}
+
+std::vector<FormPage> FlyingSawUi::formPages() const {
+    std::vector<FormPage> pages{
+        {QObject::tr("Tube && line"),
+         [](JobEditor* e) -> JobForm* { return new FlyingSawTubeLineForm(e); }},
+        {QObject::tr("Carriage && saw"),
+         [](JobEditor* e) -> JobForm* { return new FlyingSawCarriageSawForm(e); }}};
+#ifdef CUTCELL_HAVE_PLOTS
+    pages.push_back({QObject::tr("Cycle && cuts"),
+                     [](JobEditor* e) -> JobForm* { return new FlyingSawFiguresForm(e); }});
+#endif
+    return pages;
+}
+
+std::vector<std::pair<std::string, QString>> FlyingSawUi::unusedCommonFields() const {
+    const QString why = QObject::tr("The flying saw cuts the tube of its line across: its tube, "
+                                    "line and lengths are set on the Tube & line page.");
+    std::vector<std::pair<std::string, QString>> out;
+    for (const char* pipe : {"main_pipe", "branch_pipe"})
+        for (const char* field : {".radius_mm", ".wall_mm", ".length_mm"})
+            out.push_back({std::string(pipe) + field, why});
+    for (const char* key :
+         {"angle_deg", "eccentricity_mm", "cut.target", "cut.bevel_deg", "cut.speed_mm_s",
+          "cut.ramp_s", "cut.knot_spacing_mm", "cut.max_direction_deviation_deg",
+          "cut.start_phi_auto", "cut.start_phi_deg"})
+        out.push_back({key, why});
+    return out;
+}
+
+bool FlyingSawUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+                             cutcell::view3d::SceneModel* out, QString* why) const {
+#ifdef CUTCELL_HAVE_VIEW3D
+    try {
+        *out = cutcell::view3d::buildFlyingSawScene(job, plan);
+        return true;
+    } catch (const std::exception& e) {
+        if (why) *why = QString::fromUtf8(e.what());
+        return false;
+    }
+#else
+    (void)job, (void)plan, (void)out;
+    if (why) *why = QObject::tr("3D view not built in this configuration.");
+    return false;
+#endif
+}
+
+} // namespace CutCell::ui
