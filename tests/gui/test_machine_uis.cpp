@@ -90,6 +90,11 @@ class TestMachineUis : public QObject {
                         if (!own.count(page.title))
                             QVERIFY2(!w.parameters()->tabShown(page.title), qPrintable(page.title));
             QVERIFY(w.parameters()->tabShown("Pipes"));
+            // The Cut page only for the machines that use its fields.
+            bool cutUnused = false;
+            for (const auto& [key, why] : m->unusedCommonFields())
+                cutUnused = cutUnused || key == "cut.speed_mm_s";
+            QCOMPARE(w.parameters()->tabShown("Cut"), !cutUnused);
             // Its exports are the Export menu's entries, in its order.
             QCOMPARE(exportMenuKinds(w), m->exports());
         }

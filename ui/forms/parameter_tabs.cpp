@@ -14,6 +14,9 @@
 #include <QTabWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <set>
+
 namespace CutCell::ui {
 namespace {
 
@@ -125,12 +128,26 @@ void ParameterTabs::applyMachine() {
     }
     disabledFields_.clear();
     if (!machine) return;
-    for (const auto& [key, reason] : machine->unusedCommonFields())
+    std::set<std::string> unused;
+    for (const auto& [key, reason] : machine->unusedCommonFields()) {
+        unused.insert(key);
         if (auto* field = fieldFor(key)) {
             field->setEnabled(false);
             field->setToolTip(reason);
             disabledFields_.push_back(field);
         }
+    }
+    // A common page none of whose fields this machine uses is not shown at all (the Cut page
+    // of the machines that do not cut a pipe joint); a page with some used fields stays, its
+    // unused fields greyed with the reason.
+    for (size_t i = 0; i < forms_.size(); ++i) {
+        if (owners_[i] != nullptr) continue;
+        const std::vector<std::string> keys = forms_[i]->keys();
+        const bool allUnused =
+            !keys.empty() && std::all_of(keys.begin(), keys.end(),
+                                         [&](const auto& k) { return unused.count(k) > 0; });
+        if (allUnused) tabs_->setTabVisible(static_cast<int>(i), false);
+    }
 }
 
 void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
