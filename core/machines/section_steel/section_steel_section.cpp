@@ -106,6 +106,7 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
             s.section.tf_mm = sec.number("tf_mm", "mm");
             s.section.r_mm = sec.number("r_mm", "mm");
         }
+        s.length_mm = sec.number("length_mm", "mm", d.length_mm);
         sec.finish();
     }
     s.cut = EndCutSpec{};
@@ -165,14 +166,16 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
 
 void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
     if (!s.user_defined)
-        out.emplace_back("section", json::Object{{"designation", s.section.designation}});
+        out.emplace_back("section", json::Object{{"designation", s.section.designation},
+                                                 {"length_mm", s.length_mm}});
     else
         out.emplace_back("section", json::Object{{"family", toString(s.section.family)},
                                                  {"h_mm", s.section.h_mm},
                                                  {"b_mm", s.section.b_mm},
                                                  {"tw_mm", s.section.tw_mm},
                                                  {"tf_mm", s.section.tf_mm},
-                                                 {"r_mm", s.section.r_mm}});
+                                                 {"r_mm", s.section.r_mm},
+                                                 {"length_mm", s.length_mm}});
     out.emplace_back("end_cut", json::Object{{"mitre_vertical_deg", s.cut.mitre_vertical_deg},
                                              {"mitre_horizontal_deg", s.cut.mitre_horizontal_deg},
                                              {"flanges", writeGroove(s.cut.flanges)},
@@ -207,6 +210,7 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
 void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) {
     for (const auto& [k, m] : checkSectionDims(s.section, "section"))
         c.add(k, m);
+    c.positive("section.length_mm", s.length_mm, 50, 24000, "mm");
     c.range("end_cut.mitre_vertical_deg", s.cut.mitre_vertical_deg, -45, 45, "deg");
     c.range("end_cut.mitre_horizontal_deg", s.cut.mitre_horizontal_deg, -45, 45, "deg");
     const struct {

@@ -41,6 +41,7 @@ struct JointLimit {
 struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     SectionDims section;       // from the catalogue (designation) or user-defined
     bool user_defined = false; // written as dimensions rather than a designation
+    double length_mm = 1000;   // of the bar (drawn; only its end at x = 0 is cut)
     EndCutSpec cut;
     double speed_mm_s = 5;        // along the outline
     double ramp_s = 0.5;          // to and from the cutting speed
