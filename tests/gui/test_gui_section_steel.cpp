@@ -296,8 +296,7 @@ class TestGuiSectionSteel : public QObject {
   private:
     // The window mid-cut, for docs/.
     void screenshot() {
-        MainWindow w(&cutcell::app::makeRig);
-        w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
+        MainWindow w(&cutcell::app::makeRig); // real time: the view must see the torch on
         newSteelJob(w);
         if (qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB") == "k_groove") {
             cutcell::Job job = w.editor()->job();
@@ -309,6 +308,9 @@ class TestGuiSectionSteel : public QObject {
             s.cut.web = {cutcell::section_steel::GrooveType::K, 35, 2};
             w.editor()->setJob(job);
         }
+        // The page that says what is cut: the end cut for the grooved job, else the section.
+        const bool grooved = qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB") == "k_groove";
+        w.parameters()->showVisibleTab(grooved ? 3 : 2);
         w.resize(1600, 1000);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -317,14 +319,27 @@ class TestGuiSectionSteel : public QObject {
         QVERIFY(planned.wait(60000));
         const double stopAt = qEnvironmentVariableIntValue("CUTCELL_STEEL_SCREENSHOT_PERCENT");
         const double fraction = stopAt > 0 ? stopAt / 100.0 : 0.6;
-        w.run()->startAutoRun();
-        QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().progress >= fraction, 120000);
-        w.run()->feedHold();
-        QTest::qWait(1500);
+        // In real time from that fraction of the cut (cut recovery's "run from"), the torch on.
+        const cutcell::Job job = w.editor()->job();
+        const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
+        QVERIFY2(core.ok(), core.problem.c_str());
+        w.run()->enable();
+        QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 20000);
+        w.run()->home();
+        QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
+                                 60000);
+        w.run()->startFrom(fraction * core.program->cut_time_s);
+        QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Running &&
+                                     w.run()->bridge()->last().torch_on &&
+                                     w.run()->bridge()->last().progress > fraction + 0.01,
+                                 120000);
+        w.cellView()->view()->setPreset(cutcell::view3d::ViewPreset::FollowTorch);
+        QTest::qWait(1000);
         QImage shot = w.grab().toImage();
         w.cellView()->paintFrameInto(shot, &w);
         const QString file = qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT");
         QVERIFY2(shot.save(file), qPrintable(file));
+        w.run()->abort();
     }
 };
 

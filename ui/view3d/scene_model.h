@@ -95,6 +95,9 @@ struct SceneModel {
     // Fixed work drawn with a linkage (the section-steel line's section), world frame.
     std::vector<std::shared_ptr<const SurfaceMesh>> workMeshes;
 
+    // Direction from the focal point to the camera of the Iso and Follow-torch views.
+    Vec3 isoToCamera = Vec3(0.75, -1.0, 0.7);
+
     // Where to put the floor (world z) and the default joint vector (first path point).
     double floorZ_mm = 0;
     JointVector homeQ = JointVector::Zero();

@@ -118,8 +118,10 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     m.title = job.name.empty() ? "Section-steel cutter" : job.name;
     if (plan && !plan->ok) m.title += "  -  NOT feasible: " + plan->problem;
     m.axisCount = section_steel::kSteelAxes;
-    m.chuckAxis = -1; // the section lies still; the arms move
-    m.toolLength_mm = 400;
+    m.chuckAxis = -1;      // the section lies still; the arms move
+    m.toolLength_mm = 550; // the follow-torch view stands 1.8 x this from the cut
+    // Look at the cut face from past the bar end, the side away from the groove arm.
+    m.isoToCamera = Vec3(1.0, 0.8, 0.75);
     JointVector park = JointVector::Zero();
     for (int i = 0; i < section_steel::kSteelAxes; ++i)
         park[i] = deg2rad(spec.park_deg[static_cast<size_t>(i)]);
@@ -177,10 +179,15 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
         // a little in front of the plane (+x), link 3 is the torch's holder in the plane.
         const auto& a = cell.path.lengths();
         const double xo = 90;
-        const Vec3 mount = pathBase + Vec3(xo + 220, 0, 0);
-        out.push_back(bar(pathBase + Vec3(xo, 0, 0), mount, 40, LinkagePiece::Frame));
-        out.push_back(block({mount.x() + 60, mount.y(), (mount.z() + 80 + floor) / 2},
-                            {120, 120, mount.z() + 80 - floor}, LinkagePiece::Frame));
+        // Its base hangs from a portal over the bar, behind the cut.
+        const double portalX = -420, portalZ = pathBase.z() + 90, half = width / 2 + 250;
+        out.push_back(bar(pathBase + Vec3(xo + 60, 0, 0), {portalX, pathBase.y(), pathBase.z()}, 40,
+                          LinkagePiece::Frame));
+        out.push_back(
+            block({portalX, 0, portalZ}, {120, 2 * half + 120, 120}, LinkagePiece::Frame));
+        for (double y : {-half, half})
+            out.push_back(block({portalX, y, (portalZ + floor) / 2}, {120, 120, portalZ - floor},
+                                LinkagePiece::Frame));
         double phi = 0;
         Vec3 p = pathBase;
         Vec3 joints[3];
