@@ -78,9 +78,7 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Vec2>& poly
             clipped = true;
             break;
         }
-        if (!clipped) { // collinear leftovers: drop the flattest vertex
-            idx.erase(idx.begin());
-        }
+        if (!clipped) idx.erase(idx.begin()); // only collinear leftovers: no area to cover
     }
     if (idx.size() == 3) out.push_back({idx[0], idx[1], idx[2]});
     return out;
