@@ -28,7 +28,37 @@ TEST(SectionCatalogue, FamiliesAndLookup) {
     EXPECT_EQ(findSection("IPE 300")->h_mm, 300);
     EXPECT_FALSE(findSection("IPE 301"));
     EXPECT_THROW(parseSectionCatalogue("I,IPE 1,80,46,3,8,5.2,5\n"), std::runtime_error);
-    EXPECT_THROW(parseSectionCatalogue("# c\nI,IPE 1,80,4x6,3.8,5.2,5\n"), std::runtime_error);
+    EXPECT_THROW(parseSectionCatalogue("# c\nI,IPE 1,80,4x6,3.8,5.2,5,0,0,7.6\n"),
+                 std::runtime_error);
+    EXPECT_THROW(parseSectionCatalogue("I,IPE 1,80,46,3.8,5.2,5,-1,0,7.6\n"), std::runtime_error);
+    EXPECT_EQ(parseSectionCatalogue("I,IPE 1,80,46,3.8,5.2,5,0,0,7.6\n").at(0).area_cm2, 7.6);
+}
+
+// The drawn outline (h, b, tw, tf, r1, r2; UPN flanges at their equal-area thickness) against
+// the area tabulated in EN 10365 / EN 10056-1 (3 significant digits): within 1 %. A wrong h, b,
+// tw, tf or r in a row shows here (1 mm of tf on an IPE 300 is 5.6 % of its area).
+TEST(SectionCatalogue, OutlineAreaMatchesTheStandardsTable) {
+    double worst = 0;
+    std::string worstName;
+    for (const auto& d : sectionCatalogue()) {
+        ASSERT_GT(d.area_cm2, 0) << d.designation;
+        const double drawn = SectionOutline(d).area() / 100; // cm^2
+        const double rel = std::fabs(drawn - d.area_cm2) / d.area_cm2;
+        EXPECT_LT(rel, 0.01) << d.designation << ": drawn " << drawn << " cm2, table " << d.area_cm2
+                             << " cm2";
+        if (rel > worst) {
+            worst = rel;
+            worstName = d.designation;
+        }
+    }
+    std::printf("outline area against the standard's table: worst %.2f %% (%s)\n", 100 * worst,
+                worstName.c_str());
+    // The exact area of a plain I section: 2 b tf + (h - 2 tf) tw + (4 - pi) r^2.
+    const SectionDims ipe = *findSection("IPE 300");
+    EXPECT_NEAR(SectionOutline(ipe).area(),
+                2 * ipe.b_mm * ipe.tf_mm + (ipe.h_mm - 2 * ipe.tf_mm) * ipe.tw_mm +
+                    (4 - kPi) * ipe.r_mm * ipe.r_mm,
+                1e-9);
 }
 
 TEST(SectionOutline, EveryEntryIsAClosedOutlineOfTheRightLength) {
@@ -86,15 +116,18 @@ TEST(EndCutPath, OnTheSurfaceAndTiltEqualsTheGrooveAngle) {
                         EXPECT_NEAR(off, 0, 1e-9);
                     else
                         EXPECT_LT(off * m.x(), 0);
-                    // Torch, edge and t0: unit, the torch normal to the edge; tilt measured in
-                    // the plane normal to the edge from the untilted direction.
+                    // Torch, edge and t0: unit; the torch leans along the edge by lean_rad
+                    // (where its body needs room), the tilt is measured in the plane normal to
+                    // the edge from the untilted direction, so the cut face does not change.
                     EXPECT_NEAR(t.t.norm(), 1, 1e-12);
-                    EXPECT_NEAR(t.t.dot(t.edge), 0, 1e-12);
+                    EXPECT_NEAR(t.t.dot(t.edge), std::sin(t.lean_rad), 1e-12);
+                    EXPECT_LE(std::fabs(t.lean_rad), deg2rad(s.max_lean_deg) + 1e-12);
                     EXPECT_NEAR(t.t0.dot(t.edge), 0, 1e-12);
                     EXPECT_NEAR(t.t0.dot(m), 0, 1e-12);
-                    const double measured = std::atan2(t.t.dot(t.edge.cross(t.t0)) *
+                    const Vec3 normalPart = t.t - t.t.dot(t.edge) * t.edge;
+                    const double measured = std::atan2(normalPart.dot(t.edge.cross(t.t0)) *
                                                            (t.edge.cross(t.t0).dot(m) > 0 ? 1 : -1),
-                                                       t.t.dot(t.t0));
+                                                       normalPart.dot(t.t0));
                     EXPECT_NEAR(measured, t.tilt_rad, 1e-12);
                     const GrooveSpec* gs = cut.grooveOf(t.segment);
                     if (gs && std::fabs(t.tilt_rad - deg2rad(gs->angle_deg)) < 1e-12) ++fullTilt;
@@ -154,9 +187,28 @@ TEST(EndCutPlan, TorchBodyCollisionIsReported) {
     SectionSteelSpec s = defaultSectionSteelSpec();
     s.section = *findSection("IPE 100"); // 88.6 mm between the flanges
     s.torch_length_mm = 150;
+    s.max_lean_deg = 0; // the torch normal to every face: it hits the other flange
     const SteelPlan p = planEndCut(s);
     EXPECT_FALSE(p.ok);
     EXPECT_NE(p.problem.find("torch body hits the section"), std::string::npos) << p.problem;
+    EXPECT_NE(p.problem.find("point "), std::string::npos) << p.problem;
+    // Leaning along the cut edge (in the kerf plane) it clears: every point checked clear.
+    s.max_lean_deg = 45;
+    const SteelPlan leaned = planEndCut(s);
+    EXPECT_TRUE(leaned.ok) << leaned.problem;
+    const EndCut cut(s);
+    double maxLean = 0;
+    for (const auto& pass : leaned.passes)
+        for (const auto& t : pass.samples) {
+            EXPECT_FALSE(torchHit(cut, cut.torchBody(), t.p, t.t, pass.name == "square"));
+            maxLean = std::max(maxLean, std::fabs(t.lean_rad));
+        }
+    EXPECT_GT(maxLean, 0);
+    // Allowed only a small lean it still hits: the status names the lean and its limit.
+    s.max_lean_deg = 4;
+    const SteelPlan thick = planEndCut(s);
+    EXPECT_FALSE(thick.ok);
+    EXPECT_NE(thick.problem.find("max_lean_deg = 4)"), std::string::npos) << thick.problem;
 }
 
 TEST(EndCutPlan, JointLimitIsNamed) {

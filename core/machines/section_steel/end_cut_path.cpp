@@ -116,6 +116,46 @@ TorchTarget EndCut::target(const OutlinePoint& o, double s, bool groovePass) con
     return t;
 }
 
+void EndCut::applyLean(CutPass& pass, double dt) const {
+    const TorchBody body = torchBody();
+    const bool offcut = pass.name == "square";
+    const size_t n = pass.samples.size();
+    const double step = deg2rad(2), maxLean = deg2rad(spec_.max_lean_deg);
+    std::vector<double> pos(n, 0), neg(n, 0); // required lean either way (0: none)
+    double prefer = 1;
+    bool any = false;
+    for (size_t k = 0; k < n; ++k) {
+        const TorchTarget& t = pass.samples[k];
+        if (!torchHit(*this, body, t.p, t.t, offcut)) continue;
+        for (double lean = step; lean <= maxLean + 1e-12; lean += step) {
+            bool found = false;
+            for (double sign : {prefer, -prefer}) {
+                const Vec3 leaned = std::cos(lean) * t.t + sign * std::sin(lean) * t.edge;
+                if (torchHit(*this, body, t.p, leaned, offcut)) continue;
+                (sign > 0 ? pos : neg)[k] = lean;
+                prefer = sign;
+                found = any = true;
+                break;
+            }
+            if (found) break;
+        }
+    }
+    if (!any) return;
+    // Ramp in and out: the lean changes by at most reorient_deg_s * dt per sample.
+    const double rate = deg2rad(spec_.reorient_deg_s) * dt;
+    for (auto* v : {&pos, &neg}) {
+        for (size_t k = 1; k < n; ++k)
+            (*v)[k] = std::max((*v)[k], (*v)[k - 1] - rate);
+        for (size_t k = n - 1; k-- > 0;)
+            (*v)[k] = std::max((*v)[k], (*v)[k + 1] - rate);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        TorchTarget& t = pass.samples[k];
+        t.lean_rad = pos[k] >= neg[k] ? pos[k] : -neg[k];
+        t.t = std::cos(t.lean_rad) * t.t + std::sin(t.lean_rad) * t.edge;
+    }
+}
+
 std::vector<CutPass> EndCut::passes(double dt) const {
     // Travel and turn primitives along the outline.
     std::vector<Primitive> prims;
@@ -171,9 +211,10 @@ std::vector<CutPass> EndCut::passes(double dt) const {
                 pass.samples.push_back(t);
             }
         }
+        applyLean(pass, dt);
         out.push_back(std::move(pass));
     };
-    makePass("square", !square_, false, prims);
+    makePass("square", false, false, prims); // the path arm, in the (mitre) cut plane
     // The groove arm bevels face by face (its torch cannot turn round the toes: turning the
     // torch in the cut plane swings its whole 2R arm); a joint move links the faces.
     for (size_t i = 0; i < segs.size(); ++i)

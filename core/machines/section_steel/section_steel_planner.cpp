@@ -81,12 +81,25 @@ SteelCell::SteelCell(const SectionSteelSpec& s)
     groove_base.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
     path_base_y = s.path_base_y_mm;
     path_base_z = s.path_base_z_mm;
+    const Vec3 m = EndCut(s).planeNormal();
+    const Vec3 u1 = (Vec3::UnitY() - Vec3::UnitY().dot(m) * m).normalized();
+    path_frame.linear().col(0) = m;
+    path_frame.linear().col(1) = u1;
+    path_frame.linear().col(2) = m.cross(u1);
+    const double hc = s.section.h_mm / 2;
+    path_frame.translation() = Vec3(0, 0, hc) + path_base_y * u1 + (path_base_z - hc) * m.cross(u1);
 }
 
 void SteelCell::pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const {
     const PlanarPose pp = path.forward(q);
-    p = Vec3(0, path_base_y + pp.x_mm, path_base_z + pp.y_mm);
-    t = Vec3(0, std::cos(pp.phi_rad), std::sin(pp.phi_rad));
+    p = path_frame * Vec3(0, pp.x_mm, pp.y_mm);
+    t = path_frame.linear() * Vec3(0, std::cos(pp.phi_rad), std::sin(pp.phi_rad));
+}
+
+bool SteelCell::pathPlanar(const Vec3& p, const Vec3& t, PlanarPose& out) const {
+    const Vec3 pl = path_frame.inverse() * p, tl = path_frame.linear().transpose() * t;
+    out = PlanarPose{pl.y(), pl.z(), std::atan2(tl.z(), tl.y())};
+    return std::fabs(pl.x()) < 1e-6 && std::fabs(tl.x()) < 1e-9;
 }
 
 void SteelCell::grooveTorch(const Q5& q, Vec3& p, Vec3& t) const {
@@ -128,26 +141,19 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
         for (size_t k = 0; k < pass.samples.size(); ++k) {
             const TorchTarget& tt = pass.samples[k];
             std::string why;
-            // Torch body: behind the tip, outside the material.
-            const bool squarePass = pass.name == "square";
-            for (double b = 3; b <= spec.torch_length_mm; b += 2) {
-                const Vec3 q = tt.p - b * tt.t;
-                const Vec2 yz(q.y(), q.z());
-                // During the square pass the offcut is still there: material on both sides.
-                const bool material = squarePass || q.x() < cut.planeX(q.y(), q.z()) - 0.5;
-                if (material && cut.outline().contains(yz)) {
-                    fail(describePoint(cut, pass, k) +
-                         formatC(": the torch body hits the section %.0f mm behind the tip at "
-                                 "y = %.1f, z = %.1f mm (torch_length_mm = %.0f)",
-                                 b, q.y(), q.z(), spec.torch_length_mm));
-                    break;
-                }
-            }
+            // Torch body (cylinder behind the tip) against the section.
+            if (const auto hit = torchHit(cut, cut.torchBody(), tt.p, tt.t, pass.name == "square"))
+                fail(describePoint(cut, pass, k) +
+                     formatC(": the torch body hits the section %.0f mm behind the tip at "
+                             "x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, "
+                             "torch_radius_mm = %.0f, lean %.0f deg of max_lean_deg = %.0f)",
+                             hit->behind_mm, hit->at.x(), hit->at.y(), hit->at.z(),
+                             spec.torch_length_mm, spec.torch_radius_mm, rad2deg(tt.lean_rad),
+                             spec.max_lean_deg));
             Vec3 p, t;
             if (!pass.groove_arm) {
-                const double phi = std::atan2(tt.t.z(), tt.t.y());
-                const PlanarPose pose{tt.p.y() - cell.path_base_y, tt.p.z() - cell.path_base_z,
-                                      phi};
+                PlanarPose pose;
+                cell.pathPlanar(tt.p, tt.t, pose); // the square / mitre pass lies in its plane
                 std::vector<std::array<double, 3>> sols;
                 for (const auto& s : cell.path.inverse(pose))
                     sols.push_back(s.q);

@@ -59,6 +59,14 @@ SectionSteelArmsForm::SectionSteelArmsForm(JobEditor* editor, QWidget* parent)
            dbl("motion.torch_length_mm", 1,
                [](SectionSteelSpec& s) -> double& { return s.torch_length_mm; }),
            "mm");
+    addRow(fm, tr("Torch body radius"),
+           dbl("motion.torch_radius_mm", 1,
+               [](SectionSteelSpec& s) -> double& { return s.torch_radius_mm; }),
+           "mm");
+    addRow(fm, tr("Largest lean along the cut edge"),
+           dbl("motion.max_lean_deg", 1,
+               [](SectionSteelSpec& s) -> double& { return s.max_lean_deg; }),
+           "deg");
     mainLayout()->addWidget(motion);
 
     // Joint rows: limits and park position (deg) of each joint of an arm.

@@ -138,11 +138,13 @@ SectionSteelSectionForm::SectionSteelSectionForm(JobEditor* editor, QWidget* par
     dims_[2] = dim("section.tw_mm", [](SectionDims& d) -> double& { return d.tw_mm; });
     dims_[3] = dim("section.tf_mm", [](SectionDims& d) -> double& { return d.tf_mm; });
     dims_[4] = dim("section.r_mm", [](SectionDims& d) -> double& { return d.r_mm; });
+    dims_[5] = dim("section.r2_mm", [](SectionDims& d) -> double& { return d.r2_mm; });
     addRow(fc, tr("Height h (L: vertical leg)"), dims_[0], "mm");
     addRow(fc, tr("Width b (L: horizontal leg)"), dims_[1], "mm");
     addRow(fc, tr("Web thickness tw (L: leg)"), dims_[2], "mm");
     addRow(fc, tr("Flange thickness tf (L: leg)"), dims_[3], "mm");
     addRow(fc, tr("Root radius r"), dims_[4], "mm");
+    addRow(fc, tr("Toe radius r2 (U, L)"), dims_[5], "mm");
     addRow(fc, tr("Bar length"),
            bindDouble("section.length_mm", 0, [](Job& j) -> double& { return spec(j).length_mm; }),
            "mm");

@@ -35,7 +35,7 @@ class SectionSteelSectionForm : public JobForm {
     QComboBox* series_ = nullptr;
     QComboBox* designation_ = nullptr;
     QComboBox* shape_ = nullptr;
-    QDoubleSpinBox* dims_[5] = {}; // h, b, tw, tf, r
+    QDoubleSpinBox* dims_[6] = {}; // h, b, tw, tf, r, r2
     QLabel* source_ = nullptr;
     bool refreshing_ = false;
 };

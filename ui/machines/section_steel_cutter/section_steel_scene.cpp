@@ -154,11 +154,11 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     const double length = std::max(200.0, spec.length_mm);
     m.workMeshes.push_back(std::make_shared<SurfaceMesh>(extrudeSection(spec, -length)));
     const double width = std::max(d.b_mm, d.h_mm) + 300;
-    const Vec3 pathBase(0, cell.path_base_y, cell.path_base_z);
+    const Pose pathFrame = cell.path_frame; // world <- the path arm's plane (x: joint axes)
     const Pose grooveBase = cell.groove_base;
     const double torchLength = std::max(60.0, spec.torch_length_mm);
     const double floor = m.floorZ_mm;
-    m.linkage = [length, width, pathBase, grooveBase, cell, park, torchLength,
+    m.linkage = [length, width, pathFrame, grooveBase, cell, park, torchLength,
                  floor](const JointVector& q) {
         std::vector<LinkagePiece> out;
         // The cutting table under the section (a slab on two legs, clear of the cut).
@@ -173,13 +173,16 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
         const double grooveMoved = (q.segment<5>(3) - park.segment<5>(3)).cwiseAbs().maxCoeff();
         const bool pathCuts = pathMoved >= grooveMoved;
 
-        // Path arm: planar 3R in the cut plane x = 0, joint axes along x; links 1 and 2 drawn
-        // a little in front of the plane (+x), link 3 is the torch's holder in the plane.
+        // Path arm: planar 3R in the (square or mitred) cut plane, joint axes along the plane's
+        // normal; links 1 and 2 drawn a little in front of the plane, link 3 is the torch's
+        // holder in the plane.
         const auto& a = cell.path.lengths();
         const double xo = 90;
+        const Vec3 axis = pathFrame.linear().col(0);
+        const Vec3 pathBase = pathFrame.translation();
         // Its base hangs from a portal over the bar, behind the cut.
         const double portalX = -420, portalZ = pathBase.z() + 90, half = width / 2 + 250;
-        out.push_back(bar(pathBase + Vec3(xo + 60, 0, 0), {portalX, pathBase.y(), pathBase.z()}, 40,
+        out.push_back(bar(pathBase + axis * (xo + 60), {portalX, pathBase.y(), pathBase.z()}, 40,
                           LinkagePiece::Frame));
         out.push_back(
             block({portalX, 0, portalZ}, {120, 2 * half + 120, 120}, LinkagePiece::Frame));
@@ -187,21 +190,23 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
             out.push_back(block({portalX, y, (portalZ + floor) / 2}, {120, 120, portalZ - floor},
                                 LinkagePiece::Frame));
         double phi = 0;
-        Vec3 p = pathBase;
+        Vec3 planar(0, 0, 0); // in the arm's plane: (0, x, y)
         Vec3 joints[3];
         for (int i = 0; i < 3; ++i) {
-            joints[i] = p;
+            joints[i] = pathFrame * planar;
             phi += q[i];
-            p = p + a[static_cast<size_t>(i)] * Vec3(0, std::cos(phi), std::sin(phi));
+            planar += a[static_cast<size_t>(i)] * Vec3(0, std::cos(phi), std::sin(phi));
         }
-        const Vec3 dir(0, std::cos(phi), std::sin(phi)); // torch direction = link 3
-        const Vec3 ox(xo, 0, 0);
-        out.push_back(joint(joints[0] + ox, Vec3::UnitX(), 55, 120));
+        const Vec3 p = pathFrame * planar;
+        // The torch direction is link 3's.
+        const Vec3 dir = pathFrame.linear() * Vec3(0, std::cos(phi), std::sin(phi));
+        const Vec3 ox = axis * xo;
+        out.push_back(joint(joints[0] + ox, axis, 55, 120));
         out.push_back(bar(joints[0] + ox, joints[1] + ox, 34, LinkagePiece::Link));
-        out.push_back(joint(joints[1] + ox, Vec3::UnitX(), 45, 110));
+        out.push_back(joint(joints[1] + ox, axis, 45, 110));
         out.push_back(bar(joints[1] + ox, joints[2] + ox, 28, LinkagePiece::Link));
         out.push_back(bar(joints[2] + ox * 0.5, joints[2] + ox, 30, LinkagePiece::Joint));
-        out.push_back(joint(joints[2], Vec3::UnitX(), 32, 60));
+        out.push_back(joint(joints[2], axis, 32, 60));
         out.push_back(bar(joints[2], p - dir * torchLength, 18, LinkagePiece::Link));
         addTorch(out, p, dir, torchLength, pathCuts);
 
