@@ -191,9 +191,9 @@ void SectionSteelSectionForm::refresh(const Job& job) {
             designation_->addItems(designationsOf(series));
             designation_->setCurrentText(QString::fromStdString(s->section.designation));
         }
-        const double v[5] = {s->section.h_mm, s->section.b_mm, s->section.tw_mm, s->section.tf_mm,
-                             s->section.r_mm};
-        for (int i = 0; i < 5; ++i) {
+        const double v[6] = {s->section.h_mm,  s->section.b_mm, s->section.tw_mm,
+                             s->section.tf_mm, s->section.r_mm, s->section.r2_mm};
+        for (int i = 0; i < 6; ++i) {
             const QSignalBlocker b(dims_[i]);
             dims_[i]->setValue(v[i]);
         }
