@@ -4,8 +4,9 @@
 // simulated rig; every catalogue series can be chosen on the Section page and draws (the
 // extruded section has the section's height and width, its caps the outline's area); both arms
 // are drawn where the core's kinematics put their torches. With CUTCELL_STEEL_SCREENSHOT=<png>
-// (under xvfb-run) the window is saved mid-cut: a mitred IPE end with K grooves when that job
-// plans (CUTCELL_STEEL_SCREENSHOT_JOB=k_groove), else the default square IPE end.
+// (under xvfb-run) the window is saved mid-cut: the default square IPE end, or with
+// CUTCELL_STEEL_SCREENSHOT_JOB=mitre the IPE end mitred 30/15 deg, =k_groove that with K grooves
+// (the case fails with the planner's sentence while that job does not plan).
 #include "sim_rig.h"
 
 #include "core/machine/machine_module.h"
@@ -298,19 +299,22 @@ class TestGuiSectionSteel : public QObject {
     void screenshot() {
         MainWindow w(&cutcell::app::makeRig); // real time: the view must see the torch on
         newSteelJob(w);
-        if (qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB") == "k_groove") {
+        const QString kind = qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB");
+        if (kind == "mitre" || kind == "k_groove") {
             cutcell::Job job = w.editor()->job();
             auto& s = *job.machine_spec.as<SectionSteelSpec>();
-            job.name = "IPE 300, mitred 30/15 deg, K grooves 35 deg, root face 2 mm";
+            job.name = "IPE 300, mitred 30/15 deg";
             s.cut.mitre_vertical_deg = 30;
             s.cut.mitre_horizontal_deg = 15;
-            s.cut.flanges = {cutcell::section_steel::GrooveType::K, 35, 2};
-            s.cut.web = {cutcell::section_steel::GrooveType::K, 35, 2};
+            if (kind == "k_groove") {
+                job.name += ", K grooves 35 deg, root face 2 mm";
+                s.cut.flanges = {cutcell::section_steel::GrooveType::K, 35, 2};
+                s.cut.web = {cutcell::section_steel::GrooveType::K, 35, 2};
+            }
             w.editor()->setJob(job);
         }
-        // The page that says what is cut: the end cut for the grooved job, else the section.
-        const bool grooved = qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB") == "k_groove";
-        w.parameters()->showVisibleTab(grooved ? 3 : 2);
+        // The page that says what is cut: the end cut for a mitre or groove, else the section.
+        w.parameters()->showVisibleTab(kind.isEmpty() ? 2 : 3);
         w.resize(1600, 1000);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

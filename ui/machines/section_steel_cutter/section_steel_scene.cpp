@@ -118,8 +118,9 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     m.axisCount = section_steel::kSteelAxes;
     m.chuckAxis = -1;      // the section lies still; the arms move
     m.toolLength_mm = 550; // the follow-torch view stands 1.8 x this from the cut
-    // Look at the cut face from past the bar end, the side away from the groove arm.
-    m.isoToCamera = Vec3(1.0, 0.8, 0.75);
+    // Look at the cut face (square or mitred) from past the bar end, from above on the side
+    // away from the groove arm.
+    m.isoToCamera = EndCut(spec).planeNormal().normalized() + Vec3(0, 0.8, 0.75);
     JointVector park = JointVector::Zero();
     for (int i = 0; i < section_steel::kSteelAxes; ++i)
         park[i] = deg2rad(spec.park_deg[static_cast<size_t>(i)]);
