@@ -82,14 +82,24 @@ TEST(SectionOutline, EveryEntryIsAClosedOutlineOfTheRightLength) {
     }
 }
 
+// The default IPE 300 with bevels: V on the flanges, then mitred both ways with K grooves.
+// Every point reached inside the limits by the arm that cuts it, the torch where planned.
 TEST(EndCutPlan, GroovedEndPlans) {
     SectionSteelSpec s = defaultSectionSteelSpec();
     s.cut.flanges = {GrooveType::V, 30, 0};
     const SteelPlan p = planEndCut(s);
-    if (!p.ok)
-        GTEST_SKIP() << "not yet: the groove arm's cell layout does not reach every bevel "
-                        "point (README, section-steel status): "
-                     << p.problem;
+    ASSERT_TRUE(p.ok) << p.problem;
+    EXPECT_LE(p.max_torch_error_mm, 1e-6);
+    EXPECT_GE(p.passes.size(), 4u); // square + top flange + two bottom flange halves
+    s.cut = {30, -20, {GrooveType::K, 45, 2}, {GrooveType::K, 35, 2}};
+    const SteelPlan k = planEndCut(s);
+    ASSERT_TRUE(k.ok) << k.problem;
+    EXPECT_LE(k.max_torch_error_mm, 1e-6);
+    // Both faces of the web are bevelled (K).
+    int webPasses = 0;
+    for (const auto& pass : k.passes)
+        webPasses += pass.name.rfind("groove web", 0) == 0;
+    EXPECT_EQ(webPasses, 2);
 }
 
 TEST(EndCutPath, OnTheSurfaceAndTiltEqualsTheGrooveAngle) {
@@ -161,26 +171,32 @@ TEST(EndCutPath, BevelMeetsTheCutPlaneAtTheGrooveDepth) {
     EXPECT_GT(checked, 10);
 }
 
-TEST(EndCutPlan, EveryCatalogueEntryPlansOrNamesThePoint) {
-    int ok = 0, total = 0;
+// Every catalogue entry plans a square end and a grooved end mitred about both axes (V on the
+// flanges, Y on the web, 30/15 deg), and a K-grooved end mitred the other way.
+TEST(EndCutPlan, EveryCatalogueEntryPlansASquareAndAGroovedMitredEnd) {
+    int square = 0, grooved = 0, kGrooved = 0, total = 0;
     for (const auto& d : sectionCatalogue()) {
+        ++total;
         SectionSteelSpec s = defaultSectionSteelSpec();
         s.section = d;
         const SteelPlan p = planEndCut(s);
-        ++total;
-        if (p.ok) {
-            ++ok;
-            EXPECT_LE(p.max_torch_error_mm, 1e-6) << d.designation;
-        } else {
-            // Refused with the point, the face and the reason.
-            EXPECT_NE(p.problem.find("point "), std::string::npos) << p.problem;
-            EXPECT_NE(p.problem.find(" of pass "), std::string::npos) << p.problem;
-        }
+        EXPECT_TRUE(p.ok) << d.designation << " square: " << p.problem;
+        EXPECT_LE(p.max_torch_error_mm, 1e-6) << d.designation;
+        square += p.ok;
+        s.cut = {30, 15, {GrooveType::V, 30, 0}, {GrooveType::Y, 30, 2}};
+        const SteelPlan g = planEndCut(s);
+        EXPECT_TRUE(g.ok) << d.designation << " V/Y mitred 30/15: " << g.problem;
+        EXPECT_LE(g.max_torch_error_mm, 1e-6) << d.designation;
+        EXPECT_GE(g.passes.size(), 3u) << d.designation;
+        grooved += g.ok;
+        s.cut = {-30, -15, {GrooveType::K, 30, 2}, {GrooveType::K, 30, 2}};
+        const SteelPlan k = planEndCut(s);
+        EXPECT_TRUE(k.ok) << d.designation << " K mitred -30/-15: " << k.problem;
+        kGrooved += k.ok;
     }
-    // Not yet every entry: small sections collide with the 150 mm torch, some large ones leave
-    // the path arm's reach (README, section-steel status). The figure is printed.
-    std::printf("%d of %d catalogue entries plan with the default cell\n", ok, total);
-    EXPECT_GT(ok, 0);
+    std::printf("of %d catalogue entries: %d plan a square end, %d a V/Y end mitred 30/15 deg, "
+                "%d a K end mitred -30/-15 deg\n",
+                total, square, grooved, kGrooved);
 }
 
 TEST(EndCutPlan, TorchBodyCollisionIsReported) {

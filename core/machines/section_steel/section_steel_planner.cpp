@@ -69,25 +69,69 @@ bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& 
     return false;
 }
 
+// The groove arm's branch at the first point of a pass: of the IK branches inside the limits
+// the one it can follow furthest along the pass (Gauss-Newton from point to point, inside the
+// limits, no jumps); near the park position on a tie. False when no branch is inside limits.
+bool grooveStartBranch(const SteelCell& cell, const SectionSteelSpec& spec, const CutPass& pass,
+                       const Q5& park, double jump, Q5& out) {
+    const Vec3 p0 = cell.groove_base.inverse() * pass.samples.front().p;
+    const Vec3 t0 = cell.groove_base.linear().transpose() * pass.samples.front().t;
+    size_t bestReach = 0;
+    double bestDistance = 1e300;
+    bool found = false;
+    for (const auto& s : cell.groove.inverseTorch(p0, t0)) {
+        if (!limitViolation(s.q, spec.groove_limits, kGrooveJointNames, "").empty()) continue;
+        Q5 q = s.q;
+        size_t reach = 1;
+        for (; reach < pass.samples.size(); ++reach) {
+            const TorchTarget& tt = pass.samples[reach];
+            Q5 next = q;
+            if (!cell.groove.trackTorch(cell.groove_base.inverse() * tt.p,
+                                        cell.groove_base.linear().transpose() * tt.t, next))
+                break;
+            unwrapTo(next, q);
+            if (distance(next, q) > jump ||
+                !limitViolation(next, spec.groove_limits, kGrooveJointNames, "").empty())
+                break;
+            q = next;
+        }
+        const double d = distance(s.q, park);
+        if (!found || reach > bestReach || (reach == bestReach && d < bestDistance)) {
+            found = true;
+            bestReach = reach;
+            bestDistance = d;
+            out = s.q;
+        }
+    }
+    return found;
+}
+
 } // namespace
 
 SteelCell::SteelCell(const SectionSteelSpec& s)
     : path(s.path_links_mm[0], s.path_links_mm[1], s.path_links_mm[2]) {
+    path_base_y = s.path_base_y_mm;
+    path_base_z = s.path_base_z_mm;
+    // The mitre frame: both arms stand on it; it turns x onto the cut plane's normal about
+    // the section's centre (0, 0, h/2), the identity for a square cut.
+    const Vec3 m = EndCut(s).planeNormal();
+    const Vec3 u1 = (Vec3::UnitY() - Vec3::UnitY().dot(m) * m).normalized();
+    Pose mitre = Pose::Identity();
+    mitre.linear().col(0) = m;
+    mitre.linear().col(1) = u1;
+    mitre.linear().col(2) = m.cross(u1);
+    const Vec3 centre(0, 0, s.section.h_mm / 2);
+    mitre.translation() = centre - mitre.linear() * centre;
+    path_frame = mitre;
+    path_frame.translation() = mitre * Vec3(0, path_base_y, path_base_z);
+    Pose square = Pose::Identity();
     Eigen::Matrix3d R;
     R.col(0) = Vec3(0, 0, -1);
     R.col(1) = Vec3(0, -1, 0);
     R.col(2) = Vec3(-1, 0, 0);
-    groove_base.linear() = R;
-    groove_base.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
-    path_base_y = s.path_base_y_mm;
-    path_base_z = s.path_base_z_mm;
-    const Vec3 m = EndCut(s).planeNormal();
-    const Vec3 u1 = (Vec3::UnitY() - Vec3::UnitY().dot(m) * m).normalized();
-    path_frame.linear().col(0) = m;
-    path_frame.linear().col(1) = u1;
-    path_frame.linear().col(2) = m.cross(u1);
-    const double hc = s.section.h_mm / 2;
-    path_frame.translation() = Vec3(0, 0, hc) + path_base_y * u1 + (path_base_z - hc) * m.cross(u1);
+    square.linear() = R;
+    square.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
+    groove_base = mitre * square;
 }
 
 void SteelCell::pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const {
@@ -174,7 +218,11 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 const Vec3 tb = cell.groove_base.linear().transpose() * tt.t;
                 Q5 q = qg;
                 bool ok = !first && cell.groove.trackTorch(pb, tb, q);
-                if (ok) {
+                if (first) {
+                    const Q5 park5{park[3], park[4], park[5], park[6], park[7]};
+                    ok = grooveStartBranch(cell, spec, pass, park5, jump, q);
+                }
+                if (ok && !first) {
                     unwrapTo(q, qg);
                     ok = limitViolation(q, spec.groove_limits, kGrooveJointNames, "groove arm")
                              .empty() &&

@@ -52,7 +52,7 @@ struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     double torch_radius_mm = 12;  // torch body radius (a cone at the nozzle)
     // Where the body would hit the section the torch leans along the cut edge, in the kerf
     // (or bevel) surface, by at most this much: the cut face does not change.
-    double max_lean_deg = 45;
+    double max_lean_deg = 60;
     // Path arm: base in the cut plane, link lengths (seed: 1000, 1110, 310 mm), limits.
     double path_base_y_mm = 0, path_base_z_mm = 1800;
     std::array<double, 3> path_links_mm{1000, 1110, 310};
