@@ -63,8 +63,8 @@ TEST(SectionSteelModule, JobRoundTrip) {
     for (auto& [k, v] : doc.asObject())
         if (k == "machine")
             member(v.asObject(), "section") =
-                json::Object{{"family", "U"}, {"h_mm", 250.0}, {"b_mm", 80.0},
-                             {"tw_mm", 8.0},  {"tf_mm", 12.0}, {"r_mm", 12.0}};
+                json::Object{{"family", "U"}, {"h_mm", 250.0}, {"b_mm", 80.0},       {"tw_mm", 8.0},
+                             {"tf_mm", 12.0}, {"r_mm", 12.0},  {"length_mm", 1000.0}};
     const std::string b = json::write(doc);
     EXPECT_EQ(json::write(jobToJson(parseJob(b))), b);
 }

@@ -18,10 +18,14 @@ set(CUTCELL_MACHINE_UI_SOURCES
   ${_m}/flying_saw/flying_saw_ui.cpp
   ${_m}/flying_saw/flying_saw_forms.cpp
   ${_m}/flying_saw/flying_saw_figures.cpp
+  ${_m}/section_steel_cutter/section_steel_ui.cpp
+  ${_m}/section_steel_cutter/section_steel_form.cpp
+  ${_m}/section_steel_cutter/section_steel_arms_form.cpp
 )
 # Scenes for the 3D view (plain data, built only with CutCell::view3d).
 set(CUTCELL_MACHINE_UI_VIEW3D_SOURCES
   ${_m}/profile_cutter_2axis/profile_scene.cpp
   ${_m}/quick_return_cutter/quick_return_scene.cpp
   ${_m}/flying_saw/flying_saw_scene.cpp
+  ${_m}/section_steel_cutter/section_steel_scene.cpp
 )

@@ -4,6 +4,7 @@
 #include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
 #include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
 #include "ui/machines/quick_return_cutter/quick_return_ui.h"
+#include "ui/machines/section_steel_cutter/section_steel_ui.h"
 
 namespace CutCell::ui {
 
@@ -12,6 +13,7 @@ void registerMachineUis(MachineUiRegistry& registry) {
     registry.add(std::make_unique<ProfileCutterUi>());
     registry.add(std::make_unique<QuickReturnUi>());
     registry.add(std::make_unique<FlyingSawUi>());
+    registry.add(std::make_unique<SectionSteelUi>());
 }
 
 } // namespace CutCell::ui

@@ -153,10 +153,12 @@ void CellScene::Impl::build() {
     donePoly = nullptr;
     donePts = nullptr;
     drawnIndex.clear();
-    if (model.linkage)
+    if (model.linkage) {
         buildLinkage();
-    else
+        if (!model.pathWork.empty()) buildPath();
+    } else {
         buildPipeCell();
+    }
     buildFloorAndTexts();
 }
 
@@ -169,10 +171,30 @@ void CellScene::Impl::buildLinkage() {
                       : p.colour == LinkagePiece::Joint ? colours::kArmJoint
                       : p.colour == LinkagePiece::Work  ? colours::kPipe
                       : p.colour == LinkagePiece::Tool  ? colours::kTorchBody
+                      : p.colour == LinkagePiece::Flame ? colours::kFlame
                                                         : colours::kArmLink;
-        auto a = makeActor(p.kind == LinkagePiece::Bar ? unitBar : unitBlock, c);
+        vtkSmartPointer<vtkPolyData> shape = p.kind == LinkagePiece::Bar ? unitBar : unitBlock;
+        auto a = makeActor(shape, c);
+        if (p.colour == LinkagePiece::Flame) a->GetProperty()->LightingOff();
         renderer->AddActor(a);
         linkageActors.push_back(a);
+    }
+    for (const auto& mesh : model.workMeshes) {
+        if (!mesh) continue;
+        vtkNew<vtkPolyData> shape;
+        vtkNew<vtkPoints> pts;
+        vtkNew<vtkCellArray> tris;
+        for (const Vec3& v : mesh->points)
+            pts->InsertNextPoint(v.x(), v.y(), v.z());
+        for (const auto& t : mesh->triangles) {
+            const vtkIdType ids[3] = {t[0], t[1], t[2]};
+            tris->InsertNextCell(3, ids);
+        }
+        shape->SetPoints(pts);
+        shape->SetPolys(tris);
+        auto a = makeActor(shape, colours::kPipe);
+        renderer->AddActor(a);
+        fixedActors.push_back(a);
     }
     placeLinkage();
 }
@@ -181,6 +203,7 @@ void CellScene::Impl::placeLinkage() {
     const std::vector<LinkagePiece> pieces = model.linkage(q);
     for (size_t i = 0; i < std::min(pieces.size(), linkageActors.size()); ++i) {
         const LinkagePiece& p = pieces[i];
+        if (p.colour == LinkagePiece::Flame) linkageActors[i]->SetVisibility(torchOn);
         if (p.kind == LinkagePiece::Bar) {
             if ((p.b - p.a).norm() > 1e-9)
                 setPose(linkageActors[i], segmentMatrix(p.a, p.b, p.radius_mm));
@@ -195,12 +218,6 @@ void CellScene::Impl::placeLinkage() {
 
 void CellScene::Impl::buildPipeCell() {
     const SceneModel& m = model;
-    const auto addWork = [&](vtkSmartPointer<vtkActor> a, const Eigen::Matrix4d& local) {
-        renderer->AddActor(a);
-        workActors.push_back(a);
-        workLocal.push_back(local);
-        return a;
-    };
     const Eigen::Matrix4d I = Eigen::Matrix4d::Identity();
 
     // Work pipe with its wall.
@@ -248,6 +265,79 @@ void CellScene::Impl::buildPipeCell() {
         addWork(ghost, m.workFromMating.matrix());
     }
 
+    buildPath();
+
+    // Arm: joints on the z axis of frames 0..n-1, links along z (d) then x (a), the last link
+    // being the torch itself.
+    if (m.mount == ToolMount::DhArm) {
+        auto pedestal =
+            makeActor(makeFrustum(58, 48, m.floorZ_mm, -40, kFacets, true), colours::kMachine);
+        renderer->AddActor(pedestal);
+        fixedActors.push_back(pedestal);
+        vtkSmartPointer<vtkPolyData> unitJoint = makeFrustum(1, 1, -0.5, 0.5, 32, true);
+        vtkSmartPointer<vtkPolyData> unitLink = makeFrustum(1, 1, 0, 1, 24, true);
+        const int links = static_cast<int>(m.armChain.size());
+        for (int i = 0; i < links; ++i) {
+            const double scale = std::max(0.45, 1.0 - 0.12 * i);
+            ArmPiece joint{ArmPiece::Joint, i, 42 * scale, 95 * scale,
+                           makeActor(unitJoint, colours::kArmJoint)};
+            arm.push_back(joint);
+            if (i == links - 1) break; // the torch
+            const DhLink& l = m.armChain.link(static_cast<size_t>(i));
+            if (std::fabs(l.d_mm) > 1e-6)
+                arm.push_back({ArmPiece::LinkAlongZ, i, 30 * scale, 0,
+                               makeActor(unitLink, colours::kArmLink)});
+            if (std::fabs(l.a_mm) > 1e-6)
+                arm.push_back({ArmPiece::LinkAlongX, i, 28 * scale, 0,
+                               makeActor(unitLink, colours::kArmLink)});
+        }
+        for (ArmPiece& p : arm)
+            renderer->AddActor(p.actor);
+    }
+
+    // Torch in the tool frame: tip at the origin, axis +z into the work.
+    const double L = m.toolLength_mm;
+    carriage = nullptr;
+    if (m.mount == ToolMount::LinearCarriage) {
+        // A fixed rail along the carriage axis above the torch, and the carriage block on it.
+        const Vec3 dir = m.carriageDirection.normalized();
+        const Vec3 up = -m.carriageApproach.normalized();
+        const Vec3 c = m.carriageOrigin + dir * m.workPipeCentreZ_mm + up * (L + 45);
+        const Vec3 railSize =
+            dir.cwiseAbs() * (m.workPipe.length_mm + 300) + (Vec3::Ones() - dir.cwiseAbs()) * 40;
+        auto rail = makeActor(makeBox(railSize.x(), railSize.y(), railSize.z()), colours::kMachine);
+        rail->SetPosition(c.x(), c.y(), c.z());
+        renderer->AddActor(rail);
+        fixedActors.push_back(rail);
+        carriage = makeActor(makeBox(70, 70, 50), colours::kArmLink);
+        renderer->AddActor(carriage);
+    }
+    torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
+    nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
+    nozzle->GetProperty()->SetSpecular(0.6);
+    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 1.0);
+    flame->GetProperty()->SetAmbient(1.0);
+    flame->GetProperty()->SetDiffuse(0.0);
+    flame->GetProperty()->LightingOff();
+    for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
+        renderer->AddActor(a);
+    direction = makeActor(makeFrustum(1, 0, 0, 1, 24, true), colours::kDirection);
+    direction->GetProperty()->SetAmbient(0.5);
+    renderer->AddActor(direction);
+}
+
+vtkSmartPointer<vtkActor> CellScene::Impl::addWork(vtkSmartPointer<vtkActor> a,
+                                                   const Eigen::Matrix4d& local) {
+    renderer->AddActor(a);
+    workActors.push_back(a);
+    workLocal.push_back(local);
+    return a;
+}
+
+void CellScene::Impl::buildPath() {
+    const SceneModel& m = model;
+    const Eigen::Matrix4d I = Eigen::Matrix4d::Identity();
+    const double R = m.workPipe.radius_mm;
     // Planned path lifted 0.8 mm off the surface so it never hides in it; the done part 1.6 mm,
     // so it is drawn over the planned path. At most kMaxDrawnPathPoints are drawn (a 30 000-point
     // plan is far denser than the screen); a drawn point is red when any plan point it stands
@@ -332,64 +422,6 @@ void CellScene::Impl::buildPipeCell() {
     stopMark->GetProperty()->LightingOff();
     stopMarkSlot = workActors.size() - 1;
     placeStopMark();
-
-    // Arm: joints on the z axis of frames 0..n-1, links along z (d) then x (a), the last link
-    // being the torch itself.
-    if (m.mount == ToolMount::DhArm) {
-        auto pedestal =
-            makeActor(makeFrustum(58, 48, m.floorZ_mm, -40, kFacets, true), colours::kMachine);
-        renderer->AddActor(pedestal);
-        fixedActors.push_back(pedestal);
-        vtkSmartPointer<vtkPolyData> unitJoint = makeFrustum(1, 1, -0.5, 0.5, 32, true);
-        vtkSmartPointer<vtkPolyData> unitLink = makeFrustum(1, 1, 0, 1, 24, true);
-        const int links = static_cast<int>(m.armChain.size());
-        for (int i = 0; i < links; ++i) {
-            const double scale = std::max(0.45, 1.0 - 0.12 * i);
-            ArmPiece joint{ArmPiece::Joint, i, 42 * scale, 95 * scale,
-                           makeActor(unitJoint, colours::kArmJoint)};
-            arm.push_back(joint);
-            if (i == links - 1) break; // the torch
-            const DhLink& l = m.armChain.link(static_cast<size_t>(i));
-            if (std::fabs(l.d_mm) > 1e-6)
-                arm.push_back({ArmPiece::LinkAlongZ, i, 30 * scale, 0,
-                               makeActor(unitLink, colours::kArmLink)});
-            if (std::fabs(l.a_mm) > 1e-6)
-                arm.push_back({ArmPiece::LinkAlongX, i, 28 * scale, 0,
-                               makeActor(unitLink, colours::kArmLink)});
-        }
-        for (ArmPiece& p : arm)
-            renderer->AddActor(p.actor);
-    }
-
-    // Torch in the tool frame: tip at the origin, axis +z into the work.
-    const double L = m.toolLength_mm;
-    carriage = nullptr;
-    if (m.mount == ToolMount::LinearCarriage) {
-        // A fixed rail along the carriage axis above the torch, and the carriage block on it.
-        const Vec3 dir = m.carriageDirection.normalized();
-        const Vec3 up = -m.carriageApproach.normalized();
-        const Vec3 c = m.carriageOrigin + dir * m.workPipeCentreZ_mm + up * (L + 45);
-        const Vec3 railSize =
-            dir.cwiseAbs() * (m.workPipe.length_mm + 300) + (Vec3::Ones() - dir.cwiseAbs()) * 40;
-        auto rail = makeActor(makeBox(railSize.x(), railSize.y(), railSize.z()), colours::kMachine);
-        rail->SetPosition(c.x(), c.y(), c.z());
-        renderer->AddActor(rail);
-        fixedActors.push_back(rail);
-        carriage = makeActor(makeBox(70, 70, 50), colours::kArmLink);
-        renderer->AddActor(carriage);
-    }
-    torchBody = makeActor(makeFrustum(16, 16, -L, -0.3 * L, kFacets, true), colours::kTorchBody);
-    nozzle = makeActor(makeFrustum(11, 3.5, -0.3 * L, -3, kFacets, true), colours::kNozzle);
-    nozzle->GetProperty()->SetSpecular(0.6);
-    flame = makeActor(makeFrustum(5.5, 1.5, -3.5, 1.0, 24, true), colours::kFlame, 1.0);
-    flame->GetProperty()->SetAmbient(1.0);
-    flame->GetProperty()->SetDiffuse(0.0);
-    flame->GetProperty()->LightingOff();
-    for (auto* a : {torchBody.Get(), nozzle.Get(), flame.Get()})
-        renderer->AddActor(a);
-    direction = makeActor(makeFrustum(1, 0, 0, 1, 24, true), colours::kDirection);
-    direction->GetProperty()->SetAmbient(0.5);
-    renderer->AddActor(direction);
 }
 
 void CellScene::Impl::buildFloorAndTexts() {
@@ -432,13 +464,13 @@ void CellScene::Impl::buildFloorAndTexts() {
 }
 
 void CellScene::Impl::place() {
+    const Pose work = model.baseFromWork(q);
+    for (size_t i = 0; i < workActors.size(); ++i)
+        setPose(workActors[i], work.matrix() * workLocal[i]);
     if (model.linkage) {
         placeLinkage();
         return;
     }
-    const Pose work = model.baseFromWork(q);
-    for (size_t i = 0; i < workActors.size(); ++i)
-        setPose(workActors[i], work.matrix() * workLocal[i]);
     if (model.mount == ToolMount::DhArm) {
         const std::vector<Pose> frames = model.armFrames(q);
         for (ArmPiece& p : arm) {
@@ -508,6 +540,9 @@ void CellScene::Impl::updateDone(int count) {
 
 Vec3 CellScene::Impl::liftedPathPoint(size_t i, double mm) const {
     const Vec3& p = model.pathWork[i];
+    // No pipe (a linkage machine's work): off the surface against the torch.
+    if (model.workPipe.radius_mm <= 0 && i < model.approachWork.size())
+        return p - mm * model.approachWork[i].normalized();
     const Vec3 radial(p.x(), p.y(), 0);
     return radial.norm() > 1e-9 ? Vec3(p + mm * radial.normalized()) : p;
 }
@@ -518,7 +553,8 @@ void CellScene::Impl::updateStatus() {
     if (key == statusKey) return;
     statusKey = key;
     char buf[200];
-    if (model.linkage) // no planned path: the machine follows a control law
+    if (model.linkage &&
+        model.pathWork.empty()) // no planned path: the machine follows a control law
         std::snprintf(buf, sizeof buf, "progress %d %%", percent);
     else if (unreachable > 0)
         std::snprintf(buf, sizeof buf,

@@ -15,7 +15,7 @@ struct Look {
     Vec3 toCamera;
     Vec3 up;
 };
-Look lookFor(ViewPreset p) {
+Look lookFor(ViewPreset p, const Vec3& iso) {
     switch (p) {
     case ViewPreset::Front:
         return {Vec3(0, -1, 0), Vec3::UnitZ()};
@@ -25,14 +25,22 @@ Look lookFor(ViewPreset p) {
     case ViewPreset::FollowTorch:
         break;
     }
-    return {Vec3(0.75, -1.0, 0.7).normalized(), Vec3::UnitZ()};
+    return {iso.normalized(), Vec3::UnitZ()};
 }
 } // namespace
 
 void CellScene::Impl::applyCamera(ViewPreset p) {
     vtkCamera* cam = renderer->GetActiveCamera();
     if (p == ViewPreset::FollowTorch) {
-        const Vec3 tip = torchBody ? Vec3(model.toolPose(q).translation()) : Vec3(Vec3::Zero());
+        // A linkage machine has no tool pose: follow the current point of its path.
+        const size_t n = model.pathWork.size();
+        const Vec3 tip =
+            torchBody ? Vec3(model.toolPose(q).translation())
+            : n > 0
+                ? model.pathPointWorld(std::min(n - 1, static_cast<size_t>(std::lround(
+                                                           progress * static_cast<double>(n - 1)))),
+                                       q)
+                : Vec3(Vec3::Zero());
         if (preset != ViewPreset::FollowTorch || !hasScene) return;
         double f[3], pos[3];
         cam->GetFocalPoint(f);
@@ -40,7 +48,7 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
         const bool fresh = followTip.x() > 1e299; // set by setPreset
         if (fresh) {
             // First frame of the follow mode: close to the tip, from the iso side.
-            const Vec3 dir = lookFor(ViewPreset::Iso).toCamera;
+            const Vec3 dir = lookFor(ViewPreset::Iso, model.isoToCamera).toCamera;
             const Vec3 c = tip + dir * (1.8 * model.toolLength_mm);
             cam->SetFocalPoint(tip.x(), tip.y(), tip.z());
             cam->SetPosition(c.x(), c.y(), c.z());
@@ -55,7 +63,7 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
         renderer->ResetCameraClippingRange();
         return;
     }
-    const Look look = lookFor(p);
+    const Look look = lookFor(p, model.isoToCamera);
     double b[6];
     renderer->ComputeVisiblePropBounds(b);
     if (b[0] > b[1]) return; // nothing to frame

@@ -63,6 +63,8 @@ struct CellScene::Impl {
     void build();
     void buildPipeCell();
     void buildLinkage();
+    void buildPath(); // planned path, done part, unreachable marks, stop mark (work actors)
+    vtkSmartPointer<vtkActor> addWork(vtkSmartPointer<vtkActor> a, const Eigen::Matrix4d& local);
     void placeLinkage();
     void buildFloorAndTexts();
     void place();

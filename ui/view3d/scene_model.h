@@ -16,8 +16,10 @@
 #include "core/common/types.h"
 #include "core/kinematics/dh_chain.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,13 +38,20 @@ struct PipeShape {
     double length_mm = 0;
 };
 
+// A triangle mesh in the world (mm), e.g. a steel section extruded with its root radii.
+struct SurfaceMesh {
+    std::vector<Vec3> points;
+    std::vector<std::array<int, 3>> triangles; // counter-clockwise seen from outside
+};
+
 // A rigid piece of a machine drawn as a linkage (SceneModel::linkage), in the world (mm): a bar
-// (a cylinder from `a` to `b`) or an axis-aligned block (centre `a`, edge lengths `b`).
+// (a cylinder from `a` to `b`) or an axis-aligned block (centre `a`, edge lengths `b`). Flame
+// pieces show only while the torch is on.
 struct LinkagePiece {
     enum Kind { Bar, Block } kind = Bar;
     Vec3 a = Vec3::Zero(), b = Vec3::Zero();
     double radius_mm = 10; // Bar
-    enum Colour { Frame, Link, Joint, Work, Tool } colour = Link;
+    enum Colour { Frame, Link, Joint, Work, Tool, Flame } colour = Link;
 };
 
 struct SceneModel {
@@ -79,12 +88,19 @@ struct SceneModel {
 
     // A machine that is a planar linkage (the quick-return cutter): its pieces as a function
     // of the joint vector, computed by the machine's forward kinematics. When set, the view
-    // draws these pieces (the same count for every q) instead of the pipe, path and tool.
+    // draws these pieces (the same count for every q) instead of the pipe and the tool; the
+    // planned path is drawn too when pathWork is set (lifted off the work along -approachWork
+    // when there is no work pipe).
     std::function<std::vector<LinkagePiece>(const JointVector&)> linkage;
     // A linkage that also draws what its master axis measures (the flying saw's pipe on the
     // line): the view puts the telemetry's master position (mm) into q[masterSlot] before
     // placing the pieces. -1: none.
     int masterSlot = -1;
+    // Fixed work drawn with a linkage (the section-steel line's section), world frame.
+    std::vector<std::shared_ptr<const SurfaceMesh>> workMeshes;
+
+    // Direction from the focal point to the camera of the Iso and Follow-torch views.
+    Vec3 isoToCamera = Vec3(0.75, -1.0, 0.7);
 
     // Where to put the floor (world z) and the default joint vector (first path point).
     double floorZ_mm = 0;

@@ -116,6 +116,62 @@ TorchTarget EndCut::target(const OutlinePoint& o, double s, bool groovePass) con
     return t;
 }
 
+void EndCut::applyLean(CutPass& pass, double dt) const {
+    const TorchBody body = torchBody();
+    const bool offcut = pass.name == "square";
+    const size_t n = pass.samples.size();
+    const double step = deg2rad(2), maxLean = deg2rad(spec_.max_lean_deg);
+    std::vector<double> pos(n, 0), neg(n, 0); // required lean either way (0: none)
+    double prefer = 1;
+    bool any = false;
+    for (size_t k = 0; k < n; ++k) {
+        const TorchTarget& t = pass.samples[k];
+        if (!torchHit(*this, body, t.p, t.t, offcut)) continue;
+        for (double lean = step; lean <= maxLean + 1e-12; lean += step) {
+            bool found = false;
+            for (double sign : {prefer, -prefer}) {
+                const Vec3 leaned = std::cos(lean) * t.t + sign * std::sin(lean) * t.edge;
+                if (torchHit(*this, body, t.p, leaned, offcut)) continue;
+                (sign > 0 ? pos : neg)[k] = lean;
+                prefer = sign;
+                found = any = true;
+                break;
+            }
+            if (found) break;
+        }
+    }
+    if (!any) return;
+    // Ramp in and out: the lean changes by at most reorient_deg_s * dt per sample.
+    const double rate = deg2rad(spec_.reorient_deg_s) * dt;
+    for (auto* v : {&pos, &neg}) {
+        for (size_t k = 1; k < n; ++k)
+            (*v)[k] = std::max((*v)[k], (*v)[k - 1] - rate);
+        for (size_t k = n - 1; k-- > 0;)
+            (*v)[k] = std::max((*v)[k], (*v)[k + 1] - rate);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        TorchTarget& t = pass.samples[k];
+        const Vec3 normal = t.t;
+        t.lean_rad = pos[k] >= neg[k] ? pos[k] : -neg[k];
+        t.t = std::cos(t.lean_rad) * normal + std::sin(t.lean_rad) * t.edge;
+        if (!torchHit(*this, body, t.p, t.t, offcut)) continue;
+        // Where the ramps of both directions meet: the nearest clear lean.
+        for (double d = step; d <= 2 * maxLean; d += step) {
+            bool found = false;
+            for (double lean : {t.lean_rad + d, t.lean_rad - d}) {
+                if (std::fabs(lean) > maxLean + 1e-12) continue;
+                const Vec3 leaned = std::cos(lean) * normal + std::sin(lean) * t.edge;
+                if (torchHit(*this, body, t.p, leaned, offcut)) continue;
+                t.lean_rad = lean;
+                t.t = leaned;
+                found = true;
+                break;
+            }
+            if (found) break;
+        }
+    }
+}
+
 std::vector<CutPass> EndCut::passes(double dt) const {
     // Travel and turn primitives along the outline.
     std::vector<Primitive> prims;
@@ -171,17 +227,26 @@ std::vector<CutPass> EndCut::passes(double dt) const {
                 pass.samples.push_back(t);
             }
         }
+        applyLean(pass, dt);
         out.push_back(std::move(pass));
     };
-    makePass("square", !square_, false, prims);
+    makePass("square", false, false, prims); // the path arm, in the (mitre) cut plane
     // The groove arm bevels face by face (its torch cannot turn round the toes: turning the
-    // torch in the cut plane swings its whole 2R arm); a joint move links the faces.
-    for (size_t i = 0; i < segs.size(); ++i)
-        if (grooveOf(i) && segs[i].length > 0) {
-            const double s0 = outline_.segmentStart(i);
-            makePass("groove " + segs[i].name, true, true,
-                     {{false, s0, s0 + segs[i].length, 0, 0, segs[i].length}});
-        }
+    // torch in the cut plane swings its whole 2R arm); a joint move links the faces. A pass
+    // starts and ends where the blend has reached kMinBevelDeg: below it the bevel lies within
+    // the square kerf (D tan 3 deg = 1 mm at D = 20 mm), and at tilt 0 the groove arm, its base
+    // plane in the square cut plane, is singular (joints 4, 5 parallel to 1, 2).
+    constexpr double kMinBevelDeg = 3;
+    for (size_t i = 0; i < segs.size(); ++i) {
+        const GrooveSpec* gs = grooveOf(i);
+        if (!gs || segs[i].length <= 0) continue;
+        const double s0 = outline_.segmentStart(i);
+        const double trim =
+            std::min(spec_.blend_mm * std::min(1.0, kMinBevelDeg / std::max(1e-9, gs->angle_deg)),
+                     segs[i].length / 4);
+        makePass("groove " + segs[i].name, true, true,
+                 {{false, s0 + trim, s0 + segs[i].length - trim, 0, 0, segs[i].length - 2 * trim}});
+    }
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include "core/common/types.h"
 #include "core/machines/section_steel/section_outline.h"
 #include "core/machines/section_steel/section_steel_spec.h"
+#include "core/machines/section_steel/torch_clearance.h"
 
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct TorchTarget {
     Vec3 t0{0, 0, 0};     // the untilted direction (in the cut plane, normal to the edge)
     Vec2 yz{0, 0};        // point of the outline (the tip without the bevel offset)
     double tilt_rad = 0;  // groove tilt at this point
+    double lean_rad = 0;  // lean along the edge (in the cut / bevel surface), clears the body
     double s_mm = 0;      // along the outline
     size_t segment = 0;   // outline segment (face)
     bool turning = false; // torch turning at a sharp corner (tip at rest)
@@ -49,7 +51,13 @@ class EndCut {
     // The target at outline length s of a pass with the given groove scale (0..1 ramps).
     TorchTarget target(const OutlinePoint& o, double s, bool groovePass) const;
 
+    // The torch body of the spec (torch_length_mm, torch_radius_mm).
+    TorchBody torchBody() const { return {spec_.torch_length_mm, spec_.torch_radius_mm}; }
+
   private:
+    // Leans the torch where its body would hit the section: the smallest lean (2 deg steps
+    // up to max_lean_deg), then ramped in and out at reorient_deg_s.
+    void applyLean(CutPass& pass, double dt) const;
     double tiltAt(size_t segment, double s, double* depth) const;
     SectionSteelSpec spec_;
     SectionOutline outline_;

@@ -18,12 +18,13 @@ std::string key(const std::string& s) {
     return k;
 }
 
-double field(const std::string& s, int line) {
+double field(const std::string& s, int line, bool zeroAllowed = false) {
     double v = 0;
     const auto r = std::from_chars(s.data(), s.data() + s.size(), v); // locale-independent
-    if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !(v > 0))
+    if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !(v > 0 || (zeroAllowed && v == 0)))
         throw std::runtime_error("steel_sections.csv line " + std::to_string(line) + ": " +
-                                 json::quote(s) + " is not a positive number (mm)");
+                                 json::quote(s) + " is not a " +
+                                 (zeroAllowed ? "non-negative" : "positive") + " number");
     return v;
 }
 
@@ -54,9 +55,9 @@ std::vector<SectionDims> parseSectionCatalogue(const std::string& csv) {
         std::string cell;
         while (std::getline(ls, cell, ','))
             f.push_back(cell);
-        if (f.size() != 7)
+        if (f.size() != 10)
             throw std::runtime_error("steel_sections.csv line " + std::to_string(n) + ": " +
-                                     std::to_string(f.size()) + " fields, 7 expected");
+                                     std::to_string(f.size()) + " fields, 10 expected");
         SectionDims d;
         if (f[0] == "I")
             d.family = SectionFamily::I;
@@ -73,6 +74,9 @@ std::vector<SectionDims> parseSectionCatalogue(const std::string& csv) {
         d.tw_mm = field(f[4], n);
         d.tf_mm = field(f[5], n);
         d.r_mm = field(f[6], n);
+        d.r2_mm = field(f[7], n, true);
+        d.slope_pct = field(f[8], n, true);
+        d.area_cm2 = field(f[9], n);
         out.push_back(d);
     }
     return out;

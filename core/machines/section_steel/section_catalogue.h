@@ -1,7 +1,8 @@
 #pragma once
 // The profile catalogue (resources/sections/steel_sections.csv, compiled in): I/H sections
 // (IPE, HEA, HEB), channels (UPN, UPE) and angles (L) with h, b, tw, tf, r after EN 10365 and
-// EN 10056-1, plus user-defined dimensions.
+// EN 10056-1 (r1, r2, the flange slope of UPN and the tabulated area too), plus user-defined
+// dimensions.
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,10 @@ struct SectionDims {
     double b_mm = 0;         // flange width (L: horizontal leg)
     double tw_mm = 0;        // web thickness (L: leg thickness)
     double tf_mm = 0;        // flange thickness (L: leg thickness)
-    double r_mm = 0;         // root radius
+    double r_mm = 0;         // root radius r1
+    double r2_mm = 0;        // toe radius (UPN flange toes, angle leg ends); 0 = square toe
+    double slope_pct = 0;    // inner flange slope (UPN: 8 %); tf is then t at b/2
+    double area_cm2 = 0;     // the standard's tabulated area (0: not known, user-defined)
 };
 
 const std::vector<SectionDims>& sectionCatalogue();

@@ -47,7 +47,10 @@ const char* toString(FaceKind k) {
 }
 
 SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
-    const double h = d.h_mm, b = d.b_mm, tw = d.tw_mm, tf = d.tf_mm, r = d.r_mm;
+    // A tapered (UPN) flange is drawn parallel at the thickness of the same area: t is given
+    // at b/2 from the web's back, the outstand's mean thickness is at (b + tw)/2.
+    const double h = d.h_mm, b = d.b_mm, tw = d.tw_mm, r = d.r_mm, r2 = d.r2_mm;
+    const double tf = d.tf_mm - d.slope_pct / 100 * tw / 2;
     std::vector<Corner> c;
     std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1]; the last corner ends the chain
     using K = FaceKind;
@@ -69,9 +72,9 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"bottom flange, toe -y", K::Toe, tf, false}};
         break;
     case SectionFamily::U:
-        c = {{{b / 2, 0}, 0},        {{b / 2, tf}, 0},
+        c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2},
              {{-b / 2 + tw, tf}, r}, {{-b / 2 + tw, h - tf}, r},
-             {{b / 2, h - tf}, 0},   {{b / 2, h}, 0},
+             {{b / 2, h - tf}, r2},  {{b / 2, h}, 0},
              {{-b / 2, h}, 0},       {{-b / 2, 0}, 0}};
         e = {{"bottom flange, toe", K::Toe, tf, false},
              {"bottom flange, upper face", K::Flange, tf, true},
@@ -82,8 +85,8 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"web, outer face", K::Web, tw, false}};
         break;
     case SectionFamily::L:
-        c = {{{b / 2, 0}, 0},       {{b / 2, tf}, 0}, {{-b / 2 + tw, tf}, r},
-             {{-b / 2 + tw, h}, 0}, {{-b / 2, h}, 0}, {{-b / 2, 0}, 0}};
+        c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2}, {{-b / 2 + tw, tf}, r},
+             {{-b / 2 + tw, h}, r2}, {{-b / 2, h}, 0},  {{-b / 2, 0}, 0}};
         e = {{"horizontal leg, toe", K::Toe, tf, false},
              {"horizontal leg, upper face", K::Flange, tf, true},
              {"vertical leg, inner face", K::Web, tw, true},
@@ -110,7 +113,11 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
         if (cutEnd > 0 && i + 1 < e.size()) {
             const Vec2 dOut = dir(i + 1);
             OutlineSegment f;
-            f.name = std::string("root fillet (") + e[i].name + " / " + e[i + 1].name + ")";
+            // Counter-clockwise: a left turn is a convex corner (toe radius), a right turn a
+            // concave one (root fillet).
+            const bool convex = d.x() * dOut.y() - d.y() * dOut.x() > 0;
+            f.name = std::string(convex ? "toe radius (" : "root fillet (") + e[i].name + " / " +
+                     e[i + 1].name + ")";
             f.kind = FaceKind::Fillet;
             f.thickness_mm = std::min(e[i].thickness, e[i + 1].thickness);
             f.arc = true;
@@ -211,6 +218,36 @@ double SectionOutline::distanceToOutline(const Vec2& q) const {
     return best;
 }
 
+double SectionOutline::area() const {
+    // Green: A = 1/2 closed integral of (y dz - z dy) over the outline and the table face.
+    double twice = 0;
+    for (const auto& g : segments_) {
+        if (!g.arc) {
+            twice += g.p0.x() * g.p1.y() - g.p0.y() * g.p1.x();
+            continue;
+        }
+        const double r = g.radius, cy = g.centre.x(), cz = g.centre.y();
+        twice += r * r * (g.a1 - g.a0) + r * cy * (std::sin(g.a1) - std::sin(g.a0)) -
+                 r * cz * (std::cos(g.a1) - std::cos(g.a0));
+    }
+    const Vec2 &a = segments_.back().p1, &b = segments_.front().p0; // the table face
+    twice += a.x() * b.y() - a.y() * b.x();
+    return twice / 2;
+}
+
+double SectionOutline::distanceToMaterial(const Vec2& q) const {
+    if (contains(q)) return 0;
+    double best = 1e300;
+    const size_t n = polygon_.size();
+    for (size_t i = 0, j = n - 1; i < n; j = i++) {
+        const Vec2 e = polygon_[i] - polygon_[j];
+        const double L2 = e.squaredNorm();
+        const double u = L2 > 0 ? std::clamp((q - polygon_[j]).dot(e) / L2, 0.0, 1.0) : 0.0;
+        best = std::min(best, (q - (polygon_[j] + u * e)).norm());
+    }
+    return best;
+}
+
 std::vector<std::pair<std::string, std::string>> checkSectionDims(const SectionDims& d,
                                                                   const std::string& k) {
     std::vector<std::pair<std::string, std::string>> out;
@@ -224,7 +261,12 @@ std::vector<std::pair<std::string, std::string>> checkSectionDims(const SectionD
     range("tw_mm", d.tw_mm, 1, 100);
     range("tf_mm", d.tf_mm, 1, 100);
     range("r_mm", d.r_mm, 0, 100);
+    range("r2_mm", d.r2_mm, 0, 50);
     if (!out.empty()) return out;
+    if (d.family != SectionFamily::I && d.r2_mm >= std::min(d.tw_mm, d.tf_mm))
+        out.push_back({k + ".r2_mm", k + ".r2_mm = " + num(d.r2_mm) +
+                                         " mm: the toe radius must be below the thickness (" +
+                                         num(std::min(d.tw_mm, d.tf_mm)) + " mm)"});
     const bool isI = d.family == SectionFamily::I;
     const double webRoom = isI ? (d.b_mm - d.tw_mm) / 2 : d.b_mm - d.tw_mm;
     if (d.r_mm >= webRoom)

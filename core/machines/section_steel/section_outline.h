@@ -44,6 +44,8 @@ class SectionOutline {
     const SectionDims& dims() const { return dims_; }
     const std::vector<OutlineSegment>& segments() const { return segments_; }
     double length() const { return length_; }
+    // Area enclosed by the outline and the table face (mm^2), arcs exact.
+    double area() const;
     // The point at arc length s (clamped), with its tangent and outward normal.
     OutlinePoint at(double s) const;
     // Arc length where segment i begins.
@@ -53,6 +55,8 @@ class SectionOutline {
     bool contains(const Vec2& q) const; // strictly inside the material
     // Distance of q from the outline (faces and fillets, not the table face).
     double distanceToOutline(const Vec2& q) const;
+    // Distance of q from the material (the polygon, table face included); 0 inside.
+    double distanceToMaterial(const Vec2& q) const;
 
   private:
     SectionDims dims_;

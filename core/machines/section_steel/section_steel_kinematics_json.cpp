@@ -82,14 +82,13 @@ bool SectionSteelModule::inverseKinematics(const Job& job, const std::string& ar
     const SteelCell cell(*s);
     json::Array branches;
     if (arm == "path") {
-        if (std::fabs(p.x()) > 1e-6 || std::fabs(t.x()) > 1e-9) {
+        PlanarPose pp;
+        if (!cell.pathPlanar(p, t, pp)) {
             if (why)
-                *why = "--pose: the path arm works in the square cut plane x = 0 (x and tx "
-                       "must be 0)";
+                *why = "--pose: the path arm works in the cut plane (square: x = 0 and tx = 0; "
+                       "mitred: the mitre plane of end_cut)";
             return false;
         }
-        const PlanarPose pp{p.y() - cell.path_base_y, p.z() - cell.path_base_z,
-                            std::atan2(t.z(), t.y())};
         for (const auto& b : cell.path.inverse(pp))
             branches.push_back(branch(b.q, s->path_limits));
     } else {

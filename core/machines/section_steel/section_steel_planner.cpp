@@ -69,24 +69,81 @@ bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& 
     return false;
 }
 
+// The groove arm's branch at the first point of a pass: of the IK branches inside the limits
+// the one it can follow furthest along the pass (Gauss-Newton from point to point, inside the
+// limits, no jumps); near the park position on a tie. False when no branch is inside limits.
+bool grooveStartBranch(const SteelCell& cell, const SectionSteelSpec& spec, const CutPass& pass,
+                       const Q5& park, double jump, Q5& out) {
+    const Vec3 p0 = cell.groove_base.inverse() * pass.samples.front().p;
+    const Vec3 t0 = cell.groove_base.linear().transpose() * pass.samples.front().t;
+    size_t bestReach = 0;
+    double bestDistance = 1e300;
+    bool found = false;
+    for (const auto& s : cell.groove.inverseTorch(p0, t0)) {
+        if (!limitViolation(s.q, spec.groove_limits, kGrooveJointNames, "").empty()) continue;
+        Q5 q = s.q;
+        size_t reach = 1;
+        for (; reach < pass.samples.size(); ++reach) {
+            const TorchTarget& tt = pass.samples[reach];
+            Q5 next = q;
+            if (!cell.groove.trackTorch(cell.groove_base.inverse() * tt.p,
+                                        cell.groove_base.linear().transpose() * tt.t, next))
+                break;
+            unwrapTo(next, q);
+            if (distance(next, q) > jump ||
+                !limitViolation(next, spec.groove_limits, kGrooveJointNames, "").empty())
+                break;
+            q = next;
+        }
+        const double d = distance(s.q, park);
+        if (!found || reach > bestReach || (reach == bestReach && d < bestDistance)) {
+            found = true;
+            bestReach = reach;
+            bestDistance = d;
+            out = s.q;
+        }
+    }
+    return found;
+}
+
 } // namespace
 
 SteelCell::SteelCell(const SectionSteelSpec& s)
     : path(s.path_links_mm[0], s.path_links_mm[1], s.path_links_mm[2]) {
+    path_base_y = s.path_base_y_mm;
+    path_base_z = s.path_base_z_mm;
+    // The mitre frame: both arms stand on it; it turns x onto the cut plane's normal about
+    // the section's centre (0, 0, h/2), the identity for a square cut.
+    const Vec3 m = EndCut(s).planeNormal();
+    const Vec3 u1 = (Vec3::UnitY() - Vec3::UnitY().dot(m) * m).normalized();
+    Pose mitre = Pose::Identity();
+    mitre.linear().col(0) = m;
+    mitre.linear().col(1) = u1;
+    mitre.linear().col(2) = m.cross(u1);
+    const Vec3 centre(0, 0, s.section.h_mm / 2);
+    mitre.translation() = centre - mitre.linear() * centre;
+    path_frame = mitre;
+    path_frame.translation() = mitre * Vec3(0, path_base_y, path_base_z);
+    Pose square = Pose::Identity();
     Eigen::Matrix3d R;
     R.col(0) = Vec3(0, 0, -1);
     R.col(1) = Vec3(0, -1, 0);
     R.col(2) = Vec3(-1, 0, 0);
-    groove_base.linear() = R;
-    groove_base.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
-    path_base_y = s.path_base_y_mm;
-    path_base_z = s.path_base_z_mm;
+    square.linear() = R;
+    square.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
+    groove_base = mitre * square;
 }
 
 void SteelCell::pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const {
     const PlanarPose pp = path.forward(q);
-    p = Vec3(0, path_base_y + pp.x_mm, path_base_z + pp.y_mm);
-    t = Vec3(0, std::cos(pp.phi_rad), std::sin(pp.phi_rad));
+    p = path_frame * Vec3(0, pp.x_mm, pp.y_mm);
+    t = path_frame.linear() * Vec3(0, std::cos(pp.phi_rad), std::sin(pp.phi_rad));
+}
+
+bool SteelCell::pathPlanar(const Vec3& p, const Vec3& t, PlanarPose& out) const {
+    const Vec3 pl = path_frame.inverse() * p, tl = path_frame.linear().transpose() * t;
+    out = PlanarPose{pl.y(), pl.z(), std::atan2(tl.z(), tl.y())};
+    return std::fabs(pl.x()) < 1e-6 && std::fabs(tl.x()) < 1e-9;
 }
 
 void SteelCell::grooveTorch(const Q5& q, Vec3& p, Vec3& t) const {
@@ -128,26 +185,19 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
         for (size_t k = 0; k < pass.samples.size(); ++k) {
             const TorchTarget& tt = pass.samples[k];
             std::string why;
-            // Torch body: behind the tip, outside the material.
-            const bool squarePass = pass.name == "square";
-            for (double b = 3; b <= spec.torch_length_mm; b += 2) {
-                const Vec3 q = tt.p - b * tt.t;
-                const Vec2 yz(q.y(), q.z());
-                // During the square pass the offcut is still there: material on both sides.
-                const bool material = squarePass || q.x() < cut.planeX(q.y(), q.z()) - 0.5;
-                if (material && cut.outline().contains(yz)) {
-                    fail(describePoint(cut, pass, k) +
-                         formatC(": the torch body hits the section %.0f mm behind the tip at "
-                                 "y = %.1f, z = %.1f mm (torch_length_mm = %.0f)",
-                                 b, q.y(), q.z(), spec.torch_length_mm));
-                    break;
-                }
-            }
+            // Torch body (cylinder behind the tip) against the section.
+            if (const auto hit = torchHit(cut, cut.torchBody(), tt.p, tt.t, pass.name == "square"))
+                fail(describePoint(cut, pass, k) +
+                     formatC(": the torch body hits the section %.0f mm behind the tip at "
+                             "x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, "
+                             "torch_radius_mm = %.0f, lean %.0f deg of max_lean_deg = %.0f)",
+                             hit->behind_mm, hit->at.x(), hit->at.y(), hit->at.z(),
+                             spec.torch_length_mm, spec.torch_radius_mm, rad2deg(tt.lean_rad),
+                             spec.max_lean_deg));
             Vec3 p, t;
             if (!pass.groove_arm) {
-                const double phi = std::atan2(tt.t.z(), tt.t.y());
-                const PlanarPose pose{tt.p.y() - cell.path_base_y, tt.p.z() - cell.path_base_z,
-                                      phi};
+                PlanarPose pose;
+                cell.pathPlanar(tt.p, tt.t, pose); // the square / mitre pass lies in its plane
                 std::vector<std::array<double, 3>> sols;
                 for (const auto& s : cell.path.inverse(pose))
                     sols.push_back(s.q);
@@ -168,7 +218,11 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 const Vec3 tb = cell.groove_base.linear().transpose() * tt.t;
                 Q5 q = qg;
                 bool ok = !first && cell.groove.trackTorch(pb, tb, q);
-                if (ok) {
+                if (first) {
+                    const Q5 park5{park[3], park[4], park[5], park[6], park[7]};
+                    ok = grooveStartBranch(cell, spec, pass, park5, jump, q);
+                }
+                if (ok && !first) {
                     unwrapTo(q, qg);
                     ok = limitViolation(q, spec.groove_limits, kGrooveJointNames, "groove arm")
                              .empty() &&

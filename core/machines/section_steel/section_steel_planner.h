@@ -17,10 +17,18 @@ struct SteelCell {
     explicit SteelCell(const SectionSteelSpec& spec);
     PathArm path;
     GrooveArm groove;
-    Pose groove_base = Pose::Identity(); // world <- groove arm base
-    double path_base_y = 0, path_base_z = 0;
+    // Both arms stand on a mitre frame that turns the square layout about the section's
+    // centre (0, 0, h/2) so that its x axis is the cut plane's normal (as a mitre band saw's
+    // head turns and tilts): the identity for a square cut.
+    Pose groove_base = Pose::Identity();     // world <- groove arm base
+    double path_base_y = 0, path_base_z = 0; // in the square layout
+    // world <- path arm plane: x = the joint axes (the cut plane's normal), y and z span the
+    // cut plane. Square: the world axes, base at (0, base_y, base_z).
+    Pose path_frame = Pose::Identity();
     // Torch tip and direction (world) of the arms at the joints (rad).
     void pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const;
+    // The path arm's planar pose of a world target; false when it is not in the arm's plane.
+    bool pathPlanar(const Vec3& p, const Vec3& t, PlanarPose& out) const;
     void grooveTorch(const Q5& q, Vec3& p, Vec3& t) const;
 };
 

@@ -105,7 +105,9 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
             s.section.tw_mm = sec.number("tw_mm", "mm");
             s.section.tf_mm = sec.number("tf_mm", "mm");
             s.section.r_mm = sec.number("r_mm", "mm");
+            s.section.r2_mm = sec.number("r2_mm", "mm", 0);
         }
+        s.length_mm = sec.number("length_mm", "mm", d.length_mm);
         sec.finish();
     }
     s.cut = EndCutSpec{};
@@ -125,6 +127,8 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
         s.reorient_deg_s = r.number("reorient_deg_s", "deg/s", d.reorient_deg_s);
         s.blend_mm = r.number("blend_mm", "mm", d.blend_mm);
         s.torch_length_mm = r.number("torch_length_mm", "mm", d.torch_length_mm);
+        s.torch_radius_mm = r.number("torch_radius_mm", "mm", d.torch_radius_mm);
+        s.max_lean_deg = r.number("max_lean_deg", "deg", d.max_lean_deg);
         r.finish();
     }
     if (m.has("path_arm")) {
@@ -165,14 +169,19 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
 
 void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
     if (!s.user_defined)
-        out.emplace_back("section", json::Object{{"designation", s.section.designation}});
-    else
-        out.emplace_back("section", json::Object{{"family", toString(s.section.family)},
-                                                 {"h_mm", s.section.h_mm},
-                                                 {"b_mm", s.section.b_mm},
-                                                 {"tw_mm", s.section.tw_mm},
-                                                 {"tf_mm", s.section.tf_mm},
-                                                 {"r_mm", s.section.r_mm}});
+        out.emplace_back("section", json::Object{{"designation", s.section.designation},
+                                                 {"length_mm", s.length_mm}});
+    else {
+        json::Object sec{{"family", toString(s.section.family)},
+                         {"h_mm", s.section.h_mm},
+                         {"b_mm", s.section.b_mm},
+                         {"tw_mm", s.section.tw_mm},
+                         {"tf_mm", s.section.tf_mm},
+                         {"r_mm", s.section.r_mm}};
+        if (s.section.r2_mm > 0) sec.emplace_back("r2_mm", s.section.r2_mm); // optional
+        sec.emplace_back("length_mm", s.length_mm);
+        out.emplace_back("section", std::move(sec));
+    }
     out.emplace_back("end_cut", json::Object{{"mitre_vertical_deg", s.cut.mitre_vertical_deg},
                                              {"mitre_horizontal_deg", s.cut.mitre_horizontal_deg},
                                              {"flanges", writeGroove(s.cut.flanges)},
@@ -182,7 +191,9 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
                                             {"knot_spacing_mm", s.knot_spacing_mm},
                                             {"reorient_deg_s", s.reorient_deg_s},
                                             {"blend_mm", s.blend_mm},
-                                            {"torch_length_mm", s.torch_length_mm}});
+                                            {"torch_length_mm", s.torch_length_mm},
+                                            {"torch_radius_mm", s.torch_radius_mm},
+                                            {"max_lean_deg", s.max_lean_deg}});
     out.emplace_back("path_arm", json::Object{{"base_y_mm", s.path_base_y_mm},
                                               {"base_z_mm", s.path_base_z_mm},
                                               {"links_mm", writeNumbers(s.path_links_mm)},
@@ -207,6 +218,7 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
 void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) {
     for (const auto& [k, m] : checkSectionDims(s.section, "section"))
         c.add(k, m);
+    c.positive("section.length_mm", s.length_mm, 50, 24000, "mm");
     c.range("end_cut.mitre_vertical_deg", s.cut.mitre_vertical_deg, -45, 45, "deg");
     c.range("end_cut.mitre_horizontal_deg", s.cut.mitre_horizontal_deg, -45, 45, "deg");
     const struct {
@@ -233,6 +245,8 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
     c.positive("motion.reorient_deg_s", s.reorient_deg_s, 1, 360, "deg/s");
     c.range("motion.blend_mm", s.blend_mm, 0.1, 100, "mm");
     c.range("motion.torch_length_mm", s.torch_length_mm, 0, 1000, "mm");
+    c.range("motion.torch_radius_mm", s.torch_radius_mm, 0, 100, "mm");
+    c.range("motion.max_lean_deg", s.max_lean_deg, 0, 60, "deg");
     c.range("path_arm.base_y_mm", s.path_base_y_mm, -5000, 5000, "mm");
     c.range("path_arm.base_z_mm", s.path_base_z_mm, -5000, 5000, "mm");
     for (size_t i = 0; i < 3; ++i)

@@ -41,6 +41,7 @@ struct JointLimit {
 struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     SectionDims section;       // from the catalogue (designation) or user-defined
     bool user_defined = false; // written as dimensions rather than a designation
+    double length_mm = 1000;   // of the bar (drawn; only its end at x = 0 is cut)
     EndCutSpec cut;
     double speed_mm_s = 5;        // along the outline
     double ramp_s = 0.5;          // to and from the cutting speed
@@ -48,8 +49,12 @@ struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     double reorient_deg_s = 45;   // torch turn at sharp corners (toes), tip at rest
     double blend_mm = 10;         // the bevel tilt ramps in and out over this length per face
     double torch_length_mm = 150; // torch body behind the tip (collision check)
+    double torch_radius_mm = 12;  // torch body radius (a cone at the nozzle)
+    // Where the body would hit the section the torch leans along the cut edge, in the kerf
+    // (or bevel) surface, by at most this much: the cut face does not change.
+    double max_lean_deg = 60;
     // Path arm: base in the cut plane, link lengths (seed: 1000, 1110, 310 mm), limits.
-    double path_base_y_mm = 0, path_base_z_mm = 1500;
+    double path_base_y_mm = 0, path_base_z_mm = 1800;
     std::array<double, 3> path_links_mm{1000, 1110, 310};
     std::array<JointLimit, 3> path_limits{};
     // Groove arm: base position (frame as above), limits.

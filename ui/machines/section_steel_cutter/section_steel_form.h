@@ -1,0 +1,60 @@
+#pragma once
+// The section-steel cutter's section and end-cut pages (Job::machine_spec, core/machines/
+// section_steel/section_steel_spec.h). The keys are those of the machine section as validate()
+// names them ("section.h_mm", "end_cut.web.angle_deg", ...), so a bad value is marked on its
+// field with the core's message (key, value, unit, limit).
+#include "ui/forms/job_form.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+
+namespace CutCell::ui {
+
+// The section: a catalogue series (IPE, HEA, HEB, UPN, UPE, equal and unequal angles) and its
+// designation, or user-defined dimensions (shape, h, b, tw, tf, r); the bar's length.
+class SectionSteelSectionForm : public JobForm {
+    Q_OBJECT
+  public:
+    explicit SectionSteelSectionForm(JobEditor* editor, QWidget* parent = nullptr);
+
+    // The series offered (the last entry is "user-defined dimensions").
+    static QStringList seriesNames();
+    // The catalogue designations of series i, in the catalogue's order.
+    static QStringList designationsOf(int series);
+    QComboBox* seriesBox() const { return series_; }
+    QComboBox* designationBox() const { return designation_; }
+
+  protected:
+    void reloadExtra(const cutcell::Job& job) override;
+
+  private:
+    // Fills the designation list for the job's series and shows the job's dimensions.
+    void refresh(const cutcell::Job& job);
+    QComboBox* series_ = nullptr;
+    QComboBox* designation_ = nullptr;
+    QComboBox* shape_ = nullptr;
+    QDoubleSpinBox* dims_[6] = {}; // h, b, tw, tf, r, r2
+    QLabel* source_ = nullptr;
+    bool refreshing_ = false;
+};
+
+// The end cut: mitres about both section axes and the groove of the flanges and of the web
+// (type V / Y / K after ISO 9692-1, bevel angle, root face).
+class SectionSteelEndCutForm : public JobForm {
+    Q_OBJECT
+  public:
+    explicit SectionSteelEndCutForm(JobEditor* editor, QWidget* parent = nullptr);
+
+  protected:
+    void reloadExtra(const cutcell::Job& job) override;
+
+  private:
+    void enableGrooveFields();
+    QComboBox* type_[2] = {};          // flanges, web
+    QDoubleSpinBox* angle_[2] = {};    // deg
+    QDoubleSpinBox* rootFace_[2] = {}; // mm
+};
+
+} // namespace CutCell::ui
