@@ -39,6 +39,7 @@ bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, const Motio
     if (!o.interface.empty()) mc.interface = QString::fromStdString(o.interface);
     mc.sync = SyncSource::LastDriveWrite;
     masterConfig_ = mc;
+    fastestLinear_ = cell.fastest_linear_mm_s;
     if (o.in_process_simulator) {
         DriveSimulatorConfig sc;
         sc.plugin = mc.plugin;
@@ -96,8 +97,11 @@ SensorInput* CanEngineDevices::sensor(int k) {
     return master_ && k < master_->encoderCount() ? master_->encoder(k) : nullptr;
 }
 
-void CanEngineDevices::tune(EngineConfig& config, const Job&) const {
-    tuneEngineForCan(config, masterConfig_, homeSpeedDegS_, period_);
+void CanEngineDevices::tune(EngineConfig& config, const Job& job) const {
+    CanCellConfig cell;
+    cell.master = masterConfig_;
+    cell.fastest_linear_mm_s = fastestLinear_;
+    tuneEngineForCanCell(config, cell, job, period_);
 }
 
 } // namespace cutcell::cli

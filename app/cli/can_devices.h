@@ -64,6 +64,7 @@ class CanEngineDevices {
     int axisCount_ = 0, sensorCount_ = 0;
     std::string description_;
     canopen::CanOpenMasterConfig masterConfig_;
+    double fastestLinear_ = 0;
     double homeSpeedDegS_ = 20;
 };
 

@@ -341,6 +341,7 @@ MasterStats CanOpenMaster::stats() const {
     s.frames_tx = m.framesTx.load();
     s.frames_rx = m.framesRx.load();
     s.last_urgent_ns = m.lastUrgentNs.load();
+    s.last_urgent_cycle = m.lastUrgentCycle.load();
     std::vector<double> j;
     {
         std::lock_guard lock(m.mutex);

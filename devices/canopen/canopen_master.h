@@ -134,7 +134,8 @@ struct MasterStats {
     double sync_jitter_us_p50 = 0; // |SYNC interval - period| over the last 4096 cycles
     double sync_jitter_us_p99 = 0;
     double sync_jitter_us_max = 0;
-    std::int64_t last_urgent_ns = 0; // steady clock when the last urgent frame was written
+    std::int64_t last_urgent_ns = 0;     // steady clock when the last urgent frame was written
+    std::uint64_t last_urgent_cycle = 0; // SYNCs sent before the last urgent frame was written
 };
 
 class CanOpenMaster {

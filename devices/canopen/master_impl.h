@@ -80,6 +80,7 @@ struct CanOpenMaster::Impl {
     std::atomic<std::uint64_t> framesTx{0};
     std::atomic<std::uint64_t> framesRx{0};
     std::atomic<std::int64_t> lastUrgentNs{0};
+    std::atomic<std::uint64_t> lastUrgentCycle{0};
 
     mutable std::mutex mutex; // guards the fields below (texts, events, jitter ring, bus)
     std::condition_variable changed;

@@ -546,6 +546,7 @@ void CanOpenMaster::Impl::onWake() {
     // Every stop frame of this wake-up in one write (with TCP_NODELAY: at once on the wire).
     if (sent) {
         flushDevice(device);
+        lastUrgentCycle.store(cycles.load(std::memory_order_acquire), std::memory_order_release);
         lastUrgentNs.store(steadyNs(), std::memory_order_release);
     }
 }

@@ -7,6 +7,9 @@
 #include "core/machines/quick_return/quick_return_spec.h"
 #include "core/machines/section_steel/section_steel_spec.h"
 
+#include "devices/canopen/engine_tuning.h"
+
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -117,6 +120,7 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
                 std::lround(20 * job.devices.counts_per_unit[static_cast<size_t>(a)]));
             c.sim_drives.push_back(d);
         }
+        c.fastest_linear_mm_s = saw->carriage.max_speed_mm_s;
         // The line encoder: the pipe line's travel as the measuring roller reads it (speed
         // profile with ramps, steps and noise, slip, the roller's resolution), counted by a
         // CiA 406 encoder of that resolution.
@@ -164,6 +168,15 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
                          sensors[static_cast<size_t>(k)] + ")";
     *out = std::move(c);
     return true;
+}
+
+void tuneEngineForCanCell(EngineConfig& config, const CanCellConfig& cell, const Job& job,
+                          double period_s) {
+    tuneEngineForCan(config, cell.master, job.engine.home_speed_deg_s, period_s);
+    // As for homing: a stopped encoder is still caught within 20 cycles at full speed, and a
+    // TPDO a few cycles late at that speed is not taken for one.
+    config.frozen_feedback_travel =
+        std::max(config.frozen_feedback_travel, 20 * period_s * cell.fastest_linear_mm_s);
 }
 
 } // namespace cutcell
