@@ -460,8 +460,12 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 faultText[i].clear();
             }
             s.configured = true;
+            const char* what = cfg.nodes[i].encoder ? "CiA 406 encoder, TPDO1 position value"
+                               : cfg.nodes[i].mode == AxisCommandMode::Torque
+                                   ? "CST, RPDO1/RPDO2/TPDO1"
+                                   : "CSP, RPDO1/RPDO2/TPDO1";
             event(node, false,
-                  "configured (CSP, RPDO1/RPDO2/TPDO1, heartbeat " +
+                  std::string("configured (") + what + ", heartbeat " +
                       std::to_string(heartbeatProducerMs) + " ms) and operational");
         }
         return;
