@@ -4,6 +4,7 @@
 #include "devices/canopen/cell_safe_stop.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/engine_tuning.h"
+#include "devices/machines/can_cells.h"
 
 #include "qt_app.h"
 
@@ -23,18 +24,28 @@ CanEngineDevices::~CanEngineDevices() {
     sim_.reset();
 }
 
-bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, std::string* error) {
+bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, const MotionProgram* program,
+                             std::string* error) {
     if (!app_) app_ = ensureQCoreApplication();
     period_ = o.period_s > 0 ? o.period_s : job.sim.period_s;
-    CanOpenMasterConfig mc = masterConfigFromJob(job, period_, kAxisCount);
+    CanCellConfig cell;
+    if (!makeCanCell(job, period_, program, &cell, error)) return false;
+    axisCount_ = cell.axis_count;
+    sensorCount_ = cell.sensor_count;
+    description_ = cell.description;
+    homeSpeedDegS_ = job.engine.home_speed_deg_s;
+    CanOpenMasterConfig& mc = cell.master;
     if (!o.plugin.empty()) mc.plugin = QString::fromStdString(o.plugin);
     if (!o.interface.empty()) mc.interface = QString::fromStdString(o.interface);
     mc.sync = SyncSource::LastDriveWrite;
+    masterConfig_ = mc;
+    fastestLinear_ = cell.fastest_linear_mm_s;
     if (o.in_process_simulator) {
         DriveSimulatorConfig sc;
         sc.plugin = mc.plugin;
         sc.interface = mc.interface;
-        sc.nodes = nodesFromJob(job, {job.devices.node_ids.begin(), job.devices.node_ids.end()});
+        sc.nodes = cell.sim_drives;
+        sc.encoders = cell.sim_encoders;
         sim_ = std::make_unique<DriveSimulator>(sc);
         if (!sim_->start()) {
             *error = "drive simulator: " + sim_->errorText().toStdString();
@@ -82,8 +93,15 @@ AxisDrive* CanEngineDevices::axis(int i) {
     return master_ && i < master_->driveCount() ? master_->drive(i) : nullptr;
 }
 
+SensorInput* CanEngineDevices::sensor(int k) {
+    return master_ && k < master_->encoderCount() ? master_->encoder(k) : nullptr;
+}
+
 void CanEngineDevices::tune(EngineConfig& config, const Job& job) const {
-    tuneEngineForCan(config, job, period_);
+    CanCellConfig cell;
+    cell.master = masterConfig_;
+    cell.fastest_linear_mm_s = fastestLinear_;
+    tuneEngineForCanCell(config, cell, job, period_);
 }
 
 } // namespace cutcell::cli

@@ -6,6 +6,7 @@
 #include "core/devices/device_interfaces.h"
 #include "core/engine/motion_engine.h"
 #include "core/job/job.h"
+#include "devices/canopen/canopen_master.h"
 
 #include <atomic>
 #include <memory>
@@ -26,11 +27,18 @@ class CanEngineDevices {
     CanEngineDevices();
     ~CanEngineDevices();
 
-    // Checks the bus load, connects, configures every node and waits (5 s at most) until all
-    // are operational. False with the reason (figures, node and cause) otherwise.
-    bool start(const Job& job, const CanRunOptions& options, std::string* error);
+    // The machine's cell (devices/machines/can_cells.h: a CiA 402 drive per axis, a CiA 406
+    // encoder per sensor). Checks the bus load, connects, configures every node and waits (5 s
+    // at most) until all are operational. False with the reason (figures, node and cause)
+    // otherwise. program (may be null): where the simulated axes start.
+    bool start(const Job& job, const CanRunOptions& options, const MotionProgram* program,
+               std::string* error);
     double period() const { return period_; }
+    int axisCount() const { return axisCount_; }
+    int sensorCount() const { return sensorCount_; }
     AxisDrive* axis(int i);
+    SensorInput* sensor(int k);
+    const std::string& description() const { return description_; }
     // Engine settings that depend on the drives: in-position windows from the encoder
     // resolution (the engine's defaults suit exact simulated drives).
     void tune(EngineConfig& config, const Job& job) const; // see canopen/engine_tuning.h
@@ -53,6 +61,11 @@ class CanEngineDevices {
     std::unique_ptr<canopen::DriveSimulator> sim_;
     std::unique_ptr<canopen::CanOpenMaster> master_;
     double period_ = 0;
+    int axisCount_ = 0, sensorCount_ = 0;
+    std::string description_;
+    canopen::CanOpenMasterConfig masterConfig_;
+    double fastestLinear_ = 0;
+    double homeSpeedDegS_ = 20;
 };
 
 } // namespace cutcell::cli

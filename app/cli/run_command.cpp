@@ -89,6 +89,9 @@ int runRun(const RunOptions& o) {
 
     // Every machine goes the same way: its module plans, its rig (or CANopen) drives.
     const MachineModule& module = machineFor(job);
+    // Over CAN a --period-ms is the engine's cycle: the plan is made for it.
+    const bool overCan = usesCanOpen(o.devices.devices, job);
+    if (overCan && o.devices.can.period_s > 0) job.sim.period_s = o.devices.can.period_s;
     MachinePlan plan;
     try {
         plan = module.plan(job, text);
@@ -106,7 +109,6 @@ int runRun(const RunOptions& o) {
     EngineConfig config;
     config.period_s = job.sim.period_s;
     // CANopen drives (the job's devices section or --devices canopen): always real time.
-    const bool overCan = usesCanOpen(o.devices.devices, job);
     if (std::string noCan; overCan && !module.supportsCanOpen(&noCan)) {
         std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", noCan.c_str());
         return kInvalidJob;
@@ -119,14 +121,21 @@ int runRun(const RunOptions& o) {
     std::unique_ptr<MachineSimRig> rig;
     std::string canError;
     if (overCan) {
-        if (!can.start(job, canOptions, &canError)) {
+        if (!can.start(job, canOptions, program.get(), &canError)) {
             std::fprintf(stderr, "cutcell-cli run over CANopen: %s\n", canError.c_str());
             return kFailure;
         }
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < can.axisCount(); ++i)
             devices.axes[static_cast<size_t>(i)] = can.axis(i);
+        for (int k = 0; k < can.sensorCount() && k < kMaxSensors; ++k)
+            devices.sensors[static_cast<size_t>(k)] = can.sensor(k);
         devices.torch = &canTorch;
+        // The machine's own engine settings (limits, windows), then the bus's margins on top.
+        std::string noRig;
+        if (const auto machineRig = makeSimulatedRig(job, *program, &noRig))
+            machineRig->configure(config);
         can.tune(config, job);
+        if (!quiet) std::fprintf(stderr, "CANopen cell: %s\n", can.description().c_str());
         realtime = true;
     } else {
         std::string error;

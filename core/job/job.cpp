@@ -15,6 +15,11 @@ const char* toString(StopCategory c) {
     return c == StopCategory::Cat0 ? "cat0" : "cat1";
 }
 
+int sensorNodeId(const DeviceSpec& d, int axisCount, int k) {
+    const int id = d.sensor_node_ids[static_cast<size_t>(k)];
+    return id != 0 ? id : axisCount + 1 + k;
+}
+
 std::array<DhRow, kAxisCount> seedDhTable() {
     // alpha_deg, a_mm, d_mm, theta_offset_deg, min_deg, max_deg (seed Table 1).
     return {{{90, 0, 260, 0, -180, 180},

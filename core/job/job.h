@@ -82,16 +82,25 @@ struct EngineSpec {
     std::string runs_dir = "runs";
 };
 
+// The CAN drives of the machine: one node id and one encoder scaling per axis of the machine
+// (MachineModule::axes(), up to kMaxAxes; the file holds exactly that many, or 6 as files did
+// when every machine had 6 slots), and one node id per external sensor the machine reads
+// (MachineModule::sensorNames(): CiA 406 encoders; 0 = the next ids after the axes').
+inline constexpr int kMaxDeviceSensors = 4;
 struct DeviceSpec {
     DeviceKind kind = DeviceKind::Simulated;
     std::string can_plugin = "virtualcan";
     std::string can_interface = "can0";
     int bitrate_bps = 1000000;
-    std::array<int, kAxisCount> node_ids{1, 2, 3, 4, 5, 6};
+    std::array<int, kMaxAxes> node_ids{1, 2, 3, 4, 5, 6, 7, 8};
     // Counts per degree (or per mm for linear axes) of each drive's position encoder.
-    std::array<double, kAxisCount> counts_per_unit{1000, 1000, 1000, 1000, 1000, 1000};
+    std::array<double, kMaxAxes> counts_per_unit{1000, 1000, 1000, 1000, 1000, 1000, 1000, 1000};
+    std::array<int, kMaxDeviceSensors> sensor_node_ids{};
     double heartbeat_timeout_ms = 300;
 };
+
+// The node id of the machine's sensor k (sensor_node_ids[k], or axisCount + 1 + k when 0).
+int sensorNodeId(const DeviceSpec& d, int axisCount, int k);
 
 // Another branch pipe at the same joint (seed 002: "several pipes connecting together"). The
 // cut branch (branch_pipe, angle_deg, eccentricity_mm) is cut to fit the main pipe AND these.

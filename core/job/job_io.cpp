@@ -54,7 +54,43 @@ void readEngine(SectionReader e, Job& job) {
     e.finish();
 }
 
-void readDevices(SectionReader d, Job& job) {
+// "[1, 2, 3]" for a message.
+std::string arrayText(const json::Value& v) {
+    std::string out = "[";
+    for (const json::Value& e : v.asArray())
+        out += (out.size() > 1 ? ", " : "") + (e.isNumber() ? num(e.asNumber()) : e.typeName());
+    return out + "]";
+}
+
+// One entry per axis of the machine; 6 entries (the fixed length of files written before the
+// machines had their own axis counts) are read as the first axes, the rest keep defaults.
+// Any other length is refused with the key, the value and the machine's axis count.
+template <typename T, typename ReadOne>
+void readPerAxis(SectionReader& d, const char* key, const char* what, const std::string& machine,
+                 int axisCount, T& out, ReadOne readOne) {
+    const json::Value* arr = d.get(key);
+    if (!arr) return;
+    const std::string k = d.key(key);
+    if (!arr->isArray())
+        throw JobError(k + " must be an array of " + std::to_string(axisCount) + " " + what +
+                       ", one per axis of the " + machine);
+    const size_t n = arr->asArray().size();
+    if (n != static_cast<size_t>(axisCount) && n != static_cast<size_t>(kAxisCount))
+        throw JobError(k + " = " + arrayText(*arr) + " has " + std::to_string(n) +
+                       " entries: the " + machine + " has " + std::to_string(axisCount) +
+                       " axes (give " + std::to_string(axisCount) + " " + what + ", one per axis)");
+    for (size_t i = 0; i < n; ++i) {
+        const json::Value& v = arr->asArray()[i];
+        const std::string ki = k + "[" + std::to_string(i) + "]";
+        const auto value = readOne(v, ki);
+        if (i < out.size() && i < static_cast<size_t>(axisCount)) out[i] = value;
+    }
+}
+
+void readDevices(SectionReader d, Job& job, const MachineModule& module) {
+    const int axisCount = static_cast<int>(module.axes(job).size());
+    const int sensorCount = static_cast<int>(module.sensorNames().size());
+    const std::string machine = "machine " + json::quote(module.id());
     job.devices.kind = d.choice<DeviceKind>(
         "kind", {{"simulated", DeviceKind::Simulated}, {"canopen", DeviceKind::CanOpen}},
         job.devices.kind);
@@ -65,48 +101,55 @@ void readDevices(SectionReader d, Job& job) {
         d.integer("bitrate_bps", "bit/s", job.devices.bitrate_bps, 1, 1000000000);
     job.devices.heartbeat_timeout_ms =
         d.number("heartbeat_timeout_ms", "ms", job.devices.heartbeat_timeout_ms);
-    if (const json::Value* ids = d.get("node_ids")) {
-        if (!ids->isArray() || ids->asArray().size() != kAxisCount)
-            throw JobError(d.key("node_ids") + " must be an array of 6 node ids (1..127)");
-        for (size_t i = 0; i < kAxisCount; ++i) {
-            const auto& v = ids->asArray()[i];
-            const std::string k = d.key("node_ids") + "[" + std::to_string(i) + "]";
-            if (!v.isNumber()) throw JobError(k + " must be a number (a node id 1..127)");
-            const double id = v.asNumber();
-            if (!(id >= 1 && id <= 127) || id != std::floor(id))
-                throw JobError(k + " = " + num(id) +
-                               " is not a CANopen node id: a whole number in [1, 127]");
-            job.devices.node_ids[i] = static_cast<int>(id);
-        }
-    }
-    if (const json::Value* cpu = d.get("counts_per_unit")) {
-        if (!cpu->isArray() || cpu->asArray().size() != kAxisCount)
-            throw JobError(d.key("counts_per_unit") +
-                           " must be an array of 6 numbers (counts/deg)");
-        for (size_t i = 0; i < kAxisCount; ++i) {
-            const auto& v = cpu->asArray()[i];
-            if (!v.isNumber())
-                throw JobError(d.key("counts_per_unit") + "[" + std::to_string(i) +
-                               "] must be a number (counts/deg)");
-            job.devices.counts_per_unit[i] = v.asNumber();
-        }
+    auto nodeId = [](const json::Value& v, const std::string& k) {
+        if (!v.isNumber()) throw JobError(k + " must be a number (a node id 1..127)");
+        const double id = v.asNumber();
+        if (!(id >= 1 && id <= 127) || id != std::floor(id))
+            throw JobError(k + " = " + num(id) +
+                           " is not a CANopen node id: a whole number in [1, 127]");
+        return static_cast<int>(id);
+    };
+    readPerAxis(d, "node_ids", "node ids (1..127)", machine, axisCount, job.devices.node_ids,
+                nodeId);
+    readPerAxis(d, "counts_per_unit", "numbers (counts/deg or counts/mm)", machine, axisCount,
+                job.devices.counts_per_unit, [](const json::Value& v, const std::string& k) {
+                    if (!v.isNumber())
+                        throw JobError(k + " must be a number (counts/deg or counts/mm)");
+                    return v.asNumber();
+                });
+    if (const json::Value* ids = d.get("sensor_node_ids")) {
+        const std::string k = d.key("sensor_node_ids");
+        if (!ids->isArray() || ids->asArray().size() != static_cast<size_t>(sensorCount))
+            throw JobError(k + (ids->isArray() ? " = " + arrayText(*ids) : std::string()) +
+                           ": the " + machine + " reads " + std::to_string(sensorCount) +
+                           " sensor" + (sensorCount == 1 ? "" : "s") +
+                           " (give one node id 1..127 each)");
+        for (size_t i = 0; i < ids->asArray().size(); ++i)
+            job.devices.sensor_node_ids[i] =
+                nodeId(ids->asArray()[i], k + "[" + std::to_string(i) + "]");
     }
     d.finish();
 }
 
-json::Value devicesJson(const DeviceSpec& d) {
-    json::Array ids, cpu;
-    for (int id : d.node_ids)
-        ids.emplace_back(id);
-    for (double c : d.counts_per_unit)
-        cpu.emplace_back(c);
-    return json::Object{{"kind", toString(d.kind)},
-                        {"can_plugin", d.can_plugin},
-                        {"can_interface", d.can_interface},
-                        {"bitrate_bps", d.bitrate_bps},
-                        {"node_ids", ids},
-                        {"counts_per_unit", cpu},
-                        {"heartbeat_timeout_ms", d.heartbeat_timeout_ms}};
+json::Value devicesJson(const DeviceSpec& d, const MachineModule& module, const Job& job) {
+    const int axisCount = static_cast<int>(module.axes(job).size());
+    const int sensorCount = static_cast<int>(module.sensorNames().size());
+    json::Array ids, cpu, sensors;
+    for (int i = 0; i < axisCount; ++i) {
+        ids.emplace_back(d.node_ids[static_cast<size_t>(i)]);
+        cpu.emplace_back(d.counts_per_unit[static_cast<size_t>(i)]);
+    }
+    json::Object out{{"kind", toString(d.kind)},
+                     {"can_plugin", d.can_plugin},
+                     {"can_interface", d.can_interface},
+                     {"bitrate_bps", d.bitrate_bps},
+                     {"node_ids", ids},
+                     {"counts_per_unit", cpu}};
+    for (int k = 0; k < sensorCount; ++k)
+        sensors.emplace_back(sensorNodeId(d, axisCount, k));
+    if (sensorCount > 0) out.emplace_back("sensor_node_ids", sensors);
+    out.emplace_back("heartbeat_timeout_ms", d.heartbeat_timeout_ms);
+    return out;
 }
 
 double schemaOf(const json::Value& doc) {
@@ -191,7 +234,7 @@ Job jobFromJson(const json::Value& input) {
     module->readSection(*doc.find("machine"), job);
     readSim(r.child("sim"), job);
     if (r.has("engine")) readEngine(r.child("engine"), job);
-    if (r.has("devices")) readDevices(r.child("devices"), job);
+    if (r.has("devices")) readDevices(r.child("devices"), job, *module);
     r.finish();
     return job;
 }
@@ -210,7 +253,7 @@ json::Value jobToJson(const Job& job) {
                                {"following_error_limit_deg", job.engine.following_error_limit_deg},
                                {"home_speed_deg_s", job.engine.home_speed_deg_s},
                                {"runs_dir", job.engine.runs_dir}});
-    doc.emplace_back("devices", devicesJson(job.devices));
+    doc.emplace_back("devices", devicesJson(job.devices, module, job));
     return doc;
 }
 

@@ -14,7 +14,7 @@ namespace {
 // The bit rates of CiA 301 / CiA 102 (CAN FD aside).
 constexpr int kCanBitRates[] = {10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000};
 
-void checkCommon(IssueChecker& c, const Job& job) {
+void checkCommon(IssueChecker& c, const Job& job, int axisCount, int sensorCount) {
     c.range("sim.period_s", job.sim.period_s, 1e-4, 0.02, "s");
     c.range("sim.duration_s", job.sim.duration_s, 0.1, 3600, "s");
     c.range("engine.feed_hold_decel_s", job.engine.feed_hold_decel_s, 0.01, 10, "s");
@@ -27,7 +27,7 @@ void checkCommon(IssueChecker& c, const Job& job) {
               "devices.bitrate_bps = " + std::to_string(job.devices.bitrate_bps) +
                   " bit/s is not a CAN bit rate: one of 10000, 20000, 50000, 125000, 250000, "
                   "500000, 800000, 1000000 bit/s");
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < axisCount; ++i) {
         const int id = job.devices.node_ids[static_cast<size_t>(i)];
         if (id < 1 || id > 127)
             c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) +
@@ -38,6 +38,22 @@ void checkCommon(IssueChecker& c, const Job& job) {
                                               "] = " + std::to_string(id) + " is used twice");
         c.positive("devices.counts_per_unit[" + std::to_string(i) + "]",
                    job.devices.counts_per_unit[static_cast<size_t>(i)], 1e-3, 1e9, "counts/deg");
+    }
+    for (int k = 0; k < sensorCount; ++k) {
+        const int id = sensorNodeId(job.devices, axisCount, k);
+        const std::string key = "devices.sensor_node_ids[" + std::to_string(k) + "]";
+        if (id < 1 || id > 127)
+            c.add("devices.sensor_node_ids",
+                  key + " = " + std::to_string(id) + " is outside [1, 127]");
+        for (int i = 0; i < axisCount; ++i)
+            if (job.devices.node_ids[static_cast<size_t>(i)] == id)
+                c.add("devices.sensor_node_ids",
+                      key + " = " + std::to_string(id) + " is the node of axis " +
+                          std::to_string(i) + " (devices.node_ids[" + std::to_string(i) + "])");
+        for (int j = 0; j < k; ++j)
+            if (sensorNodeId(job.devices, axisCount, j) == id)
+                c.add("devices.sensor_node_ids",
+                      key + " = " + std::to_string(id) + " is used twice");
     }
     c.range("devices.heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms, 10, 10000, "ms");
 }
@@ -51,10 +67,11 @@ std::vector<JobIssue> validateJob(const Job& job) {
     if (!module) {
         c.add("machine.kind",
               "machine.kind = " + json::quote(id) + " is not one of " + machineIdList());
-        checkCommon(c, job);
+        checkCommon(c, job, kAxisCount, 0);
         return c.issues;
     }
-    checkCommon(c, job);
+    checkCommon(c, job, static_cast<int>(module->axes(job).size()),
+                static_cast<int>(module->sensorNames().size()));
     // The machine's issues keep their key relative to the section (the forms' field ids);
     // the message names the key as it stands in the file.
     for (JobIssue issue : module->validate(job)) {

@@ -96,6 +96,9 @@ class MachineModule {
 
     // Whether the machine can run on CANopen drives; if not, why (for devices.kind = canopen).
     virtual bool supportsCanOpen(std::string* why) const = 0;
+    // The external sensors the machine reads (engine sensor k = entry k: "line encoder"); on
+    // CAN each is a CiA 406 encoder node (devices.sensor_node_ids). None by default.
+    virtual std::vector<std::string> sensorNames() const { return {}; }
 
     // Plans the cut of a valid job. jobText is kept in the program for the run log.
     virtual MachinePlan plan(const Job& job, const std::string& jobText = {}) const = 0;

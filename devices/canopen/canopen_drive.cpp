@@ -9,10 +9,10 @@
 namespace cutcell::canopen {
 
 CanOpenDrive::CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShared& shared,
-                           int wakeFd, int syncFd)
+                           int wakeFd, int syncFd, AxisCommandMode mode)
     : node_(node),
       countsPerAxisUnit_(linear ? countsPerUnit : countsPerUnit * 180.0 / std::numbers::pi),
-      shared_(shared), wakeFd_(wakeFd), syncFd_(syncFd) {}
+      shared_(shared), wakeFd_(wakeFd), syncFd_(syncFd), mode_(mode) {}
 
 void CanOpenDrive::command(DriveGoal goal, bool urgent) {
     shared_.goal.store(static_cast<std::uint8_t>(goal), std::memory_order_release);
@@ -75,9 +75,23 @@ void CanOpenDrive::write(double targetPosition) {
         std::clamp(std::round(targetPosition * countsPerAxisUnit_), -2147483648.0, 2147483647.0);
     shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
                                 std::memory_order_release);
-    if (syncFd_ >= 0) {
-        postEventFd(syncFd_);
-    }
+    postSync();
+}
+
+void CanOpenDrive::writeTorque(double targetTorque) {
+    const double rated = shared_.rated_torque.load(std::memory_order_acquire);
+    // Per mille of the rated torque, within the int16 of 0x6071; nothing before 0x6076 is known.
+    const double permille =
+        rated > 0 && std::isfinite(targetTorque)
+            ? std::clamp(std::round(targetTorque / rated * 1000), -32768.0, 32767.0)
+            : 0.0;
+    shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)),
+                                std::memory_order_release);
+    postSync();
+}
+
+void CanOpenDrive::postSync() {
+    if (syncFd_ >= 0) postEventFd(syncFd_);
 }
 
 } // namespace cutcell::canopen

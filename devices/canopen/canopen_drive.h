@@ -19,7 +19,7 @@ class CanOpenDrive final : public AxisDrive {
     // syncFd >= 0: write() also posts one cycle to the master (the last drive of a
     // SyncSource::LastDriveWrite master).
     CanOpenDrive(int node, double countsPerUnit, bool linear, NodeShared& shared, int wakeFd,
-                 int syncFd = -1);
+                 int syncFd = -1, AxisCommandMode mode = AxisCommandMode::Position);
 
     void activate() override;
     void deactivate() override;
@@ -27,18 +27,25 @@ class CanOpenDrive final : public AxisDrive {
     void faultReset() override;
     DriveFeedback read(double now_s) override;
     void write(double targetPosition) override;
+    // CST: torque (N m, or N on a linear axis) as per mille of the drive's rated torque 0x6076.
+    void writeTorque(double targetTorque) override;
+    // The mode is the node's configuration (0x6060 written at start-up): only that one.
+    bool setCommandMode(AxisCommandMode mode) override { return mode == mode_; }
+    AxisCommandMode commandMode() const override { return mode_; }
 
     int node() const { return node_; }
     double countsPerAxisUnit() const { return countsPerAxisUnit_; }
 
   private:
     void command(DriveGoal goal, bool urgent);
+    void postSync();
 
     int node_;
     double countsPerAxisUnit_; // counts per rad (rotary) or per mm (linear)
     NodeShared& shared_;
     int wakeFd_;
     int syncFd_;
+    AxisCommandMode mode_;
     std::uint32_t seenEpoch_ = 0; // enable epoch last reported to the engine as Enabled
 };
 
@@ -48,10 +55,11 @@ namespace master_fault {
 inline constexpr std::uint32_t kHeartbeatLost = 0x8130;
 inline constexpr std::uint32_t kBusOff = 0x8140;
 inline constexpr std::uint32_t kBusLost = 0x8100;
-inline constexpr std::uint32_t kNoBootUp = 0x8101;    // node silent at start-up
-inline constexpr std::uint32_t kWrongDevice = 0x8102; // device type is not a CiA 402 drive
-inline constexpr std::uint32_t kRebooted = 0x8103;    // unexpected boot-up while running
-inline constexpr std::uint32_t kOtherMaster = 0x8104; // another master owns the bus
+inline constexpr std::uint32_t kNoBootUp = 0x8101;      // node silent at start-up
+inline constexpr std::uint32_t kWrongDevice = 0x8102;   // device type is not a CiA 402 drive
+inline constexpr std::uint32_t kRebooted = 0x8103;      // unexpected boot-up while running
+inline constexpr std::uint32_t kOtherMaster = 0x8104;   // another master owns the bus
+inline constexpr std::uint32_t kNoProcessData = 0x8105; // SYNC unanswered (no TPDO) too long
 } // namespace master_fault
 
 } // namespace cutcell::canopen

@@ -38,7 +38,7 @@ CanOpenMasterConfig masterConfigFromJob(const Job& job, double period_s, int axi
     c.bitrate_bps = job.devices.bitrate_bps;
     c.period_s = period_s;
     c.heartbeat_timeout_s = job.devices.heartbeat_timeout_ms * 1e-3;
-    for (int a = 0; a < axisCount && a < kAxisCount; ++a)
+    for (int a = 0; a < axisCount && a < kMaxAxes; ++a)
         c.nodes.push_back({job.devices.node_ids[static_cast<size_t>(a)],
                            job.devices.counts_per_unit[static_cast<size_t>(a)], false});
     return c;
@@ -52,14 +52,26 @@ CanOpenMaster::CanOpenMaster(CanOpenMasterConfig config) : impl_(std::make_uniqu
     m.rt.resize(m.cfg.nodes.size());
     m.faultText.resize(m.cfg.nodes.size());
     m.emcyText.resize(m.cfg.nodes.size());
+    size_t lastDrive = m.cfg.nodes.size();
+    for (size_t i = 0; i < m.cfg.nodes.size(); ++i)
+        if (!m.cfg.nodes[i].encoder) lastDrive = i;
     for (size_t i = 0; i < m.cfg.nodes.size(); ++i) {
         const MasterNodeConfig& n = m.cfg.nodes[i];
-        const bool last = i + 1 == m.cfg.nodes.size();
         m.shared.emplace_back();
+        if (n.encoder) {
+            m.encoders.push_back(
+                std::make_unique<CanOpenEncoder>(n.node, n.counts_per_unit, m.shared.back()));
+            m.countsPerAxisUnit.push_back(n.counts_per_unit);
+            continue;
+        }
+        const bool last = i == lastDrive;
         m.drives.push_back(std::make_unique<CanOpenDrive>(
             n.node, n.counts_per_unit, n.linear, m.shared.back(), m.wakeFd,
-            last && m.cfg.sync == SyncSource::LastDriveWrite ? m.syncFd : -1));
+            last && m.cfg.sync == SyncSource::LastDriveWrite ? m.syncFd : -1, n.mode));
+        m.countsPerAxisUnit.push_back(m.drives.back()->countsPerAxisUnit());
     }
+    m.pdoTimeoutNs =
+        std::max<std::int64_t>(100'000'000, static_cast<std::int64_t>(10 * m.cfg.period_s * 1e9));
     m.heartbeatTimeoutNs = static_cast<std::int64_t>(m.cfg.heartbeat_timeout_s * 1e9);
     m.heartbeatProducerMs =
         static_cast<std::uint16_t>(std::max(10.0, m.cfg.heartbeat_timeout_s * 1e3 / 3));
@@ -236,6 +248,12 @@ int CanOpenMaster::driveCount() const {
 CanOpenDrive* CanOpenMaster::drive(int i) {
     return impl_->drives.at(static_cast<size_t>(i)).get();
 }
+int CanOpenMaster::encoderCount() const {
+    return static_cast<int>(impl_->encoders.size());
+}
+CanOpenEncoder* CanOpenMaster::encoder(int i) {
+    return impl_->encoders.at(static_cast<size_t>(i)).get();
+}
 
 bool CanOpenMaster::allOperational() const {
     for (const NodeShared& s : impl_->shared)
@@ -296,7 +314,7 @@ CanBusSnapshot CanOpenMaster::snapshot() const {
         c.statusword = n.statusword.load();
         c.configured = n.configured.load();
         c.state = n.tpdo_count.load() > 0 ? decodeStatusword(c.statusword) : Cia402State::Unknown;
-        c.position = n.actual_counts.load() / m.drives[i]->countsPerAxisUnit();
+        c.position = n.actual_counts.load() / m.countsPerAxisUnit[i];
         const std::int64_t hb = n.heartbeat_ns.load();
         c.heartbeat_age_ms = hb == 0 ? -1 : static_cast<double>(now - hb) * 1e-6;
         c.last_emcy_code = n.last_emcy.load();
@@ -323,6 +341,7 @@ MasterStats CanOpenMaster::stats() const {
     s.frames_tx = m.framesTx.load();
     s.frames_rx = m.framesRx.load();
     s.last_urgent_ns = m.lastUrgentNs.load();
+    s.last_urgent_cycle = m.lastUrgentCycle.load();
     std::vector<double> j;
     {
         std::lock_guard lock(m.mutex);

@@ -11,6 +11,11 @@
 // consumer of the master's heartbeat (0x1016) by expedited SDO, NMT start; then per cycle
 // sends RPDO1 (controlword + target) to every node followed by SYNC; consumes TPDOs,
 // heartbeats (timeout -> Fault) and EMCYs (decoded, logged, shown); watches the bus state.
+// Drives may run in CST instead (0x6060 = 10, RPDO1 = controlword + target torque 0x6071, the
+// rated torque 0x6076 read at start-up); CiA 406 encoders on the same bus are configured
+// (device type 406, TPDO1 = position value 0x6004 on every SYNC, heartbeat) and read as
+// sensors (CanOpenEncoder): a SYNC an encoder leaves unanswered for max(100 ms, 10 cycles) is
+// a fault of that node ("no position value (TPDO) ..."), as is its heartbeat's loss.
 //
 // SYNC source (a choice, see the note in canopen_master.cpp):
 //  - SyncSource::Internal: a pacing thread with absolute-time sleeps (clock_nanosleep) wakes
@@ -34,6 +39,7 @@
 #include "core/devices/device_interfaces.h"
 #include "devices/canopen/bus_state.h"
 #include "devices/canopen/canopen_drive.h"
+#include "devices/canopen/canopen_encoder.h"
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/nmt.h"
 
@@ -57,6 +63,10 @@ struct MasterNodeConfig {
     int node = 1;
     double counts_per_unit = 1000; // per deg (rotary) or per mm (linear)
     bool linear = false;
+    // A CiA 402 drive in CSP (target position) or CST (target torque); or a CiA 406 encoder
+    // (a sensor: TPDO1 = position value 0x6004, no RPDO).
+    AxisCommandMode mode = AxisCommandMode::Position;
+    bool encoder = false;
 };
 
 struct CanOpenMasterConfig {
@@ -82,7 +92,8 @@ struct CanOpenMasterConfig {
 };
 
 // From a job's devices section (plugin, interface, bit rate, node ids, scaling, heartbeat),
-// with period_s as the cycle; axes beyond axisCount are left out.
+// with period_s as the cycle; axes beyond axisCount are left out (all rotary CSP drives: the
+// pipe robot's; other machines set each node's unit, mode and their encoders after it).
 CanOpenMasterConfig masterConfigFromJob(const Job& job, double period_s, int axisCount);
 
 struct CanNodeSnapshot {
@@ -123,7 +134,8 @@ struct MasterStats {
     double sync_jitter_us_p50 = 0; // |SYNC interval - period| over the last 4096 cycles
     double sync_jitter_us_p99 = 0;
     double sync_jitter_us_max = 0;
-    std::int64_t last_urgent_ns = 0; // steady clock when the last urgent frame was written
+    std::int64_t last_urgent_ns = 0;     // steady clock when the last urgent frame was written
+    std::uint64_t last_urgent_cycle = 0; // SYNCs sent before the last urgent frame was written
 };
 
 class CanOpenMaster {
@@ -152,8 +164,11 @@ class CanOpenMaster {
     // to put it into the run log at once. Set before start().
     void setEventSink(std::function<void(const MasterEvent&)> sink);
 
+    // The drives (config order, encoders left out) and the encoders (config order).
     int driveCount() const;
     CanOpenDrive* drive(int i);
+    int encoderCount() const;
+    CanOpenEncoder* encoder(int i);
 
     bool allOperational() const;           // every node configured and reporting Operational
     void sync();                           // External source: one cycle now

@@ -61,5 +61,6 @@ bool torqueOn(Cia402State s);
 
 // Modes of operation (0x6060/0x6061).
 inline constexpr std::int8_t kModeCyclicSyncPosition = 8;
+inline constexpr std::int8_t kModeCyclicSyncTorque = 10;
 
 } // namespace cutcell::canopen

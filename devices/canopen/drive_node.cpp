@@ -13,7 +13,7 @@ double countsPerRad(double countsPerUnit, bool linear) {
     return linear ? countsPerUnit : countsPerUnit * 180.0 / std::numbers::pi;
 }
 
-DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c) {
+DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c), mech_(c.mechanics) {
     followingWindow_ = c.following_error_window_counts > 0
                            ? c.following_error_window_counts
                            : static_cast<std::uint32_t>(
@@ -25,7 +25,7 @@ DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c) {
     pid_.configure(c.gains, loopPeriod_);
     plant_.configure(c.plant, loopPeriod_);
     plant_.setState(c.start_position_rad, 0);
-    cycleTargetRad_ = previousTargetRad_ = c.start_position_rad;
+    cycleTargetRad_ = previousTargetRad_ = plantPosition();
     targetCounts_ = actualCounts();
     resetCommunication();
 }
@@ -292,22 +292,28 @@ void DriveNode::setControlword(std::uint16_t c, double now_s, std::vector<CanFra
 }
 
 void DriveNode::enterState(Cia402State s, double now_s) {
+    if (state_ == Cia402State::OperationEnabled && s != state_) disabledAtSync_ = syncs_;
     if (s == Cia402State::OperationEnabled) {
-        // Hold the actual position: the set-point starts where the axis is (no jump).
-        previousTargetRad_ = cycleTargetRad_ = plant_.position();
+        // Hold the actual position: the set-point starts where the axis is (no jump); no
+        // torque until the master's first target torque.
+        previousTargetRad_ = cycleTargetRad_ = plantPosition();
+        targetTorque_ = 0;
         pid_.reset();
         enabledSince_s_ = now_s;
     } else {
         enabledSince_s_ = -1;
     }
     if (s == Cia402State::QuickStopActive) {
-        previousTargetRad_ = plant_.position();
-        quickStopVelocity_ = plant_.velocity();
+        previousTargetRad_ = plantPosition();
+        quickStopVelocity_ = plantVelocity();
+        // CST: the quick stop takes the torque away at once (no position loop to brake with).
+        if (mode_ == kModeCyclicSyncTorque) s = Cia402State::SwitchOnDisabled;
     }
     state_ = s;
 }
 
 void DriveNode::raiseFault(std::uint16_t code, std::vector<CanFrame>& out) {
+    if (state_ == Cia402State::OperationEnabled) disabledAtSync_ = syncs_;
     state_ = Cia402State::Fault; // fault reaction: power stage off at once
     enabledSince_s_ = -1;
     errorCode_ = code;
@@ -317,7 +323,7 @@ void DriveNode::raiseFault(std::uint16_t code, std::vector<CanFrame>& out) {
 void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
     if (std::fabs(h - loopPeriod_) > 1e-12) {
         loopPeriod_ = h;
-        const double q = plant_.position(), v = plant_.velocity();
+        const double q = plant_.position(), v = plant_.velocity(); // the joint model's own
         pid_.configure(cfg_.gains, h);
         plant_.configure(cfg_.plant, h);
         plant_.setState(q, v);
@@ -326,10 +332,14 @@ void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
     const double decel = quickStopDecel_ / cfg_.counts_per_rad;
     for (int j = 0; j < steps; ++j) {
         double u = 0;
-        if (state_ == Cia402State::OperationEnabled) {
+        if (mode_ == kModeCyclicSyncTorque) {
+            // CST: the master's torque, only while enabled (no position loop, no window).
+            if (state_ == Cia402State::OperationEnabled && !torqueLost_)
+                u = targetTorque_ * 1e-3 * ratedTorque();
+        } else if (state_ == Cia402State::OperationEnabled) {
             const double r =
                 previousTargetRad_ + (cycleTargetRad_ - previousTargetRad_) * j / steps;
-            const double e = r - plant_.position();
+            const double e = r - plantPosition();
             u = pid_.step(e);
             if (torqueLost_) u = 0;
             if (std::fabs(e) > window) {
@@ -342,14 +352,14 @@ void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
             const double dv = std::min(std::fabs(quickStopVelocity_), decel * h);
             quickStopVelocity_ -= std::copysign(dv, quickStopVelocity_);
             previousTargetRad_ += quickStopVelocity_ * h;
-            u = pid_.step(previousTargetRad_ - plant_.position());
-            if (quickStopVelocity_ == 0 && std::fabs(plant_.velocity()) < 1e-3 &&
+            u = pid_.step(previousTargetRad_ - plantPosition());
+            if (quickStopVelocity_ == 0 && std::fabs(plantVelocity()) < 1e-3 &&
                 quickStopOption_ != 6) {
                 enterState(Cia402State::SwitchOnDisabled, -1);
                 u = 0;
             }
         }
-        lastTorque_ = plant_.step(u);
+        lastTorque_ = plantStep(u, h);
     }
 }
 
@@ -372,14 +382,14 @@ DriveNode::Pdo* DriveNode::pdoFor(std::uint16_t index) {
 std::uint16_t DriveNode::statusword() const {
     std::uint16_t s = encodeStatusword(state_) | sw::kVoltageEnabled | sw::kRemote;
     if (followingError_) s |= sw::kFollowingError;
-    if (state_ == Cia402State::OperationEnabled &&
-        std::fabs(cycleTargetRad_ - plant_.position()) * cfg_.counts_per_rad < 10)
+    if (state_ == Cia402State::OperationEnabled && mode_ != kModeCyclicSyncTorque &&
+        std::fabs(cycleTargetRad_ - plantPosition()) * cfg_.counts_per_rad < 10)
         s |= sw::kTargetReached;
     return s;
 }
 
 std::int32_t DriveNode::actualCounts() const {
-    return static_cast<std::int32_t>(std::lround(plant_.position() * cfg_.counts_per_rad));
+    return static_cast<std::int32_t>(std::lround(plantPosition() * cfg_.counts_per_rad));
 }
 
 } // namespace cutcell::canopen

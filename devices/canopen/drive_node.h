@@ -17,6 +17,11 @@
 // connection option code) says: 0 nothing, 1 Fault, 2 disable voltage, 3 quick stop; an
 // Operational node then enters Pre-operational (CiA 301 error behaviour default).
 //
+// Cyclic synchronous torque mode (0x6060 = 10, CST): RPDO1 carries the target torque 0x6071
+// (per mille of the rated torque 0x6076), applied over the next cycle from the SYNC on. Torque
+// flows only in Operation Enabled: a quick stop or a disable takes it away at once (no torque
+// ramp; the mechanism coasts), so an emergency stop removes it within the cycle it arrives in.
+//
 // Threading: not thread-safe; DriveSimulator drives it from its own thread.
 #include "core/control/joint_plant.h"
 #include "core/control/pid_filter.h"
@@ -24,9 +29,11 @@
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/nmt.h"
 #include "devices/canopen/sdo.h"
+#include "devices/canopen/torque_plant.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace cutcell::canopen {
@@ -50,6 +57,9 @@ struct DriveNodeConfig {
     double quick_stop_decel_rad_s2 = 20;             // 0x6085 default, converted to counts/s^2
     double start_position_rad = 0;
     FaultInjection faults;
+    // Mechanics other than the joint model above (its gains and plant then unused in CST);
+    // null: JointPlant(plant). The node drives it; its rated torque is 0x6076.
+    std::shared_ptr<TorquePlant> mechanics;
 };
 
 class DriveNode {
@@ -69,7 +79,11 @@ class DriveNode {
     int node() const { return cfg_.node; }
     NmtState nmtState() const { return nmt_; }
     Cia402State driveState() const { return state_; }
-    double positionRad() const { return plant_.position(); }
+    double positionRad() const { return plantPosition(); }
+    double appliedTorque() const { return lastTorque_; }
+    // The SYNC count when the power stage last left Operation Enabled (0: never).
+    std::uint64_t disabledAtSync() const { return disabledAtSync_; }
+    std::int8_t mode() const { return mode_; }
     std::uint16_t errorCode() const { return errorCode_; }
     std::uint64_t syncCount() const { return syncs_; }
 
@@ -102,10 +116,18 @@ class DriveNode {
     Pdo* pdoFor(std::uint16_t index);
     std::uint16_t statusword() const;
     std::int32_t actualCounts() const;
+    double plantPosition() const { return mech_ ? mech_->position() : plant_.position(); }
+    double plantVelocity() const { return mech_ ? mech_->velocity() : plant_.velocity(); }
+    double plantStep(double u, double h) { return mech_ ? mech_->step(u, h) : plant_.step(u); }
+    double ratedTorque() const { return mech_ ? mech_->ratedTorque() : cfg_.plant.torque_limit_nm; }
 
     DriveNodeConfig cfg_;
     PidFilter pid_;
     JointPlant plant_;
+    std::shared_ptr<TorquePlant> mech_;
+    std::int8_t mode_ = kModeCyclicSyncPosition;
+    std::int16_t targetTorque_ = 0; // 0x6071, per mille of 0x6076
+    std::uint64_t disabledAtSync_ = 0;
     double loopPeriod_ = 0;
     NmtState nmt_ = NmtState::BootUp;
     Cia402State state_ = Cia402State::SwitchOnDisabled;

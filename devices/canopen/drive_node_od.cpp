@@ -27,6 +27,7 @@ constexpr Mappable kMappable[] = {
     {od::kModesOfOperation, 8, true}, {od::kStatusword, 16, false},
     {od::kPositionActual, 32, false}, {od::kModesDisplay, 8, false},
     {od::kErrorCode, 16, false},      {od::kTorqueActual, 16, false},
+    {od::kTargetTorque, 16, true},
 };
 
 bool mappable(std::uint32_t entry, bool rx) {
@@ -94,7 +95,7 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
         return one(static_cast<std::uint16_t>(quickStopOption_), 2);
     case od::kModesOfOperation:
     case od::kModesDisplay:
-        return one(static_cast<std::uint8_t>(kModeCyclicSyncPosition), 1);
+        return one(static_cast<std::uint8_t>(mode_), 1);
     case od::kPositionActual:
         return one(static_cast<std::uint32_t>(actualCounts()), 4);
     case od::kFollowingErrorWindow:
@@ -104,9 +105,11 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
     case od::kQuickStopDecel:
         return one(quickStopDecel_, 4);
     case od::kMotorRatedTorque:
-        return one(static_cast<std::uint32_t>(std::lround(cfg_.plant.torque_limit_nm * 1000)), 4);
+        return one(static_cast<std::uint32_t>(std::lround(ratedTorque() * 1000)), 4);
+    case od::kTargetTorque:
+        return one(static_cast<std::uint16_t>(targetTorque_), 2);
     case od::kTorqueActual: {
-        const double limit = cfg_.plant.torque_limit_nm;
+        const double limit = ratedTorque();
         const long permille = limit > 0 ? std::lround(lastTorque_ / limit * 1000) : 0;
         return one(static_cast<std::uint16_t>(static_cast<std::int16_t>(permille)), 2);
     }
@@ -198,10 +201,20 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         if (v != 2 && v != 6) return abort_code::kInvalidValue; // slow down, then disable / stay
         quickStopOption_ = static_cast<std::int16_t>(v);
         return 0;
-    case od::kModesOfOperation:
+    case od::kModesOfOperation: {
         if ((abort = scalar(1))) return abort;
-        return static_cast<std::int8_t>(v) == kModeCyclicSyncPosition ? 0
-                                                                      : abort_code::kInvalidValue;
+        const auto m = static_cast<std::int8_t>(v);
+        if (m != kModeCyclicSyncPosition && m != kModeCyclicSyncTorque)
+            return abort_code::kInvalidValue;
+        // The mode changes only without torque (a running axis keeps its mode).
+        if (m != mode_ && state_ == Cia402State::OperationEnabled) return abort_code::kDeviceState;
+        mode_ = m;
+        return 0;
+    }
+    case od::kTargetTorque:
+        if ((abort = scalar(2))) return abort;
+        targetTorque_ = static_cast<std::int16_t>(v);
+        return 0;
     case od::kFollowingErrorWindow:
         if ((abort = scalar(4))) return abort;
         if (v == 0) return abort_code::kValueTooLow;

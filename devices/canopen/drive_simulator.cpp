@@ -33,6 +33,8 @@ std::vector<DriveNodeConfig> nodesFromJob(const Job& job, const std::vector<int>
 DriveSimulator::DriveSimulator(DriveSimulatorConfig config) : config_(std::move(config)) {
     for (const DriveNodeConfig& c : config_.nodes)
         nodes_.emplace_back(c);
+    for (const EncoderNodeConfig& c : config_.encoders)
+        encoders_.emplace_back(c);
 }
 
 DriveSimulator::~DriveSimulator() {
@@ -99,6 +101,19 @@ void DriveSimulator::stopHeartbeat(int node) {
         [this, node] {
             for (DriveNode& n : nodes_)
                 if (n.node() == node) n.stopHeartbeat();
+            for (EncoderNode& n : encoders_)
+                if (n.node() == node) n.stopHeartbeat();
+        },
+        Qt::QueuedConnection);
+}
+
+void DriveSimulator::stopPdo(int node) {
+    if (!context_) return;
+    QMetaObject::invokeMethod(
+        context_,
+        [this, node] {
+            for (EncoderNode& n : encoders_)
+                if (n.node() == node) n.stopPdo();
         },
         Qt::QueuedConnection);
 }
@@ -148,6 +163,8 @@ void DriveSimulator::openOnThread() {
                          std::vector<CanFrame> boot;
                          for (DriveNode& n : nodes_)
                              n.boot(now(), boot);
+                         for (EncoderNode& n : encoders_)
+                             n.boot(now(), boot);
                          send(boot);
                          publish();
                          std::lock_guard lock(mutex_);
@@ -188,6 +205,9 @@ void DriveSimulator::onFramesReceived() {
         ++count;
         out_.clear();
         const double t = now();
+        // Encoders first: at a SYNC they sample the mechanism before the drives move it on.
+        for (EncoderNode& n : encoders_)
+            n.handle(f, t, out_);
         for (DriveNode& n : nodes_)
             n.handle(f, t, out_);
         send(out_);
@@ -202,6 +222,8 @@ void DriveSimulator::onTick() {
     const double t = now();
     for (DriveNode& n : nodes_)
         n.tick(t, out_);
+    for (EncoderNode& n : encoders_)
+        n.tick(t, out_);
     send(out_);
     publish();
 }
@@ -214,11 +236,24 @@ void DriveSimulator::send(const std::vector<CanFrame>& frames) {
 
 void DriveSimulator::publish() {
     std::lock_guard lock(mutex_);
-    snapshot_.resize(nodes_.size());
+    snapshot_.resize(nodes_.size() + encoders_.size());
     for (size_t i = 0; i < nodes_.size(); ++i) {
         const DriveNode& n = nodes_[i];
-        snapshot_[i] = {n.node(),        n.nmtState(),  n.driveState(),
-                        n.positionRad(), n.errorCode(), n.syncCount()};
+        snapshot_[i] = {n.node(),          n.nmtState(),       n.driveState(),
+                        n.positionRad(),   n.errorCode(),      n.syncCount(),
+                        n.appliedTorque(), n.disabledAtSync(), false};
+    }
+    for (size_t i = 0; i < encoders_.size(); ++i) {
+        const EncoderNode& n = encoders_[i];
+        snapshot_[nodes_.size() + i] = {n.node(),
+                                        n.nmtState(),
+                                        Cia402State::Unknown,
+                                        static_cast<double>(n.lastCounts()),
+                                        0,
+                                        n.syncCount(),
+                                        0,
+                                        0,
+                                        true};
     }
 }
 

@@ -8,6 +8,7 @@
 // Node snapshots are copied under a mutex for tests and the CLI, never for a control cycle.
 #include "core/job/job.h"
 #include "devices/canopen/drive_node.h"
+#include "devices/canopen/encoder_node.h"
 
 #include <QString>
 
@@ -27,6 +28,7 @@ struct DriveSimulatorConfig {
     QString plugin = QStringLiteral("virtualcan");
     QString interface = QStringLiteral("can0");
     std::vector<DriveNodeConfig> nodes;
+    std::vector<EncoderNodeConfig> encoders; // CiA 406 encoders on the same bus peer
 };
 
 // Node configs for the given node ids from a job's controller, plant and scaling; the axis of
@@ -40,6 +42,9 @@ struct SimNodeSnapshot {
     double position_rad = 0;
     std::uint16_t error_code = 0;
     std::uint64_t syncs = 0;
+    double torque = 0;                  // applied over the last loop step (N m or N)
+    std::uint64_t disabled_at_sync = 0; // SYNC count when it last left Operation Enabled
+    bool encoder = false;               // a CiA 406 encoder (position_rad: its counts)
 };
 
 class DriveSimulator {
@@ -57,7 +62,8 @@ class DriveSimulator {
     // Fault injection on the simulator thread (queued; returns at once): node raises EMCY
     // `code` and enters Fault / stops producing heartbeats.
     void injectFault(int node, std::uint16_t code);
-    void stopHeartbeat(int node);
+    void stopHeartbeat(int node); // drive or encoder
+    void stopPdo(int node);       // an encoder's TPDOs stop (frozen on a live node)
     std::vector<SimNodeSnapshot> snapshot() const;
     std::uint64_t framesReceived() const;
 
@@ -76,6 +82,7 @@ class DriveSimulator {
     QCanBusDevice* device_ = nullptr; // owned by the simulator thread
     QTimer* tick_ = nullptr;
     std::vector<DriveNode> nodes_;
+    std::vector<EncoderNode> encoders_;
     std::vector<CanFrame> out_;
     qint64 startNs_ = 0;
 

@@ -36,16 +36,20 @@ struct NodeRuntime { // [master]
     int reset_phase = 0; // 1: send bit 7 low, 2: send bit 7 high (the rising edge)
     std::int32_t previous_actual = 0;
     bool was_enabled = false;
-    std::uint64_t tpdo_cycle = 0; // last cycle a TPDO was counted for
+    std::uint64_t tpdo_cycle = 0;       // last cycle a TPDO was counted for
+    std::int64_t awaiting_since_ns = 0; // encoders: the oldest SYNC not answered yet (0: none)
 };
 
 struct CanOpenMaster::Impl {
     CanOpenMasterConfig cfg;
     std::deque<NodeShared> shared;
-    std::vector<std::unique_ptr<CanOpenDrive>> drives;
-    std::vector<NodeRuntime> rt; // [master]
-    int wakeFd = -1;             // commands and urgent stops
-    int syncFd = -1;             // one count per cycle to run
+    std::vector<std::unique_ptr<CanOpenDrive>> drives;     // the drive nodes, in config order
+    std::vector<std::unique_ptr<CanOpenEncoder>> encoders; // the encoder nodes, in config order
+    std::vector<double> countsPerAxisUnit;                 // per node (counts per rad or mm)
+    std::int64_t pdoTimeoutNs = 100'000'000;               // encoders: max(100 ms, 10 cycles)
+    std::vector<NodeRuntime> rt;                           // [master]
+    int wakeFd = -1;                                       // commands and urgent stops
+    int syncFd = -1;                                       // one count per cycle to run
     std::int64_t heartbeatTimeoutNs = 0;
     std::uint16_t heartbeatProducerMs = 100;
     double load = 0;
@@ -76,6 +80,7 @@ struct CanOpenMaster::Impl {
     std::atomic<std::uint64_t> framesTx{0};
     std::atomic<std::uint64_t> framesRx{0};
     std::atomic<std::int64_t> lastUrgentNs{0};
+    std::atomic<std::uint64_t> lastUrgentCycle{0};
 
     mutable std::mutex mutex; // guards the fields below (texts, events, jitter ring, bus)
     std::condition_variable changed;
@@ -99,6 +104,7 @@ struct CanOpenMaster::Impl {
     void closeDevice();
     void onFrames();
     void onFrame(const CanFrame& f, std::int64_t now);
+    void noteCycleAnswer(size_t i);
     void onErrorFrame(std::uint32_t errorClass, const QByteArray& payload);
     void onStateChanged(QCanBusDevice::CanBusDeviceState s);
     void onWake();

@@ -104,7 +104,7 @@ void CanOpenMaster::Impl::openDevice() {
 void CanOpenMaster::Impl::writeDisableAll() {
     if (!busTaken) return; // never write on a bus another master owns
     for (size_t i = 0; i < shared.size(); ++i)
-        send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
+        if (!cfg.nodes[i].encoder) send(encodeRpdo2(cfg.nodes[i].node, cw::kDisableVoltage));
     send(encodeNmt(NmtCommand::EnterPreOperational, 0));
     flushDevice(device);
 }
@@ -312,12 +312,24 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
                  what + ": unexpected SDO answer (segmented transfer?)");
         return;
     }
-    if (op.upload && op.write.address.index == od::kDeviceType && (m.value & 0xFFFF) != 402) {
+    const bool encoder = cfg.nodes[i].encoder;
+    if (op.upload && op.write.address.index == od::kDeviceType &&
+        (m.value & 0xFFFF) != (encoder ? 406u : 402u)) {
         r.phase = StartupPhase::Failed;
         setFault(i, master_fault::kWrongDevice,
-                 "device type " + hex(m.value, 8) + " is not a CiA 402 drive (profile " +
+                 "device type " + hex(m.value, 8) + " is not a CiA " +
+                     (encoder ? "406 encoder" : "402 drive") + " (profile " +
                      std::to_string(m.value & 0xFFFF) + ")");
         return;
+    }
+    if (op.upload && op.write.address.index == od::kMotorRatedTorque) {
+        if (m.value == 0) {
+            r.phase = StartupPhase::Failed;
+            setFault(i, abort_code::kValueTooLow,
+                     "motor rated torque 0x6076 = 0: no scale for the target torque (CST)");
+            return;
+        }
+        shared[i].rated_torque.store(m.value * 1e-3, std::memory_order_release);
     }
     ++r.op;
     r.retries = 0;
@@ -373,8 +385,20 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
     if (i == cfg.nodes.size()) return; // not one of ours (or a frame of the master's kind)
     NodeShared& s = shared[i];
     NodeRuntime& r = rt[i];
+    std::int32_t encoderCounts = 0;
+    if (cfg.nodes[i].encoder && decodeEncoderTpdo(f, encoderCounts)) {
+        r.awaiting_since_ns = 0;
+        s.velocity_counts_s.store((encoderCounts - r.previous_actual) / cfg.period_s,
+                                  std::memory_order_relaxed);
+        r.previous_actual = encoderCounts;
+        s.actual_counts.store(encoderCounts, std::memory_order_release);
+        s.tpdo_ns.store(now, std::memory_order_release);
+        s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
+        noteCycleAnswer(i);
+        return;
+    }
     Tpdo1 t;
-    if (decodeTpdo1(f, t)) {
+    if (!cfg.nodes[i].encoder && decodeTpdo1(f, t)) {
         const Cia402State state = decodeStatusword(t.statusword);
         const bool enabled = state == Cia402State::OperationEnabled;
         if (enabled && !r.was_enabled) s.enable_epoch.fetch_add(1, std::memory_order_acq_rel);
@@ -387,13 +411,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.tpdo_ns.store(now, std::memory_order_release);
         s.statusword.store(t.statusword, std::memory_order_release);
         s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
-        // The cycle is complete when every running node has answered this SYNC.
-        const std::uint64_t c = cycles.load(std::memory_order_relaxed);
-        r.tpdo_cycle = c;
-        bool all = true;
-        for (size_t k = 0; k < rt.size(); ++k)
-            if (rt[k].phase == StartupPhase::Running && rt[k].tpdo_cycle != c) all = false;
-        if (all) completed.store(c, std::memory_order_release);
+        noteCycleAnswer(i);
         return;
     }
     int hbNode = 0;
@@ -416,8 +434,15 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 dc.master_heartbeat_timeout_ms = static_cast<std::uint16_t>(
                     std::clamp(cfg.heartbeat_timeout_s * 1e3, 1.0, 65535.0));
                 dc.abort_connection_option = cfg.abort_connection_option;
-                for (const SdoWrite& w : cspStartupWrites(node, dc))
+                const MasterNodeConfig& nc = cfg.nodes[i];
+                const bool torque = !nc.encoder && nc.mode == AxisCommandMode::Torque;
+                const std::vector<SdoWrite> writes =
+                    nc.encoder ? encoderStartupWrites(node, heartbeatProducerMs)
+                    : torque   ? cstStartupWrites(node, dc)
+                               : cspStartupWrites(node, dc);
+                for (const SdoWrite& w : writes)
                     r.ops.push_back({w, false});
+                if (torque) r.ops.push_back({{{od::kMotorRatedTorque, 0}, 0, 0}, true});
                 r.op = 0;
                 nextSdo(i, now);
             } else if (r.phase == StartupPhase::Running) {
@@ -435,8 +460,12 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 faultText[i].clear();
             }
             s.configured = true;
+            const char* what = cfg.nodes[i].encoder ? "CiA 406 encoder, TPDO1 position value"
+                               : cfg.nodes[i].mode == AxisCommandMode::Torque
+                                   ? "CST, RPDO1/RPDO2/TPDO1"
+                                   : "CSP, RPDO1/RPDO2/TPDO1";
             event(node, false,
-                  "configured (CSP, RPDO1/RPDO2/TPDO1, heartbeat " +
+                  std::string("configured (") + what + ", heartbeat " +
                       std::to_string(heartbeatProducerMs) + " ms) and operational");
         }
         return;
@@ -454,6 +483,16 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         return;
     }
     if (cob::functionOf(f.id) == cob::kSdoTx) onSdoReply(i, f, now);
+}
+
+// The cycle is complete when every running node has answered this SYNC.
+void CanOpenMaster::Impl::noteCycleAnswer(size_t i) {
+    const std::uint64_t c = cycles.load(std::memory_order_relaxed);
+    rt[i].tpdo_cycle = c;
+    bool all = true;
+    for (size_t k = 0; k < rt.size(); ++k)
+        if (rt[k].phase == StartupPhase::Running && rt[k].tpdo_cycle != c) all = false;
+    if (all) completed.store(c, std::memory_order_release);
 }
 
 // ---- commands, cycle, housekeeping -------------------------------------------------------
@@ -503,7 +542,7 @@ void CanOpenMaster::Impl::onWake() {
                 startNode(i, now);
             }
         }
-        if (!s.urgent.exchange(false, std::memory_order_acq_rel)) continue;
+        if (!s.urgent.exchange(false, std::memory_order_acq_rel) || cfg.nodes[i].encoder) continue;
         const Cia402State state = decodeStatusword(s.statusword.load(std::memory_order_acquire));
         const auto goal = static_cast<DriveGoal>(s.goal.load(std::memory_order_acquire));
         sent = send(encodeRpdo2(cfg.nodes[i].node, controlwordToward(state, goal))) || sent;
@@ -511,6 +550,7 @@ void CanOpenMaster::Impl::onWake() {
     // Every stop frame of this wake-up in one write (with TCP_NODELAY: at once on the wire).
     if (sent) {
         flushDevice(device);
+        lastUrgentCycle.store(cycles.load(std::memory_order_acquire), std::memory_order_release);
         lastUrgentNs.store(steadyNs(), std::memory_order_release);
     }
 }
@@ -524,15 +564,27 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
     if (!device || device->state() != QCanBusDevice::ConnectedState) return;
     for (size_t i = 0; i < shared.size(); ++i) {
         if (rt[i].phase != StartupPhase::Running) continue;
+        if (cfg.nodes[i].encoder) {
+            // Supervised from the first SYNC after it runs: this SYNC wants its position.
+            if (rt[i].awaiting_since_ns == 0) rt[i].awaiting_since_ns = now;
+            continue;
+        }
         NodeShared& s = shared[i];
         const std::uint16_t c = controlwordFor(i);
         const std::uint64_t tagged = s.tagged_target.load(std::memory_order_acquire);
         const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
+        const bool current = enabled && NodeShared::epochOf(tagged) ==
+                                            s.enable_epoch.load(std::memory_order_acquire);
+        if (cfg.nodes[i].mode == AxisCommandMode::Torque) {
+            // No torque unless the engine wrote one after seeing this enable.
+            const std::int32_t permille = current ? NodeShared::countsOf(tagged) : 0;
+            send(encodeRpdo1Torque(cfg.nodes[i].node, c,
+                                   static_cast<std::int16_t>(std::clamp(permille, -32768, 32767))));
+            continue;
+        }
         // Hold the actual position unless the engine wrote a target after seeing this enable.
-        const std::int32_t target =
-            enabled && NodeShared::epochOf(tagged) == s.enable_epoch.load(std::memory_order_acquire)
-                ? NodeShared::countsOf(tagged)
-                : s.actual_counts.load(std::memory_order_acquire);
+        const std::int32_t target = current ? NodeShared::countsOf(tagged)
+                                            : s.actual_counts.load(std::memory_order_acquire);
         send(encodeRpdo1(cfg.nodes[i].node, {c, target}));
     }
     send(encodeSync());
@@ -597,8 +649,14 @@ void CanOpenMaster::Impl::onHousekeeping() {
                          "heartbeat lost (none for " + std::to_string(age / 1'000'000) + " ms > " +
                              std::to_string(heartbeatTimeoutNs / 1'000'000) + " ms)");
                 // The node may still listen: take its torque away at once.
-                send(encodeRpdo2(node, cw::kDisableVoltage));
+                if (!cfg.nodes[i].encoder) send(encodeRpdo2(node, cw::kDisableVoltage));
             }
+            const std::int64_t waited = r.awaiting_since_ns ? now - r.awaiting_since_ns : 0;
+            if (cfg.nodes[i].encoder && waited > pdoTimeoutNs && s.master_fault.load() == 0)
+                setFault(i, master_fault::kNoProcessData,
+                         "no position value (TPDO) for " + std::to_string(waited / 1'000'000) +
+                             " ms after a SYNC (> " + std::to_string(pdoTimeoutNs / 1'000'000) +
+                             " ms): the encoder's reading is lost");
             break;
         }
         default:

@@ -41,6 +41,9 @@ struct NodeShared {
     // SDO abort code; 0 = none. Latched until a fault reset finds the cause gone.
     std::atomic<std::uint32_t> master_fault{0};
     std::atomic<std::uint16_t> last_emcy{0}; // error code of the last EMCY (0 after reset)
+    // CST drives: the rated torque 0x6076 read at start-up (N m or N; 0 = not read yet): the
+    // scale of the target torque 0x6071 and the torque actual 0x6077 (per mille of it).
+    std::atomic<double> rated_torque{0};
 
     static std::uint64_t tag(std::uint32_t epoch, std::int32_t counts) {
         return (static_cast<std::uint64_t>(epoch) << 32) | static_cast<std::uint32_t>(counts);

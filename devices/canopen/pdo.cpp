@@ -2,7 +2,8 @@
 
 namespace cutcell::canopen {
 
-std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
+namespace {
+std::vector<SdoWrite> driveStartupWrites(int node, const DriveConfig& c, bool torque) {
     const auto n = static_cast<std::uint32_t>(node);
     std::vector<SdoWrite> w;
     auto add = [&w](std::uint16_t index, std::uint8_t sub, std::uint32_t value, int size) {
@@ -19,12 +20,14 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
         add(comm, 2, type, 1);
         add(comm, 1, cobId, 4);
     };
-    add(od::kModesOfOperation, 0, static_cast<std::uint32_t>(kModeCyclicSyncPosition), 1);
+    add(od::kModesOfOperation, 0,
+        static_cast<std::uint32_t>(torque ? kModeCyclicSyncTorque : kModeCyclicSyncPosition), 1);
     add(od::kCommCyclePeriod, 0, c.cycle_period_us, 4);
     if (c.following_error_window_counts > 0)
         add(od::kFollowingErrorWindow, 0, c.following_error_window_counts, 4);
     pdo(od::kRpdoComm, od::kRpdoMap, cob::kRpdo1 + n, kTransmissionSync,
-        {mapEntry(od::kControlword, 0, 16), mapEntry(od::kTargetPosition, 0, 32)});
+        {mapEntry(od::kControlword, 0, 16),
+         torque ? mapEntry(od::kTargetTorque, 0, 16) : mapEntry(od::kTargetPosition, 0, 32)});
     pdo(static_cast<std::uint16_t>(od::kRpdoComm + 1), static_cast<std::uint16_t>(od::kRpdoMap + 1),
         cob::kRpdo2 + n, kTransmissionEvent, {mapEntry(od::kControlword, 0, 16)});
     pdo(od::kTpdoComm, od::kTpdoMap, cob::kTpdo1 + n, kTransmissionSync,
@@ -39,6 +42,49 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
         add(od::kConsumerHeartbeat, 1,
             (static_cast<std::uint32_t>(c.master_node) << 16) | c.master_heartbeat_timeout_ms, 4);
     return w;
+}
+
+} // namespace
+
+std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c) {
+    return driveStartupWrites(node, c, false);
+}
+std::vector<SdoWrite> cstStartupWrites(int node, const DriveConfig& c) {
+    return driveStartupWrites(node, c, true);
+}
+
+std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms) {
+    const std::uint32_t cobId = cob::kTpdo1 + static_cast<std::uint32_t>(node);
+    return {{{od::kTpdoComm, 1}, kCobIdInvalid | cobId, 4},
+            {{od::kTpdoMap, 0}, 0, 1},
+            {{od::kTpdoMap, 1}, mapEntry(od::kEncoderPositionValue, 0, 32), 4},
+            {{od::kTpdoMap, 0}, 1, 1},
+            {{od::kTpdoComm, 2}, kTransmissionSync, 1},
+            {{od::kTpdoComm, 1}, cobId, 4},
+            {{od::kProducerHeartbeat, 0}, heartbeat_ms, 2}};
+}
+
+CanFrame encodeRpdo1Torque(int node, std::uint16_t controlword, std::int16_t torque_permille) {
+    CanFrame f;
+    f.id = cob::kRpdo1 + static_cast<std::uint32_t>(node);
+    f.len = kRpdo1TorqueBytes;
+    putU16(f, 0, controlword);
+    putU16(f, 2, static_cast<std::uint16_t>(torque_permille));
+    return f;
+}
+
+CanFrame encodeEncoderTpdo(int node, std::int32_t counts) {
+    CanFrame f;
+    f.id = cob::kTpdo1 + static_cast<std::uint32_t>(node);
+    f.len = kEncoderTpdoBytes;
+    putU32(f, 0, static_cast<std::uint32_t>(counts));
+    return f;
+}
+
+bool decodeEncoderTpdo(const CanFrame& f, std::int32_t& counts) {
+    if (cob::functionOf(f.id) != cob::kTpdo1 || f.len != kEncoderTpdoBytes) return false;
+    counts = static_cast<std::int32_t>(getU32(f, 0));
+    return true;
 }
 
 CanFrame encodeRpdo1(int node, const Rpdo1& p) {

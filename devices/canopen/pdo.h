@@ -6,6 +6,10 @@
 //         acted on at once instead of at the next SYNC
 //   TPDO1 (0x180 + node, synchronous): statusword 0x6041 + position actual value 0x6064 +
 //         torque actual value 0x6077 (per mille of the rated torque 0x6076)
+// A drive in cyclic synchronous torque mode (CST, 0x6060 = 10) has RPDO1 = controlword +
+// target torque 0x6071 (per mille of 0x6076); the rest is the same.
+// A CiA 406 encoder (device type profile 406) has one TPDO1 (0x180 + node, synchronous):
+// position value 0x6004 (32 bit, counts).
 #include "devices/canopen/can_frame.h"
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/sdo.h"
@@ -36,10 +40,15 @@ inline constexpr std::uint16_t kModesDisplay = 0x6061;
 inline constexpr std::uint16_t kPositionActual = 0x6064;
 inline constexpr std::uint16_t kFollowingErrorWindow = 0x6065; // counts
 inline constexpr std::uint16_t kTargetPosition = 0x607A;
+inline constexpr std::uint16_t kTargetTorque = 0x6071;         // per mille of 0x6076
 inline constexpr std::uint16_t kMotorRatedTorque = 0x6076;     // mN m
 inline constexpr std::uint16_t kTorqueActual = 0x6077;         // per mille of 0x6076
 inline constexpr std::uint16_t kQuickStopDecel = 0x6085;       // counts/s^2
 inline constexpr std::uint32_t kDeviceTypeCia402 = 0x00020192; // profile 402, servo drive
+// CiA 406 encoder: position value (counts) and the device type (profile 406, multi-turn
+// absolute rotary encoder in the additional information).
+inline constexpr std::uint16_t kEncoderPositionValue = 0x6004;
+inline constexpr std::uint32_t kDeviceTypeCia406 = 0x00020196;
 } // namespace od
 
 // A mapping entry: index << 16 | sub << 8 | bit length.
@@ -80,6 +89,10 @@ inline constexpr int kQuickStop = 3;
 // The SDO writes that put a drive into CSP with the PDOs above (CiA 301 mapping procedure:
 // invalidate the PDO, clear the map, write entries, set the count, set the type, validate).
 std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c);
+// The same for a drive in CST: 0x6060 = 10, RPDO1 = controlword + target torque 0x6071.
+std::vector<SdoWrite> cstStartupWrites(int node, const DriveConfig& c);
+// A CiA 406 encoder: TPDO1 = position value 0x6004 on every SYNC, its heartbeat.
+std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms);
 
 struct Rpdo1 {
     std::uint16_t controlword = 0;
@@ -91,10 +104,15 @@ struct Tpdo1 {
     std::int16_t torque_permille = 0;
 };
 inline constexpr int kRpdo1Bytes = 6;
+inline constexpr int kRpdo1TorqueBytes = 4; // CST: controlword + target torque
+inline constexpr int kEncoderTpdoBytes = 4; // CiA 406: position value
 inline constexpr int kRpdo2Bytes = 2;
 inline constexpr int kTpdo1Bytes = 8;
 
 CanFrame encodeRpdo1(int node, const Rpdo1& p);
+CanFrame encodeRpdo1Torque(int node, std::uint16_t controlword, std::int16_t torque_permille);
+CanFrame encodeEncoderTpdo(int node, std::int32_t counts);
+bool decodeEncoderTpdo(const CanFrame& f, std::int32_t& counts);
 CanFrame encodeRpdo2(int node, std::uint16_t controlword);
 CanFrame encodeTpdo1(int node, const Tpdo1& p);
 bool decodeRpdo1(const CanFrame& f, Rpdo1& out);

@@ -198,3 +198,59 @@ TEST(Machines, AMachineWithoutCanDrivesRefusesCanopen) {
     const std::string why = refusal(text);
     EXPECT_NE(why.find("devices.kind = \"canopen\": the profile cutter"), std::string::npos) << why;
 }
+
+// devices.node_ids / counts_per_unit hold one entry per axis of the machine (up to 8); files
+// written when every machine had 6 slots still load; any other length is refused naming the
+// key, the value and the machine's axis count.
+TEST(Machines, DeviceArraysFollowTheMachinesAxisCount) {
+    const std::string steel = shipped("section_steel_job.json");
+    ASSERT_NE(steel.find("\"node_ids\": [1, 2, 3, 4, 5, 6]"), std::string::npos);
+    const Job legacy = parseJob(steel); // 6 entries: the first six axes, 7 and 8 by default
+    EXPECT_EQ(legacy.devices.node_ids[5], 6);
+    EXPECT_EQ(legacy.devices.node_ids[6], 7);
+    EXPECT_EQ(legacy.devices.node_ids[7], 8);
+    const std::string written = json::write(jobToJson(legacy));
+    EXPECT_NE(written.find("\"node_ids\": [1, 2, 3, 4, 5, 6, 7, 8]"), std::string::npos) << written;
+    const std::string eight = edited(written, "\"node_ids\": [1, 2, 3, 4, 5, 6, 7, 8]",
+                                     "\"node_ids\": [11, 12, 13, 14, 15, 16, 17, 18]");
+    const Job custom = parseJob(eight);
+    EXPECT_EQ(custom.devices.node_ids[7], 18);
+    EXPECT_EQ(json::write(jobToJson(custom)), eight); // round trip
+    const std::string five =
+        refusal(edited(steel, "\"node_ids\": [1, 2, 3, 4, 5, 6]", "\"node_ids\": [1, 2, 3, 4, 5]"));
+    EXPECT_NE(five.find("devices.node_ids = [1, 2, 3, 4, 5] has 5 entries"), std::string::npos)
+        << five;
+    EXPECT_NE(five.find("has 8 axes"), std::string::npos) << five;
+    const std::string seven = refusal(
+        edited(written, "\"counts_per_unit\": [1000, 1000, 1000, 1000, 1000, 1000, 1000, 1000]",
+               "\"counts_per_unit\": [1000, 1000, 1000, 1000, 1000, 1000, 1000]"));
+    EXPECT_NE(seven.find("devices.counts_per_unit = [1000, 1000, 1000, 1000, 1000, 1000, 1000] "
+                         "has 7 entries"),
+              std::string::npos)
+        << seven;
+    const std::string twice =
+        refusal(edited(written, "[1, 2, 3, 4, 5, 6, 7, 8]", "[1, 2, 3, 4, 5, 6, 7, 7]"));
+    EXPECT_NE(twice.find("devices.node_ids[7] = 7 is used twice"), std::string::npos) << twice;
+
+    // The pipe robot (6 axes) writes what it always wrote.
+    const std::string robot = json::write(jobToJson(parseJob(shipped("default_job.json"))));
+    EXPECT_NE(robot.find("\"node_ids\": [1, 2, 3, 4, 5, 6],"), std::string::npos) << robot;
+    EXPECT_EQ(robot.find("sensor_node_ids"), std::string::npos);
+
+    // The flying saw: 4 axes and its line encoder's node (after the axes by default).
+    const std::string saw = json::write(jobToJson(parseJob(shipped("flying_saw_job.json"))));
+    EXPECT_NE(saw.find("\"node_ids\": [1, 2, 3, 4],"), std::string::npos) << saw;
+    EXPECT_NE(saw.find("\"sensor_node_ids\": [5],"), std::string::npos) << saw;
+    const std::string clash =
+        refusal(edited(saw, "\"sensor_node_ids\": [5]", "\"sensor_node_ids\": [3]"));
+    EXPECT_NE(clash.find("devices.sensor_node_ids[0] = 3 is the node of axis 2"), std::string::npos)
+        << clash;
+    const std::string two =
+        refusal(edited(saw, "\"sensor_node_ids\": [5]", "\"sensor_node_ids\": [5, 6]"));
+    EXPECT_NE(two.find("devices.sensor_node_ids = [5, 6]: the machine \"flying_saw\" reads 1 "
+                       "sensor"),
+              std::string::npos)
+        << two;
+    const std::string unknown = refusal(edited(saw, "\"sensor_node_ids\"", "\"sensor_nodes\""));
+    EXPECT_NE(unknown.find("sensor_nodes"), std::string::npos) << unknown;
+}

@@ -1,4 +1,6 @@
 #include "ui/forms/cycle_devices_form.h"
+#include "ui/machine/machine_ui.h"
+#include "ui/machine/machine_ui_registry.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -93,7 +95,8 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
     g->addWidget(new QLabel(tr("Counts/unit"), axes), 0, 2);
     g->setColumnStretch(1, 1);
     g->setColumnStretch(2, 2);
-    for (int i = 0; i < cutcell::kAxisCount; ++i) {
+    // Rows for up to kMaxAxes axes; reloadExtra() shows the job's machine's axes only.
+    for (int i = 0; i < cutcell::kMaxAxes; ++i) {
         const auto a = static_cast<size_t>(i);
         auto* head = new QLabel(QString::number(i), axes);
         head->setAlignment(Qt::AlignCenter);
@@ -105,6 +108,7 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
         auto* counts = bindDouble("devices.counts_per_unit[" + std::to_string(i) + "]", 0,
                                   [a](Job& j) -> double& { return j.devices.counts_per_unit[a]; });
         g->addWidget(counts, i + 1, 2);
+        axisRows_.push_back({head, id, counts});
     }
     d->addRow(axes);
     auto* unit = new QLabel(tr("Counts per degree (rotary axes) or per mm (linear axes)."), dev);
@@ -113,6 +117,19 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
     d->addRow(unit);
     mainLayout()->addWidget(dev);
     mainLayout()->addStretch(1);
+}
+
+void CycleDevicesForm::reloadExtra(const Job& job) {
+    const MachineUi* machine = machineUiFor(job);
+    const std::vector<AxisLabel> labels = machine ? machine->axes() : std::vector<AxisLabel>{};
+    const size_t shown = machine ? labels.size() : static_cast<size_t>(cutcell::kAxisCount);
+    for (size_t i = 0; i < axisRows_.size(); ++i) {
+        for (QWidget* w : axisRows_[i])
+            w->setVisible(i < shown);
+        if (i < labels.size())
+            static_cast<QLabel*>(axisRows_[i][0])
+                ->setText(QString::number(i) + QLatin1Char(' ') + labels[i].name);
+    }
 }
 
 } // namespace CutCell::ui

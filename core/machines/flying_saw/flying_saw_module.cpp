@@ -75,11 +75,8 @@ std::vector<JobIssue> FlyingSawModule::validate(const Job& job) const {
     return checkFlyingSawSpec(*s);
 }
 
-bool FlyingSawModule::supportsCanOpen(std::string* why) const {
-    if (why)
-        *why = "the flying saw needs its line encoder on the bus (a CiA 406 node), which the "
-               "CANopen devices do not have yet: use devices.kind = \"simulated\"";
-    return false;
+bool FlyingSawModule::supportsCanOpen(std::string*) const {
+    return true; // CiA 402 drives + the line's CiA 406 encoder: devices/machines/can_cells.cpp
 }
 
 MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText) const {

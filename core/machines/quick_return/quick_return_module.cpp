@@ -53,12 +53,8 @@ std::vector<JobIssue> QuickReturnModule::validate(const Job& job) const {
     return validateQuickReturn(*s);
 }
 
-bool QuickReturnModule::supportsCanOpen(std::string* why) const {
-    if (why)
-        *why = "the quick-return cutter runs on its simulated mechanism only so far (its crank "
-               "drive in CST and the slider scale have no CANopen mapping yet): use "
-               "devices.kind = \"simulated\"";
-    return false;
+bool QuickReturnModule::supportsCanOpen(std::string*) const {
+    return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
 MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) const {

@@ -31,6 +31,7 @@ class QuickReturnModule : public MachineModule {
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
     bool supportsCanOpen(std::string* why) const override;
+    std::vector<std::string> sensorNames() const override { return {"slider scale"}; }
     MachinePlan plan(const Job& job, const std::string& jobText) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,

@@ -76,11 +76,8 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     return c.issues;
 }
 
-bool SectionSteelModule::supportsCanOpen(std::string* why) const {
-    if (why)
-        *why = "the section-steel cell has 8 axes; devices.node_ids and counts_per_unit hold 6 "
-               "(core/job/job.h): use devices.kind = \"simulated\"";
-    return false;
+bool SectionSteelModule::supportsCanOpen(std::string*) const {
+    return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
 MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText) const {

@@ -1,0 +1,17 @@
+#include "devices/canopen/canopen_encoder.h"
+
+namespace cutcell::canopen {
+
+SensorReading CanOpenEncoder::read(double) {
+    SensorReading r;
+    r.position = shared_.actual_counts.load(std::memory_order_acquire) / countsPerUnit_;
+    r.velocity = shared_.velocity_counts_s.load(std::memory_order_acquire) / countsPerUnit_;
+    r.fault_code = shared_.master_fault.load(std::memory_order_acquire);
+    r.valid =
+        r.fault_code == 0 && shared_.configured.load(std::memory_order_acquire) &&
+        shared_.tpdo_count.load(std::memory_order_acquire) > 0 &&
+        static_cast<NmtState>(shared_.nmt.load(std::memory_order_acquire)) == NmtState::Operational;
+    return r;
+}
+
+} // namespace cutcell::canopen

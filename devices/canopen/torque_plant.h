@@ -1,0 +1,22 @@
+#pragma once
+// The mechanics behind a simulated drive node, when they are not the node's own joint model
+// (J q'' + b q' = u): e.g. a crank driving a mechanism whose inertia and loads depend on the
+// crank angle. The node's power stage gives a torque; the plant moves. Positions in the axis
+// units (rad or mm), torques in N m (or N).
+//
+// Threading: driven by one DriveNode on the drive simulator's thread; other nodes of the same
+// simulator (an encoder on the mechanism) may read it there.
+namespace cutcell::canopen {
+
+class TorquePlant {
+  public:
+    virtual ~TorquePlant() = default;
+    virtual double position() const = 0;
+    virtual double velocity() const = 0;
+    // Applies `torque` (clamped to the motor's limit) for h seconds; returns the torque applied.
+    virtual double step(double torque, double h) = 0;
+    // The rated torque (0x6076): 1000 per mille of the node's torque objects.
+    virtual double ratedTorque() const = 0;
+};
+
+} // namespace cutcell::canopen
