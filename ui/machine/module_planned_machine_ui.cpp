@@ -58,4 +58,18 @@ QString ModulePlannedMachineUi::planSummary(const cutcell::Job&,
     return plan.machine_plan ? QString::fromStdString(plan.machine_plan->summary) : QString();
 }
 
+std::vector<std::pair<std::string, QString>>
+ModulePlannedMachineUi::pipeJointFields(const QString& why) {
+    std::vector<std::pair<std::string, QString>> out;
+    for (const char* pipe : {"main_pipe", "branch_pipe"})
+        for (const char* field : {".radius_mm", ".wall_mm", ".length_mm"})
+            out.push_back({std::string(pipe) + field, why});
+    for (const char* key :
+         {"angle_deg", "eccentricity_mm", "cut.target", "cut.bevel_deg", "cut.speed_mm_s",
+          "cut.ramp_s", "cut.knot_spacing_mm", "cut.max_direction_deviation_deg",
+          "cut.start_phi_auto", "cut.start_phi_deg"})
+        out.push_back({key, why});
+    return out;
+}
+
 } // namespace CutCell::ui

@@ -31,6 +31,11 @@ class ModulePlannedMachineUi : public MachineUi {
     std::size_t plannedPointCount(const cutcell::Job& job,
                                   const cutcell::CutPlan& plan) const override;
     QString planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const override;
+
+  protected:
+    // The common pipe-joint fields (Pipes page: both pipes, angle, eccentricity; the Cut page)
+    // each with `why`: for unusedCommonFields() of a machine that cuts no pipe joint.
+    static std::vector<std::pair<std::string, QString>> pipeJointFields(const QString& why);
 };
 
 } // namespace CutCell::ui

@@ -38,16 +38,7 @@ std::vector<FormPage> FlyingSawUi::formPages() const {
 std::vector<std::pair<std::string, QString>> FlyingSawUi::unusedCommonFields() const {
     const QString why = QObject::tr("The flying saw cuts the tube of its line across: its tube, "
                                     "line and lengths are set on the Tube & line page.");
-    std::vector<std::pair<std::string, QString>> out;
-    for (const char* pipe : {"main_pipe", "branch_pipe"})
-        for (const char* field : {".radius_mm", ".wall_mm", ".length_mm"})
-            out.push_back({std::string(pipe) + field, why});
-    for (const char* key :
-         {"angle_deg", "eccentricity_mm", "cut.target", "cut.bevel_deg", "cut.speed_mm_s",
-          "cut.ramp_s", "cut.knot_spacing_mm", "cut.max_direction_deviation_deg",
-          "cut.start_phi_auto", "cut.start_phi_deg"})
-        out.push_back({key, why});
-    return out;
+    return pipeJointFields(why);
 }
 
 bool FlyingSawUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
