@@ -15,6 +15,7 @@
 
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
 #include "devices/canopen/drive_simulator.h"
 #include "ui/engine_bridge.h"
 #include "ui/link_control.h"
@@ -187,8 +188,10 @@ class TestGuiCanLink : public QObject {
         QVERIFY2(why.contains("virtualcan") && why.contains(QString::number(cable.port())),
                  qPrintable(why));
         QString nodes;
-        for (int id : job.devices.node_ids)
-            nodes += (nodes.isEmpty() ? "" : ", ") + QString::number(id);
+        // The machine's axes' nodes (node_ids holds up to kMaxAxes slots).
+        const size_t axisCount = cutcell::machineFor(job).axes(job).size();
+        for (size_t i = 0; i < axisCount; ++i)
+            nodes += (nodes.isEmpty() ? "" : ", ") + QString::number(job.devices.node_ids[i]);
         QVERIFY2(why.contains("nodes " + nodes + ":"), qPrintable(why));
         QVERIFY2(w.run()->startBlockedReason().contains("press Enable to try again"),
                  qPrintable(w.run()->startBlockedReason()));
