@@ -130,3 +130,17 @@ TEST(SectionSteelModule, DefaultJobPlansAJointSplineForEightAxes) {
     EXPECT_NE(csv.find("\nsquare,0,"), std::string::npos);
     EXPECT_EQ(csv.find("nan"), std::string::npos);
 }
+
+// A K groove on the flanges cannot bevel the face that lies on the conveyor: the plan says so
+// (never silently one-sided), and says nothing of it for other grooves.
+TEST(SectionSteelModule, KGrooveOnFlangesSaysTheUndersideIsNotBevelled) {
+    Job job = steel().defaultJob();
+    auto* spec = job.machine_spec.as<section_steel::SectionSteelSpec>();
+    ASSERT_TRUE(spec);
+    spec->cut.flanges = {section_steel::GrooveType::K, 30, 2};
+    const MachinePlan k = steel().plan(job, {});
+    EXPECT_NE(k.summary.find("underside of the bottom flange"), std::string::npos) << k.summary;
+    spec->cut.flanges = {section_steel::GrooveType::V, 30, 0};
+    const MachinePlan v = steel().plan(job, {});
+    EXPECT_EQ(v.summary.find("underside"), std::string::npos) << v.summary;
+}

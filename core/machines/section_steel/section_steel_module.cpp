@@ -95,6 +95,10 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText)
     out.summary = formatC("%s, mitre %.1f/%.1f deg, %s, %.1f mm at %.2f mm/s (%.1f s)",
                           name.c_str(), s.cut.mitre_vertical_deg, s.cut.mitre_horizontal_deg,
                           passes.c_str(), plan->length_mm, s.speed_mm_s, plan->cut_time_s);
+    // The face on the conveyor is not in the outline: a K groove there gets one side only.
+    if (s.cut.flanges.type == GrooveType::K)
+        out.summary += "; K groove: the underside of the bottom flange (on the conveyor) is not "
+                       "bevelled - turn the bar over and cut that side in a second run";
     if (!plan->ok) {
         out.status = PlanStatus::Infeasible;
         out.problem = plan->problem;
