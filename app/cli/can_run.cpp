@@ -128,7 +128,8 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
         DriveSimulatorConfig sc;
         sc.plugin = mc.plugin;
         sc.interface = mc.interface;
-        sc.nodes = nodesFromJob(job, {job.devices.node_ids.begin(), job.devices.node_ids.end()});
+        sc.nodes = nodesFromJob(
+            job, {job.devices.node_ids.begin(), job.devices.node_ids.begin() + kAxisCount});
         sim = std::make_unique<DriveSimulator>(sc);
         if (!sim->start()) {
             r.error = "drive simulator: " + sim->errorText().toStdString();

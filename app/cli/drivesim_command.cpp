@@ -31,7 +31,9 @@ int runDriveSim(const DriveSimOptions& o) {
     if (!o.job.empty() && !loadJobArg(o.job, job, &code)) return code;
     const std::string& nodesText = o.nodes_text;
     std::vector<int> ids = o.nodes;
-    if (nodesText.empty()) ids.assign(job.devices.node_ids.begin(), job.devices.node_ids.end());
+    // The pipe robot's six drives (node_ids has up to kMaxAxes slots).
+    if (nodesText.empty())
+        ids.assign(job.devices.node_ids.begin(), job.devices.node_ids.begin() + kAxisCount);
     FaultInjection faults;
     faults.fault_after_s = o.fault_after_s.value_or(faults.fault_after_s);
     faults.heartbeat_stop_after_s =

@@ -16,7 +16,9 @@ std::vector<DriveNodeConfig> nodesFromJob(const Job& job, const std::vector<int>
     std::vector<DriveNodeConfig> out;
     for (int id : ids) {
         size_t axis = static_cast<size_t>((id - 1) % kAxisCount);
-        for (size_t a = 0; a < job.devices.node_ids.size(); ++a)
+        // The pipe robot's job: controller and plant hold its 6 axes; node_ids has up to
+        // kMaxAxes slots, the ones past the 6th are not this machine's.
+        for (size_t a = 0; a < job.controller.size(); ++a)
             if (job.devices.node_ids[a] == id) axis = a;
         DriveNodeConfig c;
         c.node = id;
