@@ -44,13 +44,7 @@ std::vector<std::pair<std::string, QString>> FlyingSawUi::unusedCommonFields() c
 bool FlyingSawUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
                              cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
-    try {
-        *out = cutcell::view3d::buildFlyingSawScene(job, plan);
-        return true;
-    } catch (const std::exception& e) {
-        if (why) *why = QString::fromUtf8(e.what());
-        return false;
-    }
+    return sceneOrWhy([&] { return cutcell::view3d::buildFlyingSawScene(job, plan); }, out, why);
 #else
     (void)job, (void)plan, (void)out;
     if (why) *why = QObject::tr("3D view not built in this configuration.");

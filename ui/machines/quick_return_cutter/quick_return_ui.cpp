@@ -43,13 +43,7 @@ std::vector<std::pair<std::string, QString>> QuickReturnUi::unusedCommonFields()
 bool QuickReturnUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan&,
                                cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
-    try {
-        *out = cutcell::view3d::buildQuickReturnScene(job);
-        return true;
-    } catch (const std::exception& e) {
-        if (why) *why = QString::fromUtf8(e.what());
-        return false;
-    }
+    return sceneOrWhy([&] { return cutcell::view3d::buildQuickReturnScene(job); }, out, why);
 #else
     (void)job, (void)out;
     if (why) *why = QObject::tr("3D view not built in this configuration.");

@@ -38,18 +38,13 @@ std::vector<std::pair<std::string, QString>> SectionSteelUi::unusedCommonFields(
 bool SectionSteelUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
                                 cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
-    try {
-        // The module's plan (feasible or not: an infeasible cut is drawn with its problem).
-        const auto* steel = plan.machine_plan
-                                ? static_cast<const cutcell::section_steel::SteelPlan*>(
-                                      plan.machine_plan->data.get())
-                                : nullptr;
-        *out = cutcell::view3d::buildSectionSteelScene(job, steel);
-        return true;
-    } catch (const std::exception& e) {
-        if (why) *why = QString::fromUtf8(e.what());
-        return false;
-    }
+    // The module's plan (feasible or not: an infeasible cut is drawn with its problem).
+    const auto* steel =
+        plan.machine_plan
+            ? static_cast<const cutcell::section_steel::SteelPlan*>(plan.machine_plan->data.get())
+            : nullptr;
+    return sceneOrWhy([&] { return cutcell::view3d::buildSectionSteelScene(job, steel); }, out,
+                      why);
 #else
     (void)job, (void)plan, (void)out;
     if (why) *why = QObject::tr("3D view not built in this configuration.");
