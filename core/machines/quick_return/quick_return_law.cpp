@@ -13,6 +13,25 @@ constexpr const char* kBlendReason = "near a singular point: no crank reference 
 constexpr const char* kBrakeReason = "braking the crank";
 } // namespace
 
+double holdBandwidth(const QuickReturnLawConfig& c, double period_s) {
+    return period_s > 0 ? std::min(c.hold_bandwidth, kHoldStepGain / (2 * period_s))
+                        : c.hold_bandwidth;
+}
+
+double holdTorque(const QuickReturnLawConfig& c, double q, double dq, double qRef, double dqRef,
+                  double period_s) {
+    const WhitworthPose p = forwardKinematics(c.dims, q);
+    const CrankPlantParams& m = c.model;
+    double M = m.crank_inertia, weight = 0;
+    if (p.closes) {
+        const auto rho = extendedJacobian(c.dims, q, p);
+        M += m.rocker_inertia * rho[2] * rho[2] + m.slider_mass * rho[4] * rho[4];
+        weight = m.slider_mass * m.gravity * rho[4];
+    }
+    const double w = holdBandwidth(c, period_s);
+    return M * (w * w * (qRef - q) + 2 * w * (dqRef - dq)) + weight;
+}
+
 const char* toString(Experiment e) {
     return e == Experiment::Tracking ? "tracking" : "cutting";
 }
@@ -116,7 +135,7 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
         phase_ = QrPhase::Hold;
         qRef = in.setpoint[static_cast<Eigen::Index>(a)];
         dqRef = in.setpoint_velocity[static_cast<Eigen::Index>(a)];
-        tau = c_.hold_kp * (qRef - q) + c_.hold_kd * (dqRef - dq);
+        tau = holdTorque(c_, q, dq, qRef, dqRef, T);
         supervised = true;
     } else {
         const bool run = in.request == SourceRequest::Run;
@@ -208,14 +227,15 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
             }
             break;
         case QrPhase::Braking:
-        case QrPhase::Done:
-            tau = c_.hold_kp * (brakeAt_ - q) - c_.hold_kd * dq;
+        case QrPhase::Done: {
+            tau = holdTorque(c_, q, dq, brakeAt_, 0, T);
             rest_ = std::fabs(dq) < c_.rest_speed ? rest_ + 1 : 0;
             if (rest_ >= c_.rest_cycles) {
                 if (run) phase_ = QrPhase::Done;
                 out.status = run ? SourceStatus::Done : SourceStatus::AtRest;
             }
             break;
+        }
         }
     }
     tau = std::clamp(tau, -c_.torque_limit, c_.torque_limit);

@@ -14,6 +14,7 @@
 // Stops (feed hold, abort, category-1 stop): the crank is braked to rest (AtRest). An invalid
 // scale reading is a fault (no torque).
 #include "core/engine/motion_source.h"
+#include "core/machines/quick_return/crank_plant.h"
 #include "core/machines/quick_return/task_controllers.h"
 #include "core/machines/quick_return/velocity_profile.h"
 #include "core/machines/quick_return/whitworth.h"
@@ -41,12 +42,26 @@ struct QuickReturnLawConfig {
     double return_torque_1 = 8.65, return_torque_2 = -8; // N m
     // A cut that has not reached the bottom this long after its profile ended is a fault.
     double cut_timeout = 1.0; // s
-    // Hold (Track requests) and braking: crank PD
-    double hold_kp = 200, hold_kd = 10; // N m/rad, N m s/rad
-    double rest_speed = 0.02;           // rad/s
+    // Hold (Track requests) and braking: a crank PD scaled by the nominal model's inertia M(q)
+    // with its weight term fed forward (holdTorque), bandwidth hold_bandwidth, lowered at long
+    // periods so that the derivative term changes the speed by at most kHoldStepGain of itself
+    // per cycle: the loop then stays stable with the feedback several cycles late, as over a
+    // CAN bus where the drive answers the SYNC after the command went out.
+    CrankPlantParams model;     // nominal inertias, slider mass, gravity
+    double hold_bandwidth = 40; // rad/s
+    double rest_speed = 0.02;   // rad/s
     int rest_cycles = 20;
     double torque_limit = 120; // N m (the law's own clamp)
 };
+
+// Largest per-cycle derivative gain 2 w T of the hold: a velocity loop whose feedback is d
+// cycles late is stable below 2 sin(pi / (2 (2d + 1))), which is above 0.2 up to d = 7.
+inline constexpr double kHoldStepGain = 0.2;
+// The hold's bandwidth (rad/s) at a period.
+double holdBandwidth(const QuickReturnLawConfig& c, double period_s);
+// Crank torque (N m) that holds q at qRef: M(q) (w^2 e + 2 w e') plus the slider's weight.
+double holdTorque(const QuickReturnLawConfig& c, double q, double dq, double qRef, double dqRef,
+                  double period_s);
 
 enum class QrPhase : std::uint8_t { Hold, Tracking, Cut, ReturnPush, ReturnBrake, Braking, Done };
 const char* toString(QrPhase p);

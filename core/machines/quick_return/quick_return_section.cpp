@@ -297,6 +297,7 @@ bool buildSetup(const QuickReturnSpec& s, ExperimentSetup* setup, std::string* p
     e.law.return_torque_1 = s.return_torque_1;
     e.law.return_torque_2 = s.return_torque_2;
     e.law.torque_limit = s.plant.torque_limit;
+    e.law.model = s.plant; // the hold's nominal model
     e.plant = s.plant;
     e.plant.cut_low = std::min(e.law.profile.y_a, e.law.profile.y_b);
     e.plant.cut_high = std::max(e.law.profile.y_a, e.law.profile.y_b);
