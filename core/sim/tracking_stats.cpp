@@ -65,6 +65,7 @@ void TrackingStats::fill(TrackingReport& r) const {
     r.on_pipe_max_abs_mm = workMaxAbs_;
     r.max_torque_fraction = maxTorqueFraction_;
     r.steps = n_;
+    r.has_tip = robot_ != nullptr || model_ != nullptr;
 }
 
 void TrackingStats::fillCruise(TrackingReport& r) const {
@@ -103,7 +104,7 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
         cruise.emplace_back(
             json::Object{{"axis", i}, {maxKey, value(c.max_abs_deg)}, {rmsKey, value(c.rms_deg)}});
     }
-    return json::Object{
+    json::Object doc{
         {"method", r.method},
         {"reachable", r.reachable},
         {"problem", r.problem},
@@ -114,18 +115,24 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
         {"max_direction_deviation_deg", r.max_direction_deviation_deg},
         {"max_torque_fraction", r.max_torque_fraction},
         {"joints", joints},
-        {"cartesian",
-         json::Object{{"frame", "robot base {0}, torch tip, FK(actual) - FK(commanded)"},
-                      {"max_abs_error_mm", xyz(r.cartesian_max_abs_mm)},
-                      {"min_error_mm", xyz(r.cartesian_min_mm)},
-                      {"max_error_mm", xyz(r.cartesian_max_mm)},
-                      {"on_pipe_max_abs_error_mm", xyz(r.on_pipe_max_abs_mm)}}},
-        {"cruise",
-         json::Object{{"about", "constant cutting speed only (start and stop ramps excluded)"},
-                      {"joints", cruise},
-                      {"cartesian_max_abs_error_mm", xyz(r.cruise_cartesian_max_abs_mm)},
-                      {"on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm)}}},
     };
+    json::Object cruiseDoc{
+        {"about", "constant cutting speed only (start and stop ramps excluded)"},
+        {"joints", cruise},
+    };
+    if (r.has_tip) {
+        doc.emplace_back(
+            "cartesian",
+            json::Object{{"frame", "robot base {0}, torch tip, FK(actual) - FK(commanded)"},
+                         {"max_abs_error_mm", xyz(r.cartesian_max_abs_mm)},
+                         {"min_error_mm", xyz(r.cartesian_min_mm)},
+                         {"max_error_mm", xyz(r.cartesian_max_mm)},
+                         {"on_pipe_max_abs_error_mm", xyz(r.on_pipe_max_abs_mm)}});
+        cruiseDoc.emplace_back("cartesian_max_abs_error_mm", xyz(r.cruise_cartesian_max_abs_mm));
+        cruiseDoc.emplace_back("on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm));
+    }
+    doc.emplace_back("cruise", std::move(cruiseDoc));
+    return doc;
 }
 
 } // namespace cutcell

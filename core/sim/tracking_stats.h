@@ -30,6 +30,9 @@ struct TrackingReport {
     double simulated_s = 0;
     long steps = 0;
     double max_direction_deviation_deg = 0;
+    // The machine has a tool-tip model (the Cartesian figures mean something); without one the
+    // report holds joint figures only.
+    bool has_tip = true;
     int axis_count = kAxisCount;              // axes in joints / cruise_joints
     std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
     std::array<AxisErrorStats, kMaxAxes> joints{};
@@ -95,7 +98,7 @@ class TrackingStats {
 };
 
 // Axes 0 .. axis_count-1, each in its unit (rotary: *_deg, linear: *_mm), named by `names`
-// when given (else the pipe robot's names).
+// when given (else the pipe robot's names). The Cartesian figures only when has_tip.
 json::Value reportToJson(const TrackingReport& r,
                          const std::array<std::string, kMaxAxes>* names = nullptr);
 

@@ -133,9 +133,10 @@ bool QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, s
     return true;
 }
 
-json::Value QuickReturnModule::runReport(const Job&, const MachinePlan&,
+json::Value QuickReturnModule::runReport(const Job&, const MachinePlan& plan,
                                          const TrackingReport& report) const {
-    return reportToJson(report);
+    if (!plan.program) return reportToJson(report);
+    return reportToJson(report, &plan.program->axis_names);
 }
 
 } // namespace cutcell
