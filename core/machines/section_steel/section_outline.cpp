@@ -18,6 +18,7 @@ struct Edge {
     FaceKind kind;
     double thickness;
     bool grooveSide;
+    bool tableFace = false;
 };
 
 Vec2 outward(const Vec2& d) {
@@ -46,13 +47,14 @@ const char* toString(FaceKind k) {
     return "?";
 }
 
-SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
+SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
+    : dims_(d), turned_(turnedOver) {
     // A tapered (UPN) flange is drawn parallel at the thickness of the same area: t is given
     // at b/2 from the web's back, the outstand's mean thickness is at (b + tw)/2.
     const double h = d.h_mm, b = d.b_mm, tw = d.tw_mm, r = d.r_mm, r2 = d.r2_mm;
     const double tf = d.tf_mm - d.slope_pct / 100 * tw / 2;
     std::vector<Corner> c;
-    std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1]; the last corner ends the chain
+    std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1] (the last one back to c[0])
     using K = FaceKind;
     switch (d.family) {
     case SectionFamily::I:
@@ -69,7 +71,8 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"top flange, lower face -y", K::Flange, tf, false},
              {"web, face -y", K::Web, tw, false},
              {"bottom flange, upper face -y", K::Flange, tf, true},
-             {"bottom flange, toe -y", K::Toe, tf, false}};
+             {"bottom flange, toe -y", K::Toe, tf, false},
+             {"bottom flange, underside", K::Flange, tf, false, true}};
         break;
     case SectionFamily::U:
         c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2},
@@ -82,7 +85,8 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"top flange, lower face", K::Flange, tf, false},
              {"top flange, toe", K::Toe, tf, false},
              {"top flange, upper face", K::Flange, tf, true},
-             {"web, outer face", K::Web, tw, false}};
+             {"web, outer face", K::Web, tw, false},
+             {"bottom flange, underside", K::Flange, tf, false, true}};
         break;
     case SectionFamily::L:
         c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2}, {{-b / 2 + tw, tf}, r},
@@ -91,8 +95,34 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"horizontal leg, upper face", K::Flange, tf, true},
              {"vertical leg, inner face", K::Web, tw, true},
              {"vertical leg, toe", K::Toe, tw, false},
-             {"vertical leg, outer face", K::Web, tw, false}};
+             {"vertical leg, outer face", K::Web, tw, false},
+             {"horizontal leg, underside", K::Flange, tf, false, true}};
         break;
+    }
+    // c and e describe the closed loop: the last edge (the table face in setup 1) runs from
+    // the last corner back to the first. Turned over, every corner goes to (-y, h - z) (a
+    // rotation: the loop stays counter-clockwise) and the edge now lying on the table (at
+    // z = 0: the top flange's / the vertical leg's upper end) leaves the chain, which starts
+    // at its right end. The table corners are taken sharp: an L's toe radius r2 at its foot is
+    // not in the outline (the torch cannot get under it).
+    if (turnedOver) {
+        for (Corner& k : c)
+            k.v = Vec2(-k.v.x(), h - k.v.y());
+        const size_t n = c.size();
+        size_t table = n;
+        for (size_t i = 0; i < n; ++i)
+            if (std::fabs(c[i].v.y()) < 1e-12 && std::fabs(c[(i + 1) % n].v.y()) < 1e-12) table = i;
+        std::vector<Corner> c2;
+        std::vector<Edge> e2;
+        for (size_t k = 1; k <= n; ++k) {
+            c2.push_back(c[(table + k) % n]);
+            if (k < n) e2.push_back(e[(table + k) % n]);
+        }
+        c2.front().r = c2.back().r = 0;
+        c = std::move(c2);
+        e = std::move(e2);
+    } else {
+        e.pop_back(); // the table face
     }
     // Round the corners: every corner of these sections is 90 deg, so a fillet of radius r
     // touches both edges at r from the corner and has its centre at v - r d_in + r d_out.
@@ -105,6 +135,7 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
         s.kind = e[i].kind;
         s.thickness_mm = e[i].thickness;
         s.groove_side = e[i].grooveSide;
+        s.former_table_face = e[i].tableFace;
         s.p0 = c[i].v + cutStart * d;
         s.p1 = c[i + 1].v - cutEnd * d;
         s.n0 = s.n1 = outward(d);
