@@ -103,8 +103,9 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
     // the last corner back to the first. Turned over, every corner goes to (-y, h - z) (a
     // rotation: the loop stays counter-clockwise) and the edge now lying on the table (at
     // z = 0: the top flange's / the vertical leg's upper end) leaves the chain, which starts
-    // at its right end. The table corners are taken sharp: an L's toe radius r2 at its foot is
-    // not in the outline (the torch cannot get under it).
+    // at its right end. The chain's last corner may keep a radius (an L's toe radius r2 at its
+    // foot): the outline then ends with that arc, down to the table.
+    const char* tableName = e.back().name;
     if (turnedOver) {
         for (Corner& k : c)
             k.v = Vec2(-k.v.x(), h - k.v.y());
@@ -118,7 +119,8 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
             c2.push_back(c[(table + k) % n]);
             if (k < n) e2.push_back(e[(table + k) % n]);
         }
-        c2.front().r = c2.back().r = 0;
+        tableName = e[table].name;
+        c2.front().r = 0; // sharp in every family (the top flange's / the leg's outer corner)
         c = std::move(c2);
         e = std::move(e2);
     } else {
@@ -141,14 +143,15 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
         s.n0 = s.n1 = outward(d);
         s.length = (s.p1 - s.p0).norm();
         segments_.push_back(s);
-        if (cutEnd > 0 && i + 1 < e.size()) {
-            const Vec2 dOut = dir(i + 1);
+        if (cutEnd > 0) {
+            const bool last = i + 1 == e.size(); // the fillet runs down to the table face
+            const Vec2 dOut = last ? Vec2((c.front().v - c.back().v).normalized()) : dir(i + 1);
             OutlineSegment f;
             // Counter-clockwise: a left turn is a convex corner (toe radius), a right turn a
             // concave one (root fillet).
             const bool convex = d.x() * dOut.y() - d.y() * dOut.x() > 0;
             f.name = std::string(convex ? "toe radius (" : "root fillet (") + e[i].name + " / " +
-                     e[i + 1].name + ")";
+                     (last ? tableName : e[i + 1].name) + ")";
             f.kind = FaceKind::Fillet;
             f.thickness_mm = std::min(e[i].thickness, e[i + 1].thickness);
             f.arc = true;
