@@ -245,6 +245,25 @@ TEST(SectionTurnover, ChannelsAndAnglesPlanTheirSecondSetup) {
     }
 }
 
+// Every catalogue entry with K-grooved flanges plans its setup 2, square and mitred both ways.
+TEST(SectionTurnover, EveryCatalogueEntryPlansItsSecondSetup) {
+    int total = 0, ok = 0;
+    for (const auto& d : sectionCatalogue())
+        for (double mitre : {0.0, 30.0, -30.0}) {
+            SectionSteelSpec s = defaultSectionSteelSpec();
+            s.section = d;
+            s.cut = {mitre, mitre / 2, {GrooveType::K, 30, 2}, {GrooveType::K, 30, 2}, 2};
+            const SteelPlan p = planEndCut(s);
+            ++total;
+            ok += p.ok;
+            EXPECT_TRUE(p.ok) << d.designation << " mitre " << mitre << ": " << p.problem;
+            EXPECT_LE(p.max_torch_error_mm, 1e-6) << d.designation;
+        }
+    std::printf("setup 2 (turned over, K 30 deg on the flanges): %d of %d plan (square, mitred "
+                "30/15 and -30/-15 deg, every catalogue entry)\n",
+                ok, total);
+}
+
 // Setup 2 of a section whose K groove is not on the flanges (V, Y, none; or K on the web only,
 // whose both faces setup 1 reaches) has nothing to cut: refused naming the key, by the
 // validation, the planner and the module, never an empty run.
