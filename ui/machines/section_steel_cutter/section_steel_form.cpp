@@ -287,7 +287,7 @@ SectionSteelEndCutForm::SectionSteelEndCutForm(JobEditor* editor, QWidget* paren
     setupNote_->setObjectName("setupNote");
     setupNote_->setWordWrap(true);
     fs->addRow(setupNote_);
-    alsoMark("end_cut.setup", setupBox);
+    // The box keeps its tooltip: only the combo is marked (marking clears a field's tooltip).
     mainLayout()->addWidget(setupBox);
     connect(setup_, &QComboBox::currentIndexChanged, this, [this] { enableGrooveFields(); });
     mainLayout()->addStretch(1);
