@@ -360,7 +360,8 @@ class TestGuiSectionSteel : public QObject {
             w.editor()->setJob(job);
         }
         // The page that says what is cut: the end cut for a mitre or groove, else the section.
-        w.parameters()->showVisibleTab(kind.isEmpty() ? 2 : 3);
+        // Setup 2: the End cut page (visible tab 2), where the setup is chosen.
+        w.parameters()->showVisibleTab(kind == "k_groove_setup2" ? 2 : kind.isEmpty() ? 2 : 3);
         w.resize(1600, 1000);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
