@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace cutcell::section_steel {
 namespace {
@@ -105,7 +106,7 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
     // z = 0: the top flange's / the vertical leg's upper end) leaves the chain, which starts
     // at its right end. The chain's last corner may keep a radius (an L's toe radius r2 at its
     // foot): the outline then ends with that arc, down to the table.
-    const char* tableName = e.back().name;
+    Edge tableEdge = e.back();
     if (turnedOver) {
         for (Corner& k : c)
             k.v = Vec2(-k.v.x(), h - k.v.y());
@@ -113,13 +114,14 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
         size_t table = n;
         for (size_t i = 0; i < n; ++i)
             if (std::fabs(c[i].v.y()) < 1e-12 && std::fabs(c[(i + 1) % n].v.y()) < 1e-12) table = i;
+        if (table == n) throw std::logic_error("turned section outline: no face on the table");
         std::vector<Corner> c2;
         std::vector<Edge> e2;
         for (size_t k = 1; k <= n; ++k) {
             c2.push_back(c[(table + k) % n]);
             if (k < n) e2.push_back(e[(table + k) % n]);
         }
-        tableName = e[table].name;
+        tableEdge = e[table];
         c2.front().r = 0; // sharp in every family (the top flange's / the leg's outer corner)
         c = std::move(c2);
         e = std::move(e2);
@@ -146,14 +148,15 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
         if (cutEnd > 0) {
             const bool last = i + 1 == e.size(); // the fillet runs down to the table face
             const Vec2 dOut = last ? Vec2((c.front().v - c.back().v).normalized()) : dir(i + 1);
+            const Edge& next = last ? tableEdge : e[i + 1];
             OutlineSegment f;
             // Counter-clockwise: a left turn is a convex corner (toe radius), a right turn a
             // concave one (root fillet).
             const bool convex = d.x() * dOut.y() - d.y() * dOut.x() > 0;
             f.name = std::string(convex ? "toe radius (" : "root fillet (") + e[i].name + " / " +
-                     (last ? tableName : e[i + 1].name) + ")";
+                     next.name + ")";
             f.kind = FaceKind::Fillet;
-            f.thickness_mm = std::min(e[i].thickness, e[i + 1].thickness);
+            f.thickness_mm = std::min(e[i].thickness, next.thickness);
             f.arc = true;
             f.radius = cutEnd;
             f.centre = c[i + 1].v - cutEnd * d + cutEnd * dOut;
