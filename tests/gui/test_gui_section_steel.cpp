@@ -201,6 +201,12 @@ class TestGuiSectionSteel : public QObject {
         w.editor()->setJob(job);
         QCOMPARE(setup->currentIndex(), 1);
         checkDraws(*ui, w.editor()->job());
+        cutcell::view3d::SceneModel model;
+        QString why;
+        QVERIFY2(ui->buildScene(w.editor()->job(), ui->plan(w.editor()->job(), {}), &model, &why),
+                 qPrintable(why));
+        QVERIFY2(QString::fromStdString(model.title).contains("setup 2: the section turned over"),
+                 model.title.c_str());
     }
 
     void badValueGivesItsMessage() {
@@ -353,10 +359,8 @@ class TestGuiSectionSteel : public QObject {
                 s.cut.flanges = {cutcell::section_steel::GrooveType::K, 35, 2};
                 s.cut.web = {cutcell::section_steel::GrooveType::K, 35, 2};
             }
-            if (kind == "k_groove_setup2") { // turned over: the bottom flange's underside
-                job.name += ", setup 2 (turned over)";
-                s.cut.setup = 2;
-            }
+            if (kind == "k_groove_setup2") // turned over: the bottom flange's underside
+                s.cut.setup = 2;           // (the scene's title says so)
             w.editor()->setJob(job);
         }
         // The page that says what is cut: the end cut for a mitre or groove, else the section.
