@@ -6,7 +6,8 @@
 // are drawn where the core's kinematics put their torches. With CUTCELL_STEEL_SCREENSHOT=<png>
 // (under xvfb-run) the window is saved mid-cut: the default square IPE end, or with
 // CUTCELL_STEEL_SCREENSHOT_JOB=mitre the IPE end mitred 30/15 deg, =k_groove that with K grooves
-// (the case fails with the planner's sentence while that job does not plan).
+// (the case fails with the planner's sentence while that job does not plan), =k_groove_setup2
+// its setup 2 (the section turned over, the bottom flange's underside bevelled).
 #include "sim_rig.h"
 
 #include "core/machine/machine_module.h"
@@ -161,6 +162,53 @@ class TestGuiSectionSteel : public QObject {
         QCOMPARE(specOf(w).cut.flanges.type, cutcell::section_steel::GrooveType::K);
     }
 
+    // end_cut.setup on the End cut page: its tooltip says what a setup is, the line under it
+    // what this job's setups do; setup 2 without a K groove on the flanges is marked with the
+    // core's sentence; a turned-over angle draws.
+    void setupIsOnTheEndCutPage() {
+        const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(kId);
+        MainWindow w(nullptr);
+        newSteelJob(w);
+        auto* setup = qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.setup"));
+        QVERIFY(setup);
+        QCOMPARE(setup->currentIndex(), 0);
+        auto* box = w.findChild<QWidget*>("setupBox");
+        QVERIFY(box);
+        QVERIFY2(box->toolTip().contains("turns the section over"), qPrintable(box->toolTip()));
+        auto* note = w.findChild<QLabel*>("setupNote");
+        QVERIFY(note);
+        QVERIFY2(note->text().contains("setup 1 cuts the whole end"), qPrintable(note->text()));
+        qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.flanges.groove"))
+            ->setCurrentIndex(3); // K
+        QVERIFY2(note->text().contains("Then turn the section over"), qPrintable(note->text()));
+        setup->setCurrentIndex(1);
+        QCOMPARE(specOf(w).cut.setup, 2);
+        QVERIFY(w.editor()->valid());
+        QVERIFY2(note->text().startsWith("Setup 2 of 2"), qPrintable(note->text()));
+        qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.flanges.groove"))
+            ->setCurrentIndex(1); // V: nothing left for setup 2
+        QVERIFY(!w.editor()->valid());
+        QVERIFY(setup->property("invalid").toBool());
+        QVERIFY2(formIssues(setup).contains("end_cut.setup = 2 (the section turned over): nothing "
+                                            "is left to cut"),
+                 qPrintable(formIssues(setup)));
+        qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.flanges.groove"))
+            ->setCurrentIndex(3);
+        QVERIFY(w.editor()->valid());
+        cutcell::Job job = w.editor()->job();
+        job.machine_spec.as<SectionSteelSpec>()->section =
+            *cutcell::section_steel::findSection("L 120x80x10");
+        w.editor()->setJob(job);
+        QCOMPARE(setup->currentIndex(), 1);
+        checkDraws(*ui, w.editor()->job());
+        cutcell::view3d::SceneModel model;
+        QString why;
+        QVERIFY2(ui->buildScene(w.editor()->job(), ui->plan(w.editor()->job(), {}), &model, &why),
+                 qPrintable(why));
+        QVERIFY2(QString::fromStdString(model.title).contains("setup 2: the section turned over"),
+                 model.title.c_str());
+    }
+
     void badValueGivesItsMessage() {
         MainWindow w(&cutcell::app::makeRig);
         newSteelJob(w);
@@ -300,21 +348,24 @@ class TestGuiSectionSteel : public QObject {
         MainWindow w(&cutcell::app::makeRig); // real time: the view must see the torch on
         newSteelJob(w);
         const QString kind = qEnvironmentVariable("CUTCELL_STEEL_SCREENSHOT_JOB");
-        if (kind == "mitre" || kind == "k_groove") {
+        if (kind == "mitre" || kind == "k_groove" || kind == "k_groove_setup2") {
             cutcell::Job job = w.editor()->job();
             auto& s = *job.machine_spec.as<SectionSteelSpec>();
             job.name = "IPE 300, mitred 30/15 deg";
             s.cut.mitre_vertical_deg = 30;
             s.cut.mitre_horizontal_deg = 15;
-            if (kind == "k_groove") {
+            if (kind != "mitre") {
                 job.name += ", K grooves 35 deg, root face 2 mm";
                 s.cut.flanges = {cutcell::section_steel::GrooveType::K, 35, 2};
                 s.cut.web = {cutcell::section_steel::GrooveType::K, 35, 2};
             }
+            if (kind == "k_groove_setup2") // turned over: the bottom flange's underside
+                s.cut.setup = 2;           // (the scene's title says so)
             w.editor()->setJob(job);
         }
         // The page that says what is cut: the end cut for a mitre or groove, else the section.
-        w.parameters()->showVisibleTab(kind.isEmpty() ? 2 : 3);
+        // Setup 2: the End cut page (visible tab 2), where the setup is chosen.
+        w.parameters()->showVisibleTab(kind == "k_groove_setup2" ? 2 : kind.isEmpty() ? 2 : 3);
         w.resize(1600, 1000);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

@@ -36,10 +36,23 @@ const char* toString(GrooveType g) {
     return "?";
 }
 
+namespace {
+// Turned over 180 deg about x, the bar's cut plane x = y tanV + (z - h/2) tanH reads, in the
+// turned coordinates y' = -y, z' = h - z: x = y' (-tanV) + (z' - h/2) (-tanH).
+double turnSign(const SectionSteelSpec& s) {
+    return s.cut.setup == 2 ? -1.0 : 1.0;
+}
+} // namespace
+
 EndCut::EndCut(const SectionSteelSpec& spec)
-    : spec_(spec), outline_(spec.section), tanV_(std::tan(deg2rad(spec.cut.mitre_vertical_deg))),
-      tanH_(std::tan(deg2rad(spec.cut.mitre_horizontal_deg))),
+    : spec_(spec), outline_(spec.section, spec.cut.setup == 2),
+      tanV_(turnSign(spec) * std::tan(deg2rad(spec.cut.mitre_vertical_deg))),
+      tanH_(turnSign(spec) * std::tan(deg2rad(spec.cut.mitre_horizontal_deg))),
       square_(spec.cut.mitre_vertical_deg == 0 && spec.cut.mitre_horizontal_deg == 0) {}
+
+bool EndCut::turnedOver() const {
+    return outline_.turnedOver();
+}
 
 double EndCut::planeX(double y, double z) const {
     return y * tanV_ + (z - spec_.section.h_mm / 2) * tanH_;
@@ -55,6 +68,9 @@ const GrooveSpec* EndCut::grooveOf(size_t segment) const {
                           : g.kind == FaceKind::Web  ? &spec_.cut.web
                                                      : nullptr;
     if (!s || s->type == GrooveType::None) return nullptr;
+    // Turned over (setup 2): only what setup 1 could not reach, the K groove's second bevel on
+    // the face that lay on the table; the other faces were bevelled in setup 1.
+    if (turnedOver()) return g.former_table_face && s->type == GrooveType::K ? s : nullptr;
     if ((s->type == GrooveType::V || s->type == GrooveType::Y) && !g.groove_side) return nullptr;
     return s;
 }
@@ -230,7 +246,8 @@ std::vector<CutPass> EndCut::passes(double dt) const {
         applyLean(pass, dt);
         out.push_back(std::move(pass));
     };
-    makePass("square", false, false, prims); // the path arm, in the (mitre) cut plane
+    // The path arm, in the (mitre) cut plane; turned over (setup 2) the end is already cut.
+    if (!turnedOver()) makePass("square", false, false, prims);
     // The groove arm bevels face by face (its torch cannot turn round the toes: turning the
     // torch in the cut plane swings its whole 2R arm); a joint move links the faces. A pass
     // starts and ends where the blend has reached kMinBevelDeg: below it the bevel lies within
@@ -244,10 +261,23 @@ std::vector<CutPass> EndCut::passes(double dt) const {
         const double trim =
             std::min(spec_.blend_mm * std::min(1.0, kMinBevelDeg / std::max(1e-9, gs->angle_deg)),
                      segs[i].length / 4);
-        makePass("groove " + segs[i].name, true, true,
+        makePass("groove " + segs[i].name + (turnedOver() ? " (setup 2, turned over)" : ""), true,
+                 true,
                  {{false, s0 + trim, s0 + segs[i].length - trim, 0, 0, segs[i].length - 2 * trim}});
     }
     return out;
+}
+
+std::string setupTwoProblem(const SectionSteelSpec& spec) {
+    if (spec.cut.setup != 2 || EndCut(spec).hasGroove()) return {};
+    const char* underside =
+        spec.section.family == SectionFamily::L ? "horizontal leg" : "bottom flange";
+    return std::string("end_cut.setup = 2 (the section turned over): nothing is left to cut - "
+                       "setup 2 cuts only the bevel on the underside of the ") +
+           underside +
+           " (on the conveyor in setup 1) that a K groove on the flanges needs, and "
+           "end_cut.flanges.groove = \"" +
+           toString(spec.cut.flanges.type) + "\"; plan setup 1 (end_cut.setup = 1)";
 }
 
 } // namespace cutcell::section_steel

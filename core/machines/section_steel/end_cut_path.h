@@ -4,7 +4,8 @@
 // the groove angle towards the bar end (in the plane normal to the cut edge). Pass "square"
 // separates the bar (tilt 0); pass "groove" follows the outline again with the bevel on the
 // faces that have one (the tilt ramps in and out over blend_mm; fillets and toes stay square).
-// At sharp corners (toes) the torch turns about its tip at reorient_deg_s.
+// At sharp corners (toes) the torch turns about its tip at reorient_deg_s. Setup 2 (section
+// turned over): only the groove passes of the bevels setup 1 could not reach.
 #include "core/common/types.h"
 #include "core/machines/section_steel/section_outline.h"
 #include "core/machines/section_steel/section_steel_spec.h"
@@ -43,6 +44,9 @@ class EndCut {
     double planeX(double y, double z) const;
     Vec3 planeNormal() const;
     bool square() const { return square_; }
+    // Setup 2 (end_cut.setup): the section turned over, its outline and cut plane mirrored
+    // (SectionOutline), only the bevels setup 1 could not cut (grooveOf), no square pass.
+    bool turnedOver() const;
     bool hasGroove() const;
     // The groove spec of an outline segment and whether this face is bevelled.
     const GrooveSpec* grooveOf(size_t segment) const;
@@ -64,5 +68,10 @@ class EndCut {
     double tanV_, tanH_;
     bool square_;
 };
+
+// Why setup 2 (end_cut.setup = 2) has nothing to cut for this spec, naming the keys; "" when
+// it has a bevel to cut or the spec is setup 1. Setup 2 exists for the K groove's second bevel
+// on the face that lies on the conveyor in setup 1.
+std::string setupTwoProblem(const SectionSteelSpec& spec);
 
 } // namespace cutcell::section_steel

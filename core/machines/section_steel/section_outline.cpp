@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace cutcell::section_steel {
 namespace {
@@ -18,6 +19,7 @@ struct Edge {
     FaceKind kind;
     double thickness;
     bool grooveSide;
+    bool tableFace = false;
 };
 
 Vec2 outward(const Vec2& d) {
@@ -46,13 +48,14 @@ const char* toString(FaceKind k) {
     return "?";
 }
 
-SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
+SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
+    : dims_(d), turned_(turnedOver) {
     // A tapered (UPN) flange is drawn parallel at the thickness of the same area: t is given
     // at b/2 from the web's back, the outstand's mean thickness is at (b + tw)/2.
     const double h = d.h_mm, b = d.b_mm, tw = d.tw_mm, r = d.r_mm, r2 = d.r2_mm;
     const double tf = d.tf_mm - d.slope_pct / 100 * tw / 2;
     std::vector<Corner> c;
-    std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1]; the last corner ends the chain
+    std::vector<Edge> e; // e[i] runs from c[i] to c[i + 1] (the last one back to c[0])
     using K = FaceKind;
     switch (d.family) {
     case SectionFamily::I:
@@ -69,7 +72,8 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"top flange, lower face -y", K::Flange, tf, false},
              {"web, face -y", K::Web, tw, false},
              {"bottom flange, upper face -y", K::Flange, tf, true},
-             {"bottom flange, toe -y", K::Toe, tf, false}};
+             {"bottom flange, toe -y", K::Toe, tf, false},
+             {"bottom flange, underside", K::Flange, tf, false, true}};
         break;
     case SectionFamily::U:
         c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2},
@@ -82,7 +86,8 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"top flange, lower face", K::Flange, tf, false},
              {"top flange, toe", K::Toe, tf, false},
              {"top flange, upper face", K::Flange, tf, true},
-             {"web, outer face", K::Web, tw, false}};
+             {"web, outer face", K::Web, tw, false},
+             {"bottom flange, underside", K::Flange, tf, false, true}};
         break;
     case SectionFamily::L:
         c = {{{b / 2, 0}, 0},        {{b / 2, tf}, r2}, {{-b / 2 + tw, tf}, r},
@@ -91,8 +96,37 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
              {"horizontal leg, upper face", K::Flange, tf, true},
              {"vertical leg, inner face", K::Web, tw, true},
              {"vertical leg, toe", K::Toe, tw, false},
-             {"vertical leg, outer face", K::Web, tw, false}};
+             {"vertical leg, outer face", K::Web, tw, false},
+             {"horizontal leg, underside", K::Flange, tf, false, true}};
         break;
+    }
+    // c and e describe the closed loop: the last edge (the table face in setup 1) runs from
+    // the last corner back to the first. Turned over, every corner goes to (-y, h - z) (a
+    // rotation: the loop stays counter-clockwise) and the edge now lying on the table (at
+    // z = 0: the top flange's / the vertical leg's upper end) leaves the chain, which starts
+    // at its right end. The chain's last corner may keep a radius (an L's toe radius r2 at its
+    // foot): the outline then ends with that arc, down to the table.
+    Edge tableEdge = e.back();
+    if (turnedOver) {
+        for (Corner& k : c)
+            k.v = Vec2(-k.v.x(), h - k.v.y());
+        const size_t n = c.size();
+        size_t table = n;
+        for (size_t i = 0; i < n; ++i)
+            if (std::fabs(c[i].v.y()) < 1e-12 && std::fabs(c[(i + 1) % n].v.y()) < 1e-12) table = i;
+        if (table == n) throw std::logic_error("turned section outline: no face on the table");
+        std::vector<Corner> c2;
+        std::vector<Edge> e2;
+        for (size_t k = 1; k <= n; ++k) {
+            c2.push_back(c[(table + k) % n]);
+            if (k < n) e2.push_back(e[(table + k) % n]);
+        }
+        tableEdge = e[table];
+        c2.front().r = 0; // sharp in every family (the top flange's / the leg's outer corner)
+        c = std::move(c2);
+        e = std::move(e2);
+    } else {
+        e.pop_back(); // the table face
     }
     // Round the corners: every corner of these sections is 90 deg, so a fillet of radius r
     // touches both edges at r from the corner and has its centre at v - r d_in + r d_out.
@@ -105,21 +139,24 @@ SectionOutline::SectionOutline(const SectionDims& d) : dims_(d) {
         s.kind = e[i].kind;
         s.thickness_mm = e[i].thickness;
         s.groove_side = e[i].grooveSide;
+        s.former_table_face = e[i].tableFace;
         s.p0 = c[i].v + cutStart * d;
         s.p1 = c[i + 1].v - cutEnd * d;
         s.n0 = s.n1 = outward(d);
         s.length = (s.p1 - s.p0).norm();
         segments_.push_back(s);
-        if (cutEnd > 0 && i + 1 < e.size()) {
-            const Vec2 dOut = dir(i + 1);
+        if (cutEnd > 0) {
+            const bool last = i + 1 == e.size(); // the fillet runs down to the table face
+            const Vec2 dOut = last ? Vec2((c.front().v - c.back().v).normalized()) : dir(i + 1);
+            const Edge& next = last ? tableEdge : e[i + 1];
             OutlineSegment f;
             // Counter-clockwise: a left turn is a convex corner (toe radius), a right turn a
             // concave one (root fillet).
             const bool convex = d.x() * dOut.y() - d.y() * dOut.x() > 0;
             f.name = std::string(convex ? "toe radius (" : "root fillet (") + e[i].name + " / " +
-                     e[i + 1].name + ")";
+                     next.name + ")";
             f.kind = FaceKind::Fillet;
-            f.thickness_mm = std::min(e[i].thickness, e[i + 1].thickness);
+            f.thickness_mm = std::min(e[i].thickness, next.thickness);
             f.arc = true;
             f.radius = cutEnd;
             f.centre = c[i + 1].v - cutEnd * d + cutEnd * dOut;

@@ -5,6 +5,10 @@
 // y = -b/2, horizontal leg on the table. The outline runs counter-clockwise (material on its
 // left) from the right end of the table face round to its left end: straight faces and the
 // root fillets (arcs); the face on the table is not part of it (the torch cannot get there).
+// Turned over (setup 2, end_cut.setup): the same section turned 180 deg about its long axis,
+// (y, z) -> (-y, h - z): I/H look the same, U has its web at y = +b/2, an L stands on the toe
+// of its vertical leg with the horizontal leg on top; the face that lay on the table (the
+// underside of the bottom flange / horizontal leg) is now in the outline, on top.
 #include "core/machines/section_steel/section_catalogue.h"
 
 #include <Eigen/Core>
@@ -31,6 +35,8 @@ struct OutlineSegment {
     // Which side of the plate: one-sided grooves (V, Y) are made from the upper faces of
     // flanges and legs and the +y face of the web.
     bool groove_side = false;
+    // Turned over: the face that lay on the table in setup 1 (now on top).
+    bool former_table_face = false;
 };
 
 struct OutlinePoint {
@@ -40,8 +46,9 @@ struct OutlinePoint {
 
 class SectionOutline {
   public:
-    explicit SectionOutline(const SectionDims& d);
+    explicit SectionOutline(const SectionDims& d, bool turnedOver = false);
     const SectionDims& dims() const { return dims_; }
+    bool turnedOver() const { return turned_; }
     const std::vector<OutlineSegment>& segments() const { return segments_; }
     double length() const { return length_; }
     // Area enclosed by the outline and the table face (mm^2), arcs exact.
@@ -60,6 +67,7 @@ class SectionOutline {
 
   private:
     SectionDims dims_;
+    bool turned_ = false;
     std::vector<OutlineSegment> segments_;
     std::vector<double> starts_;
     std::vector<Vec2> polygon_;

@@ -4,6 +4,7 @@
 #include "core/job/default_job.h"
 #include "core/job/issue_checker.h"
 #include "core/machines/section_steel/dstv/dstv_import.h"
+#include "core/machines/section_steel/end_cut_path.h"
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_program.h"
 #include "core/machines/section_steel/section_steel_section.h"
@@ -83,6 +84,12 @@ bool SectionSteelModule::supportsCanOpen(std::string*) const {
 MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText) const {
     MachinePlan out;
     const SectionSteelSpec& s = specOf(job);
+    if (const std::string why = setupTwoProblem(s); !why.empty()) {
+        out.status = PlanStatus::Infeasible; // never an empty run
+        out.problem = why;
+        out.summary = why;
+        return out;
+    }
     auto plan = std::make_shared<SteelPlan>(planEndCut(s));
     out.data = plan;
     const std::string name = s.section.designation.empty()
@@ -95,10 +102,19 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText)
     out.summary = formatC("%s, mitre %.1f/%.1f deg, %s, %.1f mm at %.2f mm/s (%.1f s)",
                           name.c_str(), s.cut.mitre_vertical_deg, s.cut.mitre_horizontal_deg,
                           passes.c_str(), plan->length_mm, s.speed_mm_s, plan->cut_time_s);
-    // The face on the conveyor is not in the outline: a K groove there gets one side only.
-    if (s.cut.flanges.type == GrooveType::K)
-        out.summary += "; K groove: the underside of the bottom flange (on the conveyor) is not "
-                       "bevelled - turn the bar over and cut that side in a second run";
+    // The face on the conveyor is not in setup 1's outline: a K groove there gets its second
+    // bevel in setup 2, after the operator has turned the section over.
+    const char* plate = s.section.family == SectionFamily::L ? "horizontal leg" : "bottom flange";
+    if (s.cut.setup == 1 && s.cut.flanges.type == GrooveType::K)
+        out.summary += formatC("; setup 1 of 2: K groove - the underside of the %s (on the "
+                               "conveyor) is not bevelled here: turn the section over (180 deg "
+                               "about its long axis) and plan setup 2 (end_cut.setup = 2)",
+                               plate);
+    if (s.cut.setup == 2)
+        out.summary = formatC("setup 2 of 2 (section turned over 180 deg about its long axis, the "
+                              "underside of the %s on top; mitres in the cell %.1f/%.1f deg): ",
+                              plate, -s.cut.mitre_vertical_deg, -s.cut.mitre_horizontal_deg) +
+                      out.summary;
     if (!plan->ok) {
         out.status = PlanStatus::Infeasible;
         out.problem = plan->problem;

@@ -276,7 +276,10 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
         plan.length_mm += pass.length_mm;
     }
     plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2;
-    if (plan.knots.size() < 2 && plan.problem.empty()) plan.problem = "the cut has no path";
+    if (plan.knots.size() < 2 && plan.problem.empty()) {
+        plan.problem = setupTwoProblem(spec);
+        if (plan.problem.empty()) plan.problem = "the cut has no path";
+    }
     if (plan.ok) {
         plan.spline = JointSpline(plan.knots, plan.dt);
         plan.cut_time_s = plan.spline.duration();

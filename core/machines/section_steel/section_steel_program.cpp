@@ -79,10 +79,12 @@ std::string steelPathCsv(const SectionSteelSpec& spec, const SteelPlan& plan) {
         if (info.pass < 0) continue;
         const CutPass& pass = plan.passes[static_cast<size_t>(info.pass)];
         const TorchTarget& t = pass.samples[info.sample];
-        std::string face = cut.outline().segments()[t.segment].name;
-        for (char& c : face)
-            if (c == ',') c = ';';
-        out += formatC("%s,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.4f", pass.name.c_str(),
+        // Names hold commas ("top flange, upper face"): ';' in the CSV's text columns.
+        std::string face = cut.outline().segments()[t.segment].name, passName = pass.name;
+        for (std::string* text : {&face, &passName})
+            for (char& c : *text)
+                if (c == ',') c = ';';
+        out += formatC("%s,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.4f", passName.c_str(),
                        info.sample, face.c_str(), t.s_mm, t.p.x(), t.p.y(), t.p.z(), t.t.x(),
                        t.t.y(), t.t.z(), rad2deg(t.tilt_rad));
         for (int i = 0; i < kSteelAxes; ++i)

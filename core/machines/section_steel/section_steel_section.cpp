@@ -1,5 +1,6 @@
 #include "core/machines/section_steel/section_steel_section.h"
 
+#include "core/machines/section_steel/end_cut_path.h"
 #include "core/machines/section_steel/section_outline.h"
 
 #include <cmath>
@@ -26,6 +27,20 @@ GrooveSpec readGroove(SectionReader& parent, const char* key) {
 json::Value writeGroove(const GrooveSpec& g) {
     return json::Object{
         {"groove", toString(g.type)}, {"angle_deg", g.angle_deg}, {"root_face_mm", g.root_face_mm}};
+}
+
+// end_cut.setup: 1 (as loaded) or 2 (turned over); anything else is refused by value.
+int readSetup(SectionReader& c) {
+    const json::Value* v = c.get("setup");
+    if (!v) return 1;
+    const double x = v->isNumber() ? v->asNumber() : std::nan("");
+    if (!(x >= 1 && x <= kLastSetup && x == std::floor(x)))
+        throw JobError(c.key("setup") + " = " + (v->isNumber() ? num(x) : v->typeName()) +
+                       " is not a setup: 1 (the section as loaded) or " +
+                       std::to_string(kLastSetup) +
+                       " (turned over 180 deg about its long axis), range [1, " +
+                       std::to_string(kLastSetup) + "]");
+    return static_cast<int>(x);
 }
 
 template <size_t N>
@@ -117,6 +132,7 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
         s.cut.mitre_horizontal_deg = c.number("mitre_horizontal_deg", "deg", 0);
         s.cut.flanges = readGroove(c, "flanges");
         s.cut.web = readGroove(c, "web");
+        s.cut.setup = readSetup(c); // absent in older jobs: 1
         c.finish();
     }
     if (m.has("motion")) {
@@ -185,7 +201,8 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
     out.emplace_back("end_cut", json::Object{{"mitre_vertical_deg", s.cut.mitre_vertical_deg},
                                              {"mitre_horizontal_deg", s.cut.mitre_horizontal_deg},
                                              {"flanges", writeGroove(s.cut.flanges)},
-                                             {"web", writeGroove(s.cut.web)}});
+                                             {"web", writeGroove(s.cut.web)},
+                                             {"setup", s.cut.setup}});
     out.emplace_back("motion", json::Object{{"speed_mm_s", s.speed_mm_s},
                                             {"ramp_s", s.ramp_s},
                                             {"knot_spacing_mm", s.knot_spacing_mm},
@@ -239,6 +256,11 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
         if (g.g.type != GrooveType::V)
             c.range(k + ".root_face_mm", g.g.root_face_mm, 0, g.thickness, "mm");
     }
+    if (s.cut.setup < 1 || s.cut.setup > kLastSetup)
+        c.add("end_cut.setup", "end_cut.setup = " + std::to_string(s.cut.setup) +
+                                   " is outside [1, " + std::to_string(kLastSetup) + "]");
+    else if (const std::string why = setupTwoProblem(s); !why.empty())
+        c.add("end_cut.setup", why);
     c.positive("motion.speed_mm_s", s.speed_mm_s, 0.1, 100, "mm/s");
     c.range("motion.ramp_s", s.ramp_s, 0, 10, "s");
     c.positive("motion.knot_spacing_mm", s.knot_spacing_mm, 0.1, 50, "mm");

@@ -32,7 +32,15 @@ struct EndCutSpec {
     double mitre_horizontal_deg = 0; // about y (the cut line on the web tilts in elevation)
     GrooveSpec flanges;              // flanges (angles: the horizontal leg)
     GrooveSpec web;                  // web (angles: the vertical leg)
+    // Setup (end_cut.setup): 1 = the section as loaded (underside on the conveyor): the square
+    // or mitred cut and every bevel the torch reaches. 2 = the section turned over by the
+    // operator, 180 deg about its long axis (y, z -> -y, h - z; the mitres change sign in the
+    // cell's frame): only the bevel that setup 1 could not cut, the underside of the bottom
+    // flange (angles: horizontal leg) of a K groove on the flanges.
+    int setup = 1;
 };
+
+inline constexpr int kLastSetup = 2;
 
 struct JointLimit {
     double min_deg = -180, max_deg = 180;

@@ -265,7 +265,43 @@ SectionSteelEndCutForm::SectionSteelEndCutForm(JobEditor* editor, QWidget* paren
         mainLayout()->addWidget(box);
         connect(type_[g], &QComboBox::currentIndexChanged, this, [this] { enableGrooveFields(); });
     }
+
+    // The setup: a K groove on the flanges needs a bevel on the face lying on the conveyor.
+    auto* setupBox = new QGroupBox(tr("Setup (turning the section over)"), this);
+    setupBox->setObjectName("setupBox");
+    const QString why = setupToolTip();
+    setupBox->setToolTip(why); // shown while the field has no issue tooltip of its own
+    auto* fs = new QFormLayout(setupBox);
+    setup_ = bindChoice(
+        "end_cut.setup",
+        {tr("1 - as loaded (underside on the conveyor)"),
+         tr("2 - turned over 180° about its long axis")},
+        [](const Job& j) {
+            const SectionSteelSpec* s = specOf(j);
+            return s ? s->cut.setup - 1 : 0;
+        },
+        [](Job& j, int i) { spec(j).cut.setup = i + 1; });
+    addRow(fs, tr("Setup"), setup_, "");
+    if (QWidget* label = fs->labelForField(setup_)) label->setToolTip(why);
+    setupNote_ = new QLabel(setupBox);
+    setupNote_->setObjectName("setupNote");
+    setupNote_->setWordWrap(true);
+    fs->addRow(setupNote_);
+    // The box keeps its tooltip: only the combo is marked (marking clears a field's tooltip).
+    mainLayout()->addWidget(setupBox);
+    connect(setup_, &QComboBox::currentIndexChanged, this, [this] { enableGrooveFields(); });
     mainLayout()->addStretch(1);
+}
+
+QString SectionSteelEndCutForm::setupToolTip() {
+    return tr("end_cut.setup - 1: the section as loaded, its underside on the conveyor: the end "
+              "is cut and every face the torches reach is bevelled. A K groove (double bevel) on "
+              "the flanges also needs a bevel on the underside of the bottom flange (angles: the "
+              "horizontal leg), which lies on the conveyor. After setup 1 the operator turns the "
+              "section over, 180° about its long axis, and runs setup 2: it cuts only that "
+              "bevel, on the turned section (a channel's web and an angle's vertical leg change "
+              "sides; the mitres are mirrored in the cell). Setup 2 without a K groove on the "
+              "flanges has nothing to cut and is refused.");
 }
 
 void SectionSteelEndCutForm::reloadExtra(const Job&) {
@@ -279,6 +315,16 @@ void SectionSteelEndCutForm::enableGrooveFields() {
         // V has none, but a left-over value must stay editable to clear it (it is refused).
         rootFace_[g]->setEnabled(t != GrooveType::None);
     }
+    // What the job's setups do, in a sentence under the choice.
+    if (!setup_ || !setupNote_) return; // during construction
+    const bool k = static_cast<GrooveType>(type_[0]->currentIndex()) == GrooveType::K;
+    const bool turned = setup_->currentIndex() == 1;
+    setupNote_->setText(
+        !k       ? tr("No K groove on the flanges: setup 1 cuts the whole end.")
+        : turned ? tr("Setup 2 of 2: the section lies turned over; only the bevel on the underside "
+                      "of the bottom flange (angles: horizontal leg), now on top, is cut.")
+                 : tr("Setup 1 of 2: the underside of the bottom flange (angles: horizontal leg) "
+                      "lies on the conveyor. Then turn the section over and run setup 2."));
 }
 
 } // namespace CutCell::ui

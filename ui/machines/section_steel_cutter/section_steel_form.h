@@ -40,8 +40,9 @@ class SectionSteelSectionForm : public JobForm {
     bool refreshing_ = false;
 };
 
-// The end cut: mitres about both section axes and the groove of the flanges and of the web
-// (type V / Y / K after ISO 9692-1, bevel angle, root face).
+// The end cut: mitres about both section axes, the groove of the flanges and of the web
+// (type V / Y / K after ISO 9692-1, bevel angle, root face) and the setup (end_cut.setup: 1 as
+// loaded, 2 turned over for a K groove's bevel on the face that lay on the conveyor).
 class SectionSteelEndCutForm : public JobForm {
     Q_OBJECT
   public:
@@ -50,9 +51,14 @@ class SectionSteelEndCutForm : public JobForm {
   protected:
     void reloadExtra(const cutcell::Job& job) override;
 
+    // What a setup is and why (the setup field's tooltip).
+    static QString setupToolTip();
+
   private:
     void enableGrooveFields();
     QComboBox* type_[2] = {};          // flanges, web
+    QComboBox* setup_ = nullptr;       // end_cut.setup - 1
+    QLabel* setupNote_ = nullptr;      // what the job's setups do
     QDoubleSpinBox* angle_[2] = {};    // deg
     QDoubleSpinBox* rootFace_[2] = {}; // mm
 };

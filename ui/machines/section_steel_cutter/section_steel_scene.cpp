@@ -114,6 +114,7 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
 
     SceneModel m;
     m.title = job.name.empty() ? "Section-steel cutter" : job.name;
+    if (spec.cut.setup == 2) m.title += "  -  setup 2: the section turned over";
     if (plan && !plan->ok) m.title += "  -  NOT feasible: " + plan->problem;
     m.axisCount = section_steel::kSteelAxes;
     m.chuckAxis = -1;      // the section lies still; the arms move
