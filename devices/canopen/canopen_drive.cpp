@@ -43,6 +43,11 @@ DriveFeedback CanOpenDrive::read(double) {
     const auto goal = static_cast<DriveGoal>(shared_.goal.load(std::memory_order_acquire));
     const bool configured = shared_.configured.load(std::memory_order_acquire);
     fb.position = shared_.actual_counts.load(std::memory_order_acquire) / countsPerAxisUnit_;
+    // Loaded after the position: as new as the position's tag or newer (the age reads low).
+    const std::uint64_t answered = shared_.tpdo_seq.load(std::memory_order_relaxed);
+    // On time: the TPDO answered the SYNC sent after the last write (answered == writes_).
+    fb.age_cycles = static_cast<std::uint8_t>(
+        answered > 0 && writes_ > answered ? std::min<std::uint64_t>(writes_ - answered, 255) : 0);
     fb.velocity = shared_.velocity_counts_s.load(std::memory_order_acquire) / countsPerAxisUnit_;
     fb.torque_ratio = shared_.torque_permille.load(std::memory_order_relaxed) / 1000.0;
     if (masterFault != 0 || s == Cia402State::Fault || s == Cia402State::FaultReactionActive) {
@@ -73,6 +78,7 @@ DriveFeedback CanOpenDrive::read(double) {
 void CanOpenDrive::write(double targetPosition) {
     const double counts =
         std::clamp(std::round(targetPosition * countsPerAxisUnit_), -2147483648.0, 2147483647.0);
+    countWrite();
     shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
                                 std::memory_order_release);
     postSync();
@@ -85,9 +91,15 @@ void CanOpenDrive::writeTorque(double targetTorque) {
         rated > 0 && std::isfinite(targetTorque)
             ? std::clamp(std::round(targetTorque / rated * 1000), -32768.0, 32767.0)
             : 0.0;
+    countWrite();
     shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)),
                                 std::memory_order_release);
     postSync();
+}
+
+// Before the target's release store: the master reads the target, then the sequence.
+void CanOpenDrive::countWrite() {
+    shared_.write_seq.store(++writes_, std::memory_order_relaxed);
 }
 
 void CanOpenDrive::postSync() {

@@ -6,6 +6,7 @@
 // master thread (eventfd -> QSocketNotifier) adds jitter. stats() reports the jitter measured
 // at the moment each SYNC is written, which is what the drives see.
 #include "devices/canopen/canopen_master.h"
+#include "devices/canopen/thread_priority.h"
 
 #include "core/job/job.h"
 #include "devices/canopen/bus_load.h"
@@ -130,7 +131,12 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     m.context->moveToThread(m.thread.get());
     m.thread->start(QThread::TimeCriticalPriority);
     QMetaObject::invokeMethod(
-        m.context, [&m] { m.openDevice(); }, Qt::QueuedConnection);
+        m.context,
+        [&m] {
+            raiseCallingThreadToFifo(kMasterThreadPriority); // best effort (thread_priority.h)
+            m.openDevice();
+        },
+        Qt::QueuedConnection);
     // Wait for the connection and the listening. This thread may host the virtualcan bus (its
     // first client lives here, e.g. a GUI or a test): keep its events flowing meanwhile, or
     // nothing moves on the bus and the listening hears a silent bus.

@@ -406,6 +406,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.velocity_counts_s.store((t.actual_counts - r.previous_actual) / cfg.period_s,
                                   std::memory_order_relaxed);
         r.previous_actual = t.actual_counts;
+        s.tpdo_seq.store(r.answered(), std::memory_order_relaxed); // published by the next store
         s.actual_counts.store(t.actual_counts, std::memory_order_release);
         s.torque_permille.store(t.torque_permille, std::memory_order_relaxed);
         s.tpdo_ns.store(now, std::memory_order_release);
@@ -454,6 +455,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         } else if (nmt == NmtState::Operational && r.phase == StartupPhase::WaitOperational) {
             r.phase = StartupPhase::Running;
             r.tpdo_cycle = cycles.load(std::memory_order_relaxed);
+            r.unansweredCount = 0; // SYNCs from now on
             s.master_fault.store(0, std::memory_order_release);
             {
                 std::lock_guard lock(mutex);
@@ -556,8 +558,18 @@ void CanOpenMaster::Impl::onWake() {
 }
 
 void CanOpenMaster::Impl::onSyncDue() {
-    if (drain(syncFd) == 0) return;
-    runCycle(steadyNs());
+    const std::uint64_t due = drain(syncFd);
+    if (due == 0) return;
+    // Paced by the engine, one SYNC per engine cycle even when this thread was held up and
+    // several are due: the drives' cycle is the engine's (a simulated drive moves one period per
+    // SYNC; one SYNC for three engine cycles left it two periods behind the engine's time, a
+    // following error the drive never had). Paced by the clock (Internal): one, late.
+    const std::uint64_t syncs = cfg.sync == SyncSource::LastDriveWrite
+                                    ? std::min<std::uint64_t>(due, NodeRuntime::kMaxUnanswered)
+                                    : 1;
+    const std::int64_t now = steadyNs();
+    for (std::uint64_t k = 0; k < syncs; ++k)
+        runCycle(now);
 }
 
 void CanOpenMaster::Impl::runCycle(std::int64_t now) {
@@ -572,6 +584,8 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
         NodeShared& s = shared[i];
         const std::uint16_t c = controlwordFor(i);
         const std::uint64_t tagged = s.tagged_target.load(std::memory_order_acquire);
+        // Read after the target: the sequence is that of this target or a later one.
+        rt[i].syncSent(s.write_seq.load(std::memory_order_relaxed));
         const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
         const bool current = enabled && NodeShared::epochOf(tagged) ==
                                             s.enable_epoch.load(std::memory_order_acquire);
