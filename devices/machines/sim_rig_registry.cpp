@@ -18,8 +18,10 @@ const struct {
     const char* machine;
     Factory make;
 } kRigs[] = {
-    {kPipeRobotId, makePipeRobotSimRig},       {kProfileCutterId, makeProfileCutterSimRig},
-    {kQuickReturnId, makeQuickReturnSimRig},   {kFlyingSawId, makeFlyingSawSimRig},
+    {kPipeRobotId, makePipeRobotSimRig},
+    {kProfileCutterId, makeProfileCutterSimRig},
+    {kQuickReturnId, makeQuickReturnSimRig},
+    {kFlyingSawId, makeFlyingSawSimRig},
     {kSectionSteelId, makeSectionSteelSimRig},
 };
 

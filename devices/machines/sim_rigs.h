@@ -9,6 +9,7 @@ std::unique_ptr<MachineSimRig> makeFlyingSawSimRig(const Job& job, const MotionP
 std::unique_ptr<MachineSimRig> makeProfileCutterSimRig(const Job& job,
                                                        const MotionProgram& program);
 std::unique_ptr<MachineSimRig> makeQuickReturnSimRig(const Job& job, const MotionProgram& program);
-std::unique_ptr<MachineSimRig> makeSectionSteelSimRig(const Job& job, const MotionProgram& program);
+std::unique_ptr<MachineSimRig> makeSectionSteelSimRig(const Job& job,
+                                                      const MotionProgram& program);
 
 } // namespace cutcell
