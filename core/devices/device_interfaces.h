@@ -69,6 +69,7 @@ struct SensorReading {
     double velocity = 0;
     bool valid = false; // false: no fresh, trustworthy value (cable, bus loss, scale error)
     std::uint32_t fault_code = 0;
+    std::uint8_t age_cycles = 0; // cycles older than usual (a late TPDO), as DriveFeedback's
 };
 
 class SensorInput {

@@ -27,10 +27,11 @@ class MasterFilter {
         x_ = position;
         v_ = velocity;
     }
-    // One measurement per period T; returns the filtered position.
-    double update(double z, double T) {
+    // One measurement per period T; returns the filtered position. A measurement `age` periods
+    // old (late over a bus, or the same one again) is compared with the estimate of its time.
+    double update(double z, double T, int age = 0) {
         const double predicted = x_ + v_ * T;
-        const double r = z - predicted;
+        const double r = z - (predicted - age * v_ * T);
         x_ = predicted + alpha_ * r;
         v_ += beta_ / T * r;
         return x_;

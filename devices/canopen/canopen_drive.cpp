@@ -78,10 +78,7 @@ DriveFeedback CanOpenDrive::read(double) {
 void CanOpenDrive::write(double targetPosition) {
     const double counts =
         std::clamp(std::round(targetPosition * countsPerAxisUnit_), -2147483648.0, 2147483647.0);
-    countWrite();
-    shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
-                                std::memory_order_release);
-    postSync();
+    publish(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)));
 }
 
 void CanOpenDrive::writeTorque(double targetTorque) {
@@ -91,15 +88,17 @@ void CanOpenDrive::writeTorque(double targetTorque) {
         rated > 0 && std::isfinite(targetTorque)
             ? std::clamp(std::round(targetTorque / rated * 1000), -32768.0, 32767.0)
             : 0.0;
-    countWrite();
-    shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)),
-                                std::memory_order_release);
-    postSync();
+    publish(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)));
 }
 
-// Before the target's release store: the master reads the target, then the sequence.
-void CanOpenDrive::countWrite() {
-    shared_.write_seq.store(++writes_, std::memory_order_relaxed);
+// This cycle's target: in the ring under its sequence number, then the number (release: the
+// master reads the number, then the target), then as the newest; then the SYNC.
+void CanOpenDrive::publish(std::uint64_t tagged) {
+    ++writes_;
+    shared_.targets[writes_ % NodeShared::kTargetRing].store(tagged, std::memory_order_relaxed);
+    shared_.write_seq.store(writes_, std::memory_order_release);
+    shared_.tagged_target.store(tagged, std::memory_order_release);
+    postSync();
 }
 
 void CanOpenDrive::postSync() {

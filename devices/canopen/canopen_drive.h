@@ -48,7 +48,7 @@ class CanOpenDrive final : public AxisDrive {
     AxisCommandMode mode_;
     std::uint32_t seenEpoch_ = 0; // enable epoch last reported to the engine as Enabled
     std::uint64_t writes_ = 0;    // targets written (one per engine cycle)
-    void countWrite();
+    void publish(std::uint64_t taggedTarget);
 };
 
 // Fault codes the master raises itself (DriveFeedback::fault_code), beside EMCY codes and SDO

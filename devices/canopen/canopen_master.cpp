@@ -71,6 +71,11 @@ CanOpenMaster::CanOpenMaster(CanOpenMasterConfig config) : impl_(std::make_uniqu
             last && m.cfg.sync == SyncSource::LastDriveWrite ? m.syncFd : -1, n.mode));
         m.countsPerAxisUnit.push_back(m.drives.back()->countsPerAxisUnit());
     }
+    // Encoders answer the SYNCs the last drive's writes post: dated by that drive's cycles.
+    m.clockNode = lastDrive;
+    if (lastDrive < m.cfg.nodes.size())
+        for (auto& e : m.encoders)
+            e->setCycleClock(&m.shared[lastDrive].write_seq);
     m.pdoTimeoutNs =
         std::max<std::int64_t>(100'000'000, static_cast<std::int64_t>(10 * m.cfg.period_s * 1e9));
     m.heartbeatTimeoutNs = static_cast<std::int64_t>(m.cfg.heartbeat_timeout_s * 1e9);

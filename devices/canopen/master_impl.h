@@ -75,6 +75,7 @@ struct CanOpenMaster::Impl {
     std::vector<NodeRuntime> rt;                           // [master]
     int wakeFd = -1;                                       // commands and urgent stops
     int syncFd = -1;                                       // one count per cycle to run
+    size_t clockNode = 0; // the drive whose writes post SYNC (nodes.size(): none)
     std::int64_t heartbeatTimeoutNs = 0;
     std::uint16_t heartbeatProducerMs = 100;
     double load = 0;
@@ -130,6 +131,7 @@ struct CanOpenMaster::Impl {
     void onFrames();
     void onFrame(const CanFrame& f, std::int64_t now);
     void noteCycleAnswer(size_t i);
+    std::uint64_t cycleTarget(size_t i);
     void onErrorFrame(std::uint32_t errorClass, const QByteArray& payload);
     void onStateChanged(QCanBusDevice::CanBusDeviceState s);
     void onWake();

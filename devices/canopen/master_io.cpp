@@ -391,6 +391,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.velocity_counts_s.store((encoderCounts - r.previous_actual) / cfg.period_s,
                                   std::memory_order_relaxed);
         r.previous_actual = encoderCounts;
+        s.tpdo_seq.store(r.answered(), std::memory_order_relaxed); // published by the next store
         s.actual_counts.store(encoderCounts, std::memory_order_release);
         s.tpdo_ns.store(now, std::memory_order_release);
         s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
@@ -572,6 +573,24 @@ void CanOpenMaster::Impl::onSyncDue() {
         runCycle(now);
 }
 
+// The target for this SYNC. Paced by the engine (one SYNC per write): the engine cycle after
+// the one sent last while the ring still has it (several SYNCs due at once: each cycle's own).
+// Paced by the clock: the newest. Notes the SYNC's cycle for pairing the answers.
+std::uint64_t CanOpenMaster::Impl::cycleTarget(size_t i) {
+    NodeShared& s = shared[i];
+    NodeRuntime& r = rt[i];
+    const std::uint64_t newest = s.write_seq.load(std::memory_order_acquire);
+    std::uint64_t seq = r.sync_seq + 1;
+    if (cfg.sync != SyncSource::LastDriveWrite || r.sync_seq == 0 || seq > newest ||
+        newest - seq >= NodeShared::kTargetRing - 1)
+        seq = newest;
+    const std::uint64_t tagged =
+        seq == 0 ? s.tagged_target.load(std::memory_order_acquire)
+                 : s.targets[seq % NodeShared::kTargetRing].load(std::memory_order_relaxed);
+    r.syncSent(seq);
+    return tagged;
+}
+
 void CanOpenMaster::Impl::runCycle(std::int64_t now) {
     if (!device || device->state() != QCanBusDevice::ConnectedState) return;
     for (size_t i = 0; i < shared.size(); ++i) {
@@ -583,9 +602,7 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
         }
         NodeShared& s = shared[i];
         const std::uint16_t c = controlwordFor(i);
-        const std::uint64_t tagged = s.tagged_target.load(std::memory_order_acquire);
-        // Read after the target: the sequence is that of this target or a later one.
-        rt[i].syncSent(s.write_seq.load(std::memory_order_relaxed));
+        const std::uint64_t tagged = cycleTarget(i);
         const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
         const bool current = enabled && NodeShared::epochOf(tagged) ==
                                             s.enable_epoch.load(std::memory_order_acquire);
@@ -601,6 +618,11 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
                                             : s.actual_counts.load(std::memory_order_acquire);
         send(encodeRpdo1(cfg.nodes[i].node, {c, target}));
     }
+    // The encoders answer this SYNC too: the engine cycle it belongs to, for their TPDOs.
+    if (clockNode < rt.size())
+        for (size_t i = 0; i < shared.size(); ++i)
+            if (cfg.nodes[i].encoder && rt[i].phase == StartupPhase::Running)
+                rt[i].syncSent(rt[clockNode].sync_seq);
     send(encodeSync());
     cycles.fetch_add(1, std::memory_order_release);
     if (lastSyncNs != 0) {

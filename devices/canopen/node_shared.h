@@ -4,6 +4,7 @@
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/nmt.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <unistd.h>
@@ -25,8 +26,13 @@ struct NodeShared {
     // bits 63..32 epoch, 31..0 counts. The master uses a target only if its epoch is current,
     // so set-points written before the drive reported Enabled never reach it (no jump).
     std::atomic<std::uint64_t> tagged_target{0};
-    // Targets written so far (one per engine cycle): the master tags each SYNC with it.
+    // Targets written so far (one per engine cycle) and the last kTargetRing of them (tagged as
+    // above, index seq % kTargetRing): when several cycles' SYNCs are due at once (this
+    // thread's partner was held up) the master sends each cycle's own target with its SYNC, so
+    // the drives get the engine's sequence of targets, only closer together.
+    static constexpr std::uint64_t kTargetRing = 16;
     std::atomic<std::uint64_t> write_seq{0};
+    std::array<std::atomic<std::uint64_t>, kTargetRing> targets{};
 
     // Master -> engine.
     std::atomic<std::uint16_t> statusword{0};

@@ -48,7 +48,8 @@ class MeasuringCanLine : public SensorInput {
     SensorReading read(double now_s) override {
         const SensorReading r = inner_->read(now_s);
         const DriveFeedback& c = carriage_->last();
-        const bool fresh = r.valid && r.position != lastLine_ && c.age_cycles == 0;
+        const bool fresh =
+            r.valid && r.age_cycles == 0 && r.position != lastLine_ && c.age_cycles == 0;
         lastLine_ = r.position;
         if (fresh) cuts_.feed(c.position - r.position, now_s);
         return r;
