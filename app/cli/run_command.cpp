@@ -7,6 +7,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
+#include "devices/machines/can_cells.h"
 #include "devices/machines/sim_rig_registry.h"
 #include "devices/process/safe_shutdown.h"
 #include "devices/sim/simulated_torch.h"
@@ -119,6 +120,7 @@ int runRun(const RunOptions& o) {
     CanEngineDevices can;
     SimulatedTorch canTorch; // the torch is simulated on the CAN path as well
     std::unique_ptr<MachineSimRig> rig;
+    std::unique_ptr<CanCellMeter> canMeter;
     std::string canError;
     if (overCan) {
         if (!can.start(job, canOptions, program.get(), &canError)) {
@@ -135,6 +137,9 @@ int runRun(const RunOptions& o) {
         if (const auto machineRig = makeSimulatedRig(job, *program, &noRig))
             machineRig->configure(config);
         can.tune(config, job);
+        // The machine's own figures on this cell (the saw's cut lengths), as its rig has them.
+        canMeter = makeCanCellMeter(job, *program);
+        if (canMeter) canMeter->attach(devices);
         if (!quiet) std::fprintf(stderr, "CANopen cell: %s\n", can.description().c_str());
         realtime = true;
     } else {
@@ -196,11 +201,14 @@ int runRun(const RunOptions& o) {
     if (!dir.empty()) std::fprintf(stderr, "run log: %s\n", dir.c_str());
     std::fprintf(
         stderr, "%s: %llu cycles, %llu overruns, jitter p99 %.1f us, telemetry dropped %llu\n",
-        rig ? rig->summary(outcome).c_str() : outcome.c_str(),
+        rig        ? rig->summary(outcome).c_str()
+        : canMeter ? canMeter->summary(outcome).c_str()
+                   : outcome.c_str(),
         static_cast<unsigned long long>(cs.cycles), static_cast<unsigned long long>(cs.overruns),
         cs.jitter_us_p99, static_cast<unsigned long long>(cs.telemetry_dropped));
     json::Value doc = module.runReport(job, plan, report);
     if (rig) rig->addToReport(doc);
+    if (canMeter) canMeter->addToReport(doc);
     const std::string out = json::write(doc);
     const std::string& reportFile = o.report;
     if (const int rc = emitReport(reportFile, out, "run"); rc != kOk || reportFile.empty())

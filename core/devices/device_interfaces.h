@@ -28,6 +28,10 @@ struct DriveFeedback {
     std::uint32_t fault_code = 0; // CiA 402 / EMCY error code, 0 = none
     bool feedback_valid = true;   // false when the drive's data is stale (bus loss, frozen encoder)
     double torque_ratio = 0; // torque applied over the last period / rated torque (CiA 402 0x6077)
+    // How many cycles older than usual `position` is: 0 for a drive read in process and for a
+    // TPDO that answered the last SYNC; n when the bus brought the answer n cycles late (the
+    // engine then compares it with the set-point of n cycles ago, not with today's).
+    std::uint8_t age_cycles = 0;
 };
 
 // How an axis is commanded: CiA 402 cyclic synchronous position / velocity / torque.
@@ -65,6 +69,7 @@ struct SensorReading {
     double velocity = 0;
     bool valid = false; // false: no fresh, trustworthy value (cable, bus loss, scale error)
     std::uint32_t fault_code = 0;
+    std::uint8_t age_cycles = 0; // cycles older than usual (a late TPDO), as DriveFeedback's
 };
 
 class SensorInput {

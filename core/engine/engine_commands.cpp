@@ -100,6 +100,21 @@ void MotionEngine::Impl::setState(EngineState s, EventKind kind, const char* fmt
     va_end(ap);
 }
 
+double MotionEngine::Impl::setpointForFeedback(int i) const {
+    const std::uint64_t age =
+        std::min<std::uint64_t>({fb[static_cast<size_t>(i)].age_cycles, cycle,
+                                 static_cast<std::uint64_t>(kSetpointHistory - 1)});
+    if (age == 0) return setpoint[i];
+    return setpointHistory[static_cast<size_t>((cycle - age) % kSetpointHistory)][i];
+}
+
+JointVector MotionEngine::Impl::setpointsForFeedback() const {
+    JointVector q = setpoint;
+    for (int i = 0; i < kMaxAxes; ++i)
+        if (axisPresent(i)) q[i] = setpointForFeedback(i);
+    return q;
+}
+
 JointVector MotionEngine::Impl::actualPositions() const {
     JointVector q = setpoint;
     for (int i = 0; i < kMaxAxes; ++i)

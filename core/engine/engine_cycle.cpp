@@ -353,6 +353,7 @@ void MotionEngine::Impl::computeSetpoint() {
     setpoint = s.q;
     setpointVel = s.qd * rate;
     runSource();
+    setpointHistory[static_cast<size_t>(cycle % kSetpointHistory)] = setpoint;
 }
 
 void MotionEngine::Impl::superviseDevices() {
@@ -406,14 +407,17 @@ void MotionEngine::Impl::superviseDevices() {
             travelSinceChange[a] = 0;
             lastSensed[a] = f.position;
         }
-        const double e = setpoint[i] - f.position;
+        // Against the set-point of the cycle the feedback belongs to: a TPDO late on the bus
+        // says where the axis was then, not where it is (track() takes the same pair).
+        const double sp = setpointForFeedback(i);
+        const double e = sp - f.position;
         if (std::fabs(e) > followingLimit(i))
             return enterFault("axis %d (%s): following error %.3f %s exceeds %.3f %s (set-point "
-                              "%.3f %s, actual %.3f %s)",
+                              "%.3f %s, actual %.3f %s, feedback %u cycle(s) late)",
                               i, axisName(i), displayValue(i, e), unit(i),
-                              displayValue(i, followingLimit(i)), unit(i),
-                              displayValue(i, setpoint[i]), unit(i), displayValue(i, f.position),
-                              unit(i));
+                              displayValue(i, followingLimit(i)), unit(i), displayValue(i, sp),
+                              unit(i), displayValue(i, f.position), unit(i),
+                              static_cast<unsigned>(f.age_cycles));
     }
     if (dev.torch && torchFb.fault_code != 0)
         return enterFault("torch: fault 0x%04X", torchFb.fault_code);
@@ -439,9 +443,11 @@ void MotionEngine::Impl::track() {
             stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
     // One tip computation per cycle for the overall figures, the cruise figures and telemetry.
     const TipSample& tips = tipsThisCycle(program->tip_model.get());
-    stats.add(setpoint, actual, tips);
+    // The supervision's pairs: each feedback with the set-point of its own cycle.
+    const JointVector matched = setpointsForFeedback();
+    stats.add(matched, actual, tips);
     if (tau >= program->cruise_from_s && tau <= program->cruise_to_s)
-        cruise.add(setpoint, actual, tips);
+        cruise.add(matched, actual, tips);
     if (pathDone && samples >= minRunSteps) phase = RunPhase::Close;
     ++samples;
 }
@@ -497,7 +503,7 @@ void MotionEngine::Impl::publishTelemetry() {
     }
     t.setpoint = setpoint;
     t.actual = actualPositions();
-    t.error = t.setpoint - t.actual;
+    t.error = setpointsForFeedback() - t.actual; // as supervised and reported
     if (program && program->tip_model)
         t.cartesian_error_mm = tipsThisCycle(program->tip_model.get()).error();
     if (isSourceProgram() && (state == EngineState::Running || state == EngineState::Paused ||

@@ -126,6 +126,10 @@ struct MotionEngine::Impl {
     std::uint64_t anchorCycles = 0;
     bool rateChanged = false;
     JointVector setpoint = JointVector::Zero(), setpointPrev = JointVector::Zero();
+    // The set-points of the last kSetpointHistory cycles (index cycle % size): a feedback that
+    // came age_cycles late is compared with the set-point of its own cycle.
+    static constexpr int kSetpointHistory = 16;
+    std::array<JointVector, kSetpointHistory> setpointHistory{};
     JointVector setpointVel = JointVector::Zero();
     // run
     RunPhase phase = RunPhase::Approach;
@@ -216,6 +220,10 @@ struct MotionEngine::Impl {
     double trajectoryDuration() const;
     void holdAt(const JointVector& q);
     JointVector actualPositions() const;
+    // Axis i's set-point of the cycle its feedback was sampled in (this cycle's when the
+    // feedback is on time; the oldest kept when later than that: the larger error, not less).
+    double setpointForFeedback(int i) const;
+    JointVector setpointsForFeedback() const; // every axis (absent ones: this cycle's)
 };
 
 } // namespace cutcell

@@ -26,11 +26,18 @@ class MasterFilter {
     void reset(double position, double velocity) {
         x_ = position;
         v_ = velocity;
+        lastAge_ = 0;
     }
-    // One measurement per period T; returns the filtered position.
-    double update(double z, double T) {
+    // One measurement per period T; returns the filtered position. A measurement `age` periods
+    // old (late over a bus) is compared with the estimate of its own time, once: the same
+    // reading again (its age one more than last time: no new TPDO) only predicts - fed again
+    // and again its residual would close a loop through v with gain beta (age - 1), unstable.
+    double update(double z, double T, int age = 0) {
         const double predicted = x_ + v_ * T;
-        const double r = z - predicted;
+        const bool sameReading = age > 0 && age == lastAge_ + 1;
+        lastAge_ = age;
+        if (sameReading) return x_ = predicted;
+        const double r = z - (predicted - age * v_ * T);
         x_ = predicted + alpha_ * r;
         v_ += beta_ / T * r;
         return x_;
@@ -68,6 +75,7 @@ class MasterFilter {
   private:
     double alpha_ = 0.2, beta_ = 0.02;
     double x_ = 0, v_ = 0;
+    int lastAge_ = 0;
 };
 
 } // namespace cutcell

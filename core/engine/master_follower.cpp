@@ -83,7 +83,7 @@ void MasterFollower::update(const SourceInput& in, SourceOutput& out) {
         out.fault = "master encoder: reading not valid";
         return;
     }
-    const double m = filter_.update(r.position, T);
+    const double m = filter_.update(r.position, T, r.age_cycles);
     out.master_position = m;
     const JointVector prev = pos_;
     const SourceRequest req = in.request;

@@ -87,9 +87,9 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
     const int n = std::clamp(r.axis_count, 0, kMaxAxes);
     for (int i = 0; i < n; ++i) {
         const auto a = static_cast<size_t>(i);
-        const bool linear = r.axis_linear[a];
+        const bool linear = r.linear(i);
         // Linear axes: the stats hold rad2deg of mm; undo it (the profile cutter's figures).
-        auto value = [linear](double deg) { return linear ? deg2rad(deg) : deg; };
+        auto value = [&r, i](double deg) { return r.inAxisUnit(i, deg); };
         const std::string maxKey = linear ? "max_abs_error_mm" : "max_abs_error_deg";
         const std::string rmsKey = linear ? "rms_error_mm" : "rms_error_deg";
         const std::string name = names && !(*names)[a].empty() ? (*names)[a]

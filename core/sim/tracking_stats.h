@@ -14,8 +14,9 @@
 
 namespace cutcell {
 
-// Per axis. The _deg fields are rad2deg of the raw error for every axis (historic); a linear
-// axis's error in mm is deg2rad of them — reportToJson() writes each axis in its own unit.
+// Per axis. The _deg fields are rad2deg of the raw error for every axis (historic): on a linear
+// axis they are NOT degrees but mm * 57.3 - read them with TrackingReport::maxAbs() / rms()
+// (the axis's own unit, as reportToJson() writes it), never print or bound them directly.
 struct AxisErrorStats {
     double max_abs_deg = 0;
     double rms_deg = 0;
@@ -45,6 +46,15 @@ struct TrackingReport {
     std::array<AxisErrorStats, kMaxAxes> cruise_joints{};
     Vec3 cruise_cartesian_max_abs_mm = Vec3::Zero();
     Vec3 cruise_on_pipe_max_abs_mm = Vec3::Zero();
+
+    // Axis i's figures in its own unit: deg on a rotary axis, mm on a linear one.
+    bool linear(int i) const { return axis_linear[static_cast<size_t>(i)]; }
+    const char* unit(int i) const { return linear(i) ? "mm" : "deg"; }
+    double inAxisUnit(int i, double degField) const {
+        return linear(i) ? deg2rad(degField) : degField;
+    }
+    double maxAbs(int i) const { return inAxisUnit(i, joints[static_cast<size_t>(i)].max_abs_deg); }
+    double rms(int i) const { return inAxisUnit(i, joints[static_cast<size_t>(i)].rms_deg); }
 };
 
 // The torch tips of one sample (commanded and actual joints), in the base frame and seen

@@ -43,6 +43,11 @@ DriveFeedback CanOpenDrive::read(double) {
     const auto goal = static_cast<DriveGoal>(shared_.goal.load(std::memory_order_acquire));
     const bool configured = shared_.configured.load(std::memory_order_acquire);
     fb.position = shared_.actual_counts.load(std::memory_order_acquire) / countsPerAxisUnit_;
+    // Loaded after the position: as new as the position's tag or newer (the age reads low).
+    const std::uint64_t answered = shared_.tpdo_seq.load(std::memory_order_relaxed);
+    // On time: the TPDO answered the SYNC sent after the last write (answered == writes_).
+    fb.age_cycles = static_cast<std::uint8_t>(
+        answered > 0 && writes_ > answered ? std::min<std::uint64_t>(writes_ - answered, 255) : 0);
     fb.velocity = shared_.velocity_counts_s.load(std::memory_order_acquire) / countsPerAxisUnit_;
     fb.torque_ratio = shared_.torque_permille.load(std::memory_order_relaxed) / 1000.0;
     if (masterFault != 0 || s == Cia402State::Fault || s == Cia402State::FaultReactionActive) {
@@ -73,9 +78,7 @@ DriveFeedback CanOpenDrive::read(double) {
 void CanOpenDrive::write(double targetPosition) {
     const double counts =
         std::clamp(std::round(targetPosition * countsPerAxisUnit_), -2147483648.0, 2147483647.0);
-    shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)),
-                                std::memory_order_release);
-    postSync();
+    publish(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(counts)));
 }
 
 void CanOpenDrive::writeTorque(double targetTorque) {
@@ -85,8 +88,16 @@ void CanOpenDrive::writeTorque(double targetTorque) {
         rated > 0 && std::isfinite(targetTorque)
             ? std::clamp(std::round(targetTorque / rated * 1000), -32768.0, 32767.0)
             : 0.0;
-    shared_.tagged_target.store(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)),
-                                std::memory_order_release);
+    publish(NodeShared::tag(seenEpoch_, static_cast<std::int32_t>(permille)));
+}
+
+// This cycle's target: in the ring under its sequence number, then the number (release: the
+// master reads the number, then the target), then as the newest; then the SYNC.
+void CanOpenDrive::publish(std::uint64_t tagged) {
+    ++writes_;
+    shared_.targets[writes_ % NodeShared::kTargetRing].store(tagged, std::memory_order_relaxed);
+    shared_.write_seq.store(writes_, std::memory_order_release);
+    shared_.tagged_target.store(tagged, std::memory_order_release);
     postSync();
 }
 

@@ -47,6 +47,8 @@ class CanOpenDrive final : public AxisDrive {
     int syncFd_;
     AxisCommandMode mode_;
     std::uint32_t seenEpoch_ = 0; // enable epoch last reported to the engine as Enabled
+    std::uint64_t writes_ = 0;    // targets written (one per engine cycle)
+    void publish(std::uint64_t taggedTarget);
 };
 
 // Fault codes the master raises itself (DriveFeedback::fault_code), beside EMCY codes and SDO

@@ -17,6 +17,9 @@ class CanOpenEncoder final : public SensorInput {
         : node_(node), countsPerUnit_(countsPerUnit), shared_(shared) {}
 
     SensorReading read(double now_s) override;
+    // The engine's cycle count (the SYNC-posting drive's write_seq) to date the readings by
+    // (age_cycles); null: every reading is taken as on time.
+    void setCycleClock(const std::atomic<std::uint64_t>* writeSeq) { clock_ = writeSeq; }
     int node() const { return node_; }
     double countsPerUnit() const { return countsPerUnit_; }
 
@@ -24,6 +27,7 @@ class CanOpenEncoder final : public SensorInput {
     int node_;
     double countsPerUnit_;
     NodeShared& shared_;
+    const std::atomic<std::uint64_t>* clock_ = nullptr;
 };
 
 } // namespace cutcell::canopen

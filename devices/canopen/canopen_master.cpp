@@ -6,6 +6,7 @@
 // master thread (eventfd -> QSocketNotifier) adds jitter. stats() reports the jitter measured
 // at the moment each SYNC is written, which is what the drives see.
 #include "devices/canopen/canopen_master.h"
+#include "devices/canopen/thread_priority.h"
 
 #include "core/job/job.h"
 #include "devices/canopen/bus_load.h"
@@ -70,6 +71,11 @@ CanOpenMaster::CanOpenMaster(CanOpenMasterConfig config) : impl_(std::make_uniqu
             last && m.cfg.sync == SyncSource::LastDriveWrite ? m.syncFd : -1, n.mode));
         m.countsPerAxisUnit.push_back(m.drives.back()->countsPerAxisUnit());
     }
+    // Encoders answer the SYNCs the last drive's writes post: dated by that drive's cycles.
+    m.clockNode = lastDrive;
+    if (lastDrive < m.cfg.nodes.size())
+        for (auto& e : m.encoders)
+            e->setCycleClock(&m.shared[lastDrive].write_seq);
     m.pdoTimeoutNs =
         std::max<std::int64_t>(100'000'000, static_cast<std::int64_t>(10 * m.cfg.period_s * 1e9));
     m.heartbeatTimeoutNs = static_cast<std::int64_t>(m.cfg.heartbeat_timeout_s * 1e9);
@@ -130,7 +136,12 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     m.context->moveToThread(m.thread.get());
     m.thread->start(QThread::TimeCriticalPriority);
     QMetaObject::invokeMethod(
-        m.context, [&m] { m.openDevice(); }, Qt::QueuedConnection);
+        m.context,
+        [&m] {
+            raiseCallingThreadToFifo(kMasterThreadPriority); // best effort (thread_priority.h)
+            m.openDevice();
+        },
+        Qt::QueuedConnection);
     // Wait for the connection and the listening. This thread may host the virtualcan bus (its
     // first client lives here, e.g. a GUI or a test): keep its events flowing meanwhile, or
     // nothing moves on the bus and the listening hears a silent bus.

@@ -1,4 +1,5 @@
 #include "devices/canopen/drive_simulator.h"
+#include "devices/canopen/thread_priority.h"
 
 #include "devices/canopen/can_interface.h"
 #include "devices/canopen/qt_can_frame.h"
@@ -136,6 +137,7 @@ std::uint64_t DriveSimulator::framesReceived() const {
 }
 
 void DriveSimulator::openOnThread() {
+    raiseCallingThreadToFifo(kSimulatorThreadPriority); // best effort (thread_priority.h)
     if (std::string why; !checkCanInterface(config_.plugin, config_.interface, &why)) {
         std::lock_guard lock(mutex_);
         error_ = QString::fromStdString(why);

@@ -31,8 +31,13 @@ void EncoderNode::boot(double now_s, std::vector<CanFrame>& out) {
     out.push_back(encodeHeartbeat(c_.node, NmtState::BootUp));
 }
 
+double EncoderNode::measuredAt(double now_s) const {
+    if (c_.sync_period_s <= 0 || firstSync_s_ < 0) return now_s;
+    return firstSync_s_ + static_cast<double>(syncs_ - 1) * c_.sync_period_s;
+}
+
 std::int32_t EncoderNode::sample(double now_s) const {
-    const double x = c_.position ? c_.position(now_s) : 0.0;
+    const double x = c_.position ? c_.position(measuredAt(now_s)) : 0.0;
     return static_cast<std::int32_t>(
         std::clamp(std::round(x * c_.counts_per_unit), -2147483648.0, 2147483647.0));
 }
@@ -71,6 +76,7 @@ void EncoderNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>
         return;
     }
     if (nmt_ != NmtState::Operational || in.id != cob::kSync || in.len != 0) return;
+    if (firstSync_s_ < 0) firstSync_s_ = now_s;
     ++syncs_;
     counts_ = sample(now_s);
     if (pdoStopped_ || (tpdoCobId_ & kInvalid) || tpdoType_ == 0 || tpdoType_ > 240 ||

@@ -11,6 +11,7 @@
 #include <QThread>
 #include <QTimer>
 
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <deque>
@@ -36,7 +37,31 @@ struct NodeRuntime { // [master]
     int reset_phase = 0; // 1: send bit 7 low, 2: send bit 7 high (the rising edge)
     std::int32_t previous_actual = 0;
     bool was_enabled = false;
-    std::uint64_t tpdo_cycle = 0;       // last cycle a TPDO was counted for
+    std::uint64_t tpdo_cycle = 0; // last cycle a TPDO was counted for
+    // Drives: the engine's write_seq of each SYNC sent and not answered yet, oldest first. A
+    // node answers every SYNC once, in order (TPDO1 synchronous type 1), so its next TPDO
+    // answers the oldest: after a stall of this thread, frames queued behind a SYNC sent on
+    // waking still get the SYNC they answered, not the newest.
+    static constexpr int kMaxUnanswered = 16; // more: the oldest are taken as lost
+    std::array<std::uint64_t, kMaxUnanswered> unanswered{};
+    int unansweredHead = 0, unansweredCount = 0;
+    std::uint64_t sync_seq = 0; // the write_seq of the last SYNC sent
+    void syncSent(std::uint64_t seq) {
+        sync_seq = seq;
+        if (unansweredCount == kMaxUnanswered) {
+            unansweredHead = (unansweredHead + 1) % kMaxUnanswered;
+            --unansweredCount;
+        }
+        unanswered[static_cast<size_t>((unansweredHead + unansweredCount) % kMaxUnanswered)] = seq;
+        ++unansweredCount;
+    }
+    std::uint64_t answered() { // the SYNC a TPDO just received answers
+        if (unansweredCount == 0) return sync_seq;
+        const std::uint64_t seq = unanswered[static_cast<size_t>(unansweredHead)];
+        unansweredHead = (unansweredHead + 1) % kMaxUnanswered;
+        --unansweredCount;
+        return seq;
+    }
     std::int64_t awaiting_since_ns = 0; // encoders: the oldest SYNC not answered yet (0: none)
 };
 
@@ -50,6 +75,7 @@ struct CanOpenMaster::Impl {
     std::vector<NodeRuntime> rt;                           // [master]
     int wakeFd = -1;                                       // commands and urgent stops
     int syncFd = -1;                                       // one count per cycle to run
+    size_t clockNode = 0; // the drive whose writes post SYNC (nodes.size(): none)
     std::int64_t heartbeatTimeoutNs = 0;
     std::uint16_t heartbeatProducerMs = 100;
     double load = 0;
@@ -105,6 +131,7 @@ struct CanOpenMaster::Impl {
     void onFrames();
     void onFrame(const CanFrame& f, std::int64_t now);
     void noteCycleAnswer(size_t i);
+    std::uint64_t cycleTarget(size_t i);
     void onErrorFrame(std::uint32_t errorClass, const QByteArray& payload);
     void onStateChanged(QCanBusDevice::CanBusDeviceState s);
     void onWake();

@@ -391,6 +391,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.velocity_counts_s.store((encoderCounts - r.previous_actual) / cfg.period_s,
                                   std::memory_order_relaxed);
         r.previous_actual = encoderCounts;
+        s.tpdo_seq.store(r.answered(), std::memory_order_relaxed); // published by the next store
         s.actual_counts.store(encoderCounts, std::memory_order_release);
         s.tpdo_ns.store(now, std::memory_order_release);
         s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
@@ -406,6 +407,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.velocity_counts_s.store((t.actual_counts - r.previous_actual) / cfg.period_s,
                                   std::memory_order_relaxed);
         r.previous_actual = t.actual_counts;
+        s.tpdo_seq.store(r.answered(), std::memory_order_relaxed); // published by the next store
         s.actual_counts.store(t.actual_counts, std::memory_order_release);
         s.torque_permille.store(t.torque_permille, std::memory_order_relaxed);
         s.tpdo_ns.store(now, std::memory_order_release);
@@ -454,6 +456,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         } else if (nmt == NmtState::Operational && r.phase == StartupPhase::WaitOperational) {
             r.phase = StartupPhase::Running;
             r.tpdo_cycle = cycles.load(std::memory_order_relaxed);
+            r.unansweredCount = 0; // SYNCs from now on
             s.master_fault.store(0, std::memory_order_release);
             {
                 std::lock_guard lock(mutex);
@@ -556,8 +559,36 @@ void CanOpenMaster::Impl::onWake() {
 }
 
 void CanOpenMaster::Impl::onSyncDue() {
-    if (drain(syncFd) == 0) return;
-    runCycle(steadyNs());
+    const std::uint64_t due = drain(syncFd);
+    if (due == 0) return;
+    // Paced by the engine, one SYNC per engine cycle even when this thread was held up and
+    // several are due: the drives' cycle is the engine's (a simulated drive moves one period per
+    // SYNC; one SYNC for three engine cycles left it two periods behind the engine's time, a
+    // following error the drive never had). Paced by the clock (Internal): one, late.
+    const std::uint64_t syncs = cfg.sync == SyncSource::LastDriveWrite
+                                    ? std::min<std::uint64_t>(due, NodeRuntime::kMaxUnanswered)
+                                    : 1;
+    const std::int64_t now = steadyNs();
+    for (std::uint64_t k = 0; k < syncs; ++k)
+        runCycle(now);
+}
+
+// The target for this SYNC. Paced by the engine (one SYNC per write): the engine cycle after
+// the one sent last while the ring still has it (several SYNCs due at once: each cycle's own).
+// Paced by the clock: the newest. Notes the SYNC's cycle for pairing the answers.
+std::uint64_t CanOpenMaster::Impl::cycleTarget(size_t i) {
+    NodeShared& s = shared[i];
+    NodeRuntime& r = rt[i];
+    const std::uint64_t newest = s.write_seq.load(std::memory_order_acquire);
+    std::uint64_t seq = r.sync_seq + 1;
+    if (cfg.sync != SyncSource::LastDriveWrite || r.sync_seq == 0 || seq > newest ||
+        newest - seq >= NodeShared::kTargetRing - 1)
+        seq = newest;
+    const std::uint64_t tagged =
+        seq == 0 ? s.tagged_target.load(std::memory_order_acquire)
+                 : s.targets[seq % NodeShared::kTargetRing].load(std::memory_order_relaxed);
+    r.syncSent(seq);
+    return tagged;
 }
 
 void CanOpenMaster::Impl::runCycle(std::int64_t now) {
@@ -571,7 +602,7 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
         }
         NodeShared& s = shared[i];
         const std::uint16_t c = controlwordFor(i);
-        const std::uint64_t tagged = s.tagged_target.load(std::memory_order_acquire);
+        const std::uint64_t tagged = cycleTarget(i);
         const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
         const bool current = enabled && NodeShared::epochOf(tagged) ==
                                             s.enable_epoch.load(std::memory_order_acquire);
@@ -587,6 +618,11 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
                                             : s.actual_counts.load(std::memory_order_acquire);
         send(encodeRpdo1(cfg.nodes[i].node, {c, target}));
     }
+    // The encoders answer this SYNC too: the engine cycle it belongs to, for their TPDOs.
+    if (clockNode < rt.size())
+        for (size_t i = 0; i < shared.size(); ++i)
+            if (cfg.nodes[i].encoder && rt[i].phase == StartupPhase::Running)
+                rt[i].syncSent(rt[clockNode].sync_seq);
     send(encodeSync());
     cycles.fetch_add(1, std::memory_order_release);
     if (lastSyncNs != 0) {

@@ -4,6 +4,7 @@
 #include "devices/canopen/cia402.h"
 #include "devices/canopen/nmt.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <unistd.h>
@@ -25,6 +26,13 @@ struct NodeShared {
     // bits 63..32 epoch, 31..0 counts. The master uses a target only if its epoch is current,
     // so set-points written before the drive reported Enabled never reach it (no jump).
     std::atomic<std::uint64_t> tagged_target{0};
+    // Targets written so far (one per engine cycle) and the last kTargetRing of them (tagged as
+    // above, index seq % kTargetRing): when several cycles' SYNCs are due at once (this
+    // thread's partner was held up) the master sends each cycle's own target with its SYNC, so
+    // the drives get the engine's sequence of targets, only closer together.
+    static constexpr std::uint64_t kTargetRing = 16;
+    std::atomic<std::uint64_t> write_seq{0};
+    std::array<std::atomic<std::uint64_t>, kTargetRing> targets{};
 
     // Master -> engine.
     std::atomic<std::uint16_t> statusword{0};
@@ -33,6 +41,9 @@ struct NodeShared {
     std::atomic<std::int16_t> torque_permille{0}; // 0x6077
     std::atomic<std::int64_t> tpdo_ns{0};         // steady clock of the last TPDO
     std::atomic<std::uint64_t> tpdo_count{0};
+    // write_seq of the last SYNC sent before the last TPDO came: the engine's cycle that TPDO
+    // answers, or a later one when it came late (the feedback's age reads low, never high).
+    std::atomic<std::uint64_t> tpdo_seq{0};
     std::atomic<std::uint8_t> nmt{static_cast<std::uint8_t>(NmtState::Unknown)};
     std::atomic<std::int64_t> heartbeat_ns{0};  // steady clock of the last heartbeat
     std::atomic<std::uint32_t> enable_epoch{0}; // +1 each time the drive enters Operation Enabled

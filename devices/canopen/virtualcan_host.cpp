@@ -1,4 +1,5 @@
 #include "devices/canopen/virtualcan_host.h"
+#include "devices/canopen/thread_priority.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -29,6 +30,10 @@ HostThread* hostThread() {
         h->context = new QObject;
         h->context->moveToThread(&h->thread);
         h->thread.start();
+        // The server relays every frame of every cycle (thread_priority.h); best effort.
+        QMetaObject::invokeMethod(
+            h->context, [] { raiseCallingThreadToFifo(kBusHostThreadPriority); },
+            Qt::QueuedConnection);
         qAddPostRoutine(stopHostThread);
         return h;
     }();

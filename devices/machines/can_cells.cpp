@@ -130,7 +130,10 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
         lc.sim = saw->line_sim;
         lc.duration_s = 3600;
         auto line = std::make_shared<PipeLineSim>(lc);
+        // On the SYNC clock, as the simulated drives move (encoder_node.h): the line advances
+        // one period per SYNC, however late the SYNCs come on a loaded host.
         addEncoder(0, 1.0 / lc.resolution_mm, [line](double t) { return line->read(t).position; });
+        c.sim_encoders.back().sync_period_s = period_s;
     } else if (const auto* qr = job.machine_spec.as<QuickReturnSpec>()) {
         quick_return::ExperimentSetup s;
         std::string problem;
@@ -177,6 +180,11 @@ void tuneEngineForCanCell(EngineConfig& config, const CanCellConfig& cell, const
     // TPDO a few cycles late at that speed is not taken for one.
     config.frozen_feedback_travel =
         std::max(config.frozen_feedback_travel, 20 * period_s * cell.fastest_linear_mm_s);
+}
+
+std::unique_ptr<CanCellMeter> makeCanCellMeter(const Job& job, const MotionProgram& program) {
+    if (job.machine_spec.as<FlyingSawSpec>()) return makeFlyingSawCanMeter(job, program);
+    return nullptr;
 }
 
 } // namespace cutcell

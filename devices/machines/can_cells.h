@@ -12,9 +12,11 @@
 #include "core/engine/motion_engine.h"
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
+#include "core/json/json.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,5 +44,22 @@ void tuneEngineForCanCell(EngineConfig& config, const CanCellConfig& cell, const
 
 bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, CanCellConfig* out,
                  std::string* error);
+
+// What a machine measures on its CAN cell besides the engine's figures - the flying saw: the
+// cut length of every piece, as its simulated rig reports it - from the engine's devices,
+// between which and the engine it sits. Built per run; lives as long as the engine.
+class CanCellMeter {
+  public:
+    virtual ~CanCellMeter() = default;
+    // Before the engine is built from `devices`: puts the meter in between (engine thread).
+    virtual void attach(EngineDevices& devices) = 0;
+    virtual void addToReport(json::Value& doc) const = 0; // after the run
+    virtual std::string summary(const std::string& outcome) const = 0;
+};
+
+// The meter of job.machine's CAN cell; nullptr when it measures nothing more.
+std::unique_ptr<CanCellMeter> makeCanCellMeter(const Job& job, const MotionProgram& program);
+// One per machine that has one (its own file in this folder).
+std::unique_ptr<CanCellMeter> makeFlyingSawCanMeter(const Job& job, const MotionProgram& program);
 
 } // namespace cutcell

@@ -2,6 +2,7 @@
 // a gear / cam follower on a line whose speed changes by +-10 %, sync-in at the commanded
 // master position, a cam table replaced while running, feed hold on a flying saw, and a
 // torque-mode control law at 1 kHz with emergency stop, sensor fault and supervision.
+#include "core/engine/master_filter.h"
 #include "core/engine/motion_engine.h"
 #include "devices/sim/follower_rig.h"
 #include "devices/sim/slider_rig.h"
@@ -110,6 +111,33 @@ double filterBound(const FollowerRig& rigConst, const MasterFilter& f, double T)
     FollowerRig& rig = const_cast<FollowerRig&>(rigConst);
     return f.accelGain() * rig.line().maxAcceleration() * T * T +
            f.noiseGain() * rig.line().maxReadingError();
+}
+
+// Over a bus a reading can come late, or not at all for a while (the same reading again, its
+// age one more each cycle). The filter keeps the line's course: the same reading is not fed
+// again (fed again with its age its residual runs away through the velocity), a late new one is
+// compared with the estimate of its own time.
+TEST(MasterSource, MasterFilterCoastsOnARepeatedReadingAndDatesALateOne) {
+    const double T = 0.002, v = 1000;
+    MasterFilter f(0.2);
+    f.reset(0, v);
+    double line = 0;
+    for (int k = 1; k <= 50; ++k) { // on time
+        line += v * T;
+        f.update(line, T, 0);
+    }
+    const double held = line; // the encoder's TPDOs stop: its last reading, older each cycle
+    for (int age = 1; age <= 60; ++age) {
+        line += v * T;
+        f.update(held, T, age);
+    }
+    EXPECT_NEAR(f.position(), line, 1e-9);
+    EXPECT_NEAR(f.velocity(), v, 1e-9);
+    // A new reading 3 cycles late (of the line then): no jump, no change of course.
+    line += v * T;
+    f.update(line - 3 * v * T, T, 3);
+    EXPECT_NEAR(f.position(), line, 1e-9);
+    EXPECT_NEAR(f.velocity(), v, 1e-9);
 }
 
 TEST(MasterSource, GearFollowerStaysInSyncWhileTheLineSpeedChangesTenPercent) {

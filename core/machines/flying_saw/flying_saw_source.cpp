@@ -127,7 +127,7 @@ void FlyingSawSource::update(const SourceInput& in, SourceOutput& out) {
         out.fault = "line encoder: reading not valid";
         return;
     }
-    const double m = filter_.update(r.position, T);
+    const double m = filter_.update(r.position, T, r.age_cycles);
     out.master_position = m;
     takeGauge();
     const JointVector prev = pos_;
