@@ -235,3 +235,39 @@ TEST(EndCutPlan, JointLimitIsNamed) {
     EXPECT_NE(p.problem.find("path arm joint theta1"), std::string::npos) << p.problem;
     EXPECT_NE(p.problem.find("[-100.0, -80.0] deg"), std::string::npos) << p.problem;
 }
+
+// Every catalogue entry plans its square end at the slow and fast ends of the cutting speed the
+// job accepts (0.1, 100 mm/s) and at a slow and the fastest torch turn (10, 360 deg/s): the
+// joint-jump check scales with both, so a plan that holds at the default speeds only can hide a
+// torch turning faster than it may. The torch turns at most reorient_deg_s, at sharp toes (the
+// tip at rest) and round toe radii and fillets alike (the tip slows where speed / radius would
+// turn it faster): between two samples the untilted direction turns at most reorient * dt.
+TEST(EndCutPlan, EveryCatalogueEntryPlansAtTheEndsOfTheSpeedRange) {
+    int total = 0, ok = 0;
+    for (const double speed : {0.1, 100.0})
+        for (const double reorient : {10.0, 360.0})
+            for (const auto& d : sectionCatalogue()) {
+                SectionSteelSpec s = defaultSectionSteelSpec();
+                s.section = d;
+                s.speed_mm_s = speed;
+                s.reorient_deg_s = reorient;
+                const SteelPlan p = planEndCut(s);
+                ++total;
+                ok += p.ok;
+                const std::string at = d.designation + " at " + std::to_string(speed) + " mm/s, " +
+                                       std::to_string(reorient) + " deg/s";
+                EXPECT_TRUE(p.ok) << at << ": " << p.problem;
+                ASSERT_FALSE(p.passes.empty()) << at;
+                const CutPass& square = p.passes.front();
+                double worst = 0;
+                for (size_t k = 1; k < square.samples.size(); ++k) {
+                    const Vec3& a = square.samples[k - 1].t0;
+                    const Vec3& b = square.samples[k].t0;
+                    worst = std::max(worst, std::atan2(a.cross(b).norm(), a.dot(b)));
+                }
+                EXPECT_LE(worst, deg2rad(reorient) * p.dt * (1 + 1e-9) + 1e-12)
+                    << at << ": the torch turns " << rad2deg(worst) << " deg in one step of "
+                    << p.dt << " s";
+            }
+    std::printf("%d of %d (entry, speed, turn rate) square ends plan\n", ok, total);
+}

@@ -14,6 +14,7 @@ struct Primitive {
     double s0 = 0, s1 = 0; // outline length (travel); s0 = the corner (turn)
     double a0 = 0, da = 0; // normal angle at the start and its change (turn)
     double effective = 0;  // length equivalent at the cutting speed
+    size_t segment = 0;    // outline segment travelled (travel)
 };
 
 double angleOf(const Vec2& v) {
@@ -195,8 +196,13 @@ std::vector<CutPass> EndCut::passes(double dt) const {
     const double v = spec_.speed_mm_s, w = deg2rad(spec_.reorient_deg_s);
     for (size_t i = 0; i < segs.size(); ++i) {
         const double s0 = outline_.segmentStart(i);
+        // On a radius tighter than v / w (toe radii, small root fillets) the torch would turn
+        // at v / r, faster than it may (an L 50x50x5's 3.5 mm toe at 8 mm/s: 131 deg/s): the tip
+        // slows there so that the torch turns at reorient_deg_s, as it does at a sharp toe.
+        const double turn = segs[i].arc ? std::fabs(segs[i].a1 - segs[i].a0) : 0;
         if (segs[i].length > 0)
-            prims.push_back({false, s0, s0 + segs[i].length, 0, 0, segs[i].length});
+            prims.push_back(
+                {false, s0, s0 + segs[i].length, 0, 0, std::max(segs[i].length, turn / w * v), i});
         if (i + 1 < segs.size()) {
             const double a0 = angleOf(segs[i].n1);
             const double da = std::remainder(angleOf(segs[i + 1].n0) - a0, 2 * kPi);
@@ -232,7 +238,9 @@ std::vector<CutPass> EndCut::passes(double dt) const {
                 p.effective > 0 ? std::clamp((dist - primStart) / p.effective, 0.0, 1.0) : 0;
             if (!p.turn) {
                 const double s = p.s0 + f * (p.s1 - p.s0);
-                pass.samples.push_back(target(outline_.at(s), s, groovePass));
+                // On its own face: a sample at the face's end must not take the next face's
+                // normal (the torch would turn a whole corner in one step).
+                pass.samples.push_back(target(outline_.onSegment(p.segment, s), s, groovePass));
             } else {
                 OutlinePoint o = outline_.at(p.s0);
                 const double a = p.a0 + f * p.da;
@@ -261,9 +269,9 @@ std::vector<CutPass> EndCut::passes(double dt) const {
         const double trim =
             std::min(spec_.blend_mm * std::min(1.0, kMinBevelDeg / std::max(1e-9, gs->angle_deg)),
                      segs[i].length / 4);
-        makePass("groove " + segs[i].name + (turnedOver() ? " (setup 2, turned over)" : ""), true,
-                 true,
-                 {{false, s0 + trim, s0 + segs[i].length - trim, 0, 0, segs[i].length - 2 * trim}});
+        makePass(
+            "groove " + segs[i].name + (turnedOver() ? " (setup 2, turned over)" : ""), true, true,
+            {{false, s0 + trim, s0 + segs[i].length - trim, 0, 0, segs[i].length - 2 * trim, i}});
     }
     return out;
 }

@@ -4,8 +4,9 @@
 // the groove angle towards the bar end (in the plane normal to the cut edge). Pass "square"
 // separates the bar (tilt 0); pass "groove" follows the outline again with the bevel on the
 // faces that have one (the tilt ramps in and out over blend_mm; fillets and toes stay square).
-// At sharp corners (toes) the torch turns about its tip at reorient_deg_s. Setup 2 (section
-// turned over): only the groove passes of the bevels setup 1 could not reach.
+// At sharp corners (toes) the torch turns about its tip at reorient_deg_s; on radii tighter than
+// speed / reorient (toe radii, small fillets) the tip slows so that the torch turns no faster.
+// Setup 2 (section turned over): only the groove passes of the bevels setup 1 could not reach.
 #include "core/common/types.h"
 #include "core/machines/section_steel/section_outline.h"
 #include "core/machines/section_steel/section_steel_spec.h"

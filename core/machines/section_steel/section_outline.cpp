@@ -200,6 +200,10 @@ OutlinePoint SectionOutline::at(double s) const {
     i = i == 0 ? 0 : i - 1;
     while (i + 1 < segments_.size() && segments_[i].length == 0)
         ++i;
+    return onSegment(i, s);
+}
+
+OutlinePoint SectionOutline::onSegment(size_t i, double s) const {
     const OutlineSegment& g = segments_[i];
     const double u = g.length > 0 ? std::clamp((s - starts_[i]) / g.length, 0.0, 1.0) : 0.0;
     OutlinePoint o;

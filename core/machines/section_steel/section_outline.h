@@ -55,6 +55,9 @@ class SectionOutline {
     double area() const;
     // The point at arc length s (clamped), with its tangent and outward normal.
     OutlinePoint at(double s) const;
+    // The point of segment i at arc length s (clamped to the segment): at a boundary between
+    // two faces at(s) gives the next face (its normal already turned), this one the face asked.
+    OutlinePoint onSegment(size_t i, double s) const;
     // Arc length where segment i begins.
     double segmentStart(size_t i) const { return starts_[i]; }
     // The closed material polygon (fillets as 8-sided arcs), counter-clockwise.
