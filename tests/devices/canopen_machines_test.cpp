@@ -281,7 +281,13 @@ class CanOpenMachinesTest : public QObject {
     void quickReturnCrankRunsInTorqueModeOverCan() {
         Job job = shipped("quick_return_cutter");
         // Experiment 1 (tracking y_d = -0.2 - 0.2 sin(pi t), no contact force) under the job's
-        // controller, the crank in CST and the slider read from its CiA 406 scale.
+        // controller, the crank in CST and the slider read from its CiA 406 scale; the crank's
+        // error within the machine's following-error limit. The bus's threads on SCHED_FIFO as
+        // for the other whole runs.
+        bool fifo = false;
+        std::thread([&fifo] { fifo = raiseCallingThreadToFifo(1); }).join();
+        if (!fifo)
+            QSKIP("needs SCHED_FIFO for the bus's threads (CAP_SYS_NICE or an rtprio limit)");
         auto* qr = job.machine_spec.as<QuickReturnSpec>();
         QVERIFY(qr);
         qr->experiment = quick_return::Experiment::Tracking;
@@ -289,7 +295,7 @@ class CanOpenMachinesTest : public QObject {
         bringUp(job, 0.001);
         if (QTest::currentTestFailed()) return;
         QCOMPARE(master_->drive(0)->commandMode(), AxisCommandMode::Torque);
-        runToCompletion(60000, 360, 1e9);
+        runToCompletion(60000, job.engine.following_error_limit_deg, 1e9);
         // The crank was driven by torque: the drive applied some.
         QVERIFY(sim_->snapshot()[0].syncs > 0);
     }
