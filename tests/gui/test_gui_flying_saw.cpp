@@ -12,6 +12,7 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
 #include "core/machines/flying_saw/flying_saw_source.h"
+#include "main_window_run.h"
 #include "plots/xy_figures_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -47,10 +48,6 @@ using cutcell::FlyingSawSpec;
 using CutCell::ui::MainWindow;
 
 namespace {
-
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
-}
 
 const FlyingSawSpec* sawSpec(const MainWindow& w) {
     return w.editor()->job().machine_spec.as<FlyingSawSpec>();
@@ -204,11 +201,8 @@ class TestGuiFlyingSaw : public QObject {
         w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
         newSawJob(w);
         w.show();
-        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
-        w.run()->startAutoRun();
-        QVERIFY(done.wait(240000));
-        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
-        QTRY_COMPARE(state(w), EngineState::Completed);
+        QString why;
+        QVERIFY2(autoRunCompletes(w, 240000, &why), qPrintable(why));
         const auto& last = w.run()->bridge()->last();
         QCOMPARE(int(last.axis_count), 4);
         const FlyingSawSpec* spec = sawSpec(w);
@@ -218,7 +212,7 @@ class TestGuiFlyingSaw : public QObject {
 
         auto* figures = w.findChild<CutCell::ui::FlyingSawFiguresForm*>();
         QVERIFY(figures);
-        QString why;
+        why.clear();
         QVERIFY2(figures->simulate(&why), qPrintable(why));
         using Panel = CutCell::ui::FlyingSawFiguresForm;
         for (int p : {Panel::CarriageS, Panel::CarriageV, Panel::CarriageA})

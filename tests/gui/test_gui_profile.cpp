@@ -12,6 +12,7 @@
 #include "core/machines/profile_cutter/profile_cutter.h"
 #include "core/machines/profile_cutter/template_pdf.h"
 #include "core/machines/profile_cutter/template_tiles.h"
+#include "main_window_run.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -36,10 +37,6 @@ using CutCell::ui::MainWindow;
 namespace {
 
 const QString kJobFile = CUTCELL_SOURCE_DIR "/resources/jobs/profile_cutter_job.json";
-
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
-}
 
 // Waits until the GUI has a sample from at least `seconds` of engine time after its current
 // one: "nothing changed" is then checked over that many cycles however slow the machine is
@@ -71,11 +68,8 @@ class TestGuiProfile : public QObject {
         w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
         openProfileJob(w);
         w.show();
-        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
-        w.run()->startAutoRun();
-        QVERIFY(done.wait(240000));
-        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
-        QTRY_COMPARE(state(w), EngineState::Completed);
+        QString why;
+        QVERIFY2(autoRunCompletes(w, 240000, &why), qPrintable(why));
         w.run()->bridge()->poll();
         QCOMPARE(w.progress()->bar()->value(), w.progress()->bar()->maximum());
         const auto& last = w.run()->bridge()->last();

@@ -13,6 +13,7 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/quick_return/quick_return_spec.h"
 #include "core/machines/quick_return/whitworth.h"
+#include "main_window_run.h"
 #include "plots/xy_figures_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -46,10 +47,6 @@ using CutCell::ui::MainWindow;
 namespace {
 
 const char* const kId = "quick_return_cutter";
-
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
-}
 
 // File -> New through the menu, the machine prompt answered with the quick-return cutter.
 void newQuickReturnJob(MainWindow& w) {
@@ -137,11 +134,8 @@ class TestGuiQuickReturn : public QObject {
         w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
         newQuickReturnJob(w);
         w.show();
-        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
-        w.run()->startAutoRun();
-        QVERIFY(done.wait(240000));
-        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
-        QTRY_COMPARE(state(w), EngineState::Completed);
+        QString why;
+        QVERIFY2(autoRunCompletes(w, 240000, &why), qPrintable(why));
         const auto& last = w.run()->bridge()->last();
         QCOMPARE(last.modes[0], cutcell::AxisCommandMode::Torque);
         QVERIFY(std::isfinite(last.actual[0]));

@@ -6,6 +6,7 @@
 #include "sim_rig.h"
 
 #include "core/job/default_job.h"
+#include "main_window_run.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
@@ -39,10 +40,6 @@ cutcell::Job shortJob() {
     return job;
 }
 
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
-}
-
 // Waits until the GUI has a sample from at least `seconds` of engine time after its current
 // one: "nothing changed" is then checked over that many cycles however slow the machine is
 // (a fixed qWait checks fewer cycles, or none, when the machine is slow).
@@ -65,11 +62,8 @@ class TestGuiRun : public QObject {
         job.engine.runs_dir = "";
         w.editor()->setJob(job);
         w.show();
-        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
-        w.run()->startAutoRun();
-        QVERIFY(done.wait(180000));
-        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
-        QTRY_COMPARE(state(w), EngineState::Completed);
+        QString why;
+        QVERIFY2(autoRunCompletes(w, 180000, &why), qPrintable(why));
         w.run()->bridge()->poll();
         QCOMPARE(w.progress()->percentText(), QString("100.0 %"));
         QCOMPARE(w.progress()->bar()->value(), w.progress()->bar()->maximum());

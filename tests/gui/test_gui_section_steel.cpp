@@ -15,6 +15,7 @@
 #include "core/machines/section_steel/section_outline.h"
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_spec.h"
+#include "main_window_run.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
@@ -48,10 +49,6 @@ using CutCell::ui::SectionSteelSectionForm;
 namespace {
 
 const char* const kId = "section_steel_cutter";
-
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
-}
 
 void newSteelJob(MainWindow& w) {
     w.setMachinePrompt([] { return std::string(kId); });
@@ -256,11 +253,8 @@ class TestGuiSectionSteel : public QObject {
         w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
         newSteelJob(w);
         w.show();
-        QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
-        w.run()->startAutoRun();
-        QVERIFY(done.wait(240000));
-        QVERIFY2(done.at(0).at(0).toBool(), qPrintable(done.at(0).at(1).toString()));
-        QTRY_COMPARE(state(w), EngineState::Completed);
+        QString why;
+        QVERIFY2(autoRunCompletes(w, 240000, &why), qPrintable(why));
         // The 3D view drew the plan and shows the whole path cut.
         const auto& scene = w.cellView()->view()->scene();
         QVERIFY(scene.hasScene());

@@ -1,0 +1,35 @@
+#pragma once
+// What the GUI run tests share: the engine's state as the window sees it, and an auto run
+// (Enable, Home, Start through the RunController) waited for until the engine reports
+// Completed.
+#include "ui/engine_bridge.h"
+#include "ui/main_window.h"
+#include "ui/run_controller.h"
+
+#include <QSignalSpy>
+#include <QString>
+#include <QTest>
+
+inline cutcell::EngineState state(const CutCell::ui::MainWindow& w) {
+    return w.run()->bridge()->state();
+}
+
+// True when the auto run finished without a failure within timeoutMs and the engine then
+// reached Completed; otherwise false with *why saying what happened instead.
+inline bool autoRunCompletes(CutCell::ui::MainWindow& w, int timeoutMs, QString* why) {
+    QSignalSpy done(w.run(), &CutCell::ui::RunController::autoRunFinished);
+    w.run()->startAutoRun();
+    if (!done.wait(timeoutMs)) {
+        *why = QStringLiteral("the auto run did not finish within %1 ms").arg(timeoutMs);
+        return false;
+    }
+    if (!done.at(0).at(0).toBool()) {
+        *why = done.at(0).at(1).toString();
+        return false;
+    }
+    if (!QTest::qWaitFor([&] { return state(w) == cutcell::EngineState::Completed; }, 5000)) {
+        *why = QStringLiteral("the auto run finished but the engine is not Completed");
+        return false;
+    }
+    return true;
+}
