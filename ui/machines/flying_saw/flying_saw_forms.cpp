@@ -2,6 +2,7 @@
 
 #include "core/machines/flying_saw/flying_saw_source.h"
 #include "core/machines/flying_saw/flying_saw_spec.h"
+#include "ui/forms/edited_spec.h"
 #include "ui/run_controller.h"
 
 #include <QCheckBox>
@@ -28,12 +29,8 @@ using cutcell::TubeShape;
 
 namespace {
 
-// The spec of the edited job. The pages exist for every job but are shown only for a
-// flying-saw job; for another machine's job the bindings read and write a scratch spec.
 FlyingSawSpec& spec(Job& j) {
-    static FlyingSawSpec scratch;
-    FlyingSawSpec* s = j.machine_spec.as<FlyingSawSpec>();
-    return s ? *s : scratch;
+    return CutCell::ui::editedSpec<FlyingSawSpec>(j); // a scratch spec for another machine's job
 }
 const FlyingSawSpec* specOf(const Job& j) {
     return j.machine_spec.as<FlyingSawSpec>();

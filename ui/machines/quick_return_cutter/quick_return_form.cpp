@@ -1,6 +1,7 @@
 #include "ui/machines/quick_return_cutter/quick_return_form.h"
 
 #include "core/machines/quick_return/quick_return_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -16,12 +17,8 @@ using cutcell::QuickReturnSpec;
 
 namespace {
 
-// The spec of the edited job. The pages exist for every job but are shown only for a
-// quick-return job; for another machine's job the bindings read and write a scratch spec.
 QuickReturnSpec& spec(Job& j) {
-    static QuickReturnSpec scratch;
-    QuickReturnSpec* s = j.machine_spec.as<QuickReturnSpec>();
-    return s ? *s : scratch;
+    return CutCell::ui::editedSpec<QuickReturnSpec>(j); // a scratch spec for another machine's job
 }
 const QuickReturnSpec* specOf(const Job& j) {
     return j.machine_spec.as<QuickReturnSpec>();

@@ -1,6 +1,7 @@
 #include "ui/machines/section_steel_cutter/section_steel_arms_form.h"
 
 #include "core/machines/section_steel/section_steel_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -21,9 +22,7 @@ using cutcell::section_steel::SectionSteelSpec;
 namespace {
 
 SectionSteelSpec& spec(Job& j) {
-    static SectionSteelSpec scratch; // another machine's job: the pages are hidden
-    SectionSteelSpec* s = j.machine_spec.as<SectionSteelSpec>();
-    return s ? *s : scratch;
+    return CutCell::ui::editedSpec<SectionSteelSpec>(j); // a scratch spec for another machine's job
 }
 
 std::string indexed(const std::string& key, size_t i) {

@@ -2,6 +2,7 @@
 
 #include "core/machines/section_steel/section_catalogue.h"
 #include "core/machines/section_steel/section_steel_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -25,12 +26,8 @@ using cutcell::section_steel::SectionSteelSpec;
 
 namespace {
 
-// The spec of the edited job. The pages exist for every job but are shown only for a
-// section-steel job; for another machine's job the bindings read and write a scratch spec.
 SectionSteelSpec& spec(Job& j) {
-    static SectionSteelSpec scratch;
-    SectionSteelSpec* s = j.machine_spec.as<SectionSteelSpec>();
-    return s ? *s : scratch;
+    return CutCell::ui::editedSpec<SectionSteelSpec>(j); // a scratch spec for another machine's job
 }
 const SectionSteelSpec* specOf(const Job& j) {
     return j.machine_spec.as<SectionSteelSpec>();
