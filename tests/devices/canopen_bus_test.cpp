@@ -1,7 +1,7 @@
-// The CANopen master against the drive simulator on a virtualcan bus hosted by this process
-// (the listener connects first, so the bus lives on the test's main thread; QTRY_* keeps its
-// event loop running). The simulator runs on its own thread with its own bus client: a real
-// peer, not a mock.
+// The CANopen master against the drive simulator on a virtualcan bus hosted by this process,
+// on a thread of its own (hostVirtualCanBus): on the test's main thread the bus would relay
+// frames only between QTRY_* sleeps, and not at all while a master's start() blocks it. The
+// listener (on this thread) and the simulator (on its own) are clients: real peers, not mocks.
 #include "core/job/default_job.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
@@ -9,6 +9,7 @@
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
 #include "devices/canopen/sdo.h"
+#include "devices/canopen/virtualcan_host.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -72,6 +73,7 @@ class CanOpenBusTest : public QObject {
   private slots:
     void initTestCase() {
         QString err;
+        hostVirtualCanBus("virtualcan", "can0"); // not on this thread
         listener_.reset(QCanBus::instance()->createDevice("virtualcan", "can0", &err));
         QVERIFY2(listener_, qPrintable(err));
         connect(listener_.get(), &QCanBusDevice::framesReceived, this, [this] {

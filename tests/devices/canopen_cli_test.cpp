@@ -9,6 +9,7 @@
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
 #include "devices/canopen/sdo.h"
+#include "devices/canopen/virtualcan_host.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -40,6 +41,7 @@ class BusListener : public QObject {
         CanFrame f;
     };
     bool connectTo(const QString& interface) {
+        hostVirtualCanBus("virtualcan", interface); // not on this thread
         device_.reset(QCanBus::instance()->createDevice("virtualcan", interface));
         if (!device_) return false;
         connect(device_.get(), &QCanBusDevice::framesReceived, this, [this] {

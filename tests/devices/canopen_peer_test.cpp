@@ -7,6 +7,7 @@
 // package is missing (tools/peer_deps.sh installs it).
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/emcy.h"
+#include "devices/canopen/virtualcan_host.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -88,6 +89,7 @@ class CanOpenPeerTest : public QObject {
     void initTestCase() {
         port_ = 30000 + static_cast<int>(getpid() % 5000);
         interface_ = QString("tcp://127.0.0.1:%1/can0").arg(port_);
+        hostVirtualCanBus("virtualcan", interface_); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", interface_));
         QVERIFY(host_ && host_->connectDevice());
         QTRY_COMPARE(host_->state(), QCanBusDevice::ConnectedState);

@@ -8,6 +8,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "devices/canopen/drive_simulator.h"
+#include "devices/canopen/virtualcan_host.h"
 #include "ui/device_panel.h"
 #include "ui/engine_bridge.h"
 #include "ui/main_window.h"
@@ -77,6 +78,7 @@ class TestGuiCan : public QObject {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(dir_.isValid());
         interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 7) % 20000);
+        cutcell::canopen::hostVirtualCanBus("virtualcan", interface_); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", interface_));
         QVERIFY(host_ && host_->connectDevice());
         QTRY_COMPARE(host_->state(), QCanBusDevice::ConnectedState);

@@ -17,6 +17,7 @@
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
 #include "devices/canopen/drive_simulator.h"
+#include "devices/canopen/virtualcan_host.h"
 #include "ui/engine_bridge.h"
 #include "ui/link_control.h"
 #include "ui/main_window.h"
@@ -161,6 +162,7 @@ class TestGuiCanLink : public QObject {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(dir_.isValid());
         busPort_ = static_cast<quint16>(40000 + (getpid() + 11) % 20000);
+        cutcell::canopen::hostVirtualCanBus("virtualcan", busUrl()); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", busUrl()));
         QVERIFY(host_ && host_->connectDevice());
         QTRY_COMPARE(host_->state(), QCanBusDevice::ConnectedState);
