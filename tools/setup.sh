@@ -47,8 +47,13 @@ fi
 
 jobs=2
 build=build
+# Line tables only (-g1): backtraces, gdb's `bt` and sanitizer reports keep files and lines,
+# and the cold build on two cores takes about a third less time than with full -g (measured on
+# groove_arm.cpp: 9.3 s against 14.6 s; under ASan 23 s against 38 s). Both builds use it.
+debug_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 echo "== configuring and building ($build)"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake -S . -B "$build" -G Ninja "${debug_flags[@]}" >/dev/null
 cmake --build "$build" -j "$jobs"
 
 default_job=resources/jobs/default_job.json
@@ -77,7 +82,7 @@ ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
 
 echo "== test suite under AddressSanitizer + UndefinedBehaviorSanitizer"
 san=build-asan
-cmake -S . -B "$san" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUTCELL_SANITIZE=ON -DCUTCELL_BUILD_GUI=OFF >/dev/null
+cmake -S . -B "$san" -G Ninja "${debug_flags[@]}" -DCUTCELL_SANITIZE=ON -DCUTCELL_BUILD_GUI=OFF >/dev/null
 cmake --build "$san" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$san" --output-on-failure -j "$jobs" --timeout 900
