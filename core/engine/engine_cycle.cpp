@@ -89,6 +89,7 @@ void MotionEngine::Impl::superviseEnabling() {
     for (int i = 0; i < kMaxAxes; ++i) {
         lastSensed[static_cast<size_t>(i)] = fb[static_cast<size_t>(i)].position;
         travelSinceChange[static_cast<size_t>(i)] = 0;
+        lastPairedSetpoint[static_cast<size_t>(i)] = setpoint[i];
     }
     setState(EngineState::Ready, EventKind::Transition, "Drives enabled%s",
              homed ? "" : " (not homed: Home before Start)");
@@ -343,7 +344,6 @@ double MotionEngine::Impl::trajectoryDuration() const {
 }
 
 void MotionEngine::Impl::computeSetpoint() {
-    setpointPrev = setpoint;
     const bool drivesOff = state == EngineState::Idle ||
                            ((state == EngineState::EmergencyStop || state == EngineState::Fault) &&
                             stopping == StopReason::None);
@@ -384,6 +384,12 @@ void MotionEngine::Impl::superviseDevices() {
         if (!f.feedback_valid)
             return enterFault("axis %d (%s): feedback not valid (stale data) at %.3f %s", i,
                               axisName(i), displayValue(i, f.position), unit(i));
+        // Against the set-point of the cycle the feedback belongs to: a TPDO late on the bus
+        // says where the axis was then, not where it is (track() takes the same pair). A late
+        // TPDO repeats the last position and its pair stands still too: not frozen.
+        const double sp = setpointForFeedback(i);
+        const double pairedTravel = std::fabs(sp - lastPairedSetpoint[a]);
+        lastPairedSetpoint[a] = sp;
         const bool supervised = !sourceRan || srcOut.supervised[a];
         if (supervised != supervisedNow[a]) {
             supervisedNow[a] = supervised;
@@ -397,7 +403,7 @@ void MotionEngine::Impl::superviseDevices() {
             continue;
         }
         if (f.position == lastSensed[a]) {
-            travelSinceChange[a] += std::fabs(setpoint[i] - setpointPrev[i]);
+            travelSinceChange[a] += pairedTravel;
             if (travelSinceChange[a] > cfg.frozen_feedback_travel)
                 return enterFault(
                     "axis %d (%s): feedback frozen at %.4f %s while the set-point moved %.4f %s", i,
@@ -407,9 +413,6 @@ void MotionEngine::Impl::superviseDevices() {
             travelSinceChange[a] = 0;
             lastSensed[a] = f.position;
         }
-        // Against the set-point of the cycle the feedback belongs to: a TPDO late on the bus
-        // says where the axis was then, not where it is (track() takes the same pair).
-        const double sp = setpointForFeedback(i);
         const double e = sp - f.position;
         if (std::fabs(e) > followingLimit(i))
             return enterFault("axis %d (%s): following error %.3f %s exceeds %.3f %s (set-point "

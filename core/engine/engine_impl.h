@@ -125,10 +125,13 @@ struct MotionEngine::Impl {
     bool pathStarted = false; // the path moved in this run (pierce only before that)
     std::uint64_t anchorCycles = 0;
     bool rateChanged = false;
-    JointVector setpoint = JointVector::Zero(), setpointPrev = JointVector::Zero();
+    JointVector setpoint = JointVector::Zero();
     // The set-points of the last kSetpointHistory cycles (index cycle % size): a feedback that
-    // came age_cycles late is compared with the set-point of its own cycle.
-    static constexpr int kSetpointHistory = 16;
+    // came age_cycles late is compared with the set-point of its own cycle. 128 cycles cover
+    // every feedback a bus drive still calls valid (no TPDO for 100 ms: stale) at any cycle of
+    // 0.8 ms or more; 16 did not: 20 cycles late at 2 ms (a loaded ASan run) was paired with
+    // the set-point of 15 cycles ago and showed the carriage's travel as following error.
+    static constexpr int kSetpointHistory = 128;
     std::array<JointVector, kSetpointHistory> setpointHistory{};
     JointVector setpointVel = JointVector::Zero();
     // run
@@ -155,6 +158,7 @@ struct MotionEngine::Impl {
     bool faultCat0 = false; // the next fault removes torque at once (control laws)
     // supervision
     std::array<double, kMaxAxes> lastSensed{}, travelSinceChange{};
+    std::array<double, kMaxAxes> lastPairedSetpoint{}; // setpointForFeedback() a cycle ago
     std::array<bool, kMaxAxes> supervisedNow{true, true, true, true, true, true, true, true};
     bool arcWasOk = false;
 
