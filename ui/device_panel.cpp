@@ -1,5 +1,7 @@
 #include "ui/device_panel.h"
 
+#include "ui/forms/number_fields.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHeaderView>
@@ -22,7 +24,9 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     plugin_ = new QLineEdit;
     plugin_->setToolTip(tr("Qt CAN plugin: socketcan on a real bus, virtualcan for tests"));
     interface_ = new QLineEdit;
-    bitrate_ = new QSpinBox;
+    auto* bitrate = new CutCell::ui::WholeNumberField;
+    bitrate->setFieldName(tr("Bit rate"));
+    bitrate_ = bitrate;
     bitrate_->setRange(10, 1000);
     bitrate_->setSuffix(tr(" kbit/s"));
     choiceBox_ = new QWidget;
@@ -34,6 +38,7 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Bit rate"), bitrate_);
 
     bus_ = new QLabel(tr("Bus: -"));
+    bus_->setWordWrap(true); // a failure names every node: wrapped, never wider than the tab
     load_ = new QLabel(tr("Load: -"));
     load_->setWordWrap(true);
     nodes_ = new QTableWidget(0, ColCount);

@@ -14,6 +14,7 @@
 #include "ui/panels/bus_panel.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/dro_panel.h"
+#include "ui/panels/elided_label.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
@@ -32,6 +33,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QShowEvent>
 #include <QSplitter>
@@ -57,7 +59,7 @@ MainWindow::MainWindow(EngineRigFactory factory, QWidget* parent)
     connect(document_, &JobDocument::recentFilesChanged, this, &MainWindow::refreshRecentMenu);
     document_->newJob(cutcell::defaultJob());
     refreshRecentMenu();
-    resize(1600, 1000);
+    fitToScreen();
 }
 
 MainWindow::~MainWindow() = default;
@@ -136,6 +138,12 @@ void MainWindow::buildLayout() {
     main->setStretchFactor(0, 4);
     main->setStretchFactor(1, 1);
     main->setSizes({800, 140});
+    // Nothing in the forms, views or tabs may widen the window: a line no layout can wrap (a
+    // bus failure naming every node, a long path) once made its minimum 1855 px and pushed the
+    // operator column with the E-STOP off a maximised screen. Ignored: the splitter's minimum
+    // is kMinWorkAreaWidth whatever it holds; what does not fit is clipped or elided there.
+    main->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    main->setMinimumWidth(kMinWorkAreaWidth);
 
     auto* central = new QWidget(this);
     auto* h = new QHBoxLayout(central);
@@ -147,7 +155,8 @@ void MainWindow::buildLayout() {
 
     stateLabel_ = new QLabel(tr("Idle"), this);
     stateLabel_->setObjectName("statusState");
-    rigLabel_ = new QLabel(tr("no machine yet"), this);
+    rigLabel_ = new ElidedLabel(tr("no machine yet"), this);
+    rigLabel_->setObjectName("statusRig");
     planBar_ = new QProgressBar(this);
     planBar_->setRange(0, 100);
     planBar_->setMaximumWidth(180);
@@ -157,13 +166,31 @@ void MainWindow::buildLayout() {
     planCancel_->hide();
     statusBar()->addWidget(stateLabel_);
     statusBar()->addWidget(rigLabel_, 1);
-    cycleLabel_ = new QLabel(this);
+    cycleLabel_ = new ElidedLabel({}, this);
     cycleLabel_->setObjectName("cycleStats");
+    cycleLabel_->setMinimumWidth(120);
     statusBar()->addPermanentWidget(cycleLabel_);
     statusBar()->addPermanentWidget(planBar_);
     statusBar()->addPermanentWidget(planCancel_);
     statusBar()->addPermanentWidget(
         new QLabel(tr("E-STOP: %1 (any field)").arg(ControlPanel::kEStopKey), this));
+    // The status bar's messages elide; the bar itself never sets the window's width either.
+    statusBar()->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+}
+
+void MainWindow::fitToScreen() {
+    // 1600x1000 where the screen has room, else the screen's available area (a 1280x720
+    // panel PC opened it at 1440x900, the E-STOP half off screen until maximised).
+    QSize size(1600, 1000);
+    // Qt's offscreen platform has no screen to fit (a fixed 800x600 stand-in): headless
+    // screenshots and tests keep the desktop size.
+    const bool realScreen = QGuiApplication::platformName() != QLatin1String("offscreen");
+    if (const QScreen* s = screen(); s && realScreen) {
+        const QRect room = s->availableGeometry();
+        size = size.boundedTo(room.size());
+        move(room.topLeft());
+    }
+    resize(size);
 }
 
 void MainWindow::buildMenus() {
@@ -238,6 +265,9 @@ void MainWindow::connectRun() {
             });
     connect(run_, &RunController::programLoaded, recovery_, &RecoveryPanel::setProgram);
     connect(recovery_, &RecoveryPanel::startFromRequested, run_, &RunController::startFrom);
+    connect(run_, &RunController::unconfirmedPartChanged, recovery_,
+            &RecoveryPanel::setUnconfirmedPart);
+    connect(recovery_, &RecoveryPanel::partConfirmed, run_, &RunController::confirmPart);
     connect(run_, &RunController::countersChanged, progress_, &ProgressPanel::setCycleFigures);
     connect(run_, &RunController::programLoaded, this,
             [this](std::shared_ptr<const cutcell::MotionProgram> program) {
@@ -261,7 +291,7 @@ void MainWindow::connectRun() {
     controls_->setStartBlocked(run_->startBlockedReason());
     connect(run_, &RunController::message, log_,
             [this](Severity s, const QString& m) { log_->add(s, m); });
-    connect(run_, &RunController::rigChanged, rigLabel_, &QLabel::setText);
+    connect(run_, &RunController::rigChanged, rigLabel_, &ElidedLabel::setFullText);
     connect(run_, &RunController::linkChanged, bus_, &BusPanel::setLink);
     connect(bus_, &BusPanel::reconnectRequested, run_, &RunController::reconnect);
     // The device panel at ~5 Hz from the rig (a short mutex in the CAN master, no bus wait).
@@ -311,7 +341,7 @@ void MainWindow::connectRun() {
                            .arg(c.overruns);
         if (c.estops_measured > 0)
             text += tr(", E-STOP latency %1 us").arg(c.last_estop_latency_us, 0, 'f', 0);
-        cycleLabel_->setText(text);
+        cycleLabel_->setFullText(text);
     });
 }
 

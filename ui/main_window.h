@@ -39,6 +39,7 @@ class PlotsPanel;
 class ProgressPanel;
 class RunController;
 class StateLamps;
+class ElidedLabel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -92,6 +93,9 @@ class MainWindow : public QMainWindow {
     RecoveryPanel* recovery() const { return recovery_; }
     BusPanel* busPanel() const { return bus_; }
     QWidget* operatorColumn() const { return column_; }
+    // The narrowest the left part (forms, 3D view, plots, log) may become; what it holds may
+    // not widen the window beyond it plus the operator column (ui/main_window.cpp).
+    static constexpr int kMinWorkAreaWidth = 640;
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -100,6 +104,7 @@ class MainWindow : public QMainWindow {
   private:
     void buildLayout();
     void buildMenus();
+    void fitToScreen();
     void connectRun();
     void refreshTitle();
     void refreshRecentMenu();
@@ -130,8 +135,8 @@ class MainWindow : public QMainWindow {
     PlotsPanel* plots_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* stateLabel_ = nullptr;
-    QLabel* rigLabel_ = nullptr;
-    QLabel* cycleLabel_ = nullptr;
+    ElidedLabel* rigLabel_ = nullptr;
+    ElidedLabel* cycleLabel_ = nullptr;
     QProgressBar* planBar_ = nullptr;
     QPushButton* planCancel_ = nullptr;
     std::function<int()> savePrompt_;

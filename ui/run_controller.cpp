@@ -54,6 +54,8 @@ RunController::RunController(JobEditor* editor, EngineRigFactory factory, QObjec
     connect(editor_, &JobEditor::jobReset, this, [this] { // a part counter per job
         parts_ = 0;
         lastCycleS_ = 0;
+        coverage_.begin();
+        setUnconfirmed({});
         emit countersChanged(parts_, lastCycleS_);
     });
     connect(planner_, &PlanWorker::started, this, [this] {
@@ -208,8 +210,16 @@ void RunController::onState(EngineState s) {
     const bool wasCutting = was == EngineState::Running || was == EngineState::Paused;
     if (s == EngineState::Running && !wasCutting) emit runStarted();
     if (s == EngineState::Completed && wasCutting) {
-        ++parts_;
         lastCycleS_ = bridge_->last().elapsed_s;
+        if (coverage_.whole()) {
+            ++parts_;
+        } else {
+            setUnconfirmed(describeGaps());
+            emit message(Severity::Warning,
+                         tr("Part not counted as good: %1. Confirm it in the recovery box if it "
+                            "was finished otherwise.")
+                             .arg(unconfirmed_));
+        }
         emit countersChanged(parts_, lastCycleS_);
     }
     const bool stopped =
@@ -339,12 +349,52 @@ void RunController::home() {
 void RunController::start() {
     if (!rig_ || !blocked_.isEmpty()) return;
     emit runStarting();
+    coverage_.begin();
+    setUnconfirmed({});
     rig_->engine().start();
 }
 void RunController::startFrom(double pathTime_s) {
     if (!rig_ || !blocked_.isEmpty()) return;
     emit runStarting();
+    coverage_.recoverFrom(pathTime_s);
+    setUnconfirmed({});
     rig_->engine().startFrom(pathTime_s);
+}
+
+void RunController::confirmPart() {
+    if (unconfirmed_.isEmpty()) return;
+    ++parts_;
+    emit message(Severity::Info,
+                 tr("Part counted as good by the operator (%1).").arg(unconfirmed_));
+    coverage_.begin();
+    setUnconfirmed({});
+    emit countersChanged(parts_, lastCycleS_);
+}
+
+void RunController::setUnconfirmed(const QString& text) {
+    if (text == unconfirmed_) return;
+    unconfirmed_ = text;
+    emit unconfirmedPartChanged(unconfirmed_);
+}
+
+QString RunController::describeGaps() const {
+    QStringList parts;
+    const double dt = program_ && program_->spline.dt() > 0 ? program_->spline.dt() : 0;
+    const double T = program_ ? program_->cut_time_s : 0;
+    for (const PartCoverage::Gap& g : coverage_.gaps()) {
+        if (dt <= 0 || T <= 0) {
+            parts << tr("path time %1 to %2 s not cut")
+                         .arg(g.from_s, 0, 'f', 3)
+                         .arg(g.to_s, 0, 'f', 3);
+            continue;
+        }
+        // Points shown 1-based as the progress panel does; mm in the recovery's own measure.
+        parts << tr("points %1 to %2 (%3 mm) never cut")
+                     .arg(static_cast<long>(g.from_s / dt) + 1)
+                     .arg(static_cast<long>(g.to_s / dt) + 1)
+                     .arg((g.to_s - g.from_s) / T * program_->length_mm, 0, 'f', 1);
+    }
+    return parts.join(QStringLiteral("; "));
 }
 
 void RunController::fetchStopPoint(int attempt) {
@@ -353,6 +403,7 @@ void RunController::fetchStopPoint(int attempt) {
     cutcell::TrackingReport report;
     cutcell::RunStopPoint stop;
     if (rig_->engine().lastRunReport(report, nullptr, &stop) && stop.valid) {
+        coverage_.stoppedAt(stop.path_time_s);
         emit stopPointChanged(stop);
         return;
     }

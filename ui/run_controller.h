@@ -9,6 +9,7 @@
 #include "core/trajectory/cut_planner.h"
 #include "ui/engine_bridge.h"
 #include "ui/engine_rig.h"
+#include "ui/part_coverage.h"
 
 #include <QObject>
 
@@ -51,6 +52,11 @@ class RunController : public QObject {
     // (Start to Completed, s; 0 before the first).
     int partsCompleted() const { return parts_; }
     double lastCycleS() const { return lastCycleS_; }
+    // A run completed a part whose path has stretches no run cut (Run from point beyond the
+    // stop): the part is not counted until the operator confirms it. Empty if none waits.
+    QString unconfirmedPart() const { return unconfirmed_; }
+    // The operator confirms the waiting part as good (it was finished otherwise): counted.
+    void confirmPart();
 
     // Operator commands (non-blocking requests to the engine).
     void enable();
@@ -100,6 +106,9 @@ class RunController : public QObject {
     // Where the run that ended short stopped (the engine's stop point, for cut recovery).
     void stopPointChanged(const cutcell::RunStopPoint& stop);
     void countersChanged(int parts, double lastCycleS);
+    // A part waits for the operator's confirmation (text: what was not cut), or no longer
+    // (empty).
+    void unconfirmedPartChanged(const QString& text);
 
   private:
     void onPlanned(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
@@ -136,6 +145,10 @@ class RunController : public QObject {
     bool jogging_ = false;
     int parts_ = 0;
     double lastCycleS_ = 0;
+    PartCoverage coverage_;
+    QString unconfirmed_;
+    void setUnconfirmed(const QString& text);
+    QString describeGaps() const;
     bool autoRun_ = false;
     bool userCancelled_ = false;
     bool autoEnableSent_ = false, autoHomeSent_ = false, autoStartSent_ = false;

@@ -30,6 +30,17 @@ double MotionEngine::Impl::speedLimit(int i) const {
     const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
     return linear ? cfg.home_speed_linear_mm_s : deg2rad(cfg.spec.home_speed_deg_s);
 }
+JointVector MotionEngine::Impl::homeTarget() const {
+    JointVector target = program->reference;
+    for (int i = 0; i < axisCount(); ++i) {
+        if (!program->axis_continuous[static_cast<size_t>(i)]) continue;
+        // The reference's equivalent nearest to the set-point: the difference wrapped into
+        // [-pi, pi).
+        const double d = target[i] - setpoint[i];
+        target[i] = setpoint[i] + (d - 2 * kPi * std::floor((d + kPi) / (2 * kPi)));
+    }
+    return target;
+}
 double MotionEngine::Impl::followingLimit(int i) const {
     const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
     return linear ? cfg.following_error_limit_mm : deg2rad(cfg.spec.following_error_limit_deg);
@@ -177,11 +188,24 @@ void MotionEngine::Impl::endRun(const char* outcome) {
     r.run_id = runId;
     r.stop = stopPoint;
     stopPoint = RunStopPoint{};
+    r.start = recoveryStart();
     snprintfC(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
     snprintfC(r.outcome.data(), r.outcome.size(), "%s", outcome);
     resultGeneration.store(g + 1, std::memory_order_release);
     emitf(EventKind::RunEnded, Severity::Info, state, state, "Run %u ended: %s (%ld samples)",
           runId, outcome, samples);
+}
+
+RunStopPoint MotionEngine::Impl::recoveryStart() const {
+    RunStopPoint s;
+    if (!program || startTau <= 0 || program->cut_time_s <= 0) return s;
+    s.valid = true;
+    s.path_time_s = startTau;
+    s.progress = startTau / program->cut_time_s;
+    s.length_mm = s.progress * program->length_mm; // the recovery's own measure (RunStarted)
+    s.point_index = static_cast<std::uint32_t>(startTau / program->spline.dt());
+    s.point_count = static_cast<std::uint32_t>(program->point_count);
+    return s;
 }
 
 void MotionEngine::Impl::captureStop() {
@@ -376,7 +400,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         if (s == EngineState::Idle) return refuse(c.type, "drives not enabled");
         if (s == EngineState::Homing) return refuse(c.type, "already homing");
         if (inMotion(s)) return refuse(c.type, "motion in progress (%s)", toString(s));
-        return beginMove(program->reference, EngineState::Homing);
+        return beginMove(homeTarget(), EngineState::Homing);
     case CommandType::Jog: {
         if (s != EngineState::Ready)
             return refuse(c.type, "only while Ready (state %s)", toString(s));

@@ -242,8 +242,15 @@ void MotionEngine::Impl::stepRunning() {
         for (int i = 0; i < axisCount(); ++i)
             stats.addTorqueFraction(std::fabs(fb[static_cast<size_t>(i)].torque_ratio));
         holdAt(setpoint);
-        setState(EngineState::Completed, EventKind::Transition, "Completed: %.1f mm in %.2f s",
-                 program->length_mm, now - cutStartTime);
+        if (const RunStopPoint from = recoveryStart(); from.valid)
+            setState(EngineState::Completed, EventKind::Transition,
+                     "Completed: %.1f of %.1f mm in %.2f s (cut recovery from point %u of %u: "
+                     "the %.1f mm before it were not cut by this run)",
+                     program->length_mm - from.length_mm, program->length_mm, now - cutStartTime,
+                     from.point_index + 1, from.point_count, from.length_mm);
+        else
+            setState(EngineState::Completed, EventKind::Transition, "Completed: %.1f mm in %.2f s",
+                     program->length_mm, now - cutStartTime);
         endRun("completed");
         break;
     }

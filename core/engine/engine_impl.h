@@ -43,6 +43,9 @@ struct RunResult {
     std::array<char, 40> method{};
     std::uint32_t run_id = 0;
     RunStopPoint stop; // where a run that ended short stopped (summary.json "stop")
+    // A cut recovery: where on the path this run started; the path before it was not cut by
+    // this run (summary.json "recovered_from"). Not valid for a run from the path's start.
+    RunStopPoint start;
 };
 
 struct MotionEngine::Impl {
@@ -200,6 +203,10 @@ struct MotionEngine::Impl {
     int axisCount() const { return program ? program->axis_count : 0; }
     bool axisPresent(int i) const { return dev.axes[static_cast<size_t>(i)] != nullptr; }
     double speedLimit(int i) const;
+    // The reference, with every continuous axis at its equivalent nearest to the set-point.
+    JointVector homeTarget() const;
+    // Where this run started on the path if it is a cut recovery (not valid otherwise).
+    RunStopPoint recoveryStart() const;
     double followingLimit(int i) const;
     double displayValue(int i, double v) const; // deg or mm
     const char* unit(int i) const;

@@ -228,7 +228,7 @@ void MotionEngine::Impl::loggerDrain() {
                 const RunResult& r = results[g % 2];
                 TrackingReport report = r.report;
                 report.method = r.method.data();
-                runLog->endRun(r.outcome.data(), report, snapshot(), r.stop);
+                runLog->endRun(r.outcome.data(), report, snapshot(), r.stop, r.start);
             }
         }
     }

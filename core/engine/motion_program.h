@@ -29,6 +29,10 @@ struct MotionProgram {
     int axis_count = kAxisCount; // axes 0..axis_count-1 are driven (at most kMaxAxes)
     std::array<std::string, kMaxAxes> axis_names{};
     std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
+    // A rotary axis without end stops that turns on and on (the quick-return crank): every
+    // whole turn brings it to the same place, so a move to the reference (Home) takes the
+    // short way, at most half a turn, instead of unwinding the turns of the last runs.
+    std::array<bool, kMaxAxes> axis_continuous{};
     // Command mode of every axis; the drives must be set to it before Load (outside the cycle).
     std::array<AxisCommandMode, kMaxAxes> axis_modes{};
     MotionSourceKind source_kind = MotionSourceKind::JointSpline;

@@ -104,7 +104,7 @@ void RunLog::eventForLastRun(const EngineEvent& e) {
 }
 
 void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c,
-                    const RunStopPoint& stop) {
+                    const RunStopPoint& stop, const RunStopPoint& start) {
     if (runsDir_.empty() || dir_.empty()) return;
     json::Object cycle{{"period_s", c.period_s},
                        {"cycles", static_cast<double>(c.cycles)},
@@ -117,7 +117,8 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                        {"telemetry_dropped", static_cast<double>(c.telemetry_dropped)},
                        {"events_dropped", static_cast<double>(c.events_dropped)},
                        {"last_estop_latency_us", c.last_estop_latency_us}};
-    json::Object top{{"outcome", outcome}, {"tracking", reportToJson(report, &names_)}, {"cycle", cycle}};
+    json::Object top{
+        {"outcome", outcome}, {"tracking", reportToJson(report, &names_)}, {"cycle", cycle}};
     if (stop.valid)
         top.emplace_back("stop",
                          json::Object{{"path_time_s", stop.path_time_s},
@@ -126,6 +127,16 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                                       {"elapsed_s", stop.elapsed_s},
                                       {"point_index", static_cast<double>(stop.point_index)},
                                       {"point_count", static_cast<double>(stop.point_count)}});
+    if (start.valid)
+        top.emplace_back(
+            "recovered_from",
+            json::Object{{"path_time_s", start.path_time_s},
+                         {"progress", start.progress},
+                         {"point_index", static_cast<double>(start.point_index)},
+                         {"point_count", static_cast<double>(start.point_count)},
+                         {"not_cut_before_mm", start.length_mm},
+                         {"note", "a cut recovery: this run cut the path from this point on; "
+                                  "the path before it was not cut by this run"}});
     const json::Value doc(std::move(top));
     try {
         writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));

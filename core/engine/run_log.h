@@ -16,7 +16,6 @@
 
 namespace cutcell {
 
-
 class RunLog {
   public:
     explicit RunLog(std::string runsDir) : runsDir_(std::move(runsDir)) {}
@@ -34,7 +33,7 @@ class RunLog {
     void eventForLastRun(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
     void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle,
-                const RunStopPoint& stop = {});
+                const RunStopPoint& stop = {}, const RunStopPoint& start = {});
     std::string runDirectory() const { return dir_; }
     // A folder or file that could not be created since the last call ("" if none). Each new
     // problem is also printed once to stderr, so a run that is not logged never goes unnoticed.

@@ -457,6 +457,9 @@ class TestOperatorStation : public QObject {
         std::string outcome;
         QVERIFY(w.run()->rig()->engine().lastRunReport(report, &outcome));
         QCOMPARE(QString::fromStdString(outcome), QString("completed"));
+        // Resumed from before the stop point: the whole path was cut, the part counts.
+        QTRY_COMPARE_WITH_TIMEOUT(w.run()->partsCompleted(), 1, 2000);
+        QVERIFY(w.run()->unconfirmedPart().isEmpty());
     }
 
     void approachShowsProgressAndCyclesAreCounted() {

@@ -1,5 +1,7 @@
 #include "ui/forms/job_form.h"
 
+#include "ui/forms/number_fields.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -28,53 +30,6 @@ void setInvalid(QWidget* w, bool invalid, const QString& tip) {
         w->style()->polish(w);
     }
     w->setToolTip(tip);
-}
-
-// Number fields refuse letters visibly: QAbstractSpinBox's validator drops them silently
-// ("4x0abc" became 40). The key is still refused, but the field flashes red and a tooltip names
-// the character and the field, so the operator sees what happened.
-class LetterRefusal : public QObject {
-  public:
-    LetterRefusal(QAbstractSpinBox* box, QString key)
-        : QObject(box), box_(box), key_(std::move(key)) {
-        flash_.setSingleShot(true);
-        flash_.setInterval(1500);
-        connect(&flash_, &QTimer::timeout, this, [this] { mark(false); });
-    }
-
-  protected:
-    bool eventFilter(QObject* watched, QEvent* event) override {
-        if (event->type() != QEvent::KeyPress) return QObject::eventFilter(watched, event);
-        const auto* key = static_cast<QKeyEvent*>(event);
-        const QString text = key->text();
-        if (text.isEmpty() || !text.at(0).isLetter() ||
-            (key->modifiers() & (Qt::ControlModifier | Qt::AltModifier)))
-            return QObject::eventFilter(watched, event);
-        const QString why = JobForm::tr("'%1' refused: %2 takes a number (digits, sign, decimal "
-                                        "separator)")
-                                .arg(text, key_);
-        box_->setProperty("refusedInput", why);
-        mark(true);
-        QToolTip::showText(box_->mapToGlobal(QPoint(0, box_->height())), why, box_);
-        flash_.start();
-        return true; // refused, as the validator would, but visibly
-    }
-
-  private:
-    void mark(bool on) {
-        box_->setProperty("refused", on);
-        box_->style()->unpolish(box_);
-        box_->style()->polish(box_);
-    }
-    QAbstractSpinBox* box_;
-    QString key_;
-    QTimer flash_;
-};
-
-void refuseLettersVisibly(QAbstractSpinBox* box, const std::string& key) {
-    auto* filter = new LetterRefusal(box, QString::fromStdString(key));
-    box->installEventFilter(filter);
-    if (auto* edit = box->findChild<QLineEdit*>()) edit->installEventFilter(filter);
 }
 
 } // namespace
@@ -118,7 +73,8 @@ void JobForm::alsoMark(const std::string& key, QWidget* w) {
 }
 
 QDoubleSpinBox* JobForm::bindDouble(const std::string& key, int decimals, DoubleRef ref) {
-    auto* w = new QDoubleSpinBox(this);
+    auto* w = new DecimalField(this);
+    w->setFieldName(QString::fromStdString(key));
     w->setDecimals(decimals);
     w->setRange(-1e9, 1e9);
     w->setKeyboardTracking(true);
@@ -127,7 +83,6 @@ QDoubleSpinBox* JobForm::bindDouble(const std::string& key, int decimals, Double
     w->setAlignment(Qt::AlignRight);
     // The wide range would make the box ~140 px wide at least: let the layout narrow it.
     w->setMinimumWidth(70);
-    refuseLettersVisibly(w, key);
     registerField(key, w);
     bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
                              auto copy = job;
@@ -141,12 +96,12 @@ QDoubleSpinBox* JobForm::bindDouble(const std::string& key, int decimals, Double
 }
 
 QSpinBox* JobForm::bindInt(const std::string& key, IntRef ref) {
-    auto* w = new QSpinBox(this);
+    auto* w = new WholeNumberField(this);
+    w->setFieldName(QString::fromStdString(key));
     w->setRange(-1000000000, 1000000000);
     w->setButtonSymbols(QAbstractSpinBox::NoButtons);
     w->setAlignment(Qt::AlignRight);
     w->setMinimumWidth(60);
-    refuseLettersVisibly(w, key);
     registerField(key, w);
     bindings_.push_back({w, [w, ref](const cutcell::Job& job) {
                              auto copy = job;

@@ -81,20 +81,34 @@ BusPanel::BusPanel(QWidget* parent)
 void BusPanel::setLink(const RigLink& link) {
     link_ = link;
     setVisible(link.state != State::None);
-    const QString where = QString::fromStdString(link.where);
-    state_->setText(tr("Bus %1").arg(QString::fromLatin1(toString(link.state))).toUpper());
-    state_->setToolTip(where);
-    state_->setStyleSheet(
-        QStringLiteral("font-weight: bold; color: %1").arg(stateColor(link.state)));
-    const QString text = QString::fromStdString(link.text);
-    detail_->setText(text);
-    detail_->setToolTip(text);
     progress_->setVisible(link.state == State::Connecting);
     progress_->setRange(0, std::max(1, link.nodes));
     progress_->setValue(link.nodes_ready);
     reconnect_->setText(link.state == State::Down ? tr("Connect") : tr("Reconnect"));
     reconnect_->setEnabled(link.state != State::Connecting && link.state != State::None);
     refreshRows();
+}
+
+void BusPanel::refreshState() {
+    const QString where = QString::fromStdString(link_.where);
+    QString state = tr("Bus %1").arg(QString::fromLatin1(toString(link_.state))).toUpper();
+    QString text = QString::fromStdString(link_.text);
+    QString color = stateColor(link_.state);
+    QStringList silent;
+    for (int r = 0; r < nodes_->rowCount(); ++r)
+        if (rowStale(r)) silent << QString::number(snapshot_.nodes[static_cast<size_t>(r)].node);
+    if (link_.state == State::Up && !silent.isEmpty()) {
+        state = tr("BUS UP - %1 OF %2 NODES SILENT").arg(silent.size()).arg(nodes_->rowCount());
+        text = tr("No heartbeat within %1 ms from node(s) %2: check their power and cable.")
+                   .arg(snapshot_.heartbeat_timeout_ms, 0, 'f', 0)
+                   .arg(silent.join(QStringLiteral(", ")));
+        color = stateColor(State::Lost);
+    }
+    state_->setText(state);
+    state_->setToolTip(where);
+    state_->setStyleSheet(QStringLiteral("font-weight: bold; color: %1").arg(color));
+    detail_->setText(text);
+    detail_->setToolTip(text);
 }
 
 void BusPanel::setSnapshot(const cutcell::ui::DevicePanelSnapshot& snapshot) {
@@ -148,6 +162,7 @@ void BusPanel::refreshRows() {
         h += nodes_->rowHeight(r);
     nodes_->setFixedHeight(h);
     nodes_->setVisible(nodes_->rowCount() > 0);
+    refreshState();
 }
 
 } // namespace CutCell::ui

@@ -2,7 +2,9 @@
 // The fieldbus in the operator column (hidden for in-process drives): the bus state - down,
 // connecting with the nodes configured so far, up, lost, failed with the reason - one row per
 // node (node, NMT state, CiA 402 state, heartbeat age; the axis in the tooltip), a row greyed
-// when its last heartbeat is older than the heartbeat timeout, and Reconnect.
+// when its last heartbeat is older than the heartbeat timeout, and Reconnect. A bus that is up
+// while nodes have gone silent (a drive powered off, its cable pulled) does not say "up ... N
+// nodes operational": the state names how many nodes are silent and which, in red.
 //
 // Fed with plain data: the link (RunController::linkChanged) and the device snapshot (the main
 // window's device timer). Threading contract: GUI thread only; it only emits requests.
@@ -38,6 +40,7 @@ class BusPanel : public QWidget {
 
   private:
     void refreshRows();
+    void refreshState();
 
     QLabel* state_;
     QLabel* detail_;

@@ -1,5 +1,7 @@
 #include "ui/panels/recovery_panel.h"
 
+#include "ui/forms/number_fields.h"
+
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -28,7 +30,9 @@ RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
     where_->setWordWrap(true);
     g->addWidget(where_, 0, 0, 1, 3);
     g->addWidget(new QLabel(tr("Lead-in"), box), 1, 0);
-    leadIn_ = new QDoubleSpinBox(box);
+    auto* leadIn = new DecimalField(box);
+    leadIn->setFieldName(tr("Lead-in"));
+    leadIn_ = leadIn;
     leadIn_->setObjectName("recoveryLeadIn");
     leadIn_->setRange(0, 50);
     leadIn_->setDecimals(1);
@@ -41,7 +45,9 @@ RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
     resume_->setObjectName("recoveryResume");
     g->addWidget(resume_, 1, 2);
     g->addWidget(new QLabel(tr("From point"), box), 2, 0);
-    point_ = new QSpinBox(box);
+    auto* point = new WholeNumberField(box);
+    point->setFieldName(tr("From point"));
+    point_ = point;
     point_->setObjectName("recoveryPoint");
     point_->setToolTip(tr("Run the rest of the cut from this point of the path."));
     g->addWidget(point_, 2, 1);
@@ -52,6 +58,18 @@ RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
     reason_->setObjectName("recoveryReason");
     reason_->setWordWrap(true);
     g->addWidget(reason_, 3, 0, 1, 3);
+    unconfirmed_ = new QLabel(box);
+    unconfirmed_->setObjectName("recoveryUnconfirmed");
+    unconfirmed_->setWordWrap(true);
+    unconfirmed_->hide();
+    g->addWidget(unconfirmed_, 4, 0, 1, 3);
+    confirm_ = new QPushButton(tr("Count the part as good"), box);
+    confirm_->setObjectName("recoveryConfirmPart");
+    confirm_->setToolTip(tr("The run completed, but part of the path was never cut (Run from "
+                            "point). Count the part only if it was finished otherwise."));
+    confirm_->hide();
+    g->addWidget(confirm_, 5, 0, 1, 3);
+    connect(confirm_, &QPushButton::clicked, this, &RecoveryPanel::partConfirmed);
     connect(resume_, &QPushButton::clicked, this,
             [this] { emit startFromRequested(resumePathTime()); });
     connect(runFrom_, &QPushButton::clicked, this,
@@ -116,6 +134,12 @@ QString RecoveryPanel::reason() const {
             .arg(QString::fromLatin1(cutcell::toString(state_)));
     if (!homed_) return tr("Home first: the axes lost their reference.");
     return {};
+}
+
+void RecoveryPanel::setUnconfirmedPart(const QString& text) {
+    unconfirmed_->setText(tr("Part not counted: %1.").arg(text));
+    unconfirmed_->setVisible(!text.isEmpty());
+    confirm_->setVisible(!text.isEmpty());
 }
 
 void RecoveryPanel::refresh() {

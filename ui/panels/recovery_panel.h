@@ -31,6 +31,9 @@ class RecoveryPanel : public QWidget {
     // Where the last run stopped; nullopt after a completed run or a new program.
     void setStopPoint(const std::optional<cutcell::RunStopPoint>& stop);
     void setState(cutcell::EngineState state, bool homed);
+    // A completed part with stretches no run cut (text: which), shown with "Count the part as
+    // good"; empty hides them.
+    void setUnconfirmedPart(const QString& text);
 
     // The path time a request would start at: the stop point minus the lead-in, and the picked
     // point (both clamped to the path).
@@ -42,9 +45,11 @@ class RecoveryPanel : public QWidget {
     QPushButton* runFromButton() const { return runFrom_; }
     QDoubleSpinBox* leadInField() const { return leadIn_; }
     QSpinBox* pointField() const { return point_; }
+    QPushButton* confirmPartButton() const { return confirm_; }
 
   signals:
     void startFromRequested(double pathTime_s);
+    void partConfirmed();
 
   private:
     void refresh();
@@ -57,6 +62,8 @@ class RecoveryPanel : public QWidget {
     QSpinBox* point_;
     QPushButton* resume_;
     QPushButton* runFrom_;
+    QLabel* unconfirmed_;
+    QPushButton* confirm_;
     std::shared_ptr<const cutcell::MotionProgram> program_;
     std::optional<cutcell::RunStopPoint> stop_;
     cutcell::EngineState state_ = cutcell::EngineState::Idle;

@@ -76,6 +76,7 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) 
     prog->axis_count = 1;
     prog->axis_names[0] = "crank";
     prog->axis_linear[0] = false;
+    prog->axis_continuous[0] = true; // the crank turns on: Home takes the short way
     prog->axis_modes[0] = AxisCommandMode::Torque;
     prog->source_kind = MotionSourceKind::ControlLaw;
     prog->source = law;

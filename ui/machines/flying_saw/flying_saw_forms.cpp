@@ -1,5 +1,7 @@
 #include "ui/machines/flying_saw/flying_saw_forms.h"
 
+#include "ui/forms/number_fields.h"
+
 #include "core/machines/flying_saw/flying_saw_source.h"
 #include "core/machines/flying_saw/flying_saw_spec.h"
 #include "ui/forms/edited_spec.h"
@@ -45,7 +47,8 @@ int shapeIndex(const FlyingSawSpec& s) {
 
 // A limit the validator checks: the box takes any number, the message says what is wrong.
 QDoubleSpinBox* cellLength(QWidget* parent) {
-    auto* w = new QDoubleSpinBox(parent);
+    auto* w = new DecimalField(parent);
+    w->setFieldName(FlyingSawTubeLineForm::tr("length"));
     w->setDecimals(1);
     w->setRange(-1e9, 1e9);
     w->setButtonSymbols(QAbstractSpinBox::NoButtons);
@@ -53,7 +56,8 @@ QDoubleSpinBox* cellLength(QWidget* parent) {
     return w;
 }
 QSpinBox* cellCount(QWidget* parent) {
-    auto* w = new QSpinBox(parent);
+    auto* w = new WholeNumberField(parent);
+    w->setFieldName(FlyingSawTubeLineForm::tr("pieces"));
     w->setRange(-1000000000, 1000000000);
     w->setButtonSymbols(QAbstractSpinBox::NoButtons);
     w->setAlignment(Qt::AlignRight);
