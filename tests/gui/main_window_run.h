@@ -6,6 +6,9 @@
 #include "ui/main_window.h"
 #include "ui/run_controller.h"
 
+#include "ui/panels/control_panel.h"
+
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QString>
 #include <QTest>
@@ -32,4 +35,22 @@ inline bool autoRunCompletes(CutCell::ui::MainWindow& w, int timeoutMs, QString*
         return false;
     }
     return true;
+}
+
+// Enable, Home and Start with the operator's buttons, each awaited (QTRY: a failure ends the
+// calling test function).
+inline void startManually(CutCell::ui::MainWindow& w) {
+    using cutcell::EngineState;
+    QTRY_VERIFY_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled() &&
+                                 w.controls()->startBlockedReason().contains("Enable"),
+                             60000);
+    QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 5000);
+    QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
+                             30000);
+    QTRY_VERIFY2_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(),
+                              qPrintable(w.controls()->startBlockedReason()), 2000);
+    QTest::mouseClick(w.controls()->startButton(), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Running, 10000);
 }

@@ -341,14 +341,7 @@ class TestOperatorDefects : public QObject {
         QStringList events;
         connect(w.run()->bridge(), &CutCell::ui::EngineBridge::event, &w,
                 [&](const cutcell::EngineEvent& e) { events << QString::fromUtf8(e.text.data()); });
-        QTRY_VERIFY_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled() &&
-                                     w.controls()->startBlockedReason().contains("Enable"),
-                                 60000);
-        QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
-        QTRY_COMPARE_WITH_TIMEOUT(state(w), cutcell::EngineState::Ready, 5000);
-        QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(), 30000);
-        QTest::mouseClick(w.controls()->startButton(), Qt::LeftButton);
+        startManually(w);
         QTRY_VERIFY_WITH_TIMEOUT(w.run()->bridge()->last().progress > 0.2, 30000);
         QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), cutcell::EngineState::EmergencyStop, 5000);

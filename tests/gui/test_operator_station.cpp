@@ -7,6 +7,7 @@
 #include "sim_rig.h"
 
 #include "core/job/default_job.h"
+#include "main_window_run.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
@@ -54,10 +55,6 @@ cutcell::Job shortJob(const std::string& runsDir = "") {
     job.sim.duration_s = 3.5;
     job.engine.runs_dir = runsDir;
     return job;
-}
-
-EngineState state(const MainWindow& w) {
-    return w.run()->bridge()->state();
 }
 
 // The widgets an operator reads or touches (not the internals of spin boxes, tables...).
@@ -139,21 +136,6 @@ void saveShot(MainWindow& w, const QString& path) {
     QImage shot = w.grab().toImage();
     w.cellView()->paintFrameInto(shot, &w);
     QVERIFY2(shot.save(path), qPrintable(path));
-}
-
-void startManually(MainWindow& w) {
-    QTRY_VERIFY_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled() &&
-                                 w.controls()->startBlockedReason().contains("Enable"),
-                             60000);
-    QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 5000);
-    QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
-    QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
-                             30000);
-    QTRY_VERIFY2_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(),
-                              qPrintable(w.controls()->startBlockedReason()), 2000);
-    QTest::mouseClick(w.controls()->startButton(), Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Running, 10000);
 }
 
 } // namespace
