@@ -79,8 +79,10 @@ int main(int argc, char** argv) {
     const QCommandLineOption shotOpt(
         "screenshot", "Save the main window to PNG and quit (with --run: when the run completed).",
         "PNG");
-    const QCommandLineOption sizeOpt("size", "Window size WIDTHxHEIGHT (default 1440x900).", "WxH",
-                                     "1440x900");
+    const QCommandLineOption sizeOpt(
+        "size",
+        "Window size WIDTHxHEIGHT (default: 1600x1000, within the screen's available area).",
+        "WxH");
     const QCommandLineOption timeoutOpt("timeout", "With --run: give up after S seconds.", "S",
                                         "300");
     const QCommandLineOption benchOpt(
@@ -94,13 +96,16 @@ int main(int argc, char** argv) {
     cli.process(app);
 
     const QStringList size = cli.value(sizeOpt).split('x');
-    if (size.size() != 2 || size[0].toInt() < 320 || size[1].toInt() < 240) {
+    if (cli.isSet(sizeOpt) &&
+        (size.size() != 2 || size[0].toInt() < 320 || size[1].toInt() < 240)) {
         std::fprintf(stderr, "cutcell: --size must be WIDTHxHEIGHT, e.g. 1440x900\n");
         return 64;
     }
     CutCell::ui::applyDarkIndustrialTheme(app);
     CutCell::ui::MainWindow window(&cutcell::app::makeRig);
-    window.resize(size[0].toInt(), size[1].toInt());
+    // Without --size the window fits the screen it opens on (MainWindow::fitToScreen): a fixed
+    // 1440x900 put the E-STOP column off a 1280x720 panel.
+    if (cli.isSet(sizeOpt)) window.resize(size[0].toInt(), size[1].toInt());
     const bool bench = cli.isSet(benchOpt);
     const bool unattended = bench || cli.isSet(runOpt) || cli.isSet(shotOpt);
     // Unattended runs report on stderr and exit codes; never wait on a dialog.

@@ -1,5 +1,6 @@
 #include "ui/forms/number_fields.h"
 
+#include <QFocusEvent>
 #include <QLocale>
 #include <QStyle>
 #include <QTimer>
@@ -84,22 +85,24 @@ QValidator::State validateTyped(const QString& typed, int decimals, double min, 
     return QValidator::Intermediate;
 }
 
-// fixup(): the field is left with text that is not a number in range (Enter, focus out). Qt
-// then puts the previous value back; the operator is told why instead of seeing it silently.
-void refuseLeftover(const QString& typed, int decimals, double min, double max,
+// fixup(): the field is left with text that is not a number in range (Enter, focus out). The
+// operator is told why, and the caller puts back the value from before the edit. Returns
+// whether the text was refused.
+bool refuseLeftover(const QString& typed, int decimals, double min, double max,
                     const QLocale& locale, const QString& suffix, const QString& name,
                     InputRefusal* refusal) {
     const TypedNumber n = readTypedNumber(typed, decimals, min < 0);
-    if (n.kind == TypedNumber::Kind::Number && n.value >= min && n.value <= max) return;
+    if (n.kind == TypedNumber::Kind::Number && n.value >= min && n.value <= max) return false;
     const QString kept = DecimalField::tr("; the previous value is kept");
     if (n.kind == TypedNumber::Kind::Held || n.kind == TypedNumber::Kind::Refused) {
         refusal->refuse(n.why.arg(name) + kept);
-        return;
+        return true;
     }
     const QString why = n.kind == TypedNumber::Kind::Number
                             ? rangeWhy(locale, min, max, decimals, suffix)
                             : DecimalField::tr("needs a number");
     refusal->refuse(sentence(typed, name, why) + kept);
+    return true;
 }
 
 } // namespace
@@ -187,6 +190,12 @@ DecimalField::DecimalField(QWidget* parent)
     : QDoubleSpinBox(parent), refusal_(new InputRefusal(this)) {
     // Not WheelFocus (the spin boxes' default): a wheel turned over the form scrolls it.
     setFocusPolicy(Qt::StrongFocus);
+    connect(this, &QAbstractSpinBox::editingFinished, this, [this] { editStart_ = value(); });
+}
+
+void DecimalField::focusInEvent(QFocusEvent* event) {
+    editStart_ = value();
+    QDoubleSpinBox::focusInEvent(event);
 }
 
 QValidator::State DecimalField::validate(QString& input, int& pos) const {
@@ -211,8 +220,9 @@ QString DecimalField::textFromValue(double v) const {
 void DecimalField::fixup(QString& input) const {
     // Nothing is repaired (Qt's own fixup drops the locale's group separators: "2.5" -> "25"
     // under de_DE); a leftover that is not a number in range is refused and said.
-    refuseLeftover(typedPart(input, prefix(), suffix()), decimals(), minimum(), maximum(), locale(),
-                   suffix(), name_.isEmpty() ? objectName() : name_, refusal_);
+    if (refuseLeftover(typedPart(input, prefix(), suffix()), decimals(), minimum(), maximum(),
+                       locale(), suffix(), name_.isEmpty() ? objectName() : name_, refusal_))
+        input = prefix() + textFromValue(editStart_) + suffix(); // Qt takes it as the value
 }
 
 void DecimalField::wheelEvent(QWheelEvent* event) {
@@ -228,6 +238,12 @@ void DecimalField::wheelEvent(QWheelEvent* event) {
 WholeNumberField::WholeNumberField(QWidget* parent)
     : QSpinBox(parent), refusal_(new InputRefusal(this)) {
     setFocusPolicy(Qt::StrongFocus);
+    connect(this, &QAbstractSpinBox::editingFinished, this, [this] { editStart_ = value(); });
+}
+
+void WholeNumberField::focusInEvent(QFocusEvent* event) {
+    editStart_ = value();
+    QSpinBox::focusInEvent(event);
 }
 
 QValidator::State WholeNumberField::validate(QString& input, int& pos) const {
@@ -251,8 +267,9 @@ QString WholeNumberField::textFromValue(int v) const {
 }
 
 void WholeNumberField::fixup(QString& input) const {
-    refuseLeftover(typedPart(input, prefix(), suffix()), 0, minimum(), maximum(), locale(),
-                   suffix(), name_.isEmpty() ? objectName() : name_, refusal_);
+    if (refuseLeftover(typedPart(input, prefix(), suffix()), 0, minimum(), maximum(), locale(),
+                       suffix(), name_.isEmpty() ? objectName() : name_, refusal_))
+        input = prefix() + textFromValue(editStart_) + suffix();
 }
 
 void WholeNumberField::wheelEvent(QWheelEvent* event) {

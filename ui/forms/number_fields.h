@@ -6,8 +6,10 @@
 //     desktop types either); a group separator is never read;
 //   - anything else is refused visibly: a letter or a misplaced sign is dropped; a second
 //     separator ("1.234,5" is ambiguous), a separator in a whole number or more decimals than
-//     the field keeps stay on screen, marked, and are never taken (Enter puts the last value
-//     back); a number beyond the field's range likewise (never clamped or cut silently);
+//     the field keeps stay on screen, marked, and are never taken: Enter puts back the value
+//     the field had before this edit (typed key by key, "1.234,5" passes through 1.2, which
+//     the field takes while it is typed; Enter restores the 400.0 it had); a number beyond
+//     the field's range is refused likewise (never clamped or cut silently);
 //   - values are shown in the field's locale (decimal comma on a German desktop), without
 //     group separators, and never as "-0.000";
 //   - the mouse wheel changes a value only in the field that has the focus: scrolling a form
@@ -72,10 +74,12 @@ class DecimalField : public QDoubleSpinBox {
 
   protected:
     void wheelEvent(QWheelEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
 
   private:
     QString name_;
     InputRefusal* refusal_;
+    double editStart_ = 0; // the value before this edit (focus in, or the last Enter)
 };
 
 // A field for a whole number (QSpinBox with the reading above: a separator is refused).
@@ -93,10 +97,12 @@ class WholeNumberField : public QSpinBox {
 
   protected:
     void wheelEvent(QWheelEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
 
   private:
     QString name_;
     InputRefusal* refusal_;
+    int editStart_ = 0;
 };
 
 } // namespace CutCell::ui
