@@ -276,7 +276,10 @@ void MainWindow::connectRun() {
                 if (program && !program->spline.empty())
                     progress_->setApproachTarget(program->spline.evaluate(0).q,
                                                  program->axis_count);
-                if (program) progress_->setPathLength(program->length_mm);
+                if (!program) return;
+                progress_->setPathLength(program->length_mm);
+                progress_->setTerms(program->terms);
+                alarms_->setTerms(program->terms);
             });
     connect(dro_, &DroPanel::jogRequested, run_, &RunController::jog);
     connect(dro_, &DroPanel::jogContinuousRequested, run_, &RunController::jogContinuous);

@@ -211,7 +211,10 @@ void RunController::onState(EngineState s) {
     if (s == EngineState::Running && !wasCutting) emit runStarted();
     if (s == EngineState::Completed && wasCutting) {
         lastCycleS_ = bridge_->last().elapsed_s;
-        if (coverage_.whole()) {
+        if (countsUnits()) {
+            // Pieces, strokes: what the run made, not one part per run.
+            parts_ += static_cast<int>(bridge_->last().made);
+        } else if (coverage_.whole()) {
             ++parts_;
         } else {
             setUnconfirmed(describeGaps());
@@ -404,6 +407,10 @@ void RunController::fetchStopPoint(int attempt) {
     cutcell::RunStopPoint stop;
     if (rig_->engine().lastRunReport(report, nullptr, &stop) && stop.valid) {
         coverage_.stoppedAt(stop.path_time_s);
+        if (countsUnits() && stop.made > 0) { // the pieces or strokes made before the stop
+            parts_ += static_cast<int>(stop.made);
+            emit countersChanged(parts_, lastCycleS_);
+        }
         emit stopPointChanged(stop);
         return;
     }
@@ -534,6 +541,10 @@ void RunController::stepAutoRun() {
     default:
         break;
     }
+}
+
+bool RunController::countsUnits() const {
+    return program_ && program_->terms.counts != cutcell::WorkCount::PathPoints;
 }
 
 } // namespace CutCell::ui

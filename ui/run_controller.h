@@ -48,8 +48,10 @@ class RunController : public QObject {
     const MachineUi* programMachine() const { return programMachine_; }
     // Whether the emergency stop request is pressed (until releaseEmergencyStop()).
     bool eStopPressed() const { return estopPressed_; }
-    // Runs that reached Completed since this job was opened, and the last one's cycle time
-    // (Start to Completed, s; 0 before the first).
+    // What was made since this job was opened: for a path machine the runs that reached
+    // Completed over their whole path, for a machine that counts pieces or strokes
+    // (MotionProgram::terms) the pieces or strokes of every run, stopped ones too; and the last
+    // completed run's cycle time (Start to Completed, s; 0 before the first).
     int partsCompleted() const { return parts_; }
     double lastCycleS() const { return lastCycleS_; }
     // A run completed a part whose path has stretches no run cut (Run from point beyond the
@@ -121,6 +123,7 @@ class RunController : public QObject {
     void onLinkChanged(const RigLink& link);
     bool rigMatches(const cutcell::Job& job) const;
     bool engineBusy() const;
+    bool countsUnits() const; // the program counts pieces or strokes, not whole parts
 
     JobEditor* editor_;
     EngineRigFactory factory_;

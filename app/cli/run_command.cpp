@@ -109,6 +109,7 @@ int runRun(const RunOptions& o) {
     EngineDevices devices;
     EngineConfig config;
     config.period_s = job.sim.period_s;
+    config.spec = job.engine; // first: the bus's tuning reads its speed limits
     // CANopen drives (the job's devices section or --devices canopen): always real time.
     if (std::string noCan; overCan && !module.supportsCanOpen(&noCan)) {
         std::fprintf(stderr, "cutcell-cli run --devices canopen: %s\n", noCan.c_str());

@@ -3,8 +3,10 @@
 #include "can_link.h"
 #include "can_panel_feed.h"
 
+#include "core/machine/machine_registry.h"
 #include "devices/canopen/cell_safe_stop.h"
-#include "devices/canopen/engine_tuning.h"
+#include "devices/machines/can_cells.h"
+#include "devices/machines/sim_rig_registry.h"
 #include "devices/process/safe_shutdown.h"
 #include "devices/sim/simulated_torch.h"
 #include "ui/machine/machine_ui_registry.h"
@@ -22,13 +24,26 @@ using namespace cutcell::canopen;
 // brought up by the link worker when the operator asks (Enable, Reconnect), never here.
 class CanRig : public CutCell::ui::EngineRig {
   public:
-    explicit CanRig(const Job& job)
-        : period_(job.sim.period_s), config_(masterConfigFromJob(job, period_, kAxisCount)) {
+    explicit CanRig(const Job& job) : period_(job.sim.period_s) {
+        // The machine's cell - which node is which axis (mode, scaling) or encoder - from the
+        // same table the CLI builds its cell from (devices/machines/can_cells.cpp).
+        const MachineModule& module = machineFor(job);
+        if (std::string why; !module.supportsCanOpen(&why)) throw std::runtime_error(why);
+        const MachinePlan plan = module.plan(job);
+        const MotionProgram* program = plan.ok() && plan.program ? plan.program.get() : nullptr;
+        CanCellConfig cell;
+        if (std::string why; !makeCanCell(job, period_, program, &cell, &why))
+            throw std::runtime_error(why);
+        config_ = cell.master;
         config_.sync = SyncSource::LastDriveWrite;
-        // The device panel names each node's axis as the machine does.
+        cellText_ = cell.description;
+        // The device panel names each node's axis (or sensor) as the machine does.
         if (const auto* machine = CutCell::ui::machineUiFor(job))
             for (const auto& axis : machine->axes())
                 axisNames_.push_back(axis.name);
+        axisNames_.resize(static_cast<size_t>(cell.axis_count));
+        for (const std::string& sensor : module.sensorNames())
+            axisNames_.push_back(QString::fromStdString(sensor));
         master_ = std::make_unique<CanOpenMaster>(config_);
         // Refused at once, without touching the bus: bus load, plugin, interface.
         if (std::string why; !master_->checkConfig(&why)) throw std::runtime_error(why);
@@ -38,14 +53,22 @@ class CanRig : public CutCell::ui::EngineRig {
                 engine->logExternalEvent(e.error ? Severity::Warning : Severity::Info, e.text);
         });
         EngineDevices devices;
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < cell.axis_count; ++i)
             devices.axes[static_cast<size_t>(i)] = master_->drive(i);
+        for (int k = 0; k < cell.sensor_count && k < kMaxSensors; ++k)
+            devices.sensors[static_cast<size_t>(k)] = master_->encoder(k);
         devices.torch = &torch_;
         EngineConfig config;
+        config.period_s = period_;
+        config.spec = job.engine;
+        // The machine's own engine settings (windows, margins), then the bus's on top, as
+        // `cutcell-cli run --devices canopen` does.
+        if (program)
+            if (std::string noRig; const auto machineRig = makeSimulatedRig(job, *program, &noRig))
+                machineRig->configure(config);
         config.clock = ClockMode::RealTime; // the bus runs on the wall clock
         config.spec = job.engine;
-        config.gains = job.controller;
-        tuneEngineForCan(config, job, period_);
+        tuneEngineForCanCell(config, cell, job, period_);
         engine_ = std::make_unique<MotionEngine>(devices, config);
         engine_->startThread();
         engineForEvents_.store(engine_.get(), std::memory_order_release);
@@ -73,12 +96,11 @@ class CanRig : public CutCell::ui::EngineRig {
 
     MotionEngine& engine() override { return *engine_; }
     std::string description() const override {
-        char buf[200];
+        char buf[120];
         std::snprintf(buf, sizeof buf,
-                      "CANopen cell: 6 drives on %s at %d kbit/s + simulated torch, %.3g ms "
-                      "SYNC, real time",
+                      " on %s at %d kbit/s + simulated tool, %.3g ms SYNC, real time",
                       where().c_str(), config_.bitrate_bps / 1000, period_ * 1000.0);
-        return buf;
+        return "CANopen cell: " + cellText_ + buf;
     }
     bool deviceSnapshot(ui::DevicePanelSnapshot& out) override {
         const CutCell::ui::RigLink link = link_->status();
@@ -106,6 +128,7 @@ class CanRig : public CutCell::ui::EngineRig {
 
     double period_;
     CanOpenMasterConfig config_;
+    std::string cellText_; // "4 CiA 402 drives (CSP) + CiA 406 encoder 5 (line encoder)"
     std::vector<QString> axisNames_;
     std::unique_ptr<CanOpenMaster> master_;
     SimulatedTorch torch_;

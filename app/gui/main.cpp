@@ -90,8 +90,10 @@ int main(int argc, char** argv) {
         "Measure the longest GUI-thread stall during a real-time run of S "
         "seconds; prints JSON.",
         "S");
-    const QCommandLineOption tabOpt(
-        "tab", "Show parameter tab N of the job's machine (0 = Pipes, 1 = Cut, ...).", "N", "0");
+    const QCommandLineOption tabOpt("tab",
+                                    "Show the N-th parameter tab the job's machine has (0 = Job, 1 "
+                                    "= Pipes or the machine's first page, ...).",
+                                    "N", "0");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt});
     cli.process(app);
 

@@ -28,7 +28,7 @@ const char* latchedReason(EngineState s) {
 
 double MotionEngine::Impl::speedLimit(int i) const {
     const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
-    return linear ? cfg.home_speed_linear_mm_s : deg2rad(cfg.spec.home_speed_deg_s);
+    return linear ? cfg.spec.home_speed_mm_s : deg2rad(cfg.spec.home_speed_deg_s);
 }
 JointVector MotionEngine::Impl::homeTarget() const {
     JointVector target = program->reference;
@@ -43,7 +43,7 @@ JointVector MotionEngine::Impl::homeTarget() const {
 }
 double MotionEngine::Impl::followingLimit(int i) const {
     const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
-    return linear ? cfg.following_error_limit_mm : deg2rad(cfg.spec.following_error_limit_deg);
+    return linear ? cfg.spec.following_error_limit_mm : deg2rad(cfg.spec.following_error_limit_deg);
 }
 double MotionEngine::Impl::displayValue(int i, double v) const {
     const bool linear = program && program->axis_linear[static_cast<size_t>(i)];
@@ -174,19 +174,19 @@ void MotionEngine::Impl::endRun(const char* outcome) {
     runEndTime = now;
     const std::uint64_t g = resultGeneration.load(std::memory_order_relaxed);
     RunResult& r = results[(g + 1) % 2];
-    stats.fill(r.report);
-    cruise.fillCruise(r.report);
     r.report.reachable = true;
     r.report.axis_count = axisCount();
-    if (program)
-        for (int i = 0; i < kMaxAxes; ++i)
-            r.report.axis_linear[static_cast<size_t>(i)] =
-                program->axis_linear[static_cast<size_t>(i)];
+    for (int i = 0; i < kMaxAxes; ++i) // before fill(): it gives each axis its unit
+        r.report.axis_linear[static_cast<size_t>(i)] =
+            program && program->axis_linear[static_cast<size_t>(i)];
+    stats.fill(r.report);
+    cruise.fillCruise(r.report);
     r.report.length_mm = program ? program->length_mm : 0;
     r.report.cut_time_s = program ? program->cut_time_s : 0;
     r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;
     r.run_id = runId;
     r.stop = stopPoint;
+    r.end = stopPoint.valid ? stopPoint : currentPoint();
     stopPoint = RunStopPoint{};
     r.start = recoveryStart();
     snprintfC(r.method.data(), r.method.size(), "%s", program ? program->method.c_str() : "");
@@ -208,19 +208,37 @@ RunStopPoint MotionEngine::Impl::recoveryStart() const {
     return s;
 }
 
-void MotionEngine::Impl::captureStop() {
-    if (!runActive || !program) return;
+RunStopPoint MotionEngine::Impl::currentPoint() const {
+    RunStopPoint p;
+    if (!program) return p;
+    p.valid = true;
+    p.elapsed_s = (runActive ? now : runEndTime) - runStartTime;
+    if (isSourceProgram()) {
+        // The source keeps its own count (pieces, strokes); it has no path time to resume from.
+        p.progress = sourceProgress;
+        p.length_mm = program->terms.path_length ? sourceProgress * program->length_mm : 0;
+        p.point_index = sourcePoint;
+        p.point_count =
+            sourcePoints ? sourcePoints : static_cast<std::uint32_t>(program->point_count);
+        p.made = sourceMade;
+        return p;
+    }
     const bool onPath =
         traj == TrajectoryKind::Path || phase == RunPhase::Finish || phase == RunPhase::Close;
     const double t = onPath ? std::min(tau, program->cut_time_s) : startTau;
-    stopPoint.valid = true;
-    stopPoint.path_time_s = t;
-    stopPoint.progress = program->cut_time_s > 0 ? t / program->cut_time_s : 0;
-    stopPoint.length_mm = stopPoint.progress * program->length_mm;
-    stopPoint.elapsed_s = now - runStartTime;
-    stopPoint.point_count = static_cast<std::uint32_t>(program->point_count);
-    stopPoint.point_index = static_cast<std::uint32_t>(
+    p.path_time_s = t;
+    p.progress = program->cut_time_s > 0 ? t / program->cut_time_s : 0;
+    p.length_mm = p.progress * program->length_mm;
+    p.point_count = static_cast<std::uint32_t>(program->point_count);
+    p.point_index = static_cast<std::uint32_t>(
         std::min<double>(t / program->spline.dt(), static_cast<double>(program->point_count)));
+    p.made = pathStarted ? 1 : 0; // one pierce per path
+    return p;
+}
+
+void MotionEngine::Impl::captureStop() {
+    if (!runActive || !program) return;
+    stopPoint = currentPoint();
 }
 
 void MotionEngine::Impl::enterEmergencyStop() {
@@ -233,8 +251,8 @@ void MotionEngine::Impl::enterEmergencyStop() {
     stopDevices(cfg.spec.estop_category, StopReason::EmergencyCat1);
     const bool cat0 = stopping == StopReason::None;
     setState(EngineState::EmergencyStop, EventKind::Transition,
-             "Emergency stop (%s, from %s): torch off, drives %s",
-             toString(cfg.spec.estop_category), toString(from),
+             "Emergency stop (%s, from %s): %s off, drives %s", toString(cfg.spec.estop_category),
+             toString(from), toolName(),
              cat0 ? "disabled" : "stopping along the path, then disabled");
     endRun("emergency stop");
 }
@@ -259,7 +277,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
     stopDevices(category, StopReason::FaultCat1);
     char outcome[120];
     snprintfC(outcome, sizeof outcome, "fault: %.110s", reason);
-    setState(EngineState::Fault, EventKind::Fault, "Fault: %s; torch off, %s stop", reason,
+    setState(EngineState::Fault, EventKind::Fault, "Fault: %s; %s off, %s stop", reason, toolName(),
              toString(category));
     endRun(outcome);
 }
@@ -275,12 +293,25 @@ void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveSt
     rate = 1;
     holding = false;
     stopping = StopReason::None;
-    if (moveState != state)
-        setState(moveState, EventKind::Transition, "%s: %.3f s move at up to %.1f deg/s",
-                 moveState == EngineState::Homing    ? "Homing to the reference"
-                 : moveState == EngineState::Jogging ? "Jogging"
-                                                     : "Approach to the first cut point",
-                 move.duration, cfg.spec.home_speed_deg_s);
+    if (moveState == state) return;
+    // The speed limits in the units of the axes the program has (deg/s rotary, mm/s linear).
+    bool rotary = false, linear = false;
+    for (int i = 0; i < axisCount(); ++i)
+        (program->axis_linear[static_cast<size_t>(i)] ? linear : rotary) = true;
+    char limits[80];
+    if (rotary && linear)
+        snprintfC(limits, sizeof limits, "%.1f deg/s, %.1f mm/s", cfg.spec.home_speed_deg_s,
+                  cfg.spec.home_speed_mm_s);
+    else if (linear)
+        snprintfC(limits, sizeof limits, "%.1f mm/s", cfg.spec.home_speed_mm_s);
+    else
+        snprintfC(limits, sizeof limits, "%.1f deg/s", cfg.spec.home_speed_deg_s);
+    setState(moveState, EventKind::Transition, "%s: %.3f s move at up to %s",
+             moveState == EngineState::Homing         ? "Homing to the reference"
+             : moveState == EngineState::Jogging      ? "Jogging"
+             : program && !program->terms.path_length ? "Approach to the start position"
+                                                      : "Approach to the first cut point",
+             move.duration, limits);
 }
 
 void MotionEngine::Impl::beginCut() {
@@ -310,6 +341,9 @@ void MotionEngine::Impl::beginCut() {
               program->length_mm, program->cut_time_s);
     sourceStarted = false;
     sourceAtRest = false;
+    sourceProgress = 0;
+    sourcePoint = sourceMade = 0;
+    sourcePoints = static_cast<std::uint32_t>(program->point_count);
     if (program->source_kind == MotionSourceKind::ControlLaw) {
         // A control law starts from where its axes are: no approach.
         setState(EngineState::Running, EventKind::Transition, "Start: control law");
@@ -454,8 +488,8 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
                             : "the control law brings the axes to rest",
                         program->source->stateName());
         if (!cfg.spec.torch_on_during_feed_hold) torchCommand = false;
-        return note("Feed hold: decelerating along the path (torch %s)",
-                    torchCommand ? "stays lit" : "off");
+        return note("Feed hold: decelerating along the path (%s %s)", toolName(),
+                    torchCommand ? "stays on" : "off");
     case CommandType::Resume:
         if (s == EngineState::Paused) {
             holding = false;
@@ -489,7 +523,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         stopping = StopReason::Abort;
         holding = true;
         torchCommand = false;
-        return note("Abort: torch off, stopping along the path");
+        return note("Abort: %s off, stopping along the path", toolName());
     case CommandType::EmergencyStop:
         // Taken from the atomic at the top of the cycle; a press after the latch is noted.
         if (static_cast<std::uint64_t>(c.value) > latchPress)

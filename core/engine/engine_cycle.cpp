@@ -59,7 +59,8 @@ void MotionEngine::Impl::checkEstopComplete() {
     const double us = static_cast<double>(monotonicNowNs() - estopRequestSeen) / 1000.0;
     lastEstopLatencyUs.store(us, std::memory_order_relaxed);
     estopsMeasured.fetch_add(1, std::memory_order_release);
-    note("Emergency stop complete: drives disabled, torch off, %.0f us after the request", us);
+    note("Emergency stop complete: drives disabled, %s off, %.0f us after the request", toolName(),
+         us);
 }
 
 void MotionEngine::Impl::superviseEnabling() {
@@ -130,8 +131,8 @@ void MotionEngine::Impl::advance() {
 
 void MotionEngine::Impl::stepRunning() {
     if (state == EngineState::Running && holding && restReached() && stopping == StopReason::None) {
-        setState(EngineState::Paused, EventKind::Transition,
-                 "Paused on the path at %.3f s (torch %s)", tau, torchCommand ? "lit" : "off");
+        setState(EngineState::Paused, EventKind::Transition, "Paused on the path at %.3f s (%s %s)",
+                 tau, toolName(), torchCommand ? "on" : "off");
         return;
     }
     if (state == EngineState::Paused) return;
@@ -202,7 +203,8 @@ void MotionEngine::Impl::stepRunning() {
             if (first) startPath();
             note(first ? "Arc established: cutting" : "Arc established: resuming the cut");
         } else if (now - phaseSince > cfg.ignition_timeout_s) {
-            enterFault("torch: arc not established within %.1f s", cfg.ignition_timeout_s);
+            enterFault("%s: %s not reported within %.1f s", toolName(),
+                       program->terms.process_ok.c_str(), cfg.ignition_timeout_s);
         }
         break;
     case RunPhase::Pierce:
@@ -223,8 +225,9 @@ void MotionEngine::Impl::stepRunning() {
                 pathDone = true;
                 torchCommand = false;
                 phase = RunPhase::Finish;
-                note("Program finished (%s, %u of %u): tool off", program->source->stateName(),
-                     srcOut.point_index, srcOut.point_count);
+                note("Program finished (%s, %u of %u %s): %s off", program->source->stateName(),
+                     srcOut.made, srcOut.point_count, madeNounPlural(program->terms.counts),
+                     toolName());
             }
             break;
         }
@@ -232,7 +235,7 @@ void MotionEngine::Impl::stepRunning() {
             pathDone = true;
             torchCommand = false;
             phase = RunPhase::Finish;
-            note("Cut finished at path time %.3f s: torch off", program->cut_time_s);
+            note("Cut finished at path time %.3f s: %s off", program->cut_time_s, toolName());
         }
         break;
     case RunPhase::Finish:
@@ -248,9 +251,12 @@ void MotionEngine::Impl::stepRunning() {
                      "the %.1f mm before it were not cut by this run)",
                      program->length_mm - from.length_mm, program->length_mm, now - cutStartTime,
                      from.point_index + 1, from.point_count, from.length_mm);
-        else
+        else if (program->terms.path_length)
             setState(EngineState::Completed, EventKind::Transition, "Completed: %.1f mm in %.2f s",
                      program->length_mm, now - cutStartTime);
+        else
+            setState(EngineState::Completed, EventKind::Transition, "Completed: %u %s in %.2f s",
+                     sourceMade, madeNounPlural(program->terms.counts), now - cutStartTime);
         endRun("completed");
         break;
     }
@@ -331,6 +337,10 @@ void MotionEngine::Impl::runSource() {
     program->source->update(in, srcOut);
     sourceRan = true;
     if (traj == TrajectoryKind::Source) {
+        sourceProgress = srcOut.progress;
+        sourcePoint = srcOut.point_index;
+        sourcePoints = srcOut.point_count;
+        sourceMade = srcOut.made;
         setpoint = srcOut.position;
         setpointVel = srcOut.velocity;
         sourceAtRest = srcOut.status == SourceStatus::AtRest || srcOut.status == SourceStatus::Done;
@@ -430,14 +440,17 @@ void MotionEngine::Impl::superviseDevices() {
                               static_cast<unsigned>(f.age_cycles));
     }
     if (dev.torch && torchFb.fault_code != 0)
-        return enterFault("torch: fault 0x%04X", torchFb.fault_code);
+        return enterFault("%s: fault 0x%04X", toolName(), torchFb.fault_code);
     if (dev.torch && torchCommand && arcWasOk && !torchFb.process_ok) {
         if (isSourceProgram())
-            return enterFault("process tool: process lost (%s, %u of %u)",
-                              program->source->stateName(), srcOut.point_index, srcOut.point_count);
+            return enterFault("%s: %s (%s, %s %u of %u)", toolName(),
+                              program->terms.process_lost.c_str(), program->source->stateName(),
+                              unitSingular(program->terms.counts), srcOut.point_index + 1,
+                              srcOut.point_count);
         const std::uint32_t point =
             program ? static_cast<std::uint32_t>(tau / program->spline.dt()) : 0;
-        return enterFault("torch: arc lost at point %u of %zu (path time %.3f s)", point,
+        return enterFault("%s: %s at point %u of %zu (path time %.3f s)", toolName(),
+                          program ? program->terms.process_lost.c_str() : "process lost", point,
                           program ? program->point_count : size_t{0}, tau);
     }
     arcWasOk = torchCommand && torchFb.process_ok;
@@ -521,6 +534,7 @@ void MotionEngine::Impl::publishTelemetry() {
         t.progress = state == EngineState::Completed ? 1 : srcOut.progress;
         t.point_index = srcOut.point_index;
         t.point_count = srcOut.point_count;
+        t.made = sourceMade;
         t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime;
     } else if (program && (state == EngineState::Running || state == EngineState::Paused ||
                            state == EngineState::Completed)) {
@@ -533,6 +547,7 @@ void MotionEngine::Impl::publishTelemetry() {
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(
             pathT / program->spline.dt(), static_cast<double>(program->point_count)));
+        t.made = pathStarted ? 1 : 0; // one pierce per path
         t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime; // since Start
         const double r = rate > 0 ? rate : overrideTarget;
         t.remaining_s = (program->cut_time_s - pathT) / r;

@@ -46,6 +46,9 @@ struct RunResult {
     // A cut recovery: where on the path this run started; the path before it was not cut by
     // this run (summary.json "recovered_from"). Not valid for a run from the path's start.
     RunStopPoint start;
+    // Where the run ended, stopped short or completed (valid for every run): what it made, in
+    // the program's terms (summary.json "made").
+    RunStopPoint end;
 };
 
 struct MotionEngine::Impl {
@@ -158,6 +161,10 @@ struct MotionEngine::Impl {
     bool sourceRan = false;     // update() ran this cycle (srcOut is this cycle's)
     bool sourceStarted = false; // start() ran for the current run
     bool sourceAtRest = false;
+    // The source's progress of the last cycle it ran (srcOut is cleared every cycle): the
+    // stop point of a source program.
+    double sourceProgress = 0;
+    std::uint32_t sourcePoint = 0, sourcePoints = 0, sourceMade = 0;
     bool faultCat0 = false; // the next fault removes torque at once (control laws)
     // supervision
     std::array<double, kMaxAxes> lastSensed{}, travelSinceChange{};
@@ -195,6 +202,8 @@ struct MotionEngine::Impl {
     void endRun(const char* outcome);
     // Notes where the current run is on its path, before a stop resets the trajectory.
     void captureStop();
+    // Where the current run is now (path time or the source's count) and what it has made.
+    RunStopPoint currentPoint() const;
     RunStopPoint stopPoint;
     void beginMove(const JointVector& target, EngineState moveState);
     void beginCut();
@@ -211,6 +220,8 @@ struct MotionEngine::Impl {
     double displayValue(int i, double v) const; // deg or mm
     const char* unit(int i) const;
     const char* axisName(int i) const;
+    // The process tool as the program's terms name it ("torch", "saw"); "tool" with no program.
+    const char* toolName() const { return program ? program->terms.tool.c_str() : "tool"; }
     void setState(EngineState s, EventKind kind, const char* fmt, ...)
         __attribute__((format(printf, 4, 5)));
     void emit(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt,

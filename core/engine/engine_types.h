@@ -86,6 +86,7 @@ struct TelemetrySample {
     double progress = 0;                    // 0..1 of the cut's length
     std::uint32_t point_index = 0;
     std::uint32_t point_count = 0;
+    std::uint32_t made = 0; // units of work finished (MotionProgram::terms.counts)
     double elapsed_s = 0;
     double remaining_s = 0;
     double override_fraction = 1;
@@ -104,6 +105,9 @@ struct RunStopPoint {
     double length_mm = 0;   // cut length done
     double elapsed_s = 0;   // since Start
     std::uint32_t point_index = 0, point_count = 0;
+    // Units of work this run finished up to here (pierces, pieces, strokes: the program's
+    // terms.counts).
+    std::uint32_t made = 0;
 };
 
 // Cycle timing measured by the engine thread itself.

@@ -213,7 +213,10 @@ void MotionEngine::Impl::loggerDrain() {
             }
             runLog->beginRun(e.run_id, p ? p->name : std::string(),
                              p ? p->source_text : std::string());
-            if (p) runLog->setAxisNames(p->axis_names);
+            if (p) {
+                runLog->setAxisNames(p->axis_names);
+                runLog->setTerms(p->terms);
+            }
         }
         if (e.kind == EventKind::RunEnded) drainExternal(); // a device's reason, still in this run
         runLog->event(e);
@@ -228,7 +231,7 @@ void MotionEngine::Impl::loggerDrain() {
                 const RunResult& r = results[g % 2];
                 TrackingReport report = r.report;
                 report.method = r.method.data();
-                runLog->endRun(r.outcome.data(), report, snapshot(), r.stop, r.start);
+                runLog->endRun(r.outcome.data(), report, snapshot(), r.stop, r.start, r.end);
             }
         }
     }

@@ -79,8 +79,7 @@ struct EngineDevices {
 struct EngineConfig {
     double period_s = 0.001;
     ClockMode clock = ClockMode::RealTime;
-    EngineSpec spec;                          // stop category, feed hold, limits, runs dir
-    std::array<PidGains, kAxisCount> gains{}; // for drives that close the loop themselves: unused
+    EngineSpec spec; // stop category, feed hold, limits, runs dir
     // Before a cut starts, every axis must be this close to the first set-point (rad or mm) and
     // this slow for settle_cycles cycles in a row. Simulated drives settle to rounding level;
     // real drives need their encoder resolution here.
@@ -90,8 +89,6 @@ struct EngineConfig {
     double settle_timeout_s = 30;
     double enable_timeout_s = 1.0;
     double ignition_timeout_s = 2.0;
-    double home_speed_linear_mm_s = 20;  // linear axes (EngineSpec.home_speed_deg_s is rotary)
-    double following_error_limit_mm = 2; // linear axes (EngineSpec's limit is rotary, deg)
     // Feedback that has not changed while the set-point travelled this far is frozen (rad/mm).
     double frozen_feedback_travel = 0.002;
     std::uint32_t telemetry_every_n_cycles = 1; // 1 = every cycle

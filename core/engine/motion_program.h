@@ -6,6 +6,7 @@
 #include "core/common/types.h"
 #include "core/devices/device_interfaces.h"
 #include "core/engine/motion_source.h"
+#include "core/engine/run_terms.h"
 #include "core/kinematics/tip_model.h"
 #include "core/trajectory/joint_spline.h"
 
@@ -64,6 +65,8 @@ struct MotionProgram {
     // from.
     double cruise_from_s = 0;
     double cruise_to_s = -1;
+    // How the run is spoken of (tool, what progress counts, what a run makes): run_terms.h.
+    RunTerms terms;
     std::string name; // the job's name, for the run log
     std::string
         source_text; // the job file (JSON) the program was built from: job.json of the run log

@@ -65,6 +65,8 @@ struct SourceOutput {
     double progress = 0;        // 0..1 of the program
     double master_position = 0; // MasterAxis: the filtered master (telemetry)
     std::uint32_t point_index = 0, point_count = 0;
+    // Units of work finished so far (pieces cut, strokes made; MotionProgram::terms).
+    std::uint32_t made = 0;
 };
 
 class MotionSource {

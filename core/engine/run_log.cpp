@@ -104,7 +104,7 @@ void RunLog::eventForLastRun(const EngineEvent& e) {
 }
 
 void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c,
-                    const RunStopPoint& stop, const RunStopPoint& start) {
+                    const RunStopPoint& stop, const RunStopPoint& start, const RunStopPoint& end) {
     if (runsDir_.empty() || dir_.empty()) return;
     json::Object cycle{{"period_s", c.period_s},
                        {"cycles", static_cast<double>(c.cycles)},
@@ -126,7 +126,8 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                                       {"length_mm", stop.length_mm},
                                       {"elapsed_s", stop.elapsed_s},
                                       {"point_index", static_cast<double>(stop.point_index)},
-                                      {"point_count", static_cast<double>(stop.point_count)}});
+                                      {"point_count", static_cast<double>(stop.point_count)},
+                                      {"counts", toString(terms_.counts)}});
     if (start.valid)
         top.emplace_back(
             "recovered_from",
@@ -137,6 +138,7 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                          {"not_cut_before_mm", start.length_mm},
                          {"note", "a cut recovery: this run cut the path from this point on; "
                                   "the path before it was not cut by this run"}});
+    if (end.valid) top.emplace_back("made", madeToJson(terms_, end));
     const json::Value doc(std::move(top));
     try {
         writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));
@@ -146,6 +148,21 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
         std::fclose(file_);
         file_ = nullptr;
     }
+}
+
+json::Value RunLog::madeToJson(const RunTerms& terms, const RunStopPoint& end) {
+    json::Object made{{"counts", toString(terms.counts)},
+                      {madeNounPlural(terms.counts), static_cast<double>(end.made)},
+                      {"of", static_cast<double>(end.point_count)}};
+    if (terms.path_length) made.emplace_back("length_mm", end.length_mm);
+    if (terms.counts == WorkCount::Pieces) {
+        // As ordered: a queue changed during the run is not followed here.
+        json::Array lengths;
+        for (std::uint32_t k = 0; k < end.made && k < terms.piece_lengths_mm.size(); ++k)
+            lengths.emplace_back(terms.piece_lengths_mm[k]);
+        made.emplace_back("lengths_mm", std::move(lengths));
+    }
+    return made;
 }
 
 } // namespace cutcell

@@ -6,6 +6,8 @@
 // Threading contract: used by one non-cycle thread (the engine's logger thread, or the
 // caller of MotionEngine::flushRunLog()); it does file I/O and may allocate.
 #include "core/engine/engine_types.h"
+#include "core/engine/run_terms.h"
+#include "core/json/json.h"
 #include "core/sim/tracking_stats.h"
 
 #include <array>
@@ -27,13 +29,18 @@ class RunLog {
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
     // The names of the run's axes for summary.json (set after beginRun).
     void setAxisNames(const std::array<std::string, kMaxAxes>& names) { names_ = names; }
+    // How the run's program counts its work, for summary.json's "made" (set after beginRun).
+    void setTerms(const RunTerms& terms) { terms_ = terms; }
     void event(const EngineEvent& e);
     // An event about the current run, or, when none is open, the last one (e.g. why the program
     // ended right after a run stopped): appended to that run's events.log.
     void eventForLastRun(const EngineEvent& e);
     // Writes summary.json (atomically) and closes the run.
     void endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& cycle,
-                const RunStopPoint& stop = {}, const RunStopPoint& start = {});
+                const RunStopPoint& stop = {}, const RunStopPoint& start = {},
+                const RunStopPoint& end = {});
+    // What a run made up to `end`, in the terms' words: summary.json's "made".
+    static json::Value madeToJson(const RunTerms& terms, const RunStopPoint& end);
     std::string runDirectory() const { return dir_; }
     // A folder or file that could not be created since the last call ("" if none). Each new
     // problem is also printed once to stderr, so a run that is not logged never goes unnoticed.
@@ -50,6 +57,7 @@ class RunLog {
     std::string dir_;
     std::FILE* file_ = nullptr;
     std::array<std::string, kMaxAxes> names_{};
+    RunTerms terms_;
 };
 
 } // namespace cutcell

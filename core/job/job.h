@@ -77,8 +77,12 @@ struct EngineSpec {
     StopCategory estop_category = StopCategory::Cat0;
     double feed_hold_decel_s = 0.5; // time to stop along the path on feed hold
     bool torch_on_during_feed_hold = false;
+    // Following-error limit and homing / jog / approach speed, each in the unit of the axes it
+    // governs: rotary axes in deg and deg/s, linear axes in mm and mm/s.
     double following_error_limit_deg = 2.0;
     double home_speed_deg_s = 20.0;
+    double following_error_limit_mm = 2.0;
+    double home_speed_mm_s = 20.0;
     std::string runs_dir = "runs";
 };
 

@@ -50,6 +50,9 @@ void readEngine(SectionReader e, Job& job) {
         e.number("following_error_limit_deg", "deg", job.engine.following_error_limit_deg);
     job.engine.home_speed_deg_s =
         e.number("home_speed_deg_s", "deg/s", job.engine.home_speed_deg_s);
+    job.engine.following_error_limit_mm =
+        e.number("following_error_limit_mm", "mm", job.engine.following_error_limit_mm);
+    job.engine.home_speed_mm_s = e.number("home_speed_mm_s", "mm/s", job.engine.home_speed_mm_s);
     job.engine.runs_dir = e.string("runs_dir", job.engine.runs_dir);
     e.finish();
 }
@@ -252,6 +255,8 @@ json::Value jobToJson(const Job& job) {
                                {"torch_on_during_feed_hold", job.engine.torch_on_during_feed_hold},
                                {"following_error_limit_deg", job.engine.following_error_limit_deg},
                                {"home_speed_deg_s", job.engine.home_speed_deg_s},
+                               {"following_error_limit_mm", job.engine.following_error_limit_mm},
+                               {"home_speed_mm_s", job.engine.home_speed_mm_s},
                                {"runs_dir", job.engine.runs_dir}});
     doc.emplace_back("devices", devicesJson(job.devices, module, job));
     return doc;

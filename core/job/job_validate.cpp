@@ -21,6 +21,9 @@ void checkCommon(IssueChecker& c, const Job& job, int axisCount, int sensorCount
     c.range("engine.following_error_limit_deg", job.engine.following_error_limit_deg, 0.001, 90,
             "deg");
     c.range("engine.home_speed_deg_s", job.engine.home_speed_deg_s, 0.1, 360, "deg/s");
+    c.range("engine.following_error_limit_mm", job.engine.following_error_limit_mm, 0.001, 100,
+            "mm");
+    c.range("engine.home_speed_mm_s", job.engine.home_speed_mm_s, 0.1, 1000, "mm/s");
     if (std::find(std::begin(kCanBitRates), std::end(kCanBitRates), job.devices.bitrate_bps) ==
         std::end(kCanBitRates))
         c.add("devices.bitrate_bps",

@@ -10,9 +10,11 @@
 
 namespace cutcell {
 
-// Registers every machine (idempotent). Defined in core/machines/register_machines.cpp.
+// Registers every shipped machine. Defined in core/machines/register_machines.cpp; called once
+// by the first lookup below, never directly.
 void registerMachines();
-// Adds one module (called by registerMachines()); a second module with the same id is refused.
+// Adds one module (called by registerMachines(); a machine from outside the tree after the
+// first lookup, at start-up); a second module with the same id is refused.
 void registerMachine(std::unique_ptr<MachineModule> module);
 
 // nullptr when no module has this id.

@@ -54,10 +54,12 @@ void TrackingStats::add(const JointVector& commanded, const JointVector& actual,
 }
 
 void TrackingStats::fill(TrackingReport& r) const {
+    // The engine's errors are rad on rotary axes and mm on linear ones: set r.axis_linear first.
     for (int i = 0; i < kMaxAxes; ++i) {
-        r.joints[static_cast<size_t>(i)].max_abs_deg = rad2deg(maxAbs_[i]);
-        r.joints[static_cast<size_t>(i)].rms_deg =
-            n_ ? rad2deg(std::sqrt(sumSq_[i] / static_cast<double>(n_))) : 0;
+        const auto a = static_cast<size_t>(i);
+        const auto unit = [&r, a](double v) { return r.axis_linear[a] ? v : rad2deg(v); };
+        r.joints[a].max_abs = unit(maxAbs_[i]);
+        r.joints[a].rms = unit(n_ ? std::sqrt(sumSq_[i] / static_cast<double>(n_)) : 0);
     }
     r.cartesian_min_mm = cartMin_;
     r.cartesian_max_mm = cartMax_;
@@ -70,6 +72,7 @@ void TrackingStats::fill(TrackingReport& r) const {
 
 void TrackingStats::fillCruise(TrackingReport& r) const {
     TrackingReport tmp;
+    tmp.axis_linear = r.axis_linear;
     fill(tmp);
     r.cruise_joints = tmp.joints;
     r.cruise_cartesian_max_abs_mm = tmp.cartesian_max_abs_mm;
@@ -88,21 +91,16 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
     for (int i = 0; i < n; ++i) {
         const auto a = static_cast<size_t>(i);
         const bool linear = r.linear(i);
-        // Linear axes: the stats hold rad2deg of mm; undo it (the profile cutter's figures).
-        auto value = [&r, i](double deg) { return r.inAxisUnit(i, deg); };
         const std::string maxKey = linear ? "max_abs_error_mm" : "max_abs_error_deg";
         const std::string rmsKey = linear ? "rms_error_mm" : "rms_error_deg";
         const std::string name = names && !(*names)[a].empty() ? (*names)[a]
                                  : i == 0                      ? "chuck (theta0)"
                                                                : "theta" + std::to_string(i);
         const auto& j = r.joints[a];
-        joints.emplace_back(json::Object{{"axis", i},
-                                         {"name", name},
-                                         {maxKey, value(j.max_abs_deg)},
-                                         {rmsKey, value(j.rms_deg)}});
+        joints.emplace_back(
+            json::Object{{"axis", i}, {"name", name}, {maxKey, j.max_abs}, {rmsKey, j.rms}});
         const auto& c = r.cruise_joints[a];
-        cruise.emplace_back(
-            json::Object{{"axis", i}, {maxKey, value(c.max_abs_deg)}, {rmsKey, value(c.rms_deg)}});
+        cruise.emplace_back(json::Object{{"axis", i}, {maxKey, c.max_abs}, {rmsKey, c.rms}});
     }
     json::Object doc{
         {"method", r.method},

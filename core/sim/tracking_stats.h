@@ -14,12 +14,11 @@
 
 namespace cutcell {
 
-// Per axis. The _deg fields are rad2deg of the raw error for every axis (historic): on a linear
-// axis they are NOT degrees but mm * 57.3 - read them with TrackingReport::maxAbs() / rms()
-// (the axis's own unit, as reportToJson() writes it), never print or bound them directly.
+// Per axis, in the axis's own unit: deg on a rotary axis, mm on a linear one
+// (TrackingReport::axis_linear says which; TrackingStats::fill() converts by it).
 struct AxisErrorStats {
-    double max_abs_deg = 0;
-    double rms_deg = 0;
+    double max_abs = 0;
+    double rms = 0;
 };
 
 struct TrackingReport {
@@ -50,11 +49,8 @@ struct TrackingReport {
     // Axis i's figures in its own unit: deg on a rotary axis, mm on a linear one.
     bool linear(int i) const { return axis_linear[static_cast<size_t>(i)]; }
     const char* unit(int i) const { return linear(i) ? "mm" : "deg"; }
-    double inAxisUnit(int i, double degField) const {
-        return linear(i) ? deg2rad(degField) : degField;
-    }
-    double maxAbs(int i) const { return inAxisUnit(i, joints[static_cast<size_t>(i)].max_abs_deg); }
-    double rms(int i) const { return inAxisUnit(i, joints[static_cast<size_t>(i)].rms_deg); }
+    double maxAbs(int i) const { return joints[static_cast<size_t>(i)].max_abs; }
+    double rms(int i) const { return joints[static_cast<size_t>(i)].rms; }
 };
 
 // The torch tips of one sample (commanded and actual joints), in the base frame and seen

@@ -32,7 +32,7 @@ inline void tuneEngineForCan(EngineConfig& config, const CanOpenMasterConfig& mc
     // cycles (a stopped encoder is still caught within 20 cycles at full speed).
     config.frozen_feedback_travel =
         std::max({config.frozen_feedback_travel, 20 * period_s * deg2rad(homeSpeedDegS),
-                  linear ? 20 * period_s * config.home_speed_linear_mm_s : 0.0});
+                  linear ? 20 * period_s * config.spec.home_speed_mm_s : 0.0});
 }
 
 // The pipe robot's six rotary CSP drives of a job.

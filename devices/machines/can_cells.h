@@ -7,8 +7,10 @@
 // mechanics, each encoder's measured quantity (the flying saw's pipe line with its speed
 // profile seen by the measuring roller, the quick-return slider seen by its scale).
 //
-// The drives and encoders themselves are generic (devices/canopen); only this table knows
-// which machine has which mechanics, as sim_rig_registry does for the simulated cells.
+// The drives and encoders themselves are generic (devices/canopen); each machine's own part of
+// its cell lives in its folder (devices/machines/<name>/<name>_can_cell.cpp, can_cell_machine.h)
+// and is listed once in can_cell_registry.cpp, as sim_rig_registry does for the simulated cells.
+// A machine without an entry is refused by name, never built as another machine's cell.
 #include "core/engine/motion_engine.h"
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
 #include <cstdio>
+#include <random>
 
 using namespace cutcell;
 
@@ -25,7 +25,7 @@ TrackingReport run(CutMethod m) {
 double maxJoint(const TrackingReport& r, int from = 0) {
     double m = 0;
     for (int i = from; i < kAxisCount; ++i)
-        m = std::max(m, r.joints[static_cast<size_t>(i)].max_abs_deg);
+        m = std::max(m, r.joints[static_cast<size_t>(i)].max_abs);
     return m;
 }
 
@@ -72,8 +72,8 @@ TEST(Simulation, RotatingPipeTracksBetterThanStaticPipe) {
     EXPECT_GT(stat.max_direction_deviation_deg, 1.0);
     // Seed: with the static pipe the chuck does not move; with the rotating pipe joint 1 stays
     // still.
-    EXPECT_EQ(stat.joints[0].max_abs_deg, 0);
-    EXPECT_LT(rot.joints[1].max_abs_deg, 1e-9);
+    EXPECT_EQ(stat.joints[0].max_abs, 0);
+    EXPECT_LT(rot.joints[1].max_abs, 1e-9);
 }
 
 TEST(Simulation, ReportJsonHasTheDocumentedKeys) {

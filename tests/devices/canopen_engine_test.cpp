@@ -108,8 +108,8 @@ class CanOpenEngineTest : public QObject {
         QVERIFY(engine_->lastRunReport(report));
         for (int i = 0; i < kAxisCount; ++i) {
             qInfo("axis %d: max |e| %.4f deg over CAN", i,
-                  report.joints[static_cast<size_t>(i)].max_abs_deg);
-            QVERIFY(report.joints[static_cast<size_t>(i)].max_abs_deg <
+                  report.joints[static_cast<size_t>(i)].max_abs);
+            QVERIFY(report.joints[static_cast<size_t>(i)].max_abs <
                     job_.engine.following_error_limit_deg);
         }
         const MasterStats s = master_->stats();

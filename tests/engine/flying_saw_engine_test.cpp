@@ -63,6 +63,7 @@ struct SawCell {
         EXPECT_TRUE(rig) << error;
         EngineConfig c;
         c.clock = ClockMode::AsFastAsPossible;
+        c.spec = job.engine; // the saw's following-error limit in mm is the job's
         c.spec.runs_dir.clear();
         rig->configure(c);
         EngineDevices devices = rig->devices();

@@ -25,11 +25,10 @@ TEST(EngineMotion, FastClockRunOfTheDefaultJobGivesTheSameFiguresAsSimulate) {
     EXPECT_NEAR(engineReport.max_torque_fraction, sim.max_torque_fraction, tol);
     for (size_t i = 0; i < kAxisCount; ++i) {
         SCOPED_TRACE(i);
-        EXPECT_NEAR(engineReport.joints[i].max_abs_deg, sim.joints[i].max_abs_deg, tol);
-        EXPECT_NEAR(engineReport.joints[i].rms_deg, sim.joints[i].rms_deg, tol);
-        EXPECT_NEAR(engineReport.cruise_joints[i].max_abs_deg, sim.cruise_joints[i].max_abs_deg,
-                    tol);
-        EXPECT_NEAR(engineReport.cruise_joints[i].rms_deg, sim.cruise_joints[i].rms_deg, tol);
+        EXPECT_NEAR(engineReport.joints[i].max_abs, sim.joints[i].max_abs, tol);
+        EXPECT_NEAR(engineReport.joints[i].rms, sim.joints[i].rms, tol);
+        EXPECT_NEAR(engineReport.cruise_joints[i].max_abs, sim.cruise_joints[i].max_abs, tol);
+        EXPECT_NEAR(engineReport.cruise_joints[i].rms, sim.cruise_joints[i].rms, tol);
     }
     for (int k = 0; k < 3; ++k) {
         EXPECT_NEAR(engineReport.cartesian_max_abs_mm[k], sim.cartesian_max_abs_mm[k], tol);
@@ -40,7 +39,7 @@ TEST(EngineMotion, FastClockRunOfTheDefaultJobGivesTheSameFiguresAsSimulate) {
                     tol);
     }
     // Not vacuous: the arm really tracks with an error.
-    EXPECT_GT(sim.joints[1].max_abs_deg, 0);
+    EXPECT_GT(sim.joints[1].max_abs, 0);
 }
 
 // Largest |q'| and |q''| of the program's spline (dense sampling).

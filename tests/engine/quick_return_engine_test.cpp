@@ -6,7 +6,7 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/quick_return/quick_return_module.h"
 #include "core/machines/quick_return/run_figures.h"
-#include "devices/machines/quick_return_sim_rig.h"
+#include "devices/machines/quick_return/quick_return_sim_rig.h"
 
 #include <gtest/gtest.h>
 

@@ -372,7 +372,7 @@ TEST(ControlLawSource, RunsAt1kHzWithSupervisionOffOnlyInTheOpenLoopReturn) {
         }
     }
     EXPECT_GT(unsupervised, 10);
-    EXPECT_LT(worst, EngineConfig{}.following_error_limit_mm);
+    EXPECT_LT(worst, EngineSpec{}.following_error_limit_mm);
     std::printf("control law: %d unsupervised cycles, supervised error max %.4f mm\n", unsupervised,
                 worst);
 }

@@ -144,8 +144,8 @@ TEST(RunLog, EachRunWritesJobEventsAndSummary) {
         const json::Value& joints = at(at(summary, "tracking"), "joints");
         for (size_t i = 0; i < kAxisCount; ++i)
             EXPECT_NEAR(at(joints.asArray()[i], "max_abs_error_deg").asNumber(),
-                        r.joints[i].max_abs_deg,
-                        1e-12 * r.joints[i].max_abs_deg); // as written by the JSON writer
+                        r.joints[i].max_abs,
+                        1e-12 * r.joints[i].max_abs); // as written by the JSON writer
         // Events outside a run go to the runs folder's engine.log.
         EXPECT_NE(slurp(dir / "engine.log").find("Drives enabled"), std::string::npos);
     }

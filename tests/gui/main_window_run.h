@@ -45,12 +45,12 @@ inline void startManually(CutCell::ui::MainWindow& w) {
                                  w.controls()->startBlockedReason().contains("Enable"),
                              60000);
     QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 5000);
+    QTRY_VERIFY2_WITH_TIMEOUT(state(w) == EngineState::Ready, cutcell::toString(state(w)), 5000);
     QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(state(w) == EngineState::Ready && w.run()->bridge()->last().homed,
                              30000);
     QTRY_VERIFY2_WITH_TIMEOUT(w.controls()->startButton()->isEnabled(),
                               qPrintable(w.controls()->startBlockedReason()), 2000);
     QTest::mouseClick(w.controls()->startButton(), Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Running, 10000);
+    QTRY_VERIFY2_WITH_TIMEOUT(state(w) == EngineState::Running, cutcell::toString(state(w)), 10000);
 }

@@ -89,11 +89,15 @@ class TestMachineUis : public QObject {
                     for (const auto& page : other->formPages())
                         if (!own.count(page.title))
                             QVERIFY2(!w.parameters()->tabShown(page.title), qPrintable(page.title));
-            QVERIFY(w.parameters()->tabShown("Pipes"));
-            // The Cut page only for the machines that use its fields.
-            bool cutUnused = false;
-            for (const auto& [key, why] : m->unusedCommonFields())
+            // Every machine's job has a name; the Pipes and Cut pages only for the machines
+            // that use their fields (a machine without pipes has no Pipes tab).
+            QVERIFY(w.parameters()->tabShown("Job"));
+            bool cutUnused = false, pipesUnused = false;
+            for (const auto& [key, why] : m->unusedCommonFields()) {
                 cutUnused = cutUnused || key == "cut.speed_mm_s";
+                pipesUnused = pipesUnused || key == "main_pipe.radius_mm";
+            }
+            QCOMPARE(w.parameters()->tabShown("Pipes"), !pipesUnused);
             QCOMPARE(w.parameters()->tabShown("Cut"), !cutUnused);
             // Its exports are the Export menu's entries, in its order.
             QCOMPARE(exportMenuKinds(w), m->exports());

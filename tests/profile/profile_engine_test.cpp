@@ -3,7 +3,7 @@
 #include "core/engine/motion_engine.h"
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
-#include "devices/sim/profile_cutter_rig.h"
+#include "devices/machines/profile_cutter/profile_cutter_rig.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>
@@ -138,8 +138,8 @@ TEST(ProfileEngine, CompletesTheCutOnSteppers) {
     ASSERT_TRUE(run.engine->lastRunReport(report));
     // Open-loop steppers miss by their quantisation and one cycle of motion, no more.
     const double aPulseDeg = 360.0 / static_cast<double>(turn);
-    EXPECT_LT(report.joints[0].max_abs_deg, aPulseDeg);
-    EXPECT_LT(deg2rad(report.joints[1].max_abs_deg), 2 * job.profile_cutter.mm_per_pulse_x);
+    EXPECT_LT(report.joints[0].max_abs, aPulseDeg);
+    EXPECT_LT(report.joints[1].max_abs, 2 * job.profile_cutter.mm_per_pulse_x);
 }
 
 // The job's pierce (profile_cutter.pierce_s, the G-code's G4 after M3): once the arc is

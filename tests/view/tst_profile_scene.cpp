@@ -5,7 +5,7 @@
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
-#include "ui/machines/profile_cutter_2axis/profile_scene.h"
+#include "ui/machines/profile_cutter/profile_scene.h"
 
 #include <QtTest>
 

@@ -47,14 +47,24 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
     e->addRow(tr("Torch in feed hold"),
               bindBool("engine.torch_on_during_feed_hold", tr("keep the torch on"),
                        [](Job& j) -> bool& { return j.engine.torch_on_during_feed_hold; }));
-    addRow(e, tr("Following error limit"),
+    // Each limit in the unit of the axes it governs; a machine without linear (or rotary) axes
+    // has those fields greyed (ParameterTabs::applyMachine).
+    addRow(e, tr("Following error limit, rotary axes"),
            bindDouble("engine.following_error_limit_deg", 3,
                       [](Job& j) -> double& { return j.engine.following_error_limit_deg; }),
            "deg");
-    addRow(e, tr("Homing speed"),
+    addRow(e, tr("Following error limit, linear axes"),
+           bindDouble("engine.following_error_limit_mm", 3,
+                      [](Job& j) -> double& { return j.engine.following_error_limit_mm; }),
+           "mm");
+    addRow(e, tr("Homing speed, rotary axes"),
            bindDouble("engine.home_speed_deg_s", 1,
                       [](Job& j) -> double& { return j.engine.home_speed_deg_s; }),
            "deg/s");
+    addRow(e, tr("Homing speed, linear axes"),
+           bindDouble("engine.home_speed_mm_s", 1,
+                      [](Job& j) -> double& { return j.engine.home_speed_mm_s; }),
+           "mm/s");
     addRow(e, tr("Run records folder"),
            bindString("engine.runs_dir", [](Job& j) -> std::string& { return j.engine.runs_dir; }),
            {});

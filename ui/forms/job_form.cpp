@@ -4,6 +4,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -173,6 +174,18 @@ QComboBox* JobForm::bindChoice(const std::string& key, const QStringList& items,
         editor_->edit([&](cutcell::Job& j) { set(j, i); });
     });
     return w;
+}
+
+QString JobForm::fieldLabel(const char* label) {
+    return QCoreApplication::translate("SectionField", label);
+}
+
+QString JobForm::displayUnit(const char* unit) {
+    QString u = QString::fromUtf8(unit);
+    if (u == QLatin1String("1")) return QStringLiteral(" "); // a ratio: the row keeps its column
+    u.replace(QLatin1String("^2"), QStringLiteral("²"));
+    u.replace(QLatin1String("^3"), QStringLiteral("³"));
+    return u;
 }
 
 void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, const QString& unit) {

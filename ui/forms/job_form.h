@@ -5,12 +5,15 @@
 // the unit and the limit).
 //
 // Threading contract: GUI thread only.
+#include "core/job/field_table.h"
 #include "ui/forms/job_editor.h"
 
 #include <QWidget>
 
 #include <functional>
 #include <map>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,6 +66,32 @@ class JobForm : public QWidget {
     // Adds "label [field] unit" to a form layout.
     static void addRow(QFormLayout* form, const QString& label, QWidget* field,
                        const QString& unit);
+    // A row for one key of a machine section's table (core/job/field_table.h): label, unit and
+    // decimals from the table, so the form and the file spell the key alike. spec: the job's
+    // section of that machine.
+    template <class Spec>
+    QWidget* addSectionRow(QFormLayout* form, const cutcell::SectionField<Spec>& f,
+                           Spec& (*spec)(cutcell::Job&)) {
+        QWidget* w = nullptr;
+        if (f.number)
+            w = bindDouble(f.key, f.decimals,
+                           [f, spec](cutcell::Job& j) -> double& { return f.number(spec(j)); });
+        else if (f.integer)
+            w = bindInt(f.key, [f, spec](cutcell::Job& j) -> int& { return f.integer(spec(j)); });
+        else
+            throw std::logic_error(std::string(f.key) + ": a choice has its own row");
+        addRow(form, fieldLabel(f.label), w, displayUnit(f.unit));
+        return w;
+    }
+    template <class Spec>
+    static const cutcell::SectionField<Spec>&
+    sectionField(std::span<const cutcell::SectionField<Spec>> table, const char* key) {
+        if (const auto* f = cutcell::findField(table, key)) return *f;
+        throw std::logic_error(std::string("no field ") + key + " in the section's table");
+    }
+    // A table's label and unit on screen ("kg m^2" as "kg m²", "1" as nothing).
+    static QString fieldLabel(const char* label);
+    static QString displayUnit(const char* unit);
     QVBoxLayout* mainLayout() const { return layout_; }
     JobEditor* editor() const { return editor_; }
     bool loading() const { return loading_; }

@@ -2,6 +2,7 @@
 
 #include "ui/forms/cut_form.h"
 #include "ui/forms/cycle_devices_form.h"
+#include "ui/forms/job_info_form.h"
 #include "ui/forms/pipes_form.h"
 #include "ui/machine/machine_ui_registry.h"
 
@@ -63,6 +64,9 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     };
     // Common pages first, then every machine's own pages (shown while the job is for that
     // machine), then the cycle and devices.
+    // The Pipes and Cut pages describe a pipe joint: a machine that uses none of their fields
+    // (unusedCommonFields) does not show them (applyMachine).
+    add(new JobInfoForm(editor), tr("Job"), nullptr);
     add(new PipesForm(editor), tr("Pipes"), nullptr);
     add(new CutForm(editor), tr("Cut"), nullptr);
     for (const MachineUi* machine : machineUis())
@@ -129,7 +133,18 @@ void ParameterTabs::applyMachine() {
     disabledFields_.clear();
     if (!machine) return;
     std::set<std::string> unused;
-    for (const auto& [key, reason] : machine->unusedCommonFields()) {
+    std::vector<std::pair<std::string, QString>> unusedFields = machine->unusedCommonFields();
+    // The engine's limits of an axis kind the machine does not have.
+    bool rotary = false, linear = false;
+    for (const AxisLabel& a : machine->axes())
+        (a.linear() ? linear : rotary) = true;
+    if (!linear)
+        for (const char* key : {"engine.following_error_limit_mm", "engine.home_speed_mm_s"})
+            unusedFields.push_back({key, tr("This machine has no linear axis.")});
+    if (!rotary)
+        for (const char* key : {"engine.following_error_limit_deg", "engine.home_speed_deg_s"})
+            unusedFields.push_back({key, tr("This machine has no rotary axis.")});
+    for (const auto& [key, reason] : unusedFields) {
         unused.insert(key);
         if (auto* field = fieldFor(key)) {
             field->setEnabled(false);
@@ -137,9 +152,9 @@ void ParameterTabs::applyMachine() {
             disabledFields_.push_back(field);
         }
     }
-    // A common page none of whose fields this machine uses is not shown at all (the Cut page
-    // of the machines that do not cut a pipe joint); a page with some used fields stays, its
-    // unused fields greyed with the reason.
+    // A common page none of whose fields this machine uses is not shown at all (the Pipes and
+    // Cut pages of the machines that do not cut a pipe joint); a page with some used fields
+    // stays, its unused fields greyed with the reason.
     for (size_t i = 0; i < forms_.size(); ++i) {
         if (owners_[i] != nullptr) continue;
         const std::vector<std::string> keys = forms_[i]->keys();

@@ -1,5 +1,6 @@
 #pragma once
-// The parameter forms grouped as an engineer thinks: the common pages (Pipes, Cut), the pages
+// The parameter forms grouped as an engineer thinks: the common pages (Job, and Pipes and Cut
+// for the machines that cut a pipe joint), the pages
 // of the job's machine (MachineUi::formPages, e.g. Method, Robot, Controller for the robot),
 // then Cycle & devices; each in a scrollable tab whose title counts its invalid fields. Every
 // registered machine's pages are built once and shown while the job is for that machine.

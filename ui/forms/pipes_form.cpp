@@ -3,8 +3,6 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
-#include <QLineEdit>
-#include <QPlainTextEdit>
 #include <QVBoxLayout>
 
 namespace CutCell::ui {
@@ -16,14 +14,6 @@ using cutcell::PipeSpec;
 } // namespace
 
 PipesForm::PipesForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
-    auto* jobBox = new QGroupBox(tr("Job"), this);
-    auto* jf = new QFormLayout(jobBox);
-    addRow(jf, tr("Name"), bindString("name", [](Job& j) -> std::string& { return j.name; }), {});
-    auto* desc = bindText("description", [](Job& j) -> std::string& { return j.description; });
-    desc->setMaximumHeight(70);
-    jf->addRow(tr("Description"), desc);
-    mainLayout()->addWidget(jobBox);
-
     const auto pipeBox = [this](const QString& title, const std::string& prefix,
                                 PipeSpec Job::*member) {
         auto* box = new QGroupBox(title, this);

@@ -1,5 +1,5 @@
 #pragma once
-// Job identity and the two pipes: main (run) pipe, branch pipe, their angle and eccentricity.
+// The two pipes of a pipe joint: main (run) pipe, branch pipe, their angle and eccentricity.
 #include "ui/forms/job_form.h"
 
 namespace CutCell::ui {

@@ -17,11 +17,21 @@ void MachineUiRegistry::add(std::unique_ptr<MachineUi> machine) {
     owned_.push_back(std::move(machine));
 }
 
-const std::vector<const MachineUi*>& machineUis() {
+namespace {
+MachineUiRegistry& theRegistry() {
     static MachineUiRegistry registry;
     static std::once_flag once;
     std::call_once(once, [] { registerMachineUis(registry); });
-    return registry.list_;
+    return registry;
+}
+} // namespace
+
+const std::vector<const MachineUi*>& machineUis() {
+    return theRegistry().list_;
+}
+
+void registerMachineUi(std::unique_ptr<MachineUi> machine) {
+    theRegistry().add(std::move(machine));
 }
 
 const MachineUi* findMachineUi(std::string_view id) {

@@ -27,6 +27,9 @@ class MachineUiRegistry {
 // Defined in ui/machines/register_machine_uis.cpp: one line per machine.
 void registerMachineUis(MachineUiRegistry& registry);
 
+// One more machine after the shipped ones (a machine outside this tree, a test's): at start-up,
+// before the first window and before any other thread looks a machine up.
+void registerMachineUi(std::unique_ptr<MachineUi> machine);
 // Every machine, in registration order (the File -> New list).
 const std::vector<const MachineUi*>& machineUis();
 // The machine with this id; null when none (an unknown machine in a job file).

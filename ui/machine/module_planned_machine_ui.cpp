@@ -29,6 +29,13 @@ cutcell::CutPlan ModulePlannedMachineUi::plan(const cutcell::Job& job,
     cutcell::CutPlan out;
     auto mp = std::make_shared<cutcell::MachinePlan>(module().plan(job, {}));
     out.reachable = mp->ok() && mp->program;
+    if (out.reachable) { // the figures every machine's plan has, for the log and the progress
+        out.length_mm = mp->program->length_mm;
+        out.cut_time_s = mp->program->cut_time_s;
+        out.knot_dt_s = mp->program->point_count > 0
+                            ? mp->program->cut_time_s / double(mp->program->point_count)
+                            : 0;
+    }
     out.problem =
         mp->ok() ? (mp->program ? "" : "the machine module gave no program") : mp->problem;
     out.machine_plan = std::move(mp);

@@ -1,10 +1,10 @@
 // The machines of the operator station: one line per machine (README, "Adding a machine").
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machines/flying_saw/flying_saw_ui.h"
-#include "ui/machines/pipe_robot_6axis/pipe_robot_ui.h"
-#include "ui/machines/profile_cutter_2axis/profile_cutter_ui.h"
-#include "ui/machines/quick_return_cutter/quick_return_ui.h"
-#include "ui/machines/section_steel_cutter/section_steel_ui.h"
+#include "ui/machines/pipe_robot/pipe_robot_ui.h"
+#include "ui/machines/profile_cutter/profile_cutter_ui.h"
+#include "ui/machines/quick_return/quick_return_ui.h"
+#include "ui/machines/section_steel/section_steel_ui.h"
 
 namespace CutCell::ui {
 

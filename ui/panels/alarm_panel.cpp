@@ -1,5 +1,7 @@
 #include "ui/panels/alarm_panel.h"
 
+#include "ui/panels/run_words.h"
+
 #include "ui/panels/event_log_panel.h"
 
 #include <QDir>
@@ -72,12 +74,13 @@ AlarmPanel::AlarmPanel(QWidget* parent)
     refreshSummary();
 }
 
-QString AlarmPanel::sourceOf(const QString& text) {
+QString AlarmPanel::sourceOf(const QString& text, const cutcell::RunTerms& terms) {
     static const QRegularExpression axis(QStringLiteral("axis (\\d+)( \\([^)]*\\))?"));
     static const QRegularExpression node(QStringLiteral("node (\\d+)"));
     if (const auto m = node.match(text); m.hasMatch()) return m.captured(0);
     if (const auto m = axis.match(text); m.hasMatch()) return m.captured(0);
-    if (text.contains(QLatin1String("torch"), Qt::CaseInsensitive)) return QStringLiteral("torch");
+    const QString tool = QString::fromStdString(terms.tool);
+    if (!tool.isEmpty() && text.contains(tool, Qt::CaseInsensitive)) return toolWord(terms);
     return QStringLiteral("engine");
 }
 
@@ -115,7 +118,7 @@ void AlarmPanel::addEngineEvent(const cutcell::EngineEvent& e) {
     a.text = QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len));
     a.time =
         e.wall_ms > 0 ? QDateTime::fromMSecsSinceEpoch(e.wall_ms) : QDateTime::currentDateTime();
-    a.source = estop ? tr("operator (E-STOP)") : sourceOf(a.text);
+    a.source = estop ? tr("operator (E-STOP)") : sourceOf(a.text, terms_);
     a.action = actionFor(a.text, estop);
     a.run_id = e.run_id;
     raise(a);

@@ -1,13 +1,14 @@
 #pragma once
 // The alarm list, apart from the event log: every emergency stop and fault with its time,
-// source (axis, node, torch, operator), text and what to do about it. An alarm is active until
-// the engine is reset out of the latched state, then it stays in the list as past; the operator
-// acknowledges alarms (Acknowledge), which the list shows. The alarms of a run are written as
-// alarms.json into that run's log folder (atomically, again after each acknowledgement), and
+// source (axis, node, the machine's tool, operator), text and what to do about it. An alarm is
+// active until the engine is reset out of the latched state, then it stays in the list as past; the
+// operator acknowledges alarms (Acknowledge), which the list shows. The alarms of a run are written
+// as alarms.json into that run's log folder (atomically, again after each acknowledgement), and
 // File -> Export alarms writes the whole list as CSV.
 //
 // Threading contract: GUI thread only.
 #include "core/engine/engine_types.h"
+#include "core/engine/run_terms.h"
 
 #include <QDateTime>
 #include <QString>
@@ -58,7 +59,10 @@ class AlarmPanel : public QWidget {
 
     // Source and what-to-do for an engine fault text (e.g. "axis 2 (q2 shoulder): following
     // error ...").
-    static QString sourceOf(const QString& text);
+    // The tool is the program's (terms.tool: "torch", "saw"); its texts say "<tool>: ...".
+    static QString sourceOf(const QString& text, const cutcell::RunTerms& terms = {});
+    // The loaded program's terms: the name of its process tool as an alarm source.
+    void setTerms(const cutcell::RunTerms& terms) { terms_ = terms; }
     static QString actionFor(const QString& text, bool emergencyStop);
 
   signals:
@@ -75,6 +79,7 @@ class AlarmPanel : public QWidget {
     QTableWidget* table_;
     std::vector<Alarm> alarms_;
     std::map<std::uint32_t, QString> runDirs_;
+    cutcell::RunTerms terms_;
 };
 
 } // namespace CutCell::ui

@@ -1,5 +1,7 @@
 #include "ui/panels/progress_panel.h"
 
+#include "ui/panels/run_words.h"
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -34,7 +36,8 @@ ProgressPanel::ProgressPanel(QWidget* parent)
     };
     g->addWidget(caption(tr("Elapsed")), 2, 0);
     g->addWidget(caption(tr("Remaining")), 2, 1);
-    g->addWidget(caption(tr("Point")), 2, 2, 1, 2);
+    pointsCaption_ = caption(countCaption(terms_.counts));
+    g->addWidget(pointsCaption_, 2, 2, 1, 2);
     for (auto* l : {elapsed_, remaining_, points_})
         l->setObjectName("bigValue");
     g->addWidget(elapsed_, 3, 0);
@@ -68,6 +71,12 @@ void ProgressPanel::setApproachTarget(const cutcell::JointVector& q, int axisCou
     axisCount_ = std::clamp(axisCount, 0, cutcell::kMaxAxes);
 }
 
+void ProgressPanel::setTerms(const cutcell::RunTerms& terms) {
+    terms_ = terms;
+    pointsCaption_->setText(countCaption(terms_.counts));
+    setCycleFigures(made_, lastCycleS_);
+}
+
 void ProgressPanel::beginRun() {
     stopped_ = false;
     lastCut_.reset();
@@ -81,39 +90,39 @@ void ProgressPanel::markStopped(const QString& how) {
     stopped_ = true;
     stopHow_ = how;
     const auto& s = *lastCut_;
-    const double p = std::clamp(s.progress, 0.0, 1.0);
-    const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
-    const QString text = tr("Stopped (%1) at point %2 / %3, %4 of %5 mm, %6 after Start")
-                             .arg(how)
-                             .arg(shown)
-                             .arg(s.point_count)
-                             .arg(p * pathLengthMm_, 0, 'f', 1)
-                             .arg(pathLengthMm_, 0, 'f', 1)
-                             .arg(formatDuration(s.elapsed_s));
-    stop_->setText(text);
-    stop_->setToolTip(text);
+    cutcell::RunStopPoint at;
+    at.valid = true;
+    at.progress = std::clamp(s.progress, 0.0, 1.0);
+    at.length_mm = at.progress * pathLengthMm_;
+    at.elapsed_s = s.elapsed_s;
+    at.point_index = s.point_index;
+    at.point_count = s.point_count;
+    at.made = s.made;
+    showStop(at);
 }
 
 void ProgressPanel::setStopPoint(const cutcell::RunStopPoint& stop) {
     if (!stopped_ || !stop.valid) return;
     // The engine's own stop point (taken in the cycle of the stop; the telemetry shown last may
     // be up to a display frame older): the same figures as the cut recovery box and summary.json.
-    const auto shown = stop.point_count ? std::min(stop.point_index + 1, stop.point_count) : 0u;
-    const QString text = tr("Stopped (%1) at point %2 / %3, %4 of %5 mm, %6 after Start")
-                             .arg(stopHow_)
-                             .arg(shown)
-                             .arg(stop.point_count)
-                             .arg(stop.length_mm, 0, 'f', 1)
-                             .arg(pathLengthMm_, 0, 'f', 1)
-                             .arg(formatDuration(stop.elapsed_s));
+    showStop(stop);
+}
+
+void ProgressPanel::showStop(const cutcell::RunStopPoint& at) {
+    const QString text =
+        tr("Stopped (%1) at %2, %3 after Start")
+            .arg(stopHow_, stopFigures(terms_, at, pathLengthMm_), formatDuration(at.elapsed_s));
     stop_->setText(text);
     stop_->setToolTip(text);
 }
 
-void ProgressPanel::setCycleFigures(int parts, double lastCycleS) {
-    cycle_->setText(tr("Last cycle %1   Parts %2")
+void ProgressPanel::setCycleFigures(int made, double lastCycleS) {
+    made_ = made;
+    lastCycleS_ = lastCycleS;
+    cycle_->setText(tr("Last cycle %1   %2 %3")
                         .arg(lastCycleS > 0 ? formatDuration(lastCycleS) : QStringLiteral("--"))
-                        .arg(parts));
+                        .arg(madeCaption(terms_.counts))
+                        .arg(made));
 }
 
 void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
@@ -160,9 +169,13 @@ void ProgressPanel::show(const cutcell::TelemetrySample& s) {
         const double d = (s.setpoint.head(axisCount_) - approachTarget_.head(axisCount_)).norm();
         if (!approachStart_ || d > *approachStart_) approachStart_ = d;
         const double f = *approachStart_ > 1e-9 ? 1.0 - d / *approachStart_ : 1.0;
-        phase = f < 0.999 ? tr("Approach to the first cut point: %1 %").arg(f * 100, 0, 'f', 0)
-                          : (s.torch_on ? tr("Arc on: the cut starts")
-                                        : tr("At the first cut point: settling, then the arc"));
+        if (!terms_.path_length)
+            phase = f < 0.999 ? tr("Approach to the start position: %1 %").arg(f * 100, 0, 'f', 0)
+                              : tr("At the start position: the run starts");
+        else
+            phase = f < 0.999 ? tr("Approach to the first cut point: %1 %").arg(f * 100, 0, 'f', 0)
+                              : (s.torch_on ? tr("Arc on: the cut starts")
+                                            : tr("At the first cut point: settling, then the arc"));
     }
     if (!stopped_) {
         stop_->setText(phase);

@@ -1,6 +1,7 @@
 #pragma once
-// Cut progress: bar, percent, elapsed and remaining time, current point / total, the engine
-// state in words, the last cycle time and the parts cut for this job.
+// Run progress: bar, percent, elapsed and remaining time, the current point, piece or stroke of
+// the total (the program's terms, run_words.h), the engine state in words, the last cycle time
+// and what was made for this job (parts, pieces, strokes).
 //
 // A run that ends short (emergency stop, fault, abort) keeps its figures on screen with a
 // "stopped at" line (point, path length, time) until the next Start: the engine's telemetry
@@ -9,6 +10,7 @@
 //
 // Threading contract: GUI thread only.
 #include "core/engine/engine_types.h"
+#include "core/engine/run_terms.h"
 
 #include <QWidget>
 
@@ -30,6 +32,8 @@ class ProgressPanel : public QWidget {
     // approach's target, in the engine's units).
     void setPathLength(double mm) { pathLengthMm_ = mm; }
     void setApproachTarget(const cutcell::JointVector& q, int axisCount);
+    // How the loaded program counts its work (points, pieces, strokes) and names its tool.
+    void setTerms(const cutcell::RunTerms& terms);
     // A new run: the previous run's figures and stop line go.
     void beginRun();
     // The run ended short: freeze the last figures and show where it stopped.
@@ -50,6 +54,7 @@ class ProgressPanel : public QWidget {
 
   private:
     void show(const cutcell::TelemetrySample& s);
+    void showStop(const cutcell::RunStopPoint& at);
 
     QLabel* state_;
     QProgressBar* bar_;
@@ -57,9 +62,13 @@ class ProgressPanel : public QWidget {
     QLabel* elapsed_;
     QLabel* remaining_;
     QLabel* points_;
+    QLabel* pointsCaption_ = nullptr;
     QLabel* stop_;
     QLabel* cycle_;
     double pathLengthMm_ = 0;
+    cutcell::RunTerms terms_;
+    int made_ = 0;
+    double lastCycleS_ = 0;
     cutcell::JointVector approachTarget_ = cutcell::JointVector::Zero();
     int axisCount_ = 0;
     std::optional<double> approachStart_; // distance to the target when the approach began

@@ -1,5 +1,7 @@
 #include "ui/panels/recovery_panel.h"
 
+#include "ui/panels/run_words.h"
+
 #include "ui/forms/number_fields.h"
 
 #include <QDoubleSpinBox>
@@ -145,7 +147,10 @@ void RecoveryPanel::setUnconfirmedPart(const QString& text) {
 void RecoveryPanel::refresh() {
     const QString why = reason();
     const bool ok = why.isEmpty();
-    if (stop_)
+    if (stop_ && program_ && program_->source_kind != MotionSourceKind::JointSpline)
+        where_->setText(
+            tr("Stopped at %1.").arg(stopFigures(program_->terms, *stop_, program_->length_mm)));
+    else if (stop_)
         where_->setText(tr("Stopped at point %1 / %2, %3 of %4 mm (path time %5 s). Resume "
                            "starts at %6 s.")
                             .arg(std::min(stop_->point_index + 1, stop_->point_count))

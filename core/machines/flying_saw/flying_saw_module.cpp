@@ -42,6 +42,9 @@ Job FlyingSawModule::defaultJob() const {
     Job job;
     job.sim = common.sim;
     job.engine = common.engine;
+    // The drives reach a set-point one period after it is written: at 1 m/s that alone is 1 mm
+    // of "error"; the carriage's lag in its ramps adds about as much.
+    job.engine.following_error_limit_mm = 10;
     job.devices = common.devices;
     job.machine = kFlyingSawId;
     job.name = "New flying saw job";

@@ -1,5 +1,6 @@
 #include "core/machines/flying_saw/flying_saw_section.h"
 
+#include "core/job/field_table.h"
 #include "core/job/issue_checker.h"
 #include "core/job/section_reader.h"
 
@@ -30,215 +31,201 @@ std::vector<PieceOrder> readQueue(SectionReader& r) {
     return out;
 }
 
+json::Value writeQueue(const FlyingSawSpec& s) {
+    json::Array queue;
+    for (const PieceOrder& o : s.queue)
+        queue.emplace_back(json::Object{{"length_mm", o.length_mm}, {"count", o.count}});
+    return queue;
+}
+
+using Field = SectionField<FlyingSawSpec>;
+using S = FlyingSawSpec;
+constexpr FieldCheck kRange = FieldCheck::Range, kPositive = FieldCheck::Positive;
+bool isRound(const S& s) {
+    return s.shape == TubeShape::Round;
+}
+bool rectangular(const S& s) {
+    return s.shape == TubeShape::Rectangular;
+}
+
+// Every key of the section, once (the file is written in this order). The tube's wall, its
+// corner radius and the carriage's wait position are bounded by other values: checked in
+// checkFlyingSawSpec().
+// One entry per key, kept as a table.
+// clang-format off
+const Field kFields[] = {
+    {.key = "tube.shape", .unit = "", .label = "Tube", .choices = {"round", "rectangular"},
+     .getChoice = [](const S& s) { return isRound(s) ? 0 : 1; },
+     .setChoice = [](S& s, int i) {
+         s.shape = i == 0 ? TubeShape::Round : TubeShape::Rectangular;
+     }},
+    {.key = "tube.diameter_mm", .unit = "mm", .label = "Diameter D", .lo = 5, .hi = 1000,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.diameter_mm; },
+     .when = isRound},
+    {.key = "tube.width_mm", .unit = "mm", .label = "Width a (across)", .lo = 5, .hi = 1000,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.width_mm; },
+     .when = rectangular},
+    {.key = "tube.height_mm", .unit = "mm", .label = "Height b (up)", .lo = 5, .hi = 1000,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.height_mm; },
+     .when = rectangular},
+    {.key = "tube.corner_radius_mm", .unit = "mm", .label = "Corner radius r", .decimals = 2,
+     .number = [](S& s) -> double& { return s.corner_radius_mm; }, .when = rectangular},
+    {.key = "tube.wall_mm", .unit = "mm", .label = "Wall", .decimals = 2,
+     .number = [](S& s) -> double& { return s.wall_mm; }},
+    {.key = "line.speed_m_min", .unit = "m/min", .label = "Line speed", .lo = 0.1, .hi = 300,
+     .check = kPositive, .decimals = 3,
+     .number = [](S& s) -> double& { return s.line_speed_m_min; }},
+    {.key = "line.roller_pulses_per_rev", .unit = "pulses/rev", .label = "Roller encoder",
+     .lo = 1, .hi = 10000000, .check = kRange,
+     .integer = [](S& s) -> int& { return s.roller_pulses_per_rev; }},
+    {.key = "line.roller_diameter_mm", .unit = "mm", .label = "Roller diameter", .lo = 10,
+     .hi = 1000, .check = kPositive, .decimals = 4,
+     .number = [](S& s) -> double& { return s.roller_diameter_mm; }},
+    {.key = "line.filter_alpha", .unit = "", .label = "Master filter gain α", .lo = 1e-4, .hi = 1,
+     .check = kPositive, .decimals = 4, .number = [](S& s) -> double& { return s.filter_alpha; }},
+    {.key = "cut.queue", .unit = "", .label = "Queue of lengths",
+     .readCustom = [](SectionReader& r, const std::string&, S& s) { s.queue = readQueue(r); },
+     .writeCustom = writeQueue},
+    {.key = "cut.tolerance_mm", .unit = "mm", .label = "Length tolerance ±", .lo = 0.001,
+     .hi = 100, .check = kPositive, .decimals = 3,
+     .number = [](S& s) -> double& { return s.tolerance_mm; }},
+    // Optional: without it the first sync-in follows the line where the run starts.
+    {.key = "cut.first_sync_master_mm", .unit = "mm", .label = "First sync-in at",
+     .readCustom =
+         [](SectionReader& r, const std::string& leaf, S& s) {
+             if (r.get(leaf)) s.first_sync_master_mm = r.number(leaf, "mm");
+         },
+     .writeCustom = [](const S& s) -> json::Value {
+         return std::isnan(s.first_sync_master_mm) ? json::Value() : s.first_sync_master_mm;
+     }},
+    {.key = "carriage.stroke_mm", .unit = "mm", .label = "Stroke", .lo = 10, .hi = 50000,
+     .check = kPositive, .decimals = 1, .number = [](S& s) -> double& { return s.stroke_mm; }},
+    {.key = "carriage.max_speed_mm_s", .unit = "mm/s", .label = "Speed limit", .lo = 1,
+     .hi = 20000, .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.carriage.max_speed_mm_s; }},
+    {.key = "carriage.max_accel_mm_s2", .unit = "mm/s^2", .label = "Acceleration limit", .lo = 10,
+     .hi = 1e6, .check = kPositive, .decimals = 0,
+     .number = [](S& s) -> double& { return s.carriage.max_accel_mm_s2; }},
+    {.key = "carriage.max_jerk_mm_s3", .unit = "mm/s^3", .label = "Jerk limit", .lo = 100,
+     .hi = 1e9, .check = kPositive, .decimals = 0,
+     .number = [](S& s) -> double& { return s.carriage.max_jerk_mm_s3; }},
+    {.key = "carriage.wait_position_mm", .unit = "mm", .label = "Wait position", .decimals = 1,
+     .number = [](S& s) -> double& { return s.wait_position_mm; }},
+    {.key = "saw.settle_s", .unit = "s", .label = "Settle C → D", .lo = 0, .hi = 10,
+     .check = kRange, .decimals = 3, .number = [](S& s) -> double& { return s.saw.settle_s; }},
+    {.key = "saw.fast_feed_mm_s", .unit = "mm/s", .label = "Fast feed (in air)", .lo = 0.1,
+     .hi = 10000,
+     .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.saw.fast_feed_mm_s; }},
+    {.key = "saw.slow_feed_mm_s", .unit = "mm/s", .label = "Slow feed (through the wall)",
+     .lo = 0.1,
+     .hi = 10000, .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.saw.slow_feed_mm_s; }},
+    {.key = "saw.approach_gap_mm", .unit = "mm", .label = "Fast feed stops before the tube",
+     .lo = 0, .hi = 100,
+     .check = kRange, .decimals = 2,
+     .number = [](S& s) -> double& { return s.saw.approach_gap_mm; }},
+    {.key = "saw.overcut_mm", .unit = "mm", .label = "Overcut past the bore", .lo = 0, .hi = 20,
+     .check = kRange, .decimals = 2, .number = [](S& s) -> double& { return s.saw.overcut_mm; }},
+    {.key = "saw.clearance_mm", .unit = "mm", .label = "Retracted clearance", .lo = 0, .hi = 500,
+     .check = kRange, .decimals = 2,
+     .number = [](S& s) -> double& { return s.saw.clearance_mm; }},
+    {.key = "saw.retract_mm_s", .unit = "mm/s", .label = "Retract speed", .lo = 0.1,
+     .hi = 10000, .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.saw.retract_mm_s; }},
+    {.key = "saw.turntable_deg_s", .unit = "deg/s", .label = "Turntable speed", .lo = 1,
+     .hi = 36000, .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.saw.turntable_deg_s; }},
+    {.key = "saw.turntable_deg_s2", .unit = "deg/s^2", .label = "Turntable acceleration",
+     .lo = 1, .hi = 1e6, .check = kPositive, .decimals = 0,
+     .number = [](S& s) -> double& { return s.saw.turntable_deg_s2; }},
+    {.key = "saw.table_points", .unit = "points", .label = "Cam table points", .lo = 8,
+     .hi = 1023, .check = kRange, .integer = [](S& s) -> int& { return s.saw.table_points; }},
+    {.key = "blade.diameter_mm", .unit = "mm", .label = "Diameter", .lo = 50, .hi = 2000,
+     .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.blade_diameter_mm; }},
+    {.key = "blade.kerf_mm", .unit = "mm", .label = "Kerf", .lo = 0, .hi = 20, .check = kRange,
+     .decimals = 2, .number = [](S& s) -> double& { return s.blade_kerf_mm; }},
+    {.key = "blade.rpm", .unit = "1/min", .label = "Speed", .lo = 1, .hi = 20000,
+     .check = kPositive, .decimals = 0, .number = [](S& s) -> double& { return s.blade_rpm; }},
+    {.key = "gauge.enabled", .unit = "", .label = "Length gauge",
+     .boolean = [](S& s) -> bool& { return s.gauge_enabled; }},
+    {.key = "gauge.delay_pieces", .unit = "pieces", .label = "Gauge delay", .lo = 0, .hi = 10,
+     .check = kRange, .integer = [](S& s) -> int& { return s.gauge_delay_pieces; }},
+    {.key = "gauge.noise_mm", .unit = "mm", .label = "Gauge noise ±", .lo = 0, .hi = 10,
+     .check = kRange, .decimals = 3, .number = [](S& s) -> double& { return s.gauge_noise_mm; }},
+    {.key = "gauge.gain", .unit = "", .label = "Correction gain", .lo = 0.01, .hi = 1,
+     .check = kPositive, .decimals = 3, .number = [](S& s) -> double& { return s.gauge_gain; }},
+    {.key = "line_sim.wander_fraction", .unit = "", .label = "Speed wander", .lo = 0, .hi = 0.5,
+     .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.line_sim.wander_fraction; }},
+    {.key = "line_sim.wander_hz", .unit = "Hz", .label = "Wander frequency", .lo = 1e-4,
+     .hi = 10, .check = kPositive, .decimals = 3,
+     .number = [](S& s) -> double& { return s.line_sim.wander_hz; }},
+    {.key = "line_sim.step_fraction", .unit = "", .label = "Speed step", .lo = 0, .hi = 0.5,
+     .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.line_sim.step_fraction; }},
+    {.key = "line_sim.step_interval_s", .unit = "s", .label = "Mean time between steps", .lo = 0.5,
+     .hi = 1e5, .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.line_sim.step_interval_s; }},
+    {.key = "line_sim.step_ramp_s", .unit = "s", .label = "Step ramp", .lo = 0, .hi = 60,
+     .check = kRange, .decimals = 3,
+     .number = [](S& s) -> double& { return s.line_sim.step_ramp_s; }},
+    {.key = "line_sim.noise_mm", .unit = "mm", .label = "Reading noise ±", .lo = 0, .hi = 10,
+     .check = kRange, .decimals = 3,
+     .number = [](S& s) -> double& { return s.line_sim.noise_mm; }},
+    {.key = "line_sim.slip_fraction", .unit = "", .label = "Roller slip", .lo = 0, .hi = 0.2,
+     .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.line_sim.slip_fraction; }},
+    {.key = "line_sim.seed", .unit = "", .label = "Random seed",
+     .readCustom =
+         [](SectionReader& r, const std::string& leaf, S& s) {
+             s.line_sim.seed = static_cast<std::uint32_t>(
+                 r.integer(leaf, "", static_cast<int>(s.line_sim.seed), 0, 2147483647));
+         },
+     .writeCustom = [](const S& s) -> json::Value { return static_cast<int>(s.line_sim.seed); }},
+};
+// clang-format on
+
 } // namespace
+
+std::span<const SectionField<FlyingSawSpec>> flyingSawFields() {
+    return kFields;
+}
 
 FlyingSawSpec readFlyingSawSection(const json::Value& section) {
     SectionReader m(section, "machine");
     m.get("kind");
     FlyingSawSpec s;
-    if (m.has("tube")) {
-        SectionReader t = m.child("tube");
-        s.shape = t.choice<TubeShape>(
-            "shape", {{"round", TubeShape::Round}, {"rectangular", TubeShape::Rectangular}},
-            s.shape);
-        if (s.shape == TubeShape::Round) {
-            s.diameter_mm = t.number("diameter_mm", "mm", s.diameter_mm);
-        } else {
-            s.width_mm = t.number("width_mm", "mm", s.width_mm);
-            s.height_mm = t.number("height_mm", "mm", s.height_mm);
-            s.corner_radius_mm = t.number("corner_radius_mm", "mm", s.corner_radius_mm);
-        }
-        s.wall_mm = t.number("wall_mm", "mm", s.wall_mm);
-        t.finish();
-    }
-    if (m.has("line")) {
-        SectionReader l = m.child("line");
-        s.line_speed_m_min = l.number("speed_m_min", "m/min", s.line_speed_m_min);
-        s.roller_pulses_per_rev =
-            l.integer("roller_pulses_per_rev", "pulses/rev", s.roller_pulses_per_rev, 1, 10000000);
-        s.roller_diameter_mm = l.number("roller_diameter_mm", "mm", s.roller_diameter_mm);
-        s.filter_alpha = l.number("filter_alpha", "", s.filter_alpha);
-        l.finish();
-    }
-    if (m.has("cut")) {
-        SectionReader c = m.child("cut");
-        if (c.has("queue")) s.queue = readQueue(c);
-        s.tolerance_mm = c.number("tolerance_mm", "mm", s.tolerance_mm);
-        if (c.has("first_sync_master_mm"))
-            s.first_sync_master_mm = c.number("first_sync_master_mm", "mm");
-        c.finish();
-    }
-    if (m.has("carriage")) {
-        SectionReader c = m.child("carriage");
-        s.stroke_mm = c.number("stroke_mm", "mm", s.stroke_mm);
-        s.carriage.max_speed_mm_s = c.number("max_speed_mm_s", "mm/s", s.carriage.max_speed_mm_s);
-        s.carriage.max_accel_mm_s2 =
-            c.number("max_accel_mm_s2", "mm/s^2", s.carriage.max_accel_mm_s2);
-        s.carriage.max_jerk_mm_s3 = c.number("max_jerk_mm_s3", "mm/s^3", s.carriage.max_jerk_mm_s3);
-        s.wait_position_mm = c.number("wait_position_mm", "mm", s.wait_position_mm);
-        c.finish();
-    }
-    if (m.has("saw")) {
-        SectionReader w = m.child("saw");
-        SawSettings& a = s.saw;
-        a.settle_s = w.number("settle_s", "s", a.settle_s);
-        a.fast_feed_mm_s = w.number("fast_feed_mm_s", "mm/s", a.fast_feed_mm_s);
-        a.slow_feed_mm_s = w.number("slow_feed_mm_s", "mm/s", a.slow_feed_mm_s);
-        a.approach_gap_mm = w.number("approach_gap_mm", "mm", a.approach_gap_mm);
-        a.overcut_mm = w.number("overcut_mm", "mm", a.overcut_mm);
-        a.clearance_mm = w.number("clearance_mm", "mm", a.clearance_mm);
-        a.retract_mm_s = w.number("retract_mm_s", "mm/s", a.retract_mm_s);
-        a.turntable_deg_s = w.number("turntable_deg_s", "deg/s", a.turntable_deg_s);
-        a.turntable_deg_s2 = w.number("turntable_deg_s2", "deg/s^2", a.turntable_deg_s2);
-        a.table_points = w.integer("table_points", "points", a.table_points, 8, 1023);
-        w.finish();
-    }
-    if (m.has("blade")) {
-        SectionReader b = m.child("blade");
-        s.blade_diameter_mm = b.number("diameter_mm", "mm", s.blade_diameter_mm);
-        s.blade_kerf_mm = b.number("kerf_mm", "mm", s.blade_kerf_mm);
-        s.blade_rpm = b.number("rpm", "1/min", s.blade_rpm);
-        b.finish();
-    }
-    if (m.has("gauge")) {
-        SectionReader g = m.child("gauge");
-        s.gauge_enabled = g.boolean("enabled", s.gauge_enabled);
-        s.gauge_delay_pieces = g.integer("delay_pieces", "pieces", s.gauge_delay_pieces, 0, 10);
-        s.gauge_noise_mm = g.number("noise_mm", "mm", s.gauge_noise_mm);
-        s.gauge_gain = g.number("gain", "", s.gauge_gain);
-        g.finish();
-    }
-    if (m.has("line_sim")) {
-        SectionReader l = m.child("line_sim");
-        LineSimSpec& v = s.line_sim;
-        v.wander_fraction = l.number("wander_fraction", "", v.wander_fraction);
-        v.wander_hz = l.number("wander_hz", "Hz", v.wander_hz);
-        v.step_fraction = l.number("step_fraction", "", v.step_fraction);
-        v.step_interval_s = l.number("step_interval_s", "s", v.step_interval_s);
-        v.step_ramp_s = l.number("step_ramp_s", "s", v.step_ramp_s);
-        v.noise_mm = l.number("noise_mm", "mm", v.noise_mm);
-        v.slip_fraction = l.number("slip_fraction", "", v.slip_fraction);
-        v.seed = static_cast<std::uint32_t>(
-            l.integer("seed", "", static_cast<int>(v.seed), 0, 2147483647));
-        l.finish();
-    }
+    readFields(m, flyingSawFields(), s);
     m.finish();
     return s;
 }
 
 json::Object writeFlyingSawSection(const FlyingSawSpec& s) {
-    json::Object tube{{"shape", s.shape == TubeShape::Round ? "round" : "rectangular"}};
-    if (s.shape == TubeShape::Round) {
-        tube.emplace_back("diameter_mm", s.diameter_mm);
-    } else {
-        tube.emplace_back("width_mm", s.width_mm);
-        tube.emplace_back("height_mm", s.height_mm);
-        tube.emplace_back("corner_radius_mm", s.corner_radius_mm);
-    }
-    tube.emplace_back("wall_mm", s.wall_mm);
-    json::Array queue;
-    for (const PieceOrder& o : s.queue)
-        queue.emplace_back(json::Object{{"length_mm", o.length_mm}, {"count", o.count}});
-    json::Object cut{{"queue", queue}, {"tolerance_mm", s.tolerance_mm}};
-    if (!std::isnan(s.first_sync_master_mm))
-        cut.emplace_back("first_sync_master_mm", s.first_sync_master_mm);
-    const SawSettings& a = s.saw;
-    const LineSimSpec& v = s.line_sim;
-    return json::Object{{"tube", tube},
-                        {"line", json::Object{{"speed_m_min", s.line_speed_m_min},
-                                              {"roller_pulses_per_rev", s.roller_pulses_per_rev},
-                                              {"roller_diameter_mm", s.roller_diameter_mm},
-                                              {"filter_alpha", s.filter_alpha}}},
-                        {"cut", cut},
-                        {"carriage", json::Object{{"stroke_mm", s.stroke_mm},
-                                                  {"max_speed_mm_s", s.carriage.max_speed_mm_s},
-                                                  {"max_accel_mm_s2", s.carriage.max_accel_mm_s2},
-                                                  {"max_jerk_mm_s3", s.carriage.max_jerk_mm_s3},
-                                                  {"wait_position_mm", s.wait_position_mm}}},
-                        {"saw", json::Object{{"settle_s", a.settle_s},
-                                             {"fast_feed_mm_s", a.fast_feed_mm_s},
-                                             {"slow_feed_mm_s", a.slow_feed_mm_s},
-                                             {"approach_gap_mm", a.approach_gap_mm},
-                                             {"overcut_mm", a.overcut_mm},
-                                             {"clearance_mm", a.clearance_mm},
-                                             {"retract_mm_s", a.retract_mm_s},
-                                             {"turntable_deg_s", a.turntable_deg_s},
-                                             {"turntable_deg_s2", a.turntable_deg_s2},
-                                             {"table_points", a.table_points}}},
-                        {"blade", json::Object{{"diameter_mm", s.blade_diameter_mm},
-                                               {"kerf_mm", s.blade_kerf_mm},
-                                               {"rpm", s.blade_rpm}}},
-                        {"gauge", json::Object{{"enabled", s.gauge_enabled},
-                                               {"delay_pieces", s.gauge_delay_pieces},
-                                               {"noise_mm", s.gauge_noise_mm},
-                                               {"gain", s.gauge_gain}}},
-                        {"line_sim", json::Object{{"wander_fraction", v.wander_fraction},
-                                                  {"wander_hz", v.wander_hz},
-                                                  {"step_fraction", v.step_fraction},
-                                                  {"step_interval_s", v.step_interval_s},
-                                                  {"step_ramp_s", v.step_ramp_s},
-                                                  {"noise_mm", v.noise_mm},
-                                                  {"slip_fraction", v.slip_fraction},
-                                                  {"seed", static_cast<int>(v.seed)}}}};
+    return writeFields(flyingSawFields(), s);
 }
 
 std::vector<JobIssue> checkFlyingSawSpec(const FlyingSawSpec& s) {
     IssueChecker c;
-    if (s.shape == TubeShape::Round) {
-        c.positive("tube.diameter_mm", s.diameter_mm, 5, 1000, "mm");
-    } else {
-        c.positive("tube.width_mm", s.width_mm, 5, 1000, "mm");
-        c.positive("tube.height_mm", s.height_mm, 5, 1000, "mm");
+    checkFields(c, flyingSawFields(), s);
+    // The checks whose limits are other values of the section.
+    if (s.shape == TubeShape::Rectangular)
         c.range("tube.corner_radius_mm", s.corner_radius_mm, 0,
                 std::min(s.width_mm, s.height_mm) / 2, "mm");
-    }
     const double smallest =
         s.shape == TubeShape::Round ? s.diameter_mm : std::min(s.width_mm, s.height_mm);
     c.positive("tube.wall_mm", s.wall_mm, 0.1, std::max(0.1, smallest / 2 - s.saw.overcut_mm - 0.1),
                "mm");
-    c.positive("line.speed_m_min", s.line_speed_m_min, 0.1, 300, "m/min");
-    c.range("line.roller_pulses_per_rev", s.roller_pulses_per_rev, 1, 10000000, "pulses/rev");
-    c.positive("line.roller_diameter_mm", s.roller_diameter_mm, 10, 1000, "mm");
-    c.positive("line.filter_alpha", s.filter_alpha, 1e-4, 1, "");
     if (s.queue.empty()) c.add("cut.queue", "cut.queue is empty: at least one length is needed");
     for (size_t i = 0; i < s.queue.size(); ++i) {
         const std::string k = "cut.queue[" + std::to_string(i) + "]";
         c.positive(k + ".length_mm", s.queue[i].length_mm, 10, 100000, "mm");
         c.range(k + ".count", s.queue[i].count, 1, 1000000, "pieces");
     }
-    c.positive("cut.tolerance_mm", s.tolerance_mm, 0.001, 100, "mm");
     if (!std::isnan(s.first_sync_master_mm))
         c.range("cut.first_sync_master_mm", s.first_sync_master_mm, -1e9, 1e9, "mm");
-    c.positive("carriage.stroke_mm", s.stroke_mm, 10, 50000, "mm");
-    c.positive("carriage.max_speed_mm_s", s.carriage.max_speed_mm_s, 1, 20000, "mm/s");
-    c.positive("carriage.max_accel_mm_s2", s.carriage.max_accel_mm_s2, 10, 1e6, "mm/s^2");
-    c.positive("carriage.max_jerk_mm_s3", s.carriage.max_jerk_mm_s3, 100, 1e9, "mm/s^3");
     c.range("carriage.wait_position_mm", s.wait_position_mm, 0, s.stroke_mm, "mm");
-    const SawSettings& a = s.saw;
-    c.range("saw.settle_s", a.settle_s, 0, 10, "s");
-    c.positive("saw.fast_feed_mm_s", a.fast_feed_mm_s, 0.1, 10000, "mm/s");
-    c.positive("saw.slow_feed_mm_s", a.slow_feed_mm_s, 0.1, 10000, "mm/s");
-    c.range("saw.approach_gap_mm", a.approach_gap_mm, 0, 100, "mm");
-    c.range("saw.overcut_mm", a.overcut_mm, 0, 20, "mm");
-    c.range("saw.clearance_mm", a.clearance_mm, 0, 500, "mm");
-    c.positive("saw.retract_mm_s", a.retract_mm_s, 0.1, 10000, "mm/s");
-    c.positive("saw.turntable_deg_s", a.turntable_deg_s, 1, 36000, "deg/s");
-    c.positive("saw.turntable_deg_s2", a.turntable_deg_s2, 1, 1e6, "deg/s^2");
-    c.range("saw.table_points", a.table_points, 8, 1023, "points");
-    c.positive("blade.diameter_mm", s.blade_diameter_mm, 50, 2000, "mm");
-    c.range("blade.kerf_mm", s.blade_kerf_mm, 0, 20, "mm");
-    c.positive("blade.rpm", s.blade_rpm, 1, 20000, "1/min");
-    c.range("gauge.delay_pieces", s.gauge_delay_pieces, 0, 10, "pieces");
-    c.range("gauge.noise_mm", s.gauge_noise_mm, 0, 10, "mm");
-    c.positive("gauge.gain", s.gauge_gain, 0.01, 1, "");
-    const LineSimSpec& v = s.line_sim;
-    c.range("line_sim.wander_fraction", v.wander_fraction, 0, 0.5, "");
-    c.positive("line_sim.wander_hz", v.wander_hz, 1e-4, 10, "Hz");
-    c.range("line_sim.step_fraction", v.step_fraction, 0, 0.5, "");
-    c.positive("line_sim.step_interval_s", v.step_interval_s, 0.5, 1e5, "s");
-    c.range("line_sim.step_ramp_s", v.step_ramp_s, 0, 60, "s");
-    c.range("line_sim.noise_mm", v.noise_mm, 0, 10, "mm");
-    c.range("line_sim.slip_fraction", v.slip_fraction, 0, 0.2, "");
     return c.issues;
 }
 

@@ -285,7 +285,9 @@ void FlyingSawSource::update(const SourceInput& in, SourceOutput& out) {
                req != SourceRequest::Run) {
         out.status = SourceStatus::AtRest;
     }
+    // The first cut trims the line's head; piece k is finished by cut k + 1.
     out.point_index = static_cast<std::uint32_t>(std::max(cutsDone_ - 1, 0));
+    out.made = out.point_index;
     out.point_count = static_cast<std::uint32_t>(total_);
     out.progress = total_ > 0 ? std::min(1.0, std::max(cutsDone_ - 1, 0) / double(total_)) : 0;
 }

@@ -264,8 +264,8 @@ bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std
     for (int i = 0; i < kAxisCount; ++i)
         t += formatC("%-16s %14.6f %14.6f\n",
                      i == 0 ? "0 chuck" : (std::to_string(i) + " arm").c_str(),
-                     report.joints[static_cast<size_t>(i)].max_abs_deg,
-                     report.joints[static_cast<size_t>(i)].rms_deg);
+                     report.joints[static_cast<size_t>(i)].max_abs,
+                     report.joints[static_cast<size_t>(i)].rms);
     t += formatC("tip error (mm), base frame: x %.6f  y %.6f  z %.6f\n",
                  report.cartesian_max_abs_mm.x(), report.cartesian_max_abs_mm.y(),
                  report.cartesian_max_abs_mm.z());

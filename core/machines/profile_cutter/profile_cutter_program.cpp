@@ -95,15 +95,14 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
 
 json::Value profileRunReportJson(const TrackingReport& r) {
     auto axes = [](const std::array<AxisErrorStats, kMaxAxes>& j) {
-        // TrackingStats converts every axis with rad2deg; X is in mm, so convert it back.
         return json::Array{json::Object{{"axis", 0},
                                         {"name", "A (pipe turn)"},
-                                        {"max_abs_error_deg", j[0].max_abs_deg},
-                                        {"rms_error_deg", j[0].rms_deg}},
+                                        {"max_abs_error_deg", j[0].max_abs},
+                                        {"rms_error_deg", j[0].rms}},
                            json::Object{{"axis", 1},
                                         {"name", "X (torch carriage)"},
-                                        {"max_abs_error_mm", deg2rad(j[1].max_abs_deg)},
-                                        {"rms_error_mm", deg2rad(j[1].rms_deg)}}};
+                                        {"max_abs_error_mm", j[1].max_abs},
+                                        {"rms_error_mm", j[1].rms}}};
     };
     auto vec = [](const Vec3& v) { return json::Object{{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; };
     return json::Object{

@@ -246,6 +246,7 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
     out.supervised[a] = supervised;
     if (!supervised) out.unsupervised_reason = reason;
     out.point_index = static_cast<std::uint32_t>(strokes_);
+    out.made = out.point_index;
     out.progress = c_.experiment == Experiment::Tracking
                        ? std::min(1.0, (now_ - t0_) / c_.track_duration)
                        : static_cast<double>(strokes_) / std::max(1, c_.strokes);

@@ -88,6 +88,12 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) 
     prog->sensors_used = 1u;
     prog->uses_tool = false;
     prog->point_count = static_cast<size_t>(spec.strokes);
+    // The slider's cutter makes strokes; the run has no path length.
+    prog->terms.tool = "cutter";
+    prog->terms.process_ok = "cutter ready";
+    prog->terms.process_lost = "cutter lost";
+    prog->terms.counts = WorkCount::Strokes;
+    prog->terms.path_length = false;
     prog->min_run_s = 0;
     prog->name = job.name;
     prog->source_text = jobText;

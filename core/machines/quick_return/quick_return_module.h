@@ -3,7 +3,7 @@
 // task-space control law on the slider's linear scale (quick_return_law.h). Job section:
 // quick_return_spec.h. `cutcell-cli simulate` runs both experiments offline for the four
 // controllers (experiments.h); `cutcell-cli run` runs the job's experiment and controller in
-// the engine on the simulated mechanism (devices/machines/quick_return_sim_rig.cpp).
+// the engine on the simulated mechanism (devices/machines/quick_return/quick_return_sim_rig.cpp).
 #include "core/machine/machine_module.h"
 #include "core/machines/quick_return/quick_return_spec.h"
 

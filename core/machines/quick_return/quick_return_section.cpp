@@ -1,5 +1,6 @@
 // Reading, writing and checking the quick-return cutter's `machine` section.
 #include "core/common/c_format.h"
+#include "core/job/field_table.h"
 #include "core/job/issue_checker.h"
 #include "core/machines/quick_return/quick_return_spec.h"
 
@@ -16,214 +17,181 @@ const QuickReturnSpec& quickReturnSpec(const Job& job) {
     return *s;
 }
 
+namespace {
+
+using Field = SectionField<QuickReturnSpec>;
+using S = QuickReturnSpec;
+constexpr FieldCheck kRange = FieldCheck::Range, kPositive = FieldCheck::Positive;
+
+// Every key of the section, once: path, unit, label, physical range, decimals, member. The file
+// is written in this order.
+// One entry per key, kept as a table.
+// clang-format off
+const Field kFields[] = {
+    {.key = "mechanism.o3x_m", .unit = "m", .label = "Rocker pivot O3x", .lo = -10, .hi = 10,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.dims.o3x; }},
+    {.key = "mechanism.o3y_m", .unit = "m", .label = "Rocker pivot O3y", .lo = -10, .hi = 10,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.dims.o3y; }},
+    {.key = "mechanism.r2_m", .unit = "m", .label = "Crank r2", .lo = 1e-3, .hi = 10,
+     .check = kPositive, .decimals = 4, .number = [](S& s) -> double& { return s.dims.r2; }},
+    {.key = "mechanism.ab_m", .unit = "m", .label = "A to B on the rocker (AB)", .lo = 0,
+     .hi = 10, .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.dims.ab; }},
+    {.key = "mechanism.r4_m", .unit = "m", .label = "Link r4", .lo = 1e-3, .hi = 10,
+     .check = kPositive, .decimals = 4, .number = [](S& s) -> double& { return s.dims.r4; }},
+    {.key = "mechanism.dx_m", .unit = "m", .label = "Slider line Dx", .lo = -10, .hi = 10,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.dims.dx; }},
+    {.key = "mechanism.scale_offset_m", .unit = "m", .label = "Scale offset", .lo = -10,
+     .hi = 10, .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.dims.scale_offset; }},
+    {.key = "slider.mass_kg", .unit = "kg", .label = "Slider mass m5", .lo = 1e-4, .hi = 1000,
+     .check = kPositive, .decimals = 3,
+     .number = [](S& s) -> double& { return s.plant.slider_mass; }},
+    {.key = "slider.scale_resolution_m", .unit = "m", .label = "Scale resolution", .lo = 0,
+     .hi = 0.01, .check = kRange, .decimals = 7,
+     .number = [](S& s) -> double& { return s.scale_resolution; }},
+    {.key = "crank_motor.inertia_kg_m2", .unit = "kg m^2", .label = "Crank inertia", .lo = 1e-6,
+     .hi = 100, .check = kPositive, .decimals = 5,
+     .number = [](S& s) -> double& { return s.plant.crank_inertia; }},
+    {.key = "crank_motor.rocker_inertia_kg_m2", .unit = "kg m^2", .label = "Rocker inertia",
+     .lo = 0, .hi = 100, .check = kRange, .decimals = 5,
+     .number = [](S& s) -> double& { return s.plant.rocker_inertia; }},
+    {.key = "crank_motor.viscous_nm_s_rad", .unit = "N m s/rad", .label = "Viscous friction",
+     .lo = 0, .hi = 1000, .check = kRange, .decimals = 4,
+     .number = [](S& s) -> double& { return s.plant.viscous; }},
+    {.key = "crank_motor.coulomb_nm", .unit = "N m", .label = "Coulomb friction", .lo = 0,
+     .hi = 1000, .check = kRange, .decimals = 3,
+     .number = [](S& s) -> double& { return s.plant.coulomb; }},
+    {.key = "crank_motor.torque_limit_nm", .unit = "N m", .label = "Torque limit", .lo = 1e-3,
+     .hi = 10000, .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.plant.torque_limit; }},
+    // The stroke's figures are checked against the mechanism in validateQuickReturn().
+    {.key = "cut.workpiece_length_m", .unit = "m", .label = "Workpiece length L_d",
+     .decimals = 4, .number = [](S& s) -> double& { return s.workpiece_length; }},
+    {.key = "cut.stroke_length_m", .unit = "m", .label = "Stroke L_c", .decimals = 4,
+     .number = [](S& s) -> double& { return s.stroke_length; }},
+    {.key = "cut.velocity_m_s", .unit = "m/s", .label = "Cutting velocity v", .decimals = 4,
+     .number = [](S& s) -> double& { return s.velocity; }},
+    {.key = "cut.contact_force_n", .unit = "N", .label = "Contact force", .lo = 0, .hi = 1e5,
+     .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.plant.contact_force; }},
+    {.key = "cut.strokes", .unit = "strokes", .label = "Strokes", .lo = 1, .hi = 1000,
+     .integer = [](S& s) -> int& { return s.strokes; }},
+    {.key = "cut.return_torque_1_nm", .unit = "N m", .label = "Return torque, first half",
+     .decimals = 2, .number = [](S& s) -> double& { return s.return_torque_1; }},
+    {.key = "cut.return_torque_2_nm", .unit = "N m", .label = "Return torque, second half",
+     .decimals = 2, .number = [](S& s) -> double& { return s.return_torque_2; }},
+    {.key = "tracking.offset_m", .unit = "m", .label = "Offset", .decimals = 4,
+     .number = [](S& s) -> double& { return s.track_offset; }},
+    {.key = "tracking.amplitude_m", .unit = "m", .label = "Amplitude", .decimals = 4,
+     .number = [](S& s) -> double& { return s.track_amplitude; }},
+    {.key = "tracking.omega_rad_s", .unit = "rad/s", .label = "ω", .lo = 0, .hi = 100,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.track_omega; }},
+    {.key = "tracking.duration_s", .unit = "s", .label = "Duration", .lo = 0.1, .hi = 600,
+     .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.track_duration; }},
+    {.key = "tracking.mse_window_s", .unit = "s", .label = "MSE window", .decimals = 2,
+     .number = [](S& s) -> double& { return s.mse_window; }},
+    {.key = "tracking.mse_scale", .unit = "1", .label = "MSE scale L", .lo = 1e-6, .hi = 1e6,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.mse_scale; }},
+    {.key = "control.experiment", .unit = "", .label = "Experiment",
+     .choices = {"cutting", "tracking"},
+     .getChoice = [](const S& s) { return s.experiment == Experiment::Cutting ? 0 : 1; },
+     .setChoice =
+         [](S& s, int i) { s.experiment = i == 0 ? Experiment::Cutting : Experiment::Tracking; }},
+    {.key = "control.controller", .unit = "", .label = "Controller",
+     .choices = {"ffc", "lqt", "smc", "osmc"},
+     .getChoice = [](const S& s) { return static_cast<int>(s.controller); },
+     .setChoice = [](S& s, int i) { s.controller = static_cast<ControllerKind>(i); }},
+    {.key = "control.sample_time_s", .unit = "s", .label = "Sample time", .lo = 1e-5,
+     .hi = 0.05, .check = kPositive, .decimals = 5,
+     .number = [](S& s) -> double& { return s.sample_time; }},
+    {.key = "control.jacobian", .unit = "", .label = "Jacobian",
+     .choices = {"compensator", "exact"},
+     .getChoice = [](const S& s) { return s.jacobian_compensator ? 0 : 1; },
+     .setChoice = [](S& s, int i) { s.jacobian_compensator = i == 0; }},
+    {.key = "control.k_rho_m", .unit = "m/rad", .label = "K_ρ", .lo = 1e-4, .hi = 10,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.k_rho; }},
+    {.key = "control.model_mass_kg", .unit = "kg", .label = "Model slider mass", .lo = 1e-4,
+     .hi = 1000, .check = kPositive, .decimals = 3,
+     .number = [](S& s) -> double& { return s.gains.model_mass; }},
+    {.key = "control.disturbance_nm", .unit = "N m", .label = "Disturbance amplitude", .lo = 0,
+     .hi = 1000, .check = kRange, .decimals = 3,
+     .number = [](S& s) -> double& { return s.disturbance_amplitude; }},
+    {.key = "control.disturbance_hz", .unit = "Hz", .label = "Disturbance frequency", .lo = 0,
+     .hi = 1000, .check = kRange, .decimals = 2,
+     .number = [](S& s) -> double& { return s.disturbance_hz; }},
+    {.key = "control.ffc.wn2", .unit = "1/s^2", .label = "ω_n²", .lo = 1e-6, .hi = 1e8,
+     .check = kPositive, .decimals = 1, .number = [](S& s) -> double& { return s.gains.ffc_wn2; }},
+    {.key = "control.ffc.xi", .unit = "1", .label = "ξ", .lo = 1e-6, .hi = 100,
+     .check = kPositive, .decimals = 3, .number = [](S& s) -> double& { return s.gains.ffc_xi; }},
+    {.key = "control.lqt.q1", .unit = "1", .label = "q1", .lo = 0, .hi = 1e12, .check = kRange,
+     .decimals = 1, .number = [](S& s) -> double& { return s.gains.lqt_q1; }},
+    {.key = "control.lqt.q2", .unit = "1", .label = "q2", .lo = 0, .hi = 1e12, .check = kRange,
+     .decimals = 1, .number = [](S& s) -> double& { return s.gains.lqt_q2; }},
+    {.key = "control.lqt.r", .unit = "1", .label = "R", .lo = 1e-12, .hi = 1e12,
+     .check = kPositive, .decimals = 4, .number = [](S& s) -> double& { return s.gains.lqt_r; }},
+    {.key = "control.smc.c", .unit = "1/s", .label = "c", .lo = 1e-6, .hi = 1e6,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.gains.smc_c; }},
+    {.key = "control.smc.eta", .unit = "N", .label = "η", .lo = 0, .hi = 1e6, .check = kRange,
+     .decimals = 2, .number = [](S& s) -> double& { return s.gains.smc_eta; }},
+    {.key = "control.smc.phi", .unit = "m/s", .label = "φ", .lo = 1e-9,
+     .hi = 1e3, .check = kPositive, .decimals = 4,
+     .number = [](S& s) -> double& { return s.gains.smc_phi; }},
+    // Q must be positive definite: checked as a whole in validateQuickReturn().
+    {.key = "control.osmc.q11", .unit = "1", .label = "q11", .decimals = 2,
+     .number = [](S& s) -> double& { return s.gains.osmc_q11; }},
+    {.key = "control.osmc.q12", .unit = "1", .label = "q12", .decimals = 2,
+     .number = [](S& s) -> double& { return s.gains.osmc_q12; }},
+    {.key = "control.osmc.q22", .unit = "1", .label = "q22", .lo = 1e-12, .hi = 1e12,
+     .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.gains.osmc_q22; }},
+    {.key = "control.osmc.lambda", .unit = "1/s", .label = "λ", .lo = 1e-6, .hi = 1e6,
+     .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.gains.osmc_lambda; }},
+    {.key = "control.osmc.k1", .unit = "1/s", .label = "k1", .lo = 1e-6, .hi = 1e8,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.gains.osmc_k1; }},
+    {.key = "control.osmc.k2", .unit = "N", .label = "k2", .lo = 0, .hi = 1e6, .check = kRange,
+     .decimals = 3, .number = [](S& s) -> double& { return s.gains.osmc_k2; }},
+};
+// clang-format on
+
+} // namespace
+
+std::span<const SectionField<QuickReturnSpec>> quickReturnFields() {
+    return kFields;
+}
+
 QuickReturnSpec readQuickReturnSection(const json::Value& section) {
     SectionReader m(section, "machine");
     m.get("kind");
     QuickReturnSpec s;
-    if (m.has("mechanism")) {
-        SectionReader r = m.child("mechanism");
-        WhitworthDims& d = s.dims;
-        d.o3x = r.number("o3x_m", "m", d.o3x);
-        d.o3y = r.number("o3y_m", "m", d.o3y);
-        d.r2 = r.number("r2_m", "m", d.r2);
-        d.ab = r.number("ab_m", "m", d.ab);
-        d.r4 = r.number("r4_m", "m", d.r4);
-        d.dx = r.number("dx_m", "m", d.dx);
-        d.scale_offset = r.number("scale_offset_m", "m", d.scale_offset);
-        r.finish();
-    }
-    if (m.has("slider")) {
-        SectionReader r = m.child("slider");
-        s.plant.slider_mass = r.number("mass_kg", "kg", s.plant.slider_mass);
-        s.scale_resolution = r.number("scale_resolution_m", "m", s.scale_resolution);
-        r.finish();
-    }
-    if (m.has("crank_motor")) {
-        SectionReader r = m.child("crank_motor");
-        CrankPlantParams& p = s.plant;
-        p.crank_inertia = r.number("inertia_kg_m2", "kg m^2", p.crank_inertia);
-        p.rocker_inertia = r.number("rocker_inertia_kg_m2", "kg m^2", p.rocker_inertia);
-        p.viscous = r.number("viscous_nm_s_rad", "N m s/rad", p.viscous);
-        p.coulomb = r.number("coulomb_nm", "N m", p.coulomb);
-        p.torque_limit = r.number("torque_limit_nm", "N m", p.torque_limit);
-        r.finish();
-    }
-    if (m.has("cut")) {
-        SectionReader r = m.child("cut");
-        s.workpiece_length = r.number("workpiece_length_m", "m", s.workpiece_length);
-        s.stroke_length = r.number("stroke_length_m", "m", s.stroke_length);
-        s.velocity = r.number("velocity_m_s", "m/s", s.velocity);
-        s.plant.contact_force = r.number("contact_force_n", "N", s.plant.contact_force);
-        s.strokes = r.integer("strokes", "strokes", s.strokes, 1, 1000);
-        s.return_torque_1 = r.number("return_torque_1_nm", "N m", s.return_torque_1);
-        s.return_torque_2 = r.number("return_torque_2_nm", "N m", s.return_torque_2);
-        r.finish();
-    }
-    if (m.has("tracking")) {
-        SectionReader r = m.child("tracking");
-        s.track_offset = r.number("offset_m", "m", s.track_offset);
-        s.track_amplitude = r.number("amplitude_m", "m", s.track_amplitude);
-        s.track_omega = r.number("omega_rad_s", "rad/s", s.track_omega);
-        s.track_duration = r.number("duration_s", "s", s.track_duration);
-        s.mse_window = r.number("mse_window_s", "s", s.mse_window);
-        s.mse_scale = r.number("mse_scale", "1", s.mse_scale);
-        r.finish();
-    }
-    if (m.has("control")) {
-        SectionReader r = m.child("control");
-        s.experiment = r.choice<Experiment>(
-            "experiment", {{"cutting", Experiment::Cutting}, {"tracking", Experiment::Tracking}},
-            s.experiment);
-        s.controller = r.choice<ControllerKind>("controller",
-                                                {{"ffc", ControllerKind::Ffc},
-                                                 {"lqt", ControllerKind::Lqt},
-                                                 {"smc", ControllerKind::Smc},
-                                                 {"osmc", ControllerKind::Osmc}},
-                                                s.controller);
-        s.sample_time = r.number("sample_time_s", "s", s.sample_time);
-        s.jacobian_compensator = r.choice<bool>(
-            "jacobian", {{"compensator", true}, {"exact", false}}, s.jacobian_compensator);
-        s.k_rho = r.number("k_rho_m", "m/rad", s.k_rho);
-        ControllerParams& g = s.gains;
-        g.model_mass = r.number("model_mass_kg", "kg", g.model_mass);
-        s.disturbance_amplitude = r.number("disturbance_nm", "N m", s.disturbance_amplitude);
-        s.disturbance_hz = r.number("disturbance_hz", "Hz", s.disturbance_hz);
-        if (r.has("ffc")) {
-            SectionReader c = r.child("ffc");
-            g.ffc_wn2 = c.number("wn2", "1/s^2", g.ffc_wn2);
-            g.ffc_xi = c.number("xi", "1", g.ffc_xi);
-            c.finish();
-        }
-        if (r.has("lqt")) {
-            SectionReader c = r.child("lqt");
-            g.lqt_q1 = c.number("q1", "1", g.lqt_q1);
-            g.lqt_q2 = c.number("q2", "1", g.lqt_q2);
-            g.lqt_r = c.number("r", "1", g.lqt_r);
-            c.finish();
-        }
-        if (r.has("smc")) {
-            SectionReader c = r.child("smc");
-            g.smc_c = c.number("c", "1/s", g.smc_c);
-            g.smc_eta = c.number("eta", "N", g.smc_eta);
-            g.smc_phi = c.number("phi", "m/s", g.smc_phi);
-            c.finish();
-        }
-        if (r.has("osmc")) {
-            SectionReader c = r.child("osmc");
-            g.osmc_q11 = c.number("q11", "1", g.osmc_q11);
-            g.osmc_q12 = c.number("q12", "1", g.osmc_q12);
-            g.osmc_q22 = c.number("q22", "1", g.osmc_q22);
-            g.osmc_lambda = c.number("lambda", "1/s", g.osmc_lambda);
-            g.osmc_k1 = c.number("k1", "1/s", g.osmc_k1);
-            g.osmc_k2 = c.number("k2", "N", g.osmc_k2);
-            c.finish();
-        }
-        r.finish();
-    }
+    readFields(m, quickReturnFields(), s);
     s.gains.gravity = s.plant.gravity;
     m.finish();
     return s;
 }
 
 json::Value writeQuickReturnSection(const QuickReturnSpec& s, const std::string& kind) {
-    const WhitworthDims& d = s.dims;
-    const CrankPlantParams& p = s.plant;
-    const ControllerParams& g = s.gains;
-    return json::Object{
-        {"kind", kind},
-        {"mechanism", json::Object{{"o3x_m", d.o3x},
-                                   {"o3y_m", d.o3y},
-                                   {"r2_m", d.r2},
-                                   {"ab_m", d.ab},
-                                   {"r4_m", d.r4},
-                                   {"dx_m", d.dx},
-                                   {"scale_offset_m", d.scale_offset}}},
-        {"slider",
-         json::Object{{"mass_kg", p.slider_mass}, {"scale_resolution_m", s.scale_resolution}}},
-        {"crank_motor", json::Object{{"inertia_kg_m2", p.crank_inertia},
-                                     {"rocker_inertia_kg_m2", p.rocker_inertia},
-                                     {"viscous_nm_s_rad", p.viscous},
-                                     {"coulomb_nm", p.coulomb},
-                                     {"torque_limit_nm", p.torque_limit}}},
-        {"cut", json::Object{{"workpiece_length_m", s.workpiece_length},
-                             {"stroke_length_m", s.stroke_length},
-                             {"velocity_m_s", s.velocity},
-                             {"contact_force_n", p.contact_force},
-                             {"strokes", s.strokes},
-                             {"return_torque_1_nm", s.return_torque_1},
-                             {"return_torque_2_nm", s.return_torque_2}}},
-        {"tracking", json::Object{{"offset_m", s.track_offset},
-                                  {"amplitude_m", s.track_amplitude},
-                                  {"omega_rad_s", s.track_omega},
-                                  {"duration_s", s.track_duration},
-                                  {"mse_window_s", s.mse_window},
-                                  {"mse_scale", s.mse_scale}}},
-        {"control",
-         json::Object{{"experiment", toString(s.experiment)},
-                      {"controller", toString(s.controller)},
-                      {"sample_time_s", s.sample_time},
-                      {"jacobian", s.jacobian_compensator ? "compensator" : "exact"},
-                      {"k_rho_m", s.k_rho},
-                      {"model_mass_kg", g.model_mass},
-                      {"disturbance_nm", s.disturbance_amplitude},
-                      {"disturbance_hz", s.disturbance_hz},
-                      {"ffc", json::Object{{"wn2", g.ffc_wn2}, {"xi", g.ffc_xi}}},
-                      {"lqt", json::Object{{"q1", g.lqt_q1}, {"q2", g.lqt_q2}, {"r", g.lqt_r}}},
-                      {"smc", json::Object{{"c", g.smc_c}, {"eta", g.smc_eta}, {"phi", g.smc_phi}}},
-                      {"osmc", json::Object{{"q11", g.osmc_q11},
-                                            {"q12", g.osmc_q12},
-                                            {"q22", g.osmc_q22},
-                                            {"lambda", g.osmc_lambda},
-                                            {"k1", g.osmc_k1},
-                                            {"k2", g.osmc_k2}}}}}};
+    json::Object out{{"kind", kind}};
+    for (auto& member : writeFields(quickReturnFields(), s))
+        out.push_back(std::move(member));
+    return out;
 }
 
 std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s) {
     IssueChecker c;
     const WhitworthDims& d = s.dims;
-    c.positive("mechanism.r2_m", d.r2, 1e-3, 10, "m");
-    c.range("mechanism.ab_m", d.ab, 0, 10, "m");
-    c.positive("mechanism.r4_m", d.r4, 1e-3, 10, "m");
-    c.range("mechanism.o3x_m", d.o3x, -10, 10, "m");
-    c.range("mechanism.o3y_m", d.o3y, -10, 10, "m");
-    c.range("mechanism.dx_m", d.dx, -10, 10, "m");
-    c.range("mechanism.scale_offset_m", d.scale_offset, -10, 10, "m");
-    c.positive("slider.mass_kg", s.plant.slider_mass, 1e-4, 1000, "kg");
-    c.range("slider.scale_resolution_m", s.scale_resolution, 0, 0.01, "m");
-    c.positive("crank_motor.inertia_kg_m2", s.plant.crank_inertia, 1e-6, 100, "kg m^2");
-    c.range("crank_motor.rocker_inertia_kg_m2", s.plant.rocker_inertia, 0, 100, "kg m^2");
-    c.range("crank_motor.viscous_nm_s_rad", s.plant.viscous, 0, 1000, "N m s/rad");
-    c.range("crank_motor.coulomb_nm", s.plant.coulomb, 0, 1000, "N m");
-    c.positive("crank_motor.torque_limit_nm", s.plant.torque_limit, 1e-3, 10000, "N m");
-    c.range("cut.contact_force_n", s.plant.contact_force, 0, 1e5, "N");
+    checkFields(c, quickReturnFields(), s);
+    // The checks whose limits are other values of the section.
     c.range("cut.return_torque_1_nm", s.return_torque_1, 0, s.plant.torque_limit, "N m");
     c.range("cut.return_torque_2_nm", s.return_torque_2, -s.plant.torque_limit, 0, "N m");
-    c.positive("tracking.duration_s", s.track_duration, 0.1, 600, "s");
     c.positive("tracking.mse_window_s", s.mse_window, 1e-3, s.track_duration, "s");
-    c.positive("tracking.mse_scale", s.mse_scale, 1e-6, 1e6, "1");
-    c.range("tracking.omega_rad_s", s.track_omega, 0, 100, "rad/s");
-    c.positive("control.sample_time_s", s.sample_time, 1e-5, 0.05, "s");
-    c.range("control.k_rho_m", s.k_rho, 1e-4, 10, "m/rad");
-    c.positive("control.model_mass_kg", s.gains.model_mass, 1e-4, 1000, "kg");
-    c.range("control.disturbance_nm", s.disturbance_amplitude, 0, 1000, "N m");
-    c.range("control.disturbance_hz", s.disturbance_hz, 0, 1000, "Hz");
     const ControllerParams& g = s.gains;
-    c.positive("control.ffc.wn2", g.ffc_wn2, 1e-6, 1e8, "1/s^2");
-    c.positive("control.ffc.xi", g.ffc_xi, 1e-6, 100, "1");
-    c.range("control.lqt.q1", g.lqt_q1, 0, 1e12, "1");
-    c.range("control.lqt.q2", g.lqt_q2, 0, 1e12, "1");
-    c.positive("control.lqt.r", g.lqt_r, 1e-12, 1e12, "1");
-    c.positive("control.smc.c", g.smc_c, 1e-6, 1e6, "1/s");
-    c.range("control.smc.eta", g.smc_eta, 0, 1e6, "N");
-    c.positive("control.smc.phi", g.smc_phi, 1e-9, 1e3, "m/s");
-    c.positive("control.osmc.q22", g.osmc_q22, 1e-12, 1e12, "1");
     if (!(g.osmc_q11 * g.osmc_q22 - g.osmc_q12 * g.osmc_q12 > 0))
         c.add("control.osmc.q11", "control.osmc: Q = [q11 q12; q12 q22] = [" + num(g.osmc_q11) +
                                       " " + num(g.osmc_q12) + "; " + num(g.osmc_q12) + " " +
                                       num(g.osmc_q22) + "] must be positive definite");
-    c.positive("control.osmc.lambda", g.osmc_lambda, 1e-6, 1e6, "1/s");
-    c.positive("control.osmc.k1", g.osmc_k1, 1e-6, 1e8, "1/s");
-    c.range("control.osmc.k2", g.osmc_k2, 0, 1e6, "N");
     if (!c.issues.empty()) return c.issues;
 
     // The loop must close for every crank angle (the crank turns fully).

@@ -15,10 +15,11 @@
 //                disturbance_nm, disturbance_hz,
 //                ffc { wn2, xi }, lqt { q1, q2, r }, smc { c, eta, phi },
 //                osmc { q11, q12, q22, lambda, k1, k2 } }
+#include "core/job/field_table.h"
 #include "core/job/job.h"
 #include "core/job/job_io.h"
-#include "core/json/json.h"
 #include "core/job/machine_spec.h"
+#include "core/json/json.h"
 #include "core/machines/quick_return/experiments.h"
 
 namespace cutcell {
@@ -49,6 +50,9 @@ struct QuickReturnSpec : MachineSpecOf<QuickReturnSpec> {
 const QuickReturnSpec& quickReturnSpec(const Job& job);
 
 // The section I/O and checks (quick_return_section.cpp).
+// Every key of the section once, with unit, range and label: reading, writing, the range
+// checks and the form's fields come from it (core/job/field_table.h).
+std::span<const SectionField<QuickReturnSpec>> quickReturnFields();
 QuickReturnSpec readQuickReturnSection(const json::Value& section);
 json::Value writeQuickReturnSection(const QuickReturnSpec& s, const std::string& kind);
 std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s);

@@ -1,5 +1,7 @@
 #include "core/machines/section_steel/section_steel_section.h"
 
+#include "core/job/field_table.h"
+
 #include "core/machines/section_steel/end_cut_path.h"
 #include "core/machines/section_steel/section_outline.h"
 
@@ -7,27 +9,6 @@
 
 namespace cutcell::section_steel {
 namespace {
-
-GrooveSpec readGroove(SectionReader& parent, const char* key) {
-    GrooveSpec g;
-    if (!parent.has(key)) return g;
-    SectionReader r = parent.child(key);
-    g.type = r.choice<GrooveType>("groove",
-                                  {{"none", GrooveType::None},
-                                   {"V", GrooveType::V},
-                                   {"Y", GrooveType::Y},
-                                   {"K", GrooveType::K}},
-                                  GrooveType::None);
-    g.angle_deg = r.number("angle_deg", "deg", 30);
-    g.root_face_mm = r.number("root_face_mm", "mm", 0);
-    r.finish();
-    return g;
-}
-
-json::Value writeGroove(const GrooveSpec& g) {
-    return json::Object{
-        {"groove", toString(g.type)}, {"angle_deg", g.angle_deg}, {"root_face_mm", g.root_face_mm}};
-}
 
 // end_cut.setup: 1 (as loaded) or 2 (turned over); anything else is refused by value.
 int readSetup(SectionReader& c) {
@@ -92,7 +73,142 @@ template <size_t N> json::Array writeNumbers(const std::array<double, N>& a) {
     return out;
 }
 
+void readDrives(SectionReader& m, const std::string& leaf, SectionSteelSpec& s) {
+    const json::Value* v = m.get(leaf);
+    if (!v) return;
+    const std::string k = m.key(leaf);
+    if (!v->isArray() || v->asArray().size() != kSteelAxes)
+        throw JobError(k + " must be an array of 8 rows (axes 0..2 path arm, 3..7 groove arm)");
+    for (size_t i = 0; i < kSteelAxes; ++i) {
+        SectionReader row(v->asArray()[i], k + "[" + std::to_string(i) + "]");
+        s.controller[i].kp = row.number("kp_nm_per_rad", "N m/rad");
+        s.controller[i].ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
+        s.controller[i].kd = row.number("kd_nm_s_per_rad", "N m s/rad");
+        s.controller[i].tau_f = row.number("tau_f_s", "s");
+        s.plant[i].inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
+        s.plant[i].viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
+        s.plant[i].torque_limit_nm = row.number("torque_limit_nm", "N m");
+        row.finish();
+    }
+}
+
+json::Value writeDrives(const SectionSteelSpec& s) {
+    json::Array drives;
+    for (size_t i = 0; i < kSteelAxes; ++i)
+        drives.emplace_back(json::Object{{"kp_nm_per_rad", s.controller[i].kp},
+                                         {"ki_nm_per_rad_s", s.controller[i].ki},
+                                         {"kd_nm_s_per_rad", s.controller[i].kd},
+                                         {"tau_f_s", s.controller[i].tau_f},
+                                         {"inertia_kg_m2", s.plant[i].inertia_kg_m2},
+                                         {"viscous_nm_s_per_rad", s.plant[i].viscous_nm_s_per_rad},
+                                         {"torque_limit_nm", s.plant[i].torque_limit_nm}});
+    return drives;
+}
+
+using Field = SectionField<SectionSteelSpec>;
+using S = SectionSteelSpec;
+constexpr FieldCheck kRange = FieldCheck::Range, kPositive = FieldCheck::Positive;
+constexpr FieldChoices kGrooves{"none", "V", "Y", "K"};
+
+// The keys of the section after `section` (read first, by hand: a catalogue designation or a
+// user-defined profile), once each; the file is written in this order. A groove's angle and
+// root face depend on its type and the section's thickness: checked in checkSteelSpec().
+// One entry per key, kept as a table.
+// clang-format off
+const Field kFields[] = {
+    {.key = "end_cut.mitre_vertical_deg", .unit = "deg", .label = "About the vertical axis (z)",
+     .lo = -45, .hi = 45, .check = kRange, .decimals = 2,
+     .number = [](S& s) -> double& { return s.cut.mitre_vertical_deg; }},
+    {.key = "end_cut.mitre_horizontal_deg", .unit = "deg", .label = "About the horizontal axis (y)",
+     .lo = -45, .hi = 45, .check = kRange, .decimals = 2,
+     .number = [](S& s) -> double& { return s.cut.mitre_horizontal_deg; }},
+    {.key = "end_cut.flanges.groove", .unit = "", .label = "Flange groove", .choices = kGrooves,
+     .getChoice = [](const S& s) { return static_cast<int>(s.cut.flanges.type); },
+     .setChoice = [](S& s, int i) { s.cut.flanges.type = static_cast<GrooveType>(i); }},
+    {.key = "end_cut.flanges.angle_deg", .unit = "deg", .label = "Flange bevel angle",
+     .decimals = 2, .number = [](S& s) -> double& { return s.cut.flanges.angle_deg; }},
+    {.key = "end_cut.flanges.root_face_mm", .unit = "mm", .label = "Flange root face",
+     .decimals = 2, .number = [](S& s) -> double& { return s.cut.flanges.root_face_mm; }},
+    {.key = "end_cut.web.groove", .unit = "", .label = "Web groove", .choices = kGrooves,
+     .getChoice = [](const S& s) { return static_cast<int>(s.cut.web.type); },
+     .setChoice = [](S& s, int i) { s.cut.web.type = static_cast<GrooveType>(i); }},
+    {.key = "end_cut.web.angle_deg", .unit = "deg", .label = "Web bevel angle", .decimals = 2,
+     .number = [](S& s) -> double& { return s.cut.web.angle_deg; }},
+    {.key = "end_cut.web.root_face_mm", .unit = "mm", .label = "Web root face", .decimals = 2,
+     .number = [](S& s) -> double& { return s.cut.web.root_face_mm; }},
+    // 1 (as loaded) or 2 (turned over); anything else is refused by value.
+    {.key = "end_cut.setup", .unit = "", .label = "Setup",
+     .readCustom = [](SectionReader& r, const std::string&, S& s) { s.cut.setup = readSetup(r); },
+     .writeCustom = [](const S& s) -> json::Value { return s.cut.setup; }},
+    {.key = "motion.speed_mm_s", .unit = "mm/s", .label = "Cutting speed along the outline",
+     .lo = 0.1, .hi = 100,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.speed_mm_s; }},
+    {.key = "motion.ramp_s", .unit = "s", .label = "Ramp to and from the speed", .lo = 0, .hi = 10,
+     .check = kRange, .decimals = 2, .number = [](S& s) -> double& { return s.ramp_s; }},
+    {.key = "motion.knot_spacing_mm", .unit = "mm", .label = "Knot spacing", .lo = 0.1, .hi = 50,
+     .check = kPositive, .decimals = 2,
+     .number = [](S& s) -> double& { return s.knot_spacing_mm; }},
+    {.key = "motion.reorient_deg_s", .unit = "deg/s", .label = "Torch turn at the toes", .lo = 1,
+     .hi = 360, .check = kPositive, .decimals = 1,
+     .number = [](S& s) -> double& { return s.reorient_deg_s; }},
+    {.key = "motion.blend_mm", .unit = "mm", .label = "Bevel blend per face", .lo = 0.1, .hi = 100,
+     .check = kRange, .decimals = 1, .number = [](S& s) -> double& { return s.blend_mm; }},
+    {.key = "motion.torch_length_mm", .unit = "mm", .label = "Torch length (collision check)",
+     .lo = 0, .hi = 1000,
+     .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.torch_length_mm; }},
+    {.key = "motion.torch_radius_mm", .unit = "mm", .label = "Torch body radius",
+     .lo = 0, .hi = 100,
+     .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.torch_radius_mm; }},
+    {.key = "motion.max_lean_deg", .unit = "deg", .label = "Largest lean along the cut edge",
+     .lo = 0, .hi = 60,
+     .check = kRange, .decimals = 1, .number = [](S& s) -> double& { return s.max_lean_deg; }},
+    {.key = "path_arm.base_y_mm", .unit = "mm", .label = "Base y", .lo = -5000,
+     .hi = 5000, .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.path_base_y_mm; }},
+    {.key = "path_arm.base_z_mm", .unit = "mm", .label = "Base z (above the table)", .lo = -5000,
+     .hi = 5000, .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.path_base_z_mm; }},
+    {.key = "path_arm.links_mm", .unit = "mm", .label = "Path arm links",
+     .readCustom = [](SectionReader& r, const std::string& leaf, S& s) {
+         readNumbers(r, leaf.c_str(), "mm", s.path_links_mm);
+     },
+     .writeCustom = [](const S& s) -> json::Value { return writeNumbers(s.path_links_mm); }},
+    {.key = "path_arm.limits_deg", .unit = "deg", .label = "Path arm joint limits",
+     .readCustom = [](SectionReader& r, const std::string&, S& s) {
+         readLimits(r, s.path_limits, s.path_limits);
+     },
+     .writeCustom = [](const S& s) -> json::Value { return writeLimits(s.path_limits); }},
+    {.key = "groove_arm.base_x_mm", .unit = "mm", .label = "Base x (past the cut)", .lo = -5000,
+     .hi = 5000, .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.groove_base_x_mm; }},
+    {.key = "groove_arm.base_y_mm", .unit = "mm", .label = "Base y", .lo = -5000,
+     .hi = 5000, .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.groove_base_y_mm; }},
+    {.key = "groove_arm.base_z_mm", .unit = "mm", .label = "Base z", .lo = -5000,
+     .hi = 5000, .check = kRange, .decimals = 1,
+     .number = [](S& s) -> double& { return s.groove_base_z_mm; }},
+    {.key = "groove_arm.limits_deg", .unit = "deg", .label = "Groove arm joint limits",
+     .readCustom = [](SectionReader& r, const std::string&, S& s) {
+         readLimits(r, s.groove_limits, s.groove_limits);
+     },
+     .writeCustom = [](const S& s) -> json::Value { return writeLimits(s.groove_limits); }},
+    {.key = "park_deg", .unit = "deg", .label = "Park position",
+     .readCustom = [](SectionReader& r, const std::string& leaf, S& s) {
+         readNumbers(r, leaf.c_str(), "deg", s.park_deg);
+     },
+     .writeCustom = [](const S& s) -> json::Value { return writeNumbers(s.park_deg); }},
+    {.key = "drives", .unit = "", .label = "Drives", .readCustom = readDrives,
+     .writeCustom = writeDrives},
+};
+// clang-format on
+
 } // namespace
+
+std::span<const SectionField<SectionSteelSpec>> sectionSteelFields() {
+    return kFields;
+}
 
 SectionSteelSpec readSteelSection(SectionReader& m) {
     const SectionSteelSpec d = defaultSectionSteelSpec();
@@ -125,61 +241,8 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
         s.length_mm = sec.number("length_mm", "mm", d.length_mm);
         sec.finish();
     }
-    s.cut = EndCutSpec{};
-    if (m.has("end_cut")) {
-        SectionReader c = m.child("end_cut");
-        s.cut.mitre_vertical_deg = c.number("mitre_vertical_deg", "deg", 0);
-        s.cut.mitre_horizontal_deg = c.number("mitre_horizontal_deg", "deg", 0);
-        s.cut.flanges = readGroove(c, "flanges");
-        s.cut.web = readGroove(c, "web");
-        s.cut.setup = readSetup(c); // absent in older jobs: 1
-        c.finish();
-    }
-    if (m.has("motion")) {
-        SectionReader r = m.child("motion");
-        s.speed_mm_s = r.number("speed_mm_s", "mm/s", d.speed_mm_s);
-        s.ramp_s = r.number("ramp_s", "s", d.ramp_s);
-        s.knot_spacing_mm = r.number("knot_spacing_mm", "mm", d.knot_spacing_mm);
-        s.reorient_deg_s = r.number("reorient_deg_s", "deg/s", d.reorient_deg_s);
-        s.blend_mm = r.number("blend_mm", "mm", d.blend_mm);
-        s.torch_length_mm = r.number("torch_length_mm", "mm", d.torch_length_mm);
-        s.torch_radius_mm = r.number("torch_radius_mm", "mm", d.torch_radius_mm);
-        s.max_lean_deg = r.number("max_lean_deg", "deg", d.max_lean_deg);
-        r.finish();
-    }
-    if (m.has("path_arm")) {
-        SectionReader r = m.child("path_arm");
-        s.path_base_y_mm = r.number("base_y_mm", "mm", d.path_base_y_mm);
-        s.path_base_z_mm = r.number("base_z_mm", "mm", d.path_base_z_mm);
-        readNumbers(r, "links_mm", "mm", s.path_links_mm);
-        readLimits(r, d.path_limits, s.path_limits);
-        r.finish();
-    }
-    if (m.has("groove_arm")) {
-        SectionReader r = m.child("groove_arm");
-        s.groove_base_x_mm = r.number("base_x_mm", "mm", d.groove_base_x_mm);
-        s.groove_base_y_mm = r.number("base_y_mm", "mm", d.groove_base_y_mm);
-        s.groove_base_z_mm = r.number("base_z_mm", "mm", d.groove_base_z_mm);
-        readLimits(r, d.groove_limits, s.groove_limits);
-        r.finish();
-    }
-    readNumbers(m, "park_deg", "deg", s.park_deg);
-    if (const json::Value* v = m.get("drives")) {
-        const std::string k = m.key("drives");
-        if (!v->isArray() || v->asArray().size() != kSteelAxes)
-            throw JobError(k + " must be an array of 8 rows (axes 0..2 path arm, 3..7 groove arm)");
-        for (size_t i = 0; i < kSteelAxes; ++i) {
-            SectionReader row(v->asArray()[i], k + "[" + std::to_string(i) + "]");
-            s.controller[i].kp = row.number("kp_nm_per_rad", "N m/rad");
-            s.controller[i].ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
-            s.controller[i].kd = row.number("kd_nm_s_per_rad", "N m s/rad");
-            s.controller[i].tau_f = row.number("tau_f_s", "s");
-            s.plant[i].inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
-            s.plant[i].viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
-            s.plant[i].torque_limit_nm = row.number("torque_limit_nm", "N m");
-            row.finish();
-        }
-    }
+    s.cut = EndCutSpec{}; // an end cut left out of the file is a square cut, setup 1
+    readFields(m, sectionSteelFields(), s);
     return s;
 }
 
@@ -198,46 +261,15 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
         sec.emplace_back("length_mm", s.length_mm);
         out.emplace_back("section", std::move(sec));
     }
-    out.emplace_back("end_cut", json::Object{{"mitre_vertical_deg", s.cut.mitre_vertical_deg},
-                                             {"mitre_horizontal_deg", s.cut.mitre_horizontal_deg},
-                                             {"flanges", writeGroove(s.cut.flanges)},
-                                             {"web", writeGroove(s.cut.web)},
-                                             {"setup", s.cut.setup}});
-    out.emplace_back("motion", json::Object{{"speed_mm_s", s.speed_mm_s},
-                                            {"ramp_s", s.ramp_s},
-                                            {"knot_spacing_mm", s.knot_spacing_mm},
-                                            {"reorient_deg_s", s.reorient_deg_s},
-                                            {"blend_mm", s.blend_mm},
-                                            {"torch_length_mm", s.torch_length_mm},
-                                            {"torch_radius_mm", s.torch_radius_mm},
-                                            {"max_lean_deg", s.max_lean_deg}});
-    out.emplace_back("path_arm", json::Object{{"base_y_mm", s.path_base_y_mm},
-                                              {"base_z_mm", s.path_base_z_mm},
-                                              {"links_mm", writeNumbers(s.path_links_mm)},
-                                              {"limits_deg", writeLimits(s.path_limits)}});
-    out.emplace_back("groove_arm", json::Object{{"base_x_mm", s.groove_base_x_mm},
-                                                {"base_y_mm", s.groove_base_y_mm},
-                                                {"base_z_mm", s.groove_base_z_mm},
-                                                {"limits_deg", writeLimits(s.groove_limits)}});
-    out.emplace_back("park_deg", writeNumbers(s.park_deg));
-    json::Array drives;
-    for (size_t i = 0; i < kSteelAxes; ++i)
-        drives.emplace_back(json::Object{{"kp_nm_per_rad", s.controller[i].kp},
-                                         {"ki_nm_per_rad_s", s.controller[i].ki},
-                                         {"kd_nm_s_per_rad", s.controller[i].kd},
-                                         {"tau_f_s", s.controller[i].tau_f},
-                                         {"inertia_kg_m2", s.plant[i].inertia_kg_m2},
-                                         {"viscous_nm_s_per_rad", s.plant[i].viscous_nm_s_per_rad},
-                                         {"torque_limit_nm", s.plant[i].torque_limit_nm}});
-    out.emplace_back("drives", drives);
+    for (auto& member : writeFields(sectionSteelFields(), s))
+        out.push_back(std::move(member));
 }
 
 void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) {
     for (const auto& [k, m] : checkSectionDims(s.section, "section"))
         c.add(k, m);
     c.positive("section.length_mm", s.length_mm, 50, 24000, "mm");
-    c.range("end_cut.mitre_vertical_deg", s.cut.mitre_vertical_deg, -45, 45, "deg");
-    c.range("end_cut.mitre_horizontal_deg", s.cut.mitre_horizontal_deg, -45, 45, "deg");
+    checkFields(c, sectionSteelFields(), s);
     const struct {
         const char* key;
         const GrooveSpec& g;
@@ -261,22 +293,9 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
                                    " is outside [1, " + std::to_string(kLastSetup) + "]");
     else if (const std::string why = setupTwoProblem(s); !why.empty())
         c.add("end_cut.setup", why);
-    c.positive("motion.speed_mm_s", s.speed_mm_s, 0.1, 100, "mm/s");
-    c.range("motion.ramp_s", s.ramp_s, 0, 10, "s");
-    c.positive("motion.knot_spacing_mm", s.knot_spacing_mm, 0.1, 50, "mm");
-    c.positive("motion.reorient_deg_s", s.reorient_deg_s, 1, 360, "deg/s");
-    c.range("motion.blend_mm", s.blend_mm, 0.1, 100, "mm");
-    c.range("motion.torch_length_mm", s.torch_length_mm, 0, 1000, "mm");
-    c.range("motion.torch_radius_mm", s.torch_radius_mm, 0, 100, "mm");
-    c.range("motion.max_lean_deg", s.max_lean_deg, 0, 60, "deg");
-    c.range("path_arm.base_y_mm", s.path_base_y_mm, -5000, 5000, "mm");
-    c.range("path_arm.base_z_mm", s.path_base_z_mm, -5000, 5000, "mm");
     for (size_t i = 0; i < 3; ++i)
         c.positive("path_arm.links_mm[" + std::to_string(i) + "]", s.path_links_mm[i], 1, 5000,
                    "mm");
-    c.range("groove_arm.base_x_mm", s.groove_base_x_mm, -5000, 5000, "mm");
-    c.range("groove_arm.base_y_mm", s.groove_base_y_mm, -5000, 5000, "mm");
-    c.range("groove_arm.base_z_mm", s.groove_base_z_mm, -5000, 5000, "mm");
     auto limits = [&](const std::string& arm, const JointLimit* l, size_t n, size_t axis0) {
         for (size_t i = 0; i < n; ++i) {
             const std::string k = arm + ".limits_deg[" + std::to_string(i) + "]";

@@ -2,6 +2,7 @@
 
 #include "ui/forms/number_fields.h"
 
+#include "core/machines/flying_saw/flying_saw_section.h"
 #include "core/machines/flying_saw/flying_saw_source.h"
 #include "core/machines/flying_saw/flying_saw_spec.h"
 #include "ui/forms/edited_spec.h"
@@ -75,8 +76,10 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
         this);
     note->setWordWrap(true);
     mainLayout()->addWidget(note);
-    const auto dbl = [this](const char* key, int decimals, auto member) {
-        return bindDouble(key, decimals, [member](Job& j) -> double& { return member(spec(j)); });
+    // One row per key: label, unit and decimals from the section's table.
+    const auto row = [this](QFormLayout* form, const char* key) {
+        return qobject_cast<QDoubleSpinBox*>(
+            addSectionRow(form, sectionField(cutcell::flyingSawFields(), key), &spec));
     };
 
     auto* tube = new QGroupBox(tr("Tube (cut plane)"), this);
@@ -95,25 +98,14 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
                }),
            "");
     diameterRow_ = tubeRows_->rowCount();
-    addRow(tubeRows_, tr("Diameter D"),
-           dbl("tube.diameter_mm", 2, [](FlyingSawSpec& s) -> double& { return s.diameter_mm; }),
-           "mm");
+    row(tubeRows_, "tube.diameter_mm");
     widthRow_ = tubeRows_->rowCount();
-    addRow(tubeRows_, tr("Width a (across)"),
-           width_ = dbl("tube.width_mm", 2, [](FlyingSawSpec& s) -> double& { return s.width_mm; }),
-           "mm");
+    width_ = row(tubeRows_, "tube.width_mm");
     heightRow_ = tubeRows_->rowCount();
-    addRow(tubeRows_, tr("Height b (up)"),
-           height_ =
-               dbl("tube.height_mm", 2, [](FlyingSawSpec& s) -> double& { return s.height_mm; }),
-           "mm");
+    height_ = row(tubeRows_, "tube.height_mm");
     cornerRow_ = tubeRows_->rowCount();
-    addRow(tubeRows_, tr("Corner radius r"),
-           dbl("tube.corner_radius_mm", 2,
-               [](FlyingSawSpec& s) -> double& { return s.corner_radius_mm; }),
-           "mm");
-    addRow(tubeRows_, tr("Wall"),
-           dbl("tube.wall_mm", 2, [](FlyingSawSpec& s) -> double& { return s.wall_mm; }), "mm");
+    row(tubeRows_, "tube.corner_radius_mm");
+    row(tubeRows_, "tube.wall_mm");
     mainLayout()->addWidget(tube);
     connect(shape_, &QComboBox::currentIndexChanged, this, [this](int i) {
         showShapeRows(i);
@@ -134,24 +126,16 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
 
     auto* line = new QGroupBox(tr("Line and measuring roller"), this);
     auto* fl = new QFormLayout(line);
-    addRow(
-        fl, tr("Line speed"),
-        dbl("line.speed_m_min", 3, [](FlyingSawSpec& s) -> double& { return s.line_speed_m_min; }),
-        "m/min");
+    row(fl, "line.speed_m_min");
     addRow(fl, tr("Roller pulses per revolution"),
            bindInt("line.roller_pulses_per_rev",
                    [](Job& j) -> int& { return spec(j).roller_pulses_per_rev; }),
            "pulses/rev");
-    addRow(fl, tr("Roller diameter"),
-           dbl("line.roller_diameter_mm", 4,
-               [](FlyingSawSpec& s) -> double& { return s.roller_diameter_mm; }),
-           "mm");
+    row(fl, "line.roller_diameter_mm");
     resolution_ = new QLabel(line);
     resolution_->setObjectName("sawEncoderResolution");
     fl->addRow(tr("Encoder resolution"), resolution_);
-    addRow(fl, tr("Master filter gain α"),
-           dbl("line.filter_alpha", 4, [](FlyingSawSpec& s) -> double& { return s.filter_alpha; }),
-           "");
+    row(fl, "line.filter_alpha");
     mainLayout()->addWidget(line);
 
     auto* cut = queueGroup_ = new QGroupBox(tr("Pieces: the queue of cut lengths"), this);
@@ -189,10 +173,10 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
         addQueueRow(last, 1);
     });
     connect(remove, &QPushButton::clicked, this, [this] {
-        int row = queue_->currentRow();
-        if (row < 0) row = queue_->rowCount() - 1;
-        if (row < 0) return;
-        removeQueueRow(row);
+        int selected = queue_->currentRow();
+        if (selected < 0) selected = queue_->rowCount() - 1;
+        if (selected < 0) return;
+        removeQueueRow(selected);
         writeQueue();
     });
     send_ = new QPushButton(tr("Send the queue to the running line (from the next piece)"), cut);
@@ -209,10 +193,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
         sendQueueToRunningLine(&why);
     });
     auto* fc = new QFormLayout;
-    addRow(fc, tr("Length tolerance ±"),
-           tolerance_ = dbl("cut.tolerance_mm", 3,
-                            [](FlyingSawSpec& s) -> double& { return s.tolerance_mm; }),
-           "mm");
+    tolerance_ = row(fc, "cut.tolerance_mm");
     vc->addLayout(fc);
     mainLayout()->addWidget(cut);
     mainLayout()->addStretch(1);
@@ -361,6 +342,12 @@ void FlyingSawTubeLineForm::updateDerived(const Job& job) {
 
 FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* parent)
     : JobForm(editor, parent) {
+    // One row per key: label, unit and decimals from the section's table.
+    const auto row = [this](QFormLayout* form, const char* key) {
+        return qobject_cast<QDoubleSpinBox*>(
+            addSectionRow(form, sectionField(cutcell::flyingSawFields(), key), &spec));
+    };
+    // Ratios shown with what they are a fraction of (their table unit is a plain number).
     const auto dbl = [this](const char* key, int decimals, auto member) {
         return bindDouble(key, decimals, [member](Job& j) -> double& { return member(spec(j)); });
     };
@@ -371,74 +358,30 @@ FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* p
     };
 
     QFormLayout* fc = group(tr("Carriage (five periods: BC, CE, EF, FG-GH-HI)"));
-    addRow(fc, tr("Stroke"),
-           dbl("carriage.stroke_mm", 1, [](FlyingSawSpec& s) -> double& { return s.stroke_mm; }),
-           "mm");
-    addRow(fc, tr("Wait position"),
-           dbl("carriage.wait_position_mm", 1,
-               [](FlyingSawSpec& s) -> double& { return s.wait_position_mm; }),
-           "mm");
-    addRow(fc, tr("Speed limit"),
-           dbl("carriage.max_speed_mm_s", 1,
-               [](FlyingSawSpec& s) -> double& { return s.carriage.max_speed_mm_s; }),
-           "mm/s");
-    addRow(fc, tr("Acceleration limit"),
-           dbl("carriage.max_accel_mm_s2", 0,
-               [](FlyingSawSpec& s) -> double& { return s.carriage.max_accel_mm_s2; }),
-           "mm/s²");
-    addRow(fc, tr("Jerk limit"),
-           dbl("carriage.max_jerk_mm_s3", 0,
-               [](FlyingSawSpec& s) -> double& { return s.carriage.max_jerk_mm_s3; }),
-           "mm/s³");
+    row(fc, "carriage.stroke_mm");
+    row(fc, "carriage.wait_position_mm");
+    row(fc, "carriage.max_speed_mm_s");
+    row(fc, "carriage.max_accel_mm_s2");
+    row(fc, "carriage.max_jerk_mm_s3");
 
     QFormLayout* fs = group(tr("Saw cycle in sync (C → D settle, feeds, half turn, retract)"));
-    addRow(fs, tr("Settle C → D"),
-           dbl("saw.settle_s", 3, [](FlyingSawSpec& s) -> double& { return s.saw.settle_s; }), "s");
-    addRow(fs, tr("Fast feed (in air)"),
-           dbl("saw.fast_feed_mm_s", 1,
-               [](FlyingSawSpec& s) -> double& { return s.saw.fast_feed_mm_s; }),
-           "mm/s");
-    addRow(fs, tr("Slow feed (through the wall)"),
-           dbl("saw.slow_feed_mm_s", 1,
-               [](FlyingSawSpec& s) -> double& { return s.saw.slow_feed_mm_s; }),
-           "mm/s");
-    addRow(fs, tr("Fast feed stops before the tube"),
-           dbl("saw.approach_gap_mm", 2,
-               [](FlyingSawSpec& s) -> double& { return s.saw.approach_gap_mm; }),
-           "mm");
-    addRow(fs, tr("Overcut past the bore"),
-           dbl("saw.overcut_mm", 2, [](FlyingSawSpec& s) -> double& { return s.saw.overcut_mm; }),
-           "mm");
-    addRow(
-        fs, tr("Retracted clearance"),
-        dbl("saw.clearance_mm", 2, [](FlyingSawSpec& s) -> double& { return s.saw.clearance_mm; }),
-        "mm");
-    addRow(
-        fs, tr("Retract speed"),
-        dbl("saw.retract_mm_s", 1, [](FlyingSawSpec& s) -> double& { return s.saw.retract_mm_s; }),
-        "mm/s");
-    addRow(fs, tr("Turntable speed"),
-           dbl("saw.turntable_deg_s", 1,
-               [](FlyingSawSpec& s) -> double& { return s.saw.turntable_deg_s; }),
-           "deg/s");
-    addRow(fs, tr("Turntable acceleration"),
-           dbl("saw.turntable_deg_s2", 0,
-               [](FlyingSawSpec& s) -> double& { return s.saw.turntable_deg_s2; }),
-           "deg/s²");
+    row(fs, "saw.settle_s");
+    row(fs, "saw.fast_feed_mm_s");
+    row(fs, "saw.slow_feed_mm_s");
+    row(fs, "saw.approach_gap_mm");
+    row(fs, "saw.overcut_mm");
+    row(fs, "saw.clearance_mm");
+    row(fs, "saw.retract_mm_s");
+    row(fs, "saw.turntable_deg_s");
+    row(fs, "saw.turntable_deg_s2");
     addRow(fs, tr("Cam table points per 180°"),
            bindInt("saw.table_points", [](Job& j) -> int& { return spec(j).saw.table_points; }),
            "points");
 
     QFormLayout* fb = group(tr("Blade"));
-    addRow(fb, tr("Diameter"),
-           dbl("blade.diameter_mm", 1,
-               [](FlyingSawSpec& s) -> double& { return s.blade_diameter_mm; }),
-           "mm");
-    addRow(fb, tr("Kerf"),
-           dbl("blade.kerf_mm", 2, [](FlyingSawSpec& s) -> double& { return s.blade_kerf_mm; }),
-           "mm");
-    addRow(fb, tr("Speed"),
-           dbl("blade.rpm", 0, [](FlyingSawSpec& s) -> double& { return s.blade_rpm; }), "1/min");
+    row(fb, "blade.diameter_mm");
+    row(fb, "blade.kerf_mm");
+    row(fb, "blade.rpm");
 
     QFormLayout* fg = group(tr("Length gauge after the saw (corrects the encoder scale)"));
     fg->addRow(QString(), bindBool("gauge.enabled", tr("Gauge on"),
@@ -446,37 +389,22 @@ FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* p
     addRow(fg, tr("Reports after"),
            bindInt("gauge.delay_pieces", [](Job& j) -> int& { return spec(j).gauge_delay_pieces; }),
            "pieces");
-    addRow(fg, tr("Gauge noise ±"),
-           dbl("gauge.noise_mm", 3, [](FlyingSawSpec& s) -> double& { return s.gauge_noise_mm; }),
-           "mm");
-    addRow(fg, tr("Correction gain"),
-           dbl("gauge.gain", 3, [](FlyingSawSpec& s) -> double& { return s.gauge_gain; }), "");
+    row(fg, "gauge.noise_mm");
+    row(fg, "gauge.gain");
 
     QFormLayout* fv = group(tr("Simulated line and roller"));
     addRow(fv, tr("Speed wander ±"),
            dbl("line_sim.wander_fraction", 4,
                [](FlyingSawSpec& s) -> double& { return s.line_sim.wander_fraction; }),
            tr("of speed"));
-    addRow(fv, tr("Wander frequency"),
-           dbl("line_sim.wander_hz", 3,
-               [](FlyingSawSpec& s) -> double& { return s.line_sim.wander_hz; }),
-           "Hz");
+    row(fv, "line_sim.wander_hz");
     addRow(fv, tr("Speed steps ±"),
            dbl("line_sim.step_fraction", 4,
                [](FlyingSawSpec& s) -> double& { return s.line_sim.step_fraction; }),
            tr("of speed"));
-    addRow(fv, tr("Mean time between steps"),
-           dbl("line_sim.step_interval_s", 2,
-               [](FlyingSawSpec& s) -> double& { return s.line_sim.step_interval_s; }),
-           "s");
-    addRow(fv, tr("Step ramp"),
-           dbl("line_sim.step_ramp_s", 3,
-               [](FlyingSawSpec& s) -> double& { return s.line_sim.step_ramp_s; }),
-           "s");
-    addRow(fv, tr("Reading noise ±"),
-           dbl("line_sim.noise_mm", 3,
-               [](FlyingSawSpec& s) -> double& { return s.line_sim.noise_mm; }),
-           "mm");
+    row(fv, "line_sim.step_interval_s");
+    row(fv, "line_sim.step_ramp_s");
+    row(fv, "line_sim.noise_mm");
     addRow(fv, tr("Roller slip"),
            dbl("line_sim.slip_fraction", 5,
                [](FlyingSawSpec& s) -> double& { return s.line_sim.slip_fraction; }),

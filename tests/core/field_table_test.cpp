@@ -1,0 +1,251 @@
+// The field tables of the machine sections (core/job/field_table.h), by property: every key of
+// a table is written at its own path and read back to the same value; a misspelt key anywhere
+// in the section is refused with a hint naming the nearest valid key; a value beyond a table's
+// range is reported with the key, the value, the unit and the limit; the section the job
+// writer produces holds exactly the table's keys (and "kind").
+#include "core/job/field_table.h"
+#include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
+#include "core/machines/flying_saw/flying_saw_module.h"
+#include "core/machines/flying_saw/flying_saw_section.h"
+#include "core/machines/quick_return/quick_return_spec.h"
+#include "core/machines/section_steel/section_steel_module.h"
+#include "core/machines/section_steel/section_steel_section.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+namespace cutcell {
+namespace {
+
+const json::Value* at(const json::Value& root, const std::string& dotted) {
+    const json::Value* v = &root;
+    size_t from = 0;
+    while (v) {
+        const auto dot = dotted.find('.', from);
+        v = v->find(dotted.substr(from, dot == std::string::npos ? std::string::npos : dot - from));
+        if (dot == std::string::npos) return v;
+        from = dot + 1;
+    }
+    return nullptr;
+}
+
+// Every leaf key of a JSON object as dotted paths.
+void leaves(const json::Value& v, const std::string& prefix, std::set<std::string>& out) {
+    for (const auto& [k, m] : v.asObject()) {
+        const std::string key = prefix.empty() ? k : prefix + "." + k;
+        if (m.isObject())
+            leaves(m, key, out);
+        else
+            out.insert(key);
+    }
+}
+
+// One machine section as the tests see it.
+template <class Spec> struct Section {
+    const char* machine;
+    std::span<const SectionField<Spec>> (*fields)();
+    Spec (*read)(const json::Value&);
+    json::Value (*write)(const Spec&);
+    std::vector<JobIssue> (*validate)(const Spec&);
+    const Spec& (*of)(const Job&);
+    const char* manual = nullptr; // keys below this object are written by hand, not by the table
+
+    Spec defaults() const { return of(findMachine(machine)->defaultJob()); }
+    // The fields that exist for s (a round tube has no width).
+    bool active(const SectionField<Spec>& f, const Spec& s) const { return !f.when || f.when(s); }
+};
+
+template <class Spec> void everyKeyIsWrittenAtItsPathAndReadBack(const Section<Spec>& sec) {
+    const Spec spec = sec.defaults();
+    const json::Value section = sec.write(spec);
+    std::set<std::string> written;
+    leaves(section, "", written);
+    written.erase("kind");
+    std::set<std::string> table;
+    for (const auto& f : sec.fields()) {
+        EXPECT_TRUE(table.insert(f.key).second) << "key twice in the table: " << f.key;
+        EXPECT_TRUE(f.label && *f.label) << f.key;
+        if (!sec.active(f, spec) || f.writeCustom) continue;
+        EXPECT_NE(at(section, f.key), nullptr) << f.key;
+    }
+    // The writer writes the table's keys and nothing else (an array's members are its own).
+    for (const std::string& k : written) {
+        bool inTable = table.count(k) > 0;
+        for (const auto& f : sec.fields())
+            inTable = inTable || (f.writeCustom && k.rfind(std::string(f.key), 0) == 0);
+        inTable = inTable || (sec.manual && k.rfind(std::string(sec.manual) + ".", 0) == 0);
+        EXPECT_TRUE(inTable) << "written but not in the table: " << k;
+    }
+
+    // Change every number, whole number and switch; the file carries the change back.
+    Spec changed = spec;
+    int k = 0;
+    for (const auto& f : sec.fields()) {
+        ++k;
+        if (f.number) f.number(changed) = f.number(changed) + 0.125 * k;
+        if (f.integer) f.integer(changed) = f.integer(changed) + 1;
+        if (f.boolean) f.boolean(changed) = !f.boolean(changed);
+    }
+    Spec back = sec.read(sec.write(changed));
+    for (const auto& f : sec.fields()) {
+        if (!sec.active(f, changed)) continue;
+        if (f.number) {
+            EXPECT_EQ(f.number(back), f.number(changed)) << f.key;
+        }
+        if (f.integer) {
+            EXPECT_EQ(f.integer(back), f.integer(changed)) << f.key;
+        }
+        if (f.boolean) {
+            EXPECT_EQ(f.boolean(back), f.boolean(changed)) << f.key;
+        }
+    }
+    // Every choice, each of its names, back.
+    for (const auto& f : sec.fields()) {
+        if (!f.setChoice) continue;
+        for (int i = 0; i < static_cast<int>(f.choices.size()) && f.choices[i]; ++i) {
+            Spec c = spec;
+            f.setChoice(c, i);
+            EXPECT_EQ(f.getChoice(sec.read(sec.write(c))), i) << f.key << " = " << f.choices[i];
+        }
+    }
+}
+
+json::Value* objectAt(json::Value& root, const std::string& path) {
+    json::Value* obj = &root;
+    size_t from = 0;
+    while (obj && !path.empty()) {
+        const auto dot = path.find('.', from);
+        const std::string part = path.substr(from, dot == std::string::npos ? dot : dot - from);
+        json::Value* next = nullptr;
+        for (auto& [name, m] : obj->asObject())
+            if (name == part) next = &m;
+        obj = next;
+        if (dot == std::string::npos) break;
+        from = dot + 1;
+    }
+    return obj;
+}
+
+template <class Spec> void aMisspeltKeyIsRefusedWhereverItIs(const Section<Spec>& sec) {
+    const Spec spec = sec.defaults();
+    for (const auto& f : sec.fields()) {
+        if (!sec.active(f, spec)) continue;
+        json::Value section = sec.write(spec);
+        json::Value* obj = objectAt(section, f.parent());
+        ASSERT_NE(obj, nullptr) << f.key;
+        const std::string typo = f.leaf() + "x"; // one letter too many, beside the real key
+        obj->set(typo, 1.0);
+        try {
+            sec.read(section);
+            ADD_FAILURE() << "accepted " << typo;
+        } catch (const JobError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(typo), std::string::npos) << what;
+            EXPECT_NE(what.find("did you mean"), std::string::npos) << what;
+        }
+    }
+}
+
+template <class Spec> void aValueBeyondItsRangeNamesKeyValueUnitAndLimit(const Section<Spec>& sec) {
+    for (const auto& f : sec.fields()) {
+        Spec s = sec.defaults();
+        if (f.check == FieldCheck::None || !sec.active(f, s)) continue;
+        const double bad = f.hi * 2 + 1; // beyond the upper limit
+        if (f.number) f.number(s) = bad;
+        if (f.integer) f.integer(s) = static_cast<int>(std::min(bad, 2e9));
+        bool named = false;
+        for (const JobIssue& i : sec.validate(s))
+            if (i.key == f.key) {
+                named = true;
+                EXPECT_NE(i.message.find(f.unit), std::string::npos) << i.message;
+                EXPECT_NE(i.message.find(num(f.hi)), std::string::npos) << i.message;
+            }
+        EXPECT_TRUE(named) << f.key << " = " << bad << " was not reported";
+    }
+}
+
+const Section<QuickReturnSpec> kQuickReturn{
+    kQuickReturnId,
+    quickReturnFields,
+    readQuickReturnSection,
+    [](const QuickReturnSpec& s) { return writeQuickReturnSection(s, kQuickReturnId); },
+    validateQuickReturn,
+    quickReturnSpec};
+const Section<FlyingSawSpec> kFlyingSaw{
+    kFlyingSawId,
+    flyingSawFields,
+    readFlyingSawSection,
+    [](const FlyingSawSpec& s) { return json::Value(writeFlyingSawSection(s)); },
+    checkFlyingSawSpec,
+    [](const Job& j) -> const FlyingSawSpec& { return *j.machine_spec.as<FlyingSawSpec>(); }};
+
+const Section<section_steel::SectionSteelSpec> kSectionSteel{
+    kSectionSteelId,
+    section_steel::sectionSteelFields,
+    [](const json::Value& v) {
+        SectionReader m(v, "machine");
+        m.get("kind");
+        section_steel::SectionSteelSpec s = section_steel::readSteelSection(m);
+        m.finish();
+        return s;
+    },
+    [](const section_steel::SectionSteelSpec& s) {
+        json::Object out{{"kind", kSectionSteelId}};
+        section_steel::writeSteelSection(s, out);
+        return json::Value(out);
+    },
+    [](const section_steel::SectionSteelSpec& s) {
+        IssueChecker c;
+        section_steel::checkSteelSpec(c, s, 0.001);
+        return c.issues;
+    },
+    [](const Job& j) -> const section_steel::SectionSteelSpec& {
+        return *j.machine_spec.as<section_steel::SectionSteelSpec>();
+    },
+    "section"};
+
+TEST(SectionFields, SectionSteelWritesEveryKeyAndReadsItBack) {
+    everyKeyIsWrittenAtItsPathAndReadBack(kSectionSteel);
+}
+TEST(SectionFields, SectionSteelRefusesAMisspeltKey) {
+    aMisspeltKeyIsRefusedWhereverItIs(kSectionSteel);
+}
+TEST(SectionFields, SectionSteelNamesAValueBeyondItsRange) {
+    aValueBeyondItsRangeNamesKeyValueUnitAndLimit(kSectionSteel);
+}
+
+TEST(SectionFields, QuickReturnWritesEveryKeyAndReadsItBack) {
+    everyKeyIsWrittenAtItsPathAndReadBack(kQuickReturn);
+}
+TEST(SectionFields, QuickReturnRefusesAMisspeltKey) {
+    aMisspeltKeyIsRefusedWhereverItIs(kQuickReturn);
+}
+TEST(SectionFields, QuickReturnNamesAValueBeyondItsRange) {
+    aValueBeyondItsRangeNamesKeyValueUnitAndLimit(kQuickReturn);
+}
+TEST(SectionFields, FlyingSawWritesEveryKeyAndReadsItBack) {
+    everyKeyIsWrittenAtItsPathAndReadBack(kFlyingSaw);
+}
+TEST(SectionFields, FlyingSawRefusesAMisspeltKey) {
+    aMisspeltKeyIsRefusedWhereverItIs(kFlyingSaw);
+}
+TEST(SectionFields, FlyingSawNamesAValueBeyondItsRange) {
+    aValueBeyondItsRangeNamesKeyValueUnitAndLimit(kFlyingSaw);
+}
+TEST(SectionFields, ARoundTubeHasADiameterAndNoWidth) {
+    FlyingSawSpec s = kFlyingSaw.defaults();
+    s.shape = TubeShape::Round;
+    const json::Value w = writeFlyingSawSection(s);
+    EXPECT_NE(at(w, "tube.diameter_mm"), nullptr);
+    EXPECT_EQ(at(w, "tube.width_mm"), nullptr);
+    json::Value bad = w;
+    objectAt(bad, "tube")->set("width_mm", 40.0); // a width on a round tube is refused
+    EXPECT_THROW(readFlyingSawSection(bad), JobError);
+}
+
+} // namespace
+} // namespace cutcell

@@ -1,0 +1,35 @@
+#pragma once
+// The pipe-cutting robot of seed 000 in the operator station: a 5-DOF arm over a rotating pipe
+// chuck (six rotary axes). Pages: Method, Robot (DH table with joint limits), Controller (PID
+// and joint plant per axis); plots: six joint errors in deg and the torch tip's x/y/z error in
+// the robot base frame; exports: the wrap-around cutting templates (no G-code: the robot runs
+// joint trajectories, not an NC program).
+#include "core/machines/pipe_robot/pipe_robot_module.h"
+#include "ui/machine/machine_ui.h"
+
+namespace CutCell::ui {
+
+class PipeRobotUi : public MachineUi {
+  public:
+    // The id is the core module's (one definition per machine).
+    static constexpr const char* kId = cutcell::kPipeRobotId;
+
+    std::string id() const override { return kId; }
+    QString title() const override;
+    cutcell::Job defaultJob() const override;
+    std::vector<FormPage> formPages() const override;
+    TipErrorPlot tipErrorPlot() const override { return TipErrorPlot::BaseXyz; }
+    std::vector<ExportKind> exports() const override;
+    cutcell::CutPlan plan(const cutcell::Job& job,
+                          const cutcell::PlanOptions& options) const override;
+    std::shared_ptr<const cutcell::MotionProgram>
+    buildProgram(const cutcell::Job& job, const cutcell::CutPlan& plan,
+                 const std::string& jobText) const override;
+    std::size_t plannedPointCount(const cutcell::Job& job,
+                                  const cutcell::CutPlan& plan) const override;
+    QString planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const override;
+    bool buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+                    cutcell::view3d::SceneModel* out, QString* why) const override;
+};
+
+} // namespace CutCell::ui
