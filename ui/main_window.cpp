@@ -19,6 +19,7 @@
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
 #include "ui/panels/recovery_panel.h"
+#include "ui/panels/run_words.h"
 #include "ui/panels/state_lamps.h"
 #include "ui/plan_worker.h"
 #include "ui/run_controller.h"
@@ -280,6 +281,7 @@ void MainWindow::connectRun() {
                 progress_->setPathLength(program->length_mm);
                 progress_->setTerms(program->terms);
                 alarms_->setTerms(program->terms);
+                lamps_->setToolName(toolWord(program->terms));
             });
     connect(dro_, &DroPanel::jogRequested, run_, &RunController::jog);
     connect(dro_, &DroPanel::jogContinuousRequested, run_, &RunController::jogContinuous);

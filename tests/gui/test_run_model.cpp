@@ -23,6 +23,7 @@
 #include "ui/panels/alarm_panel.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/progress_panel.h"
+#include "ui/panels/state_lamps.h"
 #include "ui/run_controller.h"
 
 #include <QLabel>
@@ -164,7 +165,18 @@ class TestRunModel : public QObject {
             QVERIFY(m.captured(3).toDouble() > 0.1 * program->length_mm);
             QVERIFY(w.progress()->cycleText().contains("Parts 0"));
         }
-        // The engine's stop text names the machine's tool, and so does the alarm list.
+        // The figures above the stop line are the stop point's too (the last sample shown may
+        // predate the last piece or stroke).
+        QTRY_COMPARE_WITH_TIMEOUT(w.progress()->pointsText(),
+                                  QString("%1 / %2")
+                                      .arg(std::min(stop.point_index + 1, stop.point_count))
+                                      .arg(stop.point_count),
+                                  2000);
+        // The engine's stop text names the machine's tool, and so do the lamp and the alarms.
+        auto* lamps = w.findChild<CutCell::ui::StateLamps*>();
+        QVERIFY(lamps);
+        QCOMPARE(lamps->lamp(CutCell::ui::StateLamps::Torch)->text().toLower(),
+                 QString::fromStdString(terms.tool));
         const QString tool = QString::fromStdString(terms.tool);
         QVERIFY(!w.alarms()->alarms().empty());
         const QString alarm = w.alarms()->alarms().back().text;

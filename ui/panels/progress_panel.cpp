@@ -105,6 +105,12 @@ void ProgressPanel::setStopPoint(const cutcell::RunStopPoint& stop) {
     if (!stopped_ || !stop.valid) return;
     // The engine's own stop point (taken in the cycle of the stop; the telemetry shown last may
     // be up to a display frame older): the same figures as the cut recovery box and summary.json.
+    // The figures above the line show it too: the last sample shown may predate the last piece.
+    const double p = std::clamp(stop.progress, 0.0, 1.0);
+    bar_->setValue(static_cast<int>(std::lround(p * 1000)));
+    percent_->setText(QStringLiteral("%1 %").arg(p * 100.0, 0, 'f', 1));
+    const auto shown = stop.point_count ? std::min(stop.point_index + 1, stop.point_count) : 0u;
+    points_->setText(QStringLiteral("%1 / %2").arg(shown).arg(stop.point_count));
     showStop(stop);
 }
 

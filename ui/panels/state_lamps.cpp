@@ -93,6 +93,16 @@ void StateLamps::setState(EngineState s) {
     lamps_[Fault]->setBlinking(s == EngineState::Fault);
 }
 
+void Lamp::setText(const QString& text) {
+    if (text == text_) return;
+    text_ = text;
+    update();
+}
+
+void StateLamps::setToolName(const QString& name) {
+    lamps_[Torch]->setText(name.isEmpty() ? name : name.left(1).toUpper() + name.mid(1));
+}
+
 void StateLamps::setTorch(bool on) {
     lamps_[Torch]->setLit(on);
 }

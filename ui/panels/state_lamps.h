@@ -18,6 +18,8 @@ class Lamp : public QWidget {
   public:
     Lamp(const QString& text, QColor color, QWidget* parent = nullptr);
     void setLit(bool lit);
+    void setText(const QString& text);
+    QString text() const { return text_; }
     void setBlinking(bool blink);
     bool isLit() const { return lit_; }
     QSize sizeHint() const override;
@@ -42,6 +44,8 @@ class StateLamps : public QWidget {
 
     void setState(cutcell::EngineState state);
     void setTorch(bool on);
+    // The process tool's lamp is named as the machine names its tool ("Saw", "Cutter").
+    void setToolName(const QString& name);
     const Lamp* lamp(Which w) const { return lamps_[static_cast<size_t>(w)]; }
 
   private:
