@@ -1,6 +1,7 @@
-// The outputs of the two shipped jobs must not change when the code is restructured: the CLI
+// The outputs of the shipped jobs must not change when the code is restructured: the CLI
 // regenerates them and they are compared with the files captured before the machine modules
-// (tests/data/golden/). Numbers must agree to 1e-9 relative, all other text exactly, except
+// (robot, profile cutter) and before the run model and field tables (the other three machines;
+// tests/data/golden/). Numbers must agree to 1e-9 relative, all other text exactly, except
 // the documented schema line (README, "Golden files").
 //
 // CUTCELL_WRITE_GOLDENS=1 writes the files instead of comparing (only when the outputs are
@@ -70,6 +71,18 @@ std::vector<std::string> generate(const fs::path& dir) {
     EXPECT_EQ(runCli("export " + profileJob + " --gcode " + (dir / "profile/cut.ngc").string() +
                      " --template-svg " + (dir / "profile/template.svg").string()),
               0);
+    // The other three machines' shipped jobs (captured with the CLI of cb459ff, before the
+    // machine-neutral run model and the field tables).
+    for (const std::string m : {"flying_saw", "quick_return", "section_steel"})
+        EXPECT_EQ(runCli("plan " + (kSource / ("resources/jobs/" + m + "_job.json")).string() +
+                         " --out " + (dir / m).string()),
+                  0)
+            << m;
+    for (const std::string m : {"flying_saw", "quick_return"})
+        EXPECT_EQ(runCli("simulate " + (kSource / ("resources/jobs/" + m + "_job.json")).string() +
+                         " --report " + (dir / (m + "_report.json")).string()),
+                  0)
+            << m;
     return {"robot_static_pipe/path.csv",
             "robot_static_pipe/joints.csv",
             "robot_rotating_pipe/path.csv",
@@ -78,7 +91,15 @@ std::vector<std::string> generate(const fs::path& dir) {
             "robot_rotating_pipe_report.json",
             "profile/path.csv",
             "profile/cut.ngc",
-            "profile/template.svg"};
+            "profile/template.svg",
+            "flying_saw/cam.csv",
+            "flying_saw/cycle.csv",
+            "flying_saw/pieces.csv",
+            "flying_saw_report.json",
+            "quick_return/quick_return.json",
+            "quick_return/quick_return_cut.svg",
+            "quick_return_report.json",
+            "section_steel/path.csv"};
 }
 
 // Splits text into numbers and the text between them.
