@@ -7,11 +7,24 @@
 #include "ui/run_controller.h"
 
 #include "ui/panels/control_panel.h"
+#include "ui/panels/event_log_panel.h"
 
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QString>
+#include <QStringList>
 #include <QTest>
+
+#include <algorithm>
+
+// The event log's last lines, for a failure's message.
+inline QString lastLog(const CutCell::ui::MainWindow& w, int lines = 8) {
+    QStringList out;
+    const int n = w.eventLog()->rowCount();
+    for (int r = std::max(0, n - lines); r < n; ++r)
+        out << w.eventLog()->message(r);
+    return out.join(QStringLiteral("\n"));
+}
 
 inline cutcell::EngineState state(const CutCell::ui::MainWindow& w) {
     return w.run()->bridge()->state();

@@ -13,6 +13,8 @@
 #include "can_cable.h"
 #include "sim_rig.h"
 
+#include "main_window_run.h"
+
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
@@ -64,15 +66,6 @@ QStringList cia402(const MainWindow& w) {
 
 bool all(const QStringList& l, const QString& s) {
     return l.size() == cutcell::kAxisCount && l.count(s) == l.size();
-}
-
-// The event log's last lines, for a failure's message.
-QString lastLog(const MainWindow& w, int lines = 8) {
-    QStringList out;
-    const int n = w.eventLog()->rowCount();
-    for (int r = std::max(0, n - lines); r < n; ++r)
-        out << w.eventLog()->message(r);
-    return out.join(QStringLiteral("\n"));
 }
 
 int staleRows(const MainWindow& w) {

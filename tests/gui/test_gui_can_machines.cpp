@@ -69,15 +69,6 @@ QByteArray why(const MainWindow& w) {
     return text.toUtf8();
 }
 
-// The event log's last lines, for a failure's message.
-QString lastLog(const MainWindow& w, int lines = 8) {
-    QStringList out;
-    const int n = w.eventLog()->rowCount();
-    for (int r = std::max(0, n - lines); r < n; ++r)
-        out << w.eventLog()->message(r);
-    return out.join(QStringLiteral("\n"));
-}
-
 bool eventLogNamesANode(const MainWindow& w) {
     static const QRegularExpression node(QStringLiteral("\\bnode \\d+:"));
     for (int r = 0; r < w.eventLog()->rowCount(); ++r)
