@@ -67,7 +67,6 @@ class CanRig : public CutCell::ui::EngineRig {
             if (std::string noRig; const auto machineRig = makeSimulatedRig(job, *program, &noRig))
                 machineRig->configure(config);
         config.clock = ClockMode::RealTime; // the bus runs on the wall clock
-        config.spec = job.engine;
         tuneEngineForCanCell(config, cell, job, period_);
         engine_ = std::make_unique<MotionEngine>(devices, config);
         engine_->startThread();

@@ -232,7 +232,7 @@ RunStopPoint MotionEngine::Impl::currentPoint() const {
     p.point_count = static_cast<std::uint32_t>(program->point_count);
     p.point_index = static_cast<std::uint32_t>(
         std::min<double>(t / program->spline.dt(), static_cast<double>(program->point_count)));
-    p.made = pathStarted ? 1 : 0; // one pierce per path
+    p.made = piercesMade();
     return p;
 }
 

@@ -547,7 +547,7 @@ void MotionEngine::Impl::publishTelemetry() {
         t.point_count = static_cast<std::uint32_t>(program->point_count);
         t.point_index = static_cast<std::uint32_t>(std::min<double>(
             pathT / program->spline.dt(), static_cast<double>(program->point_count)));
-        t.made = pathStarted ? 1 : 0; // one pierce per path
+        t.made = piercesMade();
         t.elapsed_s = runActive ? now - runStartTime : runEndTime - runStartTime; // since Start
         const double r = rate > 0 ? rate : overrideTarget;
         t.remaining_s = (program->cut_time_s - pathT) / r;

@@ -202,6 +202,8 @@ struct MotionEngine::Impl {
     void endRun(const char* outcome);
     // Notes where the current run is on its path, before a stop resets the trajectory.
     void captureStop();
+    // A path program pierces once, where its path starts (or resumes, for a recovery).
+    std::uint32_t piercesMade() const { return pathStarted ? 1 : 0; }
     // Where the current run is now (path time or the source's count) and what it has made.
     RunStopPoint currentPoint() const;
     RunStopPoint stopPoint;
