@@ -239,6 +239,14 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
         }
     }
     tau = std::clamp(tau, -c_.torque_limit, c_.torque_limit);
+    // Feedback known to be old (a TPDO of an earlier SYNC: the bus's threads were held up) says
+    // where the crank was, not where it is: a torque computed from it is not applied. Over CAN
+    // the law kept pushing full torque (+-120 N m) at a crank it saw standing still for 3-4
+    // cycles, then found it 8 deg further: the 10 deg following-error fault of the 1 ms run on
+    // a busy host (measured: 3 of 3 runs faulted; without that torque 3 of 3 completed, max |e|
+    // 2.5-3.8 deg). The open-loop return's torque does not depend on the feedback: it stays.
+    const bool openLoop = phase_ == QrPhase::ReturnPush || phase_ == QrPhase::ReturnBrake;
+    if (!openLoop && (d.age_cycles > 0 || s.age_cycles > 0)) tau = 0;
     const Eigen::Index ai = static_cast<Eigen::Index>(a);
     out.position[ai] = supervised ? qRef : q;
     out.velocity[ai] = supervised ? dqRef : dq;
