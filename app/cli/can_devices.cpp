@@ -33,6 +33,7 @@ bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, const Motio
     axisCount_ = cell.axis_count;
     sensorCount_ = cell.sensor_count;
     description_ = cell.description;
+    if (program) toolName_ = program->terms.tool;
     homeSpeedDegS_ = job.engine.home_speed_deg_s;
     CanOpenMasterConfig& mc = cell.master;
     if (!o.plugin.empty()) mc.plugin = QString::fromStdString(o.plugin);
@@ -86,7 +87,7 @@ void CanEngineDevices::safeStop(const std::string& why) {
         std::lock_guard lock(engineMutex_);
         engine = engine_;
     }
-    safeStopCanCell(engine, master_.get(), why, "cutcell-cli");
+    safeStopCanCell(engine, master_.get(), why, "cutcell-cli", toolName_);
 }
 
 AxisDrive* CanEngineDevices::axis(int i) {

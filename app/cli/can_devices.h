@@ -57,6 +57,7 @@ class CanEngineDevices {
     std::mutex engineMutex_; // guards engine_ against the master thread's event sink
     MotionEngine* engine_ = nullptr;
     std::atomic<bool> safeStopped_{false};
+    std::string toolName_ = "tool"; // the program's (torch, saw, cutter), for the safe stop's line
     std::unique_ptr<QCoreApplication> app_;
     std::unique_ptr<canopen::DriveSimulator> sim_;
     std::unique_ptr<canopen::CanOpenMaster> master_;

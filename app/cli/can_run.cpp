@@ -140,7 +140,7 @@ CanRunResult runCutOverCan(const Job& job, const CutPlan& plan, const CanRunOpti
     // Any ending (signal, std::terminate) first disables every drive on the bus, then logs.
     SafeShutdown::install();
     const SafeShutdown::Registration safeStop = SafeShutdown::add([&](const std::string& why) {
-        safeStopCanCell(nullptr, &master, why, "cutcell-cli simulate");
+        safeStopCanCell(nullptr, &master, why, "cutcell-cli simulate", "");
     });
     if (!master.start(&r.error)) return r;
     auto fail = [&](const std::string& why) {

@@ -37,6 +37,7 @@ class CanRig : public CutCell::ui::EngineRig {
         config_ = cell.master;
         config_.sync = SyncSource::LastDriveWrite;
         cellText_ = cell.description;
+        if (program) toolName_ = program->terms.tool;
         // The device panel names each node's axis (or sensor) as the machine does.
         if (const auto* machine = CutCell::ui::machineUiFor(job))
             for (const auto& axis : machine->axes())
@@ -90,7 +91,8 @@ class CanRig : public CutCell::ui::EngineRig {
     // Any ending of the program (signal, std::terminate, closing the window): once.
     void safeStop(const std::string& why, bool masterRunning) {
         if (safeStopped_.exchange(true)) return;
-        safeStopCanCell(engine_.get(), masterRunning ? master_.get() : nullptr, why, "cutcell");
+        safeStopCanCell(engine_.get(), masterRunning ? master_.get() : nullptr, why, "cutcell",
+                        toolName_);
     }
 
     MotionEngine& engine() override { return *engine_; }
@@ -135,6 +137,7 @@ class CanRig : public CutCell::ui::EngineRig {
     std::atomic<MotionEngine*> engineForEvents_{nullptr};
     std::unique_ptr<CanLink> link_; // destroyed first: it stops the master
     std::atomic<bool> safeStopped_{false};
+    std::string toolName_ = "tool"; // the program's (torch, saw, cutter), for the safe stop's line
     SafeShutdown::Registration safeStopRegistration_;
 };
 

@@ -154,7 +154,8 @@ void MotionEngine::Impl::stepRunning() {
         }
         settleCount = in ? settleCount + 1 : 0;
         if (settleCount >= cfg.settle_cycles) {
-            note("At the first cut point after %.3f s of settling: torch on", now - phaseSince);
+            note("At the first cut point after %.3f s of settling: %s on", now - phaseSince,
+                 toolName());
             phase = RunPhase::Ignite;
             phaseSince = now;
             torchCommand = true;

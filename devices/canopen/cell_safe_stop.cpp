@@ -10,7 +10,7 @@
 namespace cutcell::canopen {
 
 std::string safeStopCanCell(MotionEngine* engine, CanOpenMaster* master, const std::string& why,
-                            const char* program) {
+                            const char* program, const std::string& tool) {
     using Clock = std::chrono::steady_clock;
     if (engine) {
         engine->emergencyStop();
@@ -18,7 +18,7 @@ std::string safeStopCanCell(MotionEngine* engine, CanOpenMaster* master, const s
         while (engine->state() != EngineState::EmergencyStop && Clock::now() < until)
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    std::string what = engine ? "torch off, " : "";
+    std::string what = engine ? (tool.empty() ? "tool" : tool) + " off, " : "";
     if (master)
         what += master->disableAllNow(200)
                     ? std::to_string(master->driveCount()) +

@@ -13,9 +13,10 @@ namespace cutcell::canopen {
 
 class CanOpenMaster;
 
-// Either pointer may be null. Returns the logged line, e.g. "program ending (SIGTERM): torch
-// off, 6 drives disabled (CiA 402 disable voltage + NMT pre-operational written to the bus)".
+// Either pointer may be null; tool: the machine's tool as its program names it (torch, saw,
+// cutter: MotionProgram::terms.tool). Returns the logged line, e.g. "program ending (SIGTERM):
+// saw off, 4 drives disabled (CiA 402 disable voltage + NMT pre-operational written to the bus)".
 std::string safeStopCanCell(MotionEngine* engine, CanOpenMaster* master, const std::string& why,
-                            const char* program);
+                            const char* program, const std::string& tool);
 
 } // namespace cutcell::canopen
