@@ -9,6 +9,7 @@
 //  - the quick-return cutter: the crank in CST under its control law, the slider's scale a CiA
 //    406 encoder; an emergency stop takes the torque away within one cycle.
 // Every wait is for a condition with a deadline, never a fixed sleep.
+#include "core/engine/cycle_stats_text.h"
 #include "core/engine/motion_engine.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
@@ -139,12 +140,7 @@ class CanOpenMachinesTest : public QObject {
     // The engine's and the bus's timing of the run, before judging it (a failed run says
     // whether the host held the cycle up).
     void printTiming() {
-        const CycleStats c = engine_->cycleStats();
-        qInfo("engine: %llu cycles, %llu overruns, %llu deadlines missed, jitter p99 %.0f us, "
-              "max %.0f us, work max %.0f us",
-              (unsigned long long)c.cycles, (unsigned long long)c.overruns,
-              (unsigned long long)c.missed_deadlines, c.jitter_us_p99, c.jitter_us_max,
-              c.work_us_max);
+        qInfo("engine: %s", cycleTimingLine(engine_->cycleStats()).c_str());
         const MasterStats s = master_->stats();
         qInfo("%s: %llu SYNCs, jitter p99 %.1f us", cell_.description.c_str(),
               (unsigned long long)s.cycles, s.sync_jitter_us_p99);

@@ -9,6 +9,7 @@
 #include "can_cable.h"
 #include "sim_rig.h"
 
+#include "core/engine/cycle_stats_text.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_module.h"
 #include "core/machine/machine_registry.h"
@@ -77,13 +78,8 @@ void printTracking(MainWindow& w) {
     for (int i = 0; i < report.axis_count; ++i)
         std::fprintf(stderr, "axis %d: max |e| %.4f, rms %.4f %s over CAN\n", i, report.maxAbs(i),
                      report.rms(i), report.unit(i));
-    const cutcell::CycleStats c = w.run()->rig()->engine().cycleStats();
-    std::fprintf(stderr,
-                 "engine: %llu cycles, %llu overruns, %llu deadlines missed, jitter p99 %.0f us, "
-                 "max %.0f us, work max %.0f us\n",
-                 (unsigned long long)c.cycles, (unsigned long long)c.overruns,
-                 (unsigned long long)c.missed_deadlines, c.jitter_us_p99, c.jitter_us_max,
-                 c.work_us_max);
+    std::fprintf(stderr, "engine: %s\n",
+                 cutcell::cycleTimingLine(w.run()->rig()->engine().cycleStats()).c_str());
 }
 
 bool eventLogNamesANode(const MainWindow& w) {
