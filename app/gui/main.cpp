@@ -95,7 +95,19 @@ int main(int argc, char** argv) {
                                     "= Pipes or the machine's first page, ...).",
                                     "N", "0");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt});
+    cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
+
+    // `cutcell job.json` opens the job as `--job job.json` does (a file manager passes it so);
+    // before, the file was ignored without a word and the built-in job came up instead.
+    const QStringList files = cli.positionalArguments();
+    if (files.size() > 1 || (files.size() == 1 && cli.isSet(jobOpt))) {
+        std::fprintf(stderr, "cutcell: one job at a time: got %s%s (see cutcell --help)\n",
+                     cli.isSet(jobOpt) ? "--job and " : "",
+                     qPrintable(files.join(QStringLiteral(", "))));
+        return 64;
+    }
+    const QString jobFile = files.isEmpty() ? cli.value(jobOpt) : files.front();
 
     const QStringList size = cli.value(sizeOpt).split('x');
     if (cli.isSet(sizeOpt) &&
@@ -115,8 +127,8 @@ int main(int argc, char** argv) {
     QString openError;
     if (cli.isSet(runOpt) && !cli.isSet(realTimeOpt) && !bench)
         window.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
-    if (cli.isSet(jobOpt)) {
-        if (!window.openJob(cli.value(jobOpt), &openError)) {
+    if (!jobFile.isEmpty()) {
+        if (!window.openJob(jobFile, &openError)) {
             std::fprintf(stderr, "cutcell: %s\n", openError.toUtf8().constData());
             if (cli.isSet(runOpt) || bench) return 1;
         }

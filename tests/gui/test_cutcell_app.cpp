@@ -111,6 +111,22 @@ class TestCutcellApp : public QObject {
         QCOMPARE(r.code, 1);
         QVERIFY(r.err.contains("nope.json"));
     }
+
+    // `cutcell FILE` opens FILE as --job does (it was ignored without a word: the built-in job
+    // came up); two jobs are refused, naming both.
+    void positionalJobIsOpened() {
+        QTemporaryDir dir;
+        auto env = QProcessEnvironment::systemEnvironment();
+        env.insert("XDG_CONFIG_HOME", dir.path());
+        Result r =
+            run(CUTCELL_GUI, {"--platform", "offscreen", dir.filePath("nope.json"), "--run"}, env);
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("nope.json"), qPrintable(r.err));
+        r = run(CUTCELL_GUI, {"--platform", "offscreen", "--job", defaultJob(), "second.json"},
+                env);
+        QCOMPARE(r.code, 64);
+        QVERIFY2(r.err.contains("--job and second.json"), qPrintable(r.err));
+    }
 };
 
 // A run whose only test skipped exits with 77: CTest reports it skipped, not passed (CTest
