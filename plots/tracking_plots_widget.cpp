@@ -9,6 +9,8 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QSaveFile>
+#include <QSignalBlocker>
+#include <QTabBar>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -44,7 +46,19 @@ QString csvName(QString s) {
 // view) in the window, every repaint is a full-window GL composition (~10-40 ms on llvmpipe),
 // one per plot per tick. Draw into the plot's buffers with updates off (repaint() is then a
 // no-op); re-enabling schedules a soft update() that joins the window's next composition.
+// The y ticks from the plot's height: about kTickSpacingPx between labels, so they never
+// overlap on a short plot (1280x720 leaves ~60 px of axis), and at least two. The ticker meets
+// the count (tssMeetTickCount) instead of rounding the step to 1-2-5, which could leave one
+// tick in view or pack five into 60 px.
+constexpr int kTickSpacingPx = 24;
+void fitTicks(QCustomPlot* p) {
+    const int h = p->axisRect()->height() > 0 ? p->axisRect()->height() : p->height() - 60;
+    p->yAxis->ticker()->setTickStepStrategy(QCPAxisTicker::tssMeetTickCount);
+    p->yAxis->ticker()->setTickCount(std::clamp(h / kTickSpacingPx, 2, 8));
+}
+
 void softReplot(QCustomPlot* p) {
+    fitTicks(p);
     p->setUpdatesEnabled(false);
     p->replot(QCustomPlot::rpRefreshHint);
     p->setUpdatesEnabled(true);
@@ -63,6 +77,11 @@ struct TrackingPlotsWidget::Impl {
     BoundedSeries ring{6 + kCartTraces, kDefaultCapacity};
     std::vector<QCustomPlot*> plots;     // pool; plots[0..shown) are in use, the rest hidden
     std::vector<QCPTextElement*> titles; // the title row of each plot in the pool
+    std::vector<QCPLayoutGrid*> heads;   // each plot's head: its title over its legend
+    QStringList titleTexts;              // what each title says (blank in tabs: the tab says it)
+    QTabBar* tabs = nullptr;             // one plot at a time when the widget is short
+    QAction* tabsAction = nullptr;       // the tabs' place in the toolbar
+    bool tabbed = false;
     int shown = 0;
     std::vector<QCPGraph*> graphs; // one per trace: axes, then tip traces
     std::vector<int> plotOf;       // the plot index of each trace
@@ -73,6 +92,9 @@ struct TrackingPlotsWidget::Impl {
     bool dirty = false;
     bool paused = false;
     bool autoscale = true;
+    bool legendShown = true;
+    TrackingPlotsWidget::SavePathAsker
+        askSavePath; // the toolbar's Legend toggle, for plots made later too
     bool fullResync = true;
     bool viewChanged = false; // one plot's time range moved: redraw all at the next tick
     bool hostDriven = false;  // new data is drawn by redrawPending() only
@@ -98,6 +120,9 @@ struct TrackingPlotsWidget::Impl {
         p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         p->setNoAntialiasingOnDrag(true);
         p->xAxis->setLabel(QStringLiteral("t (s)"));
+        // Three significant digits ("0.000432", "1.5e-05"): long labels squeezed the plot.
+        p->yAxis->setNumberFormat(QStringLiteral("g"));
+        p->yAxis->setNumberPrecision(3);
         // The plot's name sits in a row above the axes: a vertical y label ("Cartesian error
         // (mm)") was cut when the plot was shorter than the text. usePlot() sets its text.
         auto* head = new QCPLayoutGrid;
@@ -108,18 +133,24 @@ struct TrackingPlotsWidget::Impl {
             new QCPTextElement(p, QString(), QFont(self->font().family(), 9, QFont::Bold));
         title->setObjectName(QStringLiteral("plotTitle"));
         head->addElement(0, 0, title);
-        p->legend->setVisible(true);
+        // The legend in a row of its own under the title, outside the axes: inside, it covered
+        // the newest data and the y labels; beside the title both were cut at 1280x720.
+        p->axisRect()->insetLayout()->take(p->legend);
+        p->axisRect()->insetLayout()->simplify();
+        head->addElement(1, 0, p->legend);
+        head->setRowSpacing(0);
+        p->legend->setVisible(legendShown);
         p->legend->setBrush(QColor(255, 255, 255, 200));
         p->legend->setFont(QFont(self->font().family(), 8));
         p->legend->setTextColor(Qt::black);
         p->legend->setSelectableParts(QCPLegend::spNone);
-        // Entries in rows of three at the top left: the newest data is at the right edge, and a
-        // column of six entries no longer outgrows a short plot (its last entry was cut).
+        p->legend->setIconSize(18, 8);
+        // Entries in rows as wide as the plot allows (arrange(): a column of six outgrew a short
+        // plot).
         p->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-        p->legend->setWrap(3);
+        p->legend->setWrap(6);
         p->legend->setRowSpacing(0);
         p->legend->setColumnSpacing(6);
-        p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
         head->setColumnStretchFactor(0, 1);
         head->setMargins(QMargins(0, 0, 0, 0));
         p->setMinimumHeight(90); // short screens: the 3D view needs the height more
@@ -154,15 +185,15 @@ struct TrackingPlotsWidget::Impl {
         layout->addWidget(p, 1);
         plots.push_back(p);
         titles.push_back(title);
+        heads.push_back(head);
+        titleTexts << QString();
         return p;
     }
 
     QCustomPlot* usePlot(const QString& yLabel) {
         if (shown == static_cast<int>(plots.size())) makePlot();
-        titles[size_t(shown)]->setText(yLabel);
-        QCustomPlot* p = plots[size_t(shown++)];
-        p->setVisible(true);
-        return p;
+        titleTexts[shown] = yLabel;
+        return plots[size_t(shown++)];
     }
 
     // One plot per axis unit (in order of first appearance), then the tip plot.
@@ -200,10 +231,67 @@ struct TrackingPlotsWidget::Impl {
                 plotOf[size_t(axes + k)] = plot;
             }
         }
-        for (size_t i = size_t(shown); i < plots.size(); ++i)
-            plots[i]->setVisible(false);
+        arrange();
         fullResync = true;
         dirty = true;
+    }
+
+    // The title row in the plot's head (stacked) or not (tabs: the tab names the plot; an empty
+    // title still took a text line's height).
+    void showTitle(int plot, bool on) {
+        QCPTextElement* title = titles[size_t(plot)];
+        auto* head = heads[size_t(plot)];
+        title->setText(titleTexts[plot]);
+        const bool there = title->layout() == head;
+        if (on == there) return;
+        if (on) {
+            head->insertRow(0);
+            head->addElement(0, 0, title);
+        } else {
+            head->take(title);
+            head->simplify();
+        }
+    }
+
+    // Entries per legend row: all in one row when their names fit the plot's width (a second
+    // row costs the data ~14 px), else as many as fit.
+    int legendWrap(QCustomPlot* p) const {
+        const int width = std::max(100, self->width() - 24);
+        int used = 0, fit = 0;
+        for (int i = 0; i < p->legend->itemCount(); ++i) {
+            used += p->legend->item(i)->minimumOuterSizeHint().width() + p->legend->columnSpacing();
+            if (used > width) break;
+            ++fit;
+        }
+        return std::max(1, fit);
+    }
+
+    // Stacked while each plot gets kMinStackedPlotPx, else one plot at a time under tabs named
+    // by the plots' titles (1280x720 left ~95 px a plot: an axis of 57 px, nothing readable).
+    static constexpr int kMinStackedPlotPx = 170;
+    void arrange() {
+        const int bar = tabs->sizeHint().height();
+        const bool wantTabs = shown > 1 && self->height() < shown * kMinStackedPlotPx + bar;
+        const bool tabsChanged = wantTabs != tabbed || tabs->count() != (wantTabs ? shown : 0);
+        tabbed = wantTabs;
+        if (tabsChanged) {
+            const QSignalBlocker quiet(tabs);
+            const int current = std::max(0, tabs->currentIndex());
+            while (tabs->count() > 0)
+                tabs->removeTab(0);
+            if (tabbed)
+                for (int i = 0; i < shown; ++i)
+                    tabs->addTab(titleTexts[i]);
+            tabs->setCurrentIndex(std::min(current, std::max(0, shown - 1)));
+        }
+        if (tabsAction) tabsAction->setVisible(tabbed);
+        for (int i = 0; i < static_cast<int>(plots.size()); ++i) {
+            QCustomPlot* p = plots[size_t(i)];
+            showTitle(i, !tabbed);
+            p->legend->setWrap(legendWrap(p));
+            p->setVisible(i < shown && (!tabbed || i == tabs->currentIndex()));
+        }
+        viewChanged = true;
     }
 
     void resetChannels() {
@@ -300,6 +388,15 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     layout->setSpacing(2);
     auto* bar = new QToolBar(this);
     bar->setIconSize(QSize(16, 16));
+    d->tabs = new QTabBar(this);
+    d->tabs->setObjectName(QStringLiteral("plotTabs"));
+    d->tabs->setDrawBase(false);
+    d->tabs->setExpanding(false);
+    d->tabs->setUsesScrollButtons(false); // both tabs whole; the toolbar moves exports out first
+    connect(d->tabs, &QTabBar::currentChanged, this, [this] {
+        d->arrange();
+        d->onTick();
+    });
     d->pauseAction = bar->addAction(tr("Pause"));
     d->pauseAction->setCheckable(true);
     d->pauseAction->setToolTip(tr("Freeze the plots; data keeps being recorded"));
@@ -307,19 +404,37 @@ TrackingPlotsWidget::TrackingPlotsWidget(QWidget* parent)
     QAction* fitAction = bar->addAction(tr("Fit"));
     fitAction->setToolTip(tr("Autoscale both plots and follow the data"));
     connect(fitAction, &QAction::triggered, this, &TrackingPlotsWidget::fit);
+    QAction* legendAction = bar->addAction(tr("Legend"));
+    legendAction->setObjectName(QStringLiteral("legendAction"));
+    legendAction->setCheckable(true);
+    legendAction->setChecked(true);
+    legendAction->setToolTip(tr("Show or hide the trace names above the plots"));
+    connect(legendAction, &QAction::toggled, this, [this](bool on) {
+        d->legendShown = on;
+        for (QCustomPlot* p : d->plots) {
+            p->legend->setVisible(on);
+            p->replot(QCustomPlot::rpQueuedReplot);
+        }
+    });
+    // The plot tabs share the toolbar's row (a row of their own took the data's height), before
+    // the exports: a narrow toolbar moves its last entries into its overflow menu first.
     bar->addSeparator();
-    connect(bar->addAction(tr("Export PNG...")), &QAction::triggered, this, [this] {
-        const QString path =
-            QFileDialog::getSaveFileName(this, tr("Export plots as PNG"),
-                                         QStringLiteral("tracking.png"), tr("PNG images (*.png)"));
+    d->tabsAction = bar->addWidget(d->tabs);
+    bar->addSeparator();
+    const auto askPath = [this](const QString& title, const QString& tail, const QString& filter) {
+        if (d->askSavePath) return d->askSavePath(title, tail, filter);
+        return QFileDialog::getSaveFileName(this, title, QStringLiteral("tracking") + tail, filter);
+    };
+    connect(bar->addAction(tr("Export PNG...")), &QAction::triggered, this, [this, askPath] {
+        const QString path = askPath(tr("Export plots as PNG"), QStringLiteral("_plots.png"),
+                                     tr("PNG images (*.png)"));
         QString err;
         if (!path.isEmpty() && !exportPng(path, &err))
             QMessageBox::warning(this, tr("Export PNG"), err);
     });
-    connect(bar->addAction(tr("Export CSV...")), &QAction::triggered, this, [this] {
-        const QString path =
-            QFileDialog::getSaveFileName(this, tr("Export errors as CSV"),
-                                         QStringLiteral("tracking.csv"), tr("CSV files (*.csv)"));
+    connect(bar->addAction(tr("Export CSV...")), &QAction::triggered, this, [this, askPath] {
+        const QString path = askPath(tr("Export errors as CSV"), QStringLiteral("_tracking.csv"),
+                                     tr("CSV files (*.csv)"));
         QString err;
         if (!path.isEmpty() && !exportCsv(path, &err))
             QMessageBox::warning(this, tr("Export CSV"), err);
@@ -378,7 +493,7 @@ QStringList TrackingPlotsWidget::tipTraceNames() const {
 QStringList TrackingPlotsWidget::plotTitles() const {
     QStringList titles;
     for (int i = 0; i < d->shown; ++i)
-        titles << d->titles[size_t(i)]->text();
+        titles << d->titleTexts[i];
     return titles;
 }
 
@@ -430,10 +545,16 @@ void TrackingPlotsWidget::append(double t_s, const double* axisErrors, int n,
 
 void TrackingPlotsWidget::clear() {
     d->ring.clear();
+    d->autoscale = true; // a new run or job: the ranges follow its data, not the last zoom
     d->synced = 0;
     d->fullResync = true;
     d->dirty = true;
     if (!d->paused) d->onTick();
+}
+
+void TrackingPlotsWidget::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    d->arrange();
 }
 
 void TrackingPlotsWidget::showEvent(QShowEvent* e) {
@@ -544,6 +665,10 @@ void TrackingPlotsWidget::redrawPending() {
     d->onTick();
 }
 
+void TrackingPlotsWidget::setSavePathAsker(SavePathAsker ask) {
+    d->askSavePath = std::move(ask);
+}
+
 void TrackingPlotsWidget::setHostDrivenRedraw(bool on) {
     d->hostDriven = on;
 }
@@ -552,8 +677,10 @@ double TrackingPlotsWidget::replotNow() {
     d->refresh();
     QElapsedTimer timer;
     timer.start();
-    for (int i = 0; i < d->shown; ++i)
+    for (int i = 0; i < d->shown; ++i) {
+        fitTicks(d->plots[size_t(i)]);
         d->plots[size_t(i)]->replot(QCustomPlot::rpImmediateRefresh);
+    }
     return static_cast<double>(timer.nsecsElapsed()) / 1e6;
 }
 

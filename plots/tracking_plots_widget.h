@@ -8,7 +8,9 @@
 // QTimer moves what is new into the plots and asks for a queued replot, and only when
 // something changed and the widget is visible. Paused: data keeps arriving into the ring, the view
 // stays frozen. Mouse: drag pans, wheel zooms (either turns autoscale off; Fit turns it back on);
-// clicking a legend entry hides or shows its trace. QCustomPlot is an implementation detail
+// clicking a legend entry hides or shows its trace. A short widget (under ~170 px a plot) shows
+// one plot at a time under tabs named by the plots' titles; the legend sits under the title,
+// outside the data, and can be hidden (Legend). QCustomPlot is an implementation detail
 // (pimpl).
 //
 // Threading: GUI thread only, like every QWidget. Times must not decrease between clear()s;
@@ -17,6 +19,7 @@
 #include <QWidget>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace cutcell::plots {
@@ -65,6 +68,12 @@ class TrackingPlotsWidget : public QWidget {
     void setTraceVisible(int trace, bool visible); // traces: axes 0..n-1, then the tip's
     bool traceVisible(int trace) const;
 
+    // Where the toolbar's exports ask for a file: the dialog's title, the file name's tail
+    // ("_plots.png", "_tracking.csv") and the filter; returns the path, empty = cancelled. The
+    // host proposes a name from its job (default: a file dialog on "tracking<tail>").
+    using SavePathAsker =
+        std::function<QString(const QString& title, const QString& tail, const QString& filter)>;
+    void setSavePathAsker(SavePathAsker ask);
     // Both plots stacked into one PNG / all kept samples as CSV; written atomically.
     bool exportPng(const QString& path, QString* error = nullptr);
     bool exportCsv(const QString& path, QString* error = nullptr);
@@ -88,6 +97,7 @@ class TrackingPlotsWidget : public QWidget {
 
   protected:
     void showEvent(QShowEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
 
   private:
     struct Impl;

@@ -5,11 +5,11 @@
 #include "core/machines/profile_cutter/template_pdf.h"
 #include "core/machines/profile_cutter/template_svg.h"
 #include "core/machines/profile_cutter/template_tiles.h"
+#include "ui/file_places.h"
 #include "ui/forms/job_editor.h"
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/panels/event_log_panel.h"
 
-#include <QFileDialog>
 #include <QMenu>
 
 #include <algorithm>
@@ -71,7 +71,8 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
 
 namespace {
 
-void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log) {
+void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log,
+                    const std::function<QString()>& documentPath) {
     menu->clear();
     const MachineUi* machine = machineUiFor(editor->job());
     menu->setEnabled(machine != nullptr);
@@ -80,7 +81,16 @@ void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPan
                                const QString& paper) {
         const QString label = exportLabel(kind);
         QAction* a = into->addAction(text, parent, [=] {
-            const QString p = QFileDialog::getSaveFileName(parent, label, {}, exportFilter(kind));
+            const cutcell::Job& job = editor->job();
+            const QString tail =
+                (kind == ExportKind::Gcode ? QString()
+                                           : QStringLiteral("_template_") + paper.toLower()) +
+                filterSuffix(exportFilter(kind));
+            const QString p = askSavePath(
+                parent, SaveKind::Export, QString(label).remove('&').remove(QStringLiteral("...")),
+                proposedExportPath(documentPath ? documentPath() : QString(),
+                                   QString::fromStdString(job.name), tail),
+                exportFilter(kind));
             if (p.isEmpty()) return;
             if (!editor->valid()) {
                 log->add(cutcell::Severity::Error,
@@ -115,14 +125,15 @@ void fillExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPan
 
 } // namespace
 
-QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log) {
+QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log,
+                        std::function<QString()> documentPath) {
     QMenu* exports = menu->addMenu(QObject::tr("&Export cut"));
     exports->setObjectName("exportMenu");
     const auto refresh = [=] {
         const QString machine = QString::fromStdString(editor->job().machine);
         if (exports->property("cutcellMachine").toString() == machine) return;
         exports->setProperty("cutcellMachine", machine);
-        fillExportMenu(exports, parent, editor, log);
+        fillExportMenu(exports, parent, editor, log, documentPath);
     };
     QObject::connect(editor, &JobEditor::jobReset, exports, refresh);
     QObject::connect(editor, &JobEditor::edited, exports, refresh);

@@ -10,6 +10,8 @@
 
 #include <QString>
 
+#include <functional>
+
 class QMenu;
 class QWidget;
 
@@ -31,6 +33,8 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
 // file, exports the editor's current job and logs the outcome. Each action's data() is its
 // ExportKind (int). A template is a submenu of papers (single sheet / A4 / A3): its menu action
 // and each entry carry the kind, each entry its paper in the property "cutcellPaper".
-QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log);
+// documentPath gives the job's file (the proposed export name follows it; may be empty).
+QMenu* addCutExportMenu(QMenu* menu, QWidget* parent, JobEditor* editor, EventLogPanel* log,
+                        std::function<QString()> documentPath = {});
 
 } // namespace CutCell::ui

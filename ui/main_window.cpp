@@ -2,6 +2,7 @@
 
 #include "core/job/default_job.h"
 #include "ui/device_panel.h"
+#include "ui/file_places.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/job_document.h"
@@ -200,8 +201,9 @@ void MainWindow::buildMenus() {
         ->setObjectName("actionNew");
     file->addAction(tr("&Open..."), QKeySequence::Open, this, [this] {
         if (!maybeSave()) return;
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open job"), {},
-                                                       tr("CutCell jobs (*.json);;All files (*)"));
+        const QString p = QFileDialog::getOpenFileName(
+            this, tr("Open job"), QFileInfo(jobsFolder()).isDir() ? jobsFolder() : QString(),
+            tr("CutCell jobs (*.json);;All files (*)"));
         if (!p.isEmpty()) openJob(p);
     });
     recentMenu_ = file->addMenu(tr("Open &recent"));
@@ -210,22 +212,28 @@ void MainWindow::buildMenus() {
     file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { saveAs(); });
     file->addSeparator();
     file->addAction(tr("Export plots as PNG..."), this, [this] {
-        const QString p = QFileDialog::getSaveFileName(this, tr("Export plots"), {}, "PNG (*.png)");
+        const QString p =
+            askExport(tr("Export plots"), QStringLiteral("_plots.png"), "PNG (*.png)");
         QString err;
         if (!p.isEmpty() && !plots_->exportPng(p, &err)) log_->add(Severity::Error, err);
     });
     file->addAction(tr("Export plot data as CSV..."), this, [this] {
-        const QString p = QFileDialog::getSaveFileName(this, tr("Export data"), {}, "CSV (*.csv)");
+        const QString p =
+            askExport(tr("Export data"), QStringLiteral("_tracking.csv"), "CSV (*.csv)");
         QString err;
         if (!p.isEmpty() && !plots_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
     file->addAction(tr("Export alarms as CSV..."), this, [this] {
         const QString p =
-            QFileDialog::getSaveFileName(this, tr("Export alarms"), {}, "CSV (*.csv)");
+            askExport(tr("Export alarms"), QStringLiteral("_alarms.csv"), "CSV (*.csv)");
         QString err;
         if (!p.isEmpty() && !alarms_->exportCsv(p, &err)) log_->add(Severity::Error, err);
     });
-    addCutExportMenu(file, this, editor_, log_);
+    addCutExportMenu(file, this, editor_, log_, [this] { return document_->path(); });
+    plots_->setSavePathAsker(
+        [this](const QString& title, const QString& tail, const QString& filter) {
+            return askExport(title, tail, filter);
+        });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -258,6 +266,10 @@ void MainWindow::connectRun() {
                                              .arg(controls_->overridePercent()));
     });
     connect(run_, &RunController::runStopped, this, &MainWindow::onRunStopped);
+    connect(editor_, &JobEditor::jobReset, this, [this] { // another job: its runs are not ours
+        plots_->clear();
+        cell_->setStopMark(-1);
+    });
     connect(run_, &RunController::stopPointChanged, this,
             [this](const cutcell::RunStopPoint& stop) {
                 recovery_->setStopPoint(stop);
@@ -278,10 +290,10 @@ void MainWindow::connectRun() {
                     progress_->setApproachTarget(program->spline.evaluate(0).q,
                                                  program->axis_count);
                 if (!program) return;
-                progress_->setPathLength(program->length_mm);
-                progress_->setTerms(program->terms);
+                progress_->setProgram(program->terms, program->length_mm);
                 alarms_->setTerms(program->terms);
                 lamps_->setToolName(toolWord(program->terms));
+                cell_->setToolName(toolWord(program->terms));
             });
     connect(dro_, &DroPanel::jogRequested, run_, &RunController::jog);
     connect(dro_, &DroPanel::jogContinuousRequested, run_, &RunController::jogContinuous);
@@ -380,7 +392,7 @@ void MainWindow::onState(EngineState s) {
     controls_->setState(s, run_->bridge()->last().homed);
     recovery_->setState(s, run_->bridge()->last().homed);
     plots_->setPaused(s == EngineState::Paused);
-    stateLabel_->setText(QString::fromLatin1(cutcell::toString(s)));
+    stateLabel_->setText(stateWord(s));
     if (s == EngineState::EmergencyStop || s == EngineState::Fault) lamps_->setTorch(false);
     const bool locked = s == EngineState::Running || s == EngineState::Paused ||
                         s == EngineState::Homing || s == EngineState::Jogging;
@@ -500,6 +512,13 @@ bool MainWindow::newJob(const std::string& machineId) {
 
 bool MainWindow::save() {
     if (document_->path().isEmpty()) return saveAs();
+    if (mustNotOverwrite(document_->path())) {
+        log_->add(Severity::Info,
+                  tr("%1 is an example shipped with CutCell or a read-only file: Save writes a "
+                     "copy (Save As).")
+                      .arg(document_->path()));
+        return saveAs();
+    }
     QString err;
     if (!document_->save(&err)) {
         log_->add(Severity::Error, err);
@@ -513,8 +532,10 @@ bool MainWindow::save() {
 bool MainWindow::saveAs(const QString& path) {
     QString p = path;
     if (p.isEmpty())
-        p = QFileDialog::getSaveFileName(this, tr("Save job"), document_->path(),
-                                         tr("CutCell jobs (*.json)"));
+        p = askSavePath(
+            this, SaveKind::Job, tr("Save job"),
+            proposedJobPath(document_->path(), QString::fromStdString(editor_->job().name)),
+            tr("CutCell jobs (*.json)"));
     if (p.isEmpty()) return false;
     QString err;
     if (!document_->saveAs(p, &err)) {
@@ -524,6 +545,13 @@ bool MainWindow::saveAs(const QString& path) {
     }
     log_->add(Severity::Info, tr("Saved %1").arg(document_->path()));
     return true;
+}
+
+QString MainWindow::askExport(const QString& title, const QString& tail, const QString& filter) {
+    return askSavePath(
+        this, SaveKind::Export, title,
+        proposedExportPath(document_->path(), QString::fromStdString(editor_->job().name), tail),
+        filter);
 }
 
 bool MainWindow::maybeSave() {
@@ -558,7 +586,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
         const auto answer = QMessageBox::warning(
             this, tr("Machine in motion"),
             tr("The machine is %1. Quitting stops it at once (emergency stop). Quit?")
-                .arg(QString::fromLatin1(cutcell::toString(s))),
+                .arg(stateWord(s)),
             QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
         if (answer != QMessageBox::Yes) {
             e->ignore();

@@ -112,6 +112,8 @@ class MainWindow : public QMainWindow {
     void onState(cutcell::EngineState s);
     void refreshDevicePanel();
     void showFileError(const QString& title, const QString& message);
+    // The export dialog on <exports folder>/<job's stem><tail> (ui/file_places.h).
+    QString askExport(const QString& title, const QString& tail, const QString& filter);
     void onRunStopped(cutcell::EngineState state, const QString& how);
 
     JobEditor* editor_;

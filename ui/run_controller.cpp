@@ -1,5 +1,7 @@
 #include "ui/run_controller.h"
 
+#include "ui/panels/run_words.h"
+
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "ui/forms/job_editor.h"
@@ -235,6 +237,8 @@ void RunController::onState(EngineState s) {
     else if (s == EngineState::Ready && wasCutting)
         emit runStopped(s, tr("abort"));
     if (stopped) fetchStopPoint(0);
+    if (s == EngineState::Ready && wasCutting) homeAfterAbort_ = true;
+    if (s == EngineState::Homing) homeAfterAbort_ = false;
     if (s != EngineState::Jogging) jogging_ = false;
     if (programPending_ && !busyState(s)) loadProgram();
     updateBlocked();
@@ -266,7 +270,10 @@ void RunController::updateBlocked() {
             r = link_->ready() ? tr("drives disabled - press Enable") : linkBlockedReason();
             break;
         case EngineState::Ready:
-            if (!bridge_->last().homed) r = tr("axes not homed - press Home");
+            if (!bridge_->last().homed)
+                r = tr("axes not homed - press Home");
+            else if (homeAfterAbort_)
+                r = abortedReason();
             break;
         case EngineState::Homing:
             r = tr("homing in progress");
@@ -299,6 +306,10 @@ void RunController::updateBlocked() {
         blocked_ = r;
         emit startBlockedChanged(blocked_);
     }
+}
+
+QString RunController::abortedReason() const {
+    return tr("run aborted - press Home to cut again (or resume in the cut recovery box)");
 }
 
 QString RunController::linkBlockedReason() const {
@@ -341,7 +352,7 @@ void RunController::reconnect() {
         emit message(Severity::Warning,
                      tr("Reconnect refused: the drives are enabled (%1); a reconnection takes "
                         "their torque away. Abort or stop first.")
-                         .arg(QString::fromLatin1(cutcell::toString(s))));
+                         .arg(stateWord(s)));
         return;
     }
     link_->reconnect();
@@ -357,7 +368,10 @@ void RunController::start() {
     rig_->engine().start();
 }
 void RunController::startFrom(double pathTime_s) {
-    if (!rig_ || !blocked_.isEmpty()) return;
+    // A recovery continues the aborted cut from where the axes are: no Home needed for it.
+    const bool onlyAborted = homeAfterAbort_ && blocked_ == abortedReason();
+    if (!rig_ || (!blocked_.isEmpty() && !onlyAborted)) return;
+    homeAfterAbort_ = false;
     emit runStarting();
     coverage_.recoverFrom(pathTime_s);
     setUnconfirmed({});

@@ -120,6 +120,7 @@ class RunController : public QObject {
     void fetchStopPoint(int attempt);
     void updateBlocked();
     QString linkBlockedReason() const;
+    QString abortedReason() const;
     void onLinkChanged(const RigLink& link);
     bool rigMatches(const cutcell::Job& job) const;
     bool engineBusy() const;
@@ -145,6 +146,9 @@ class RunController : public QObject {
     const MachineUi* programMachine_ = nullptr;
     cutcell::EngineState lastState_ = cutcell::EngineState::Idle;
     bool estopPressed_ = false;
+    // An abort left the axes somewhere on the path: a new cut starts from Home (as after a
+    // completed one); the cut recovery may still resume from there.
+    bool homeAfterAbort_ = false;
     bool jogging_ = false;
     int parts_ = 0;
     double lastCycleS_ = 0;

@@ -321,6 +321,7 @@ void MotionEngine::Impl::beginCut() {
     runProgramSeq.store(currentProgramSeq.load(std::memory_order_relaxed),
                         std::memory_order_release);
     samples = 0;
+    supervisionNotes.fill(0);
     pathDone = false;
     pathStarted = false;
     stats = TrackingStats(program->tip_model.get());

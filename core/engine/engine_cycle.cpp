@@ -411,9 +411,13 @@ void MotionEngine::Impl::superviseDevices() {
         const bool supervised = !sourceRan || srcOut.supervised[a];
         if (supervised != supervisedNow[a]) {
             supervisedNow[a] = supervised;
-            note("axis %d (%s): following-error supervision %s%s%s", i, axisName(i),
-                 supervised ? "on again" : "off", supervised ? "" : ": ",
-                 supervised ? "" : srcOut.unsupervised_reason);
+            if (supervisionNotes[a] < 2) {
+                ++supervisionNotes[a];
+                note("axis %d (%s): following-error supervision %s%s%s%s", i, axisName(i),
+                     supervised ? "on again" : "off", supervised ? "" : ": ",
+                     supervised ? "" : srcOut.unsupervised_reason,
+                     supervised ? " (further changes in this run are not logged)" : "");
+            }
         }
         if (!supervised) { // no position reference (open-loop torque): nothing to compare
             travelSinceChange[a] = 0;

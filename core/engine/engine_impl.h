@@ -170,6 +170,9 @@ struct MotionEngine::Impl {
     std::array<double, kMaxAxes> lastSensed{}, travelSinceChange{};
     std::array<double, kMaxAxes> lastPairedSetpoint{}; // setpointForFeedback() a cycle ago
     std::array<bool, kMaxAxes> supervisedNow{true, true, true, true, true, true, true, true};
+    // Supervision changes noted in this run's log per axis: the first off and on again only
+    // (the crank's open-loop return turns it off every stroke; a line each flooded the log).
+    std::array<std::uint8_t, kMaxAxes> supervisionNotes{};
     bool arcWasOk = false;
 
     // cycle.cpp

@@ -355,6 +355,15 @@ TEST(ControlLawSource, RunsAt1kHzWithSupervisionOffOnlyInTheOpenLoopReturn) {
               std::string::npos)
         << text;
     EXPECT_NE(text.find("following-error supervision on again"), std::string::npos) << text;
+    // Said once per run, not at every stroke's return (two strokes here: two returns).
+    const auto count = [&text](const std::string& what) {
+        int n = 0;
+        for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+            ++n;
+        return n;
+    };
+    EXPECT_EQ(count("following-error supervision off"), 1) << text;
+    EXPECT_EQ(count("following-error supervision on again"), 1) << text;
     // Supervised samples of the stroke stay well inside the following-error limit, and the
     // axis is unsupervised exactly in the open-loop phases.
     int unsupervised = 0;

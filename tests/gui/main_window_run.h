@@ -54,9 +54,10 @@ inline bool autoRunCompletes(CutCell::ui::MainWindow& w, int timeoutMs, QString*
 // calling test function).
 inline void startManually(CutCell::ui::MainWindow& w) {
     using cutcell::EngineState;
-    QTRY_VERIFY_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled() &&
-                                 w.controls()->startBlockedReason().contains("Enable"),
-                             60000);
+    QTRY_VERIFY2_WITH_TIMEOUT(w.controls()->enableButton()->isEnabled() &&
+                                  w.controls()->startBlockedReason().contains("Enable"),
+                              qPrintable(w.controls()->startBlockedReason() + "\n" + lastLog(w)),
+                              60000);
     QTest::mouseClick(w.controls()->enableButton(), Qt::LeftButton);
     QTRY_VERIFY2_WITH_TIMEOUT(state(w) == EngineState::Ready, cutcell::toString(state(w)), 5000);
     QTest::mouseClick(w.controls()->homeButton(), Qt::LeftButton);

@@ -55,6 +55,12 @@ void TstCellViewOffscreen::sceneGraphWorksWithoutOpenGl() {
     const Vec3 tip = robot.forward(plan.knots[k].q.segment<kArmJointCount>(1)).translation();
     QVERIFY((view.torchTipWorld() - tip).norm() < 1e-6);
     QCOMPARE(view.doneCount(), int(k) + 1);
+    // The status line names the program's tool, in a line short enough for a 500 px view.
+    QVERIFY2(view.statusText().contains("torch ON"), qPrintable(view.statusText()));
+    view.setToolName("saw");
+    QVERIFY2(view.statusText().contains("saw ON") && !view.statusText().contains("torch"),
+             qPrintable(view.statusText()));
+    QVERIFY2(view.statusText().size() <= 48, qPrintable(view.statusText()));
     // The machine's bounds contain the pipe, the torch and the robot's base.
     const auto b = view.machineBounds();
     for (const Vec3& p :

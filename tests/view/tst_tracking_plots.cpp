@@ -2,10 +2,16 @@
 #include "plots/bounded_series.h"
 #include "plots/tracking_plots_widget.h"
 
+#include <qcustomplot.h>
+
+#include <QApplication>
 #include <QFile>
 #include <QImage>
+#include <QSet>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <cmath>
 
@@ -45,6 +51,9 @@ class TstTrackingPlots : public QObject {
     void clearEmptiesEverything();
     void hiddenWidgetCatchesUpWhenShown();
     void hostDrivenRedrawWaitsForTheHost();
+    void readableAtOperatorSizes_data();
+    void readableAtOperatorSizes();
+    void clearFollowsTheNewDataAgain();
 };
 
 void TstTrackingPlots::ringKeepsNewestAndCountsDrops() {
@@ -290,3 +299,93 @@ void TstTrackingPlots::hostDrivenRedrawWaitsForTheHost() {
 }
 
 #include "tst_tracking_plots.moc"
+
+void TstTrackingPlots::readableAtOperatorSizes_data() {
+    QTest::addColumn<QSize>("size");
+    // The plots' share of the window at 1280x720 and at 1600x1000 (issue 21, defect 9).
+    QTest::newRow("1280x720") << QSize(560, 300);
+    QTest::newRow("1600x1000") << QSize(760, 420);
+}
+
+void TstTrackingPlots::readableAtOperatorSizes() {
+    // Six rotary axes and the tip's x/y/z, errors of a few 1e-4: the robot's live run.
+    QFETCH(QSize, size);
+    TrackingPlotsWidget w;
+    w.resize(size);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    for (int i = 0; i < 3000; ++i) {
+        double j[6], c[3];
+        for (int k = 0; k < 6; ++k)
+            j[k] = 4e-4 * std::sin(0.01 * i + k);
+        for (int k = 0; k < 3; ++k)
+            c[k] = 2e-3 * std::cos(0.013 * i + k);
+        w.append(i * 1e-3, j, 6, c);
+    }
+    // Short: one plot at a time under tabs; tall: stacked. Every plot is checked as shown.
+    auto* tabs = w.findChild<QTabBar*>("plotTabs");
+    QVERIFY(tabs);
+    const int views = tabs->isVisible() ? tabs->count() : 1;
+    QCOMPARE(tabs->isVisible(), size.height() < 400);
+    QList<QCustomPlot*> checked;
+    for (int view = 0; view < views; ++view) {
+        if (tabs->isVisible()) tabs->setCurrentIndex(view);
+        w.replotNow();
+        w.replotNow(); // the tick count follows the laid-out height
+        for (QCustomPlot* p : w.findChildren<QCustomPlot*>()) {
+            if (!p->isVisible()) continue;
+            checked << p;
+            const QRect data = p->axisRect()->rect();
+            QVERIFY2(data.height() > 40, qPrintable(QString::number(data.height())));
+            // The legend never lies over the data.
+            QVERIFY2(!p->legend->visible() || !p->legend->outerRect().intersects(data),
+                     qPrintable(QStringLiteral("legend %1,%2 %3x%4 over the data %5,%6 %7x%8")
+                                    .arg(p->legend->outerRect().x())
+                                    .arg(p->legend->outerRect().y())
+                                    .arg(p->legend->outerRect().width())
+                                    .arg(p->legend->outerRect().height())
+                                    .arg(data.x())
+                                    .arg(data.y())
+                                    .arg(data.width())
+                                    .arg(data.height())));
+            QVERIFY(p->legend->outerRect().bottom() <= p->height());
+            // y tick labels do not overlap: consecutive ticks are further apart than a label is
+            // high, and a label is at most 8 characters wide.
+            const QCPRange range = p->yAxis->range();
+            QList<double> shown;
+            const QVector<double> ticks = p->yAxis->tickVector();
+            for (double t : ticks)
+                if (range.contains(t)) shown << p->yAxis->coordToPixel(t);
+            QVERIFY2(shown.size() >= 2, qPrintable(QStringLiteral("%1 ticks on a %2 px axis")
+                                                       .arg(shown.size())
+                                                       .arg(data.height())));
+            const int labelHeight = QFontMetrics(p->yAxis->tickLabelFont()).height();
+            for (qsizetype k = 1; k < shown.size(); ++k)
+                QVERIFY2(std::fabs(shown[k] - shown[k - 1]) > labelHeight,
+                         qPrintable(QStringLiteral("ticks %1 px apart, labels %2 px high")
+                                        .arg(std::fabs(shown[k] - shown[k - 1]))
+                                        .arg(labelHeight)));
+            for (const QString& label : p->yAxis->tickVectorLabels())
+                QVERIFY2(label.size() <= 8, qPrintable(label));
+        }
+    }
+    QCOMPARE(checked.size(), 2); // the axes' plot and the tip's, each seen once
+    QCOMPARE(QSet<QCustomPlot*>(checked.begin(), checked.end()).size(), 2);
+}
+
+void TstTrackingPlots::clearFollowsTheNewDataAgain() {
+    // Zoomed by hand, then a new run or job: its ranges follow the new data, no Fit needed.
+    TrackingPlotsWidget w;
+    w.resize(560, 300);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* p = w.findChildren<QCustomPlot*>().value(0);
+    QVERIFY(p);
+    const QPoint at = p->axisRect()->center();
+    QWheelEvent wheel(at, p->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(p, &wheel);
+    QVERIFY(!w.autoscale());
+    w.clear();
+    QVERIFY(w.autoscale());
+}

@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSaveFile>
+#include <QShortcut>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -50,8 +51,15 @@ AlarmPanel::AlarmPanel(QWidget* parent)
     summary_->setObjectName("alarmSummary");
     top->addWidget(summary_, 1);
     ack_->setObjectName("alarmAcknowledge");
-    ack_->setToolTip(tr("The operator has seen the alarms; they stay active until Reset."));
+    ack_->setToolTip(tr("The operator has seen the alarms; they stay active until Reset [%1].")
+                         .arg(QLatin1String(kAcknowledgeKey)));
     connect(ack_, &QPushButton::clicked, this, &AlarmPanel::acknowledgeAll);
+    auto* ackKey = new QShortcut(QKeySequence(QString::fromLatin1(kAcknowledgeKey)), this);
+    ackKey->setContext(Qt::ApplicationShortcut);
+    ackKey->setAutoRepeat(false);
+    connect(ackKey, &QShortcut::activated, this, [this] {
+        if (ack_->isEnabled()) acknowledgeAll();
+    });
     top->addWidget(ack_);
     v->addLayout(top);
     table_->setHorizontalHeaderLabels(

@@ -36,6 +36,7 @@ struct Alarm {
 class AlarmPanel : public QWidget {
     Q_OBJECT
   public:
+    static constexpr const char* kAcknowledgeKey = "F12"; // from anywhere in the window
     explicit AlarmPanel(QWidget* parent = nullptr);
 
     // Raises an alarm for a fault or an emergency stop event; other events are ignored.

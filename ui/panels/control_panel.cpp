@@ -25,17 +25,18 @@ void repolish(QWidget* w) {
 } // namespace
 
 QString ControlPanel::keysHelp() {
+    const auto key = [](const char* k) { return QString::fromLatin1(k); };
     return tr("%1: EMERGENCY STOP (works from any field, also in dialogs)\n"
-              "%2: Start\n%3: Feed hold\n%4: Resume\n"
-              "%5: Abort (press twice within %6 s)\n"
-              "%7 / %8: speed override -%9 % / +%9 %\n"
-              "Ctrl+N / Ctrl+O / Ctrl+S: job files")
-        .arg(QString::fromLatin1(kEStopKey), QString::fromLatin1(kStartKey),
-             QString::fromLatin1(kHoldKey), QString::fromLatin1(kResumeKey),
-             QString::fromLatin1(kAbortKey))
-        .arg(kAbortConfirmMs / 1000)
-        .arg(QString::fromLatin1(kOverrideDownKey), QString::fromLatin1(kOverrideUpKey))
-        .arg(kOverrideStep);
+              "%2: Enable\n%3: Home\n%4: Reset\n%5: Release E-STOP\n")
+               .arg(key(kEStopKey), key(kEnableKey), key(kHomeKey), key(kResetKey),
+                    key(kReleaseKey)) +
+           tr("%1: Start\n%2: Feed hold\n%3: Resume\n%4: Abort (press twice within %5 s)\n")
+               .arg(key(kStartKey), key(kHoldKey), key(kResumeKey), key(kAbortKey))
+               .arg(kAbortConfirmMs / 1000) +
+           tr("%1 / %2: speed override -%3 % / +%3 %\nF12: acknowledge the alarms\nCtrl+N / Ctrl+O "
+              "/ Ctrl+S: job files")
+               .arg(key(kOverrideDownKey), key(kOverrideUpKey))
+               .arg(kOverrideStep);
 }
 
 ControlPanel::ControlPanel(QWidget* parent)
@@ -86,8 +87,14 @@ ControlPanel::ControlPanel(QWidget* parent)
                           "first press asks, the second (within %1 s) aborts.")
                            .arg(kAbortConfirmMs / 1000));
     release_->setToolTip(tr("The emergency stop button was pulled back out (the hazard is "
-                            "gone). Reset then clears the latch."));
-    reset_->setToolTip(tr("Clears a fault, or an emergency stop once it is released."));
+                            "gone). Reset then clears the latch [%1].")
+                             .arg(QLatin1String(kReleaseKey)));
+    reset_->setToolTip(tr("Clears a fault, or an emergency stop once it is released [%1].")
+                           .arg(QLatin1String(kResetKey)));
+    enable_->setToolTip(
+        tr("Enables the drives (and connects the CAN bus) [%1]").arg(QLatin1String(kEnableKey)));
+    home_->setToolTip(tr("Moves every axis to its reference at the job's home speed [%1]")
+                          .arg(QLatin1String(kHomeKey)));
     connect(enable_, &QPushButton::clicked, this, &ControlPanel::enableRequested);
     connect(home_, &QPushButton::clicked, this, &ControlPanel::homeRequested);
     connect(start_, &QPushButton::clicked, this, &ControlPanel::startRequested);
@@ -154,6 +161,10 @@ ControlPanel::ControlPanel(QWidget* parent)
     });
     v->addWidget(override_);
 
+    addShortcut(kEnableKey, enable_, &ControlPanel::enableRequested);
+    addShortcut(kHomeKey, home_, &ControlPanel::homeRequested);
+    addShortcut(kResetKey, reset_, &ControlPanel::resetRequested);
+    addShortcut(kReleaseKey, release_, &ControlPanel::releaseEStopRequested);
     addShortcut(kStartKey, start_, &ControlPanel::startRequested);
     addShortcut(kHoldKey, hold_, &ControlPanel::feedHoldRequested);
     addShortcut(kResumeKey, resume_, &ControlPanel::resumeRequested);

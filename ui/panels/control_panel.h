@@ -28,6 +28,11 @@ class ControlPanel : public QWidget {
     Q_OBJECT
   public:
     static constexpr const char* kEStopKey = "F1";
+    static constexpr const char* kEnableKey = "F2";
+    static constexpr const char* kHomeKey = "F3";
+    static constexpr const char* kResetKey = "F4";
+    // Two hands on purpose: releasing the latch is never one stray key next to F1.
+    static constexpr const char* kReleaseKey = "Ctrl+Shift+F1";
     static constexpr const char* kStartKey = "F5";
     static constexpr const char* kHoldKey = "F6";
     static constexpr const char* kResumeKey = "F7";

@@ -90,6 +90,14 @@ void CellViewPanel::setSample(const cutcell::TelemetrySample& s) {
 #endif
 }
 
+void CellViewPanel::setToolName(const QString& name) {
+#ifdef CUTCELL_HAVE_VIEW3D
+    if (view_) view_->setToolName(name);
+#else
+    (void)name;
+#endif
+}
+
 void CellViewPanel::setStopMark(double progressFraction) {
 #ifdef CUTCELL_HAVE_VIEW3D
     if (view_) view_->setStopMark(progressFraction);
@@ -190,6 +198,15 @@ void PlotsPanel::setPaused(bool paused) {
     plots_->setPaused(paused);
 #else
     (void)paused;
+#endif
+}
+
+void PlotsPanel::setSavePathAsker(
+    std::function<QString(const QString& title, const QString& tail, const QString& filter)> ask) {
+#ifdef CUTCELL_HAVE_PLOTS
+    plots_->setSavePathAsker(std::move(ask));
+#else
+    (void)ask;
 #endif
 }
 

@@ -10,6 +10,8 @@
 #include "core/trajectory/cut_planner.h"
 #include "ui/machine/machine_ui.h"
 
+#include <functional>
+
 #include <QElapsedTimer>
 #include <QWidget>
 
@@ -40,6 +42,7 @@ class CellViewPanel : public QWidget {
     void setSample(const cutcell::TelemetrySample& s);
     // Where the last run stopped, marked on the path (fraction of the cut; < 0: none).
     void setStopMark(double progressFraction);
+    void setToolName(const QString& name); // the 3D view's status line
     bool rendering() const;
     cutcell::view3d::CellView* view() const { return view_; }
     // Paints the current 3D frame over its place in `shot`, an image of `grabbed` taken with
@@ -73,6 +76,10 @@ class PlotsPanel : public QWidget {
     void redraw();
     void clear();
     void setPaused(bool paused);
+    // The plots' own Export buttons ask here (TrackingPlotsWidget::setSavePathAsker).
+    void setSavePathAsker(
+        std::function<QString(const QString& title, const QString& tail, const QString& filter)>
+            ask);
     bool exportPng(const QString& path, QString* error);
     bool exportCsv(const QString& path, QString* error);
     // The plots get at most one sample per kPlotIntervalS of engine time (250 Hz): a 30 s

@@ -89,6 +89,8 @@ void ProgressPanel::markStopped(const QString& how) {
     if (!lastCut_) return; // nothing ran
     stopped_ = true;
     stopHow_ = how;
+    // Nothing of this run remains to be done: a frozen countdown read as time still to go.
+    remaining_->setText(QStringLiteral("--"));
     const auto& s = *lastCut_;
     cutcell::RunStopPoint at;
     at.valid = true;
@@ -142,7 +144,7 @@ void ProgressPanel::setSample(const cutcell::TelemetrySample& s) {
     }
     // After a run (the telemetry reads 0 there): its figures stay until the next Start.
     if (lastCut_) {
-        state_->setText(QString::fromLatin1(cutcell::toString(s.state)));
+        state_->setText(stateWord(s.state));
         if (!stopped_ && lastCut_->state == EngineState::Completed)
             stop_->setText(tr("Last run completed."));
         return;
@@ -167,7 +169,7 @@ void ProgressPanel::show(const cutcell::TelemetrySample& s) {
     // The engine counts knots passed from 0; the operator reads "point n of N" from 1.
     const auto shown = s.point_count ? std::min(s.point_index + 1, s.point_count) : 0u;
     points_->setText(QStringLiteral("%1 / %2").arg(shown).arg(s.point_count));
-    state_->setText(QString::fromLatin1(cutcell::toString(s.state)));
+    state_->setText(stateWord(s.state));
     // Before the path begins: the approach move, then settling and the arc (the line below
     // the figures says which; the cut's own progress is still 0).
     QString phase;
@@ -190,7 +192,9 @@ void ProgressPanel::show(const cutcell::TelemetrySample& s) {
 }
 
 void ProgressPanel::setPlannedTotals(std::uint32_t points, double duration_s) {
-    if (stopped_) return; // the stop stays until the next Start
+    plannedPoints_ = points;
+    plannedS_ = duration_s;
+    if (stopped_) return; // the stop stays until the next Start or another program
     points_->setText(QStringLiteral("0 / %1").arg(points));
     remaining_->setText(formatDuration(duration_s));
 }
@@ -205,6 +209,19 @@ void ProgressPanel::clear() {
     state_->setText(tr("Idle"));
 }
 
+void ProgressPanel::setProgram(const cutcell::RunTerms& terms, double pathLengthMm) {
+    // Another program (File -> New, Open, an edit): the last run's figures and its stop line
+    // belong to the one before; the recovery box drops that stop too.
+    lastCut_.reset();
+    clear();
+    setPathLength(pathLengthMm);
+    setTerms(terms);
+    setPlannedTotals(plannedPoints_, plannedS_);
+}
+
+QString ProgressPanel::remainingText() const {
+    return remaining_->text();
+}
 QString ProgressPanel::percentText() const {
     return percent_->text();
 }

@@ -41,12 +41,16 @@ class ProgressPanel : public QWidget {
     // The engine's stop point of that run (arrives just after markStopped): its figures replace
     // those of the last telemetry sample shown.
     void setStopPoint(const cutcell::RunStopPoint& stop);
+    // A new program was loaded: the previous run's figures and stop line go, the plan's totals
+    // (setPlannedTotals: points, pieces or strokes, the planned duration) show.
+    void setProgram(const cutcell::RunTerms& terms, double pathLengthMm);
     void setCycleFigures(int parts, double lastCycleS);
     void clear();
 
     QProgressBar* bar() const { return bar_; }
     QString percentText() const;
     QString pointsText() const;
+    QString remainingText() const;
     QString stateText() const;
     QString stopText() const; // empty when no stop is shown
     QString cycleText() const;
@@ -74,6 +78,8 @@ class ProgressPanel : public QWidget {
     std::optional<double> approachStart_; // distance to the target when the approach began
     std::optional<cutcell::TelemetrySample> lastCut_; // the last sample of the current run
     bool stopped_ = false;
+    std::uint32_t plannedPoints_ = 0;
+    double plannedS_ = 0;
     QString stopHow_;
 };
 

@@ -85,6 +85,7 @@ void RecoveryPanel::setProgram(std::shared_ptr<const cutcell::MotionProgram> pro
     stop_.reset();
     const int points = program_ ? static_cast<int>(program_->point_count) : 0;
     point_->setRange(1, std::max(1, points)); // shown 1-based, as the progress panel does
+    point_->setValue(1); // a point of the program before means nothing in this one
     refresh();
 }
 
@@ -132,8 +133,7 @@ QString RecoveryPanel::reason() const {
             .arg(program_->source_kind == MotionSourceKind::MasterAxis ? tr("the line")
                                                                        : tr("a control law"));
     if (state_ != EngineState::Ready)
-        return tr("Recovery starts from Ready (state now: %1).")
-            .arg(QString::fromLatin1(cutcell::toString(state_)));
+        return tr("Recovery starts from Ready (state now: %1).").arg(stateWord(state_));
     if (!homed_) return tr("Home first: the axes lost their reference.");
     return {};
 }

@@ -62,6 +62,31 @@ QString toolWord(const cutcell::RunTerms& terms) {
     return QString::fromStdString(t);
 }
 
+QString stateWord(cutcell::EngineState s) {
+    using cutcell::EngineState;
+    switch (s) {
+    case EngineState::Idle:
+        return RunWords::tr("Idle");
+    case EngineState::Ready:
+        return RunWords::tr("Ready");
+    case EngineState::Homing:
+        return RunWords::tr("Homing");
+    case EngineState::Jogging:
+        return RunWords::tr("Jogging");
+    case EngineState::Running:
+        return RunWords::tr("Running");
+    case EngineState::Paused:
+        return RunWords::tr("Feed hold");
+    case EngineState::Completed:
+        return RunWords::tr("Completed");
+    case EngineState::EmergencyStop:
+        return RunWords::tr("Emergency stop");
+    case EngineState::Fault:
+        return RunWords::tr("Fault");
+    }
+    return QString::fromLatin1(cutcell::toString(s));
+}
+
 QString stopFigures(const cutcell::RunTerms& terms, const cutcell::RunStopPoint& at,
                     double pathLengthMm) {
     // The engine counts from 0 what is done; the operator reads "n of N" of the one in work.

@@ -21,6 +21,9 @@ QString madeCaption(cutcell::WorkCount w);
 QString madeNoun(cutcell::WorkCount w, long n);
 // The tool's name as the terms give it, translated where known ("torch", "saw", "cutter").
 QString toolWord(const cutcell::RunTerms& terms);
+// The engine state as an operator reads it: "Emergency stop", "Feed hold" (not the enum's
+// "EmergencyStop", "Paused"), translated.
+QString stateWord(cutcell::EngineState s);
 // Where a run stopped, in the machine's terms: "point 12 / 40, 210.3 of 530.1 mm" for a path,
 // "piece 8 of 10, 7 pieces made" for the saw, "stroke 2 of 3, 1 stroke made" for the crank.
 QString stopFigures(const cutcell::RunTerms& terms, const cutcell::RunStopPoint& at,

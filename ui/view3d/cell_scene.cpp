@@ -450,16 +450,18 @@ void CellScene::Impl::buildFloorAndTexts() {
 
     title = vtkSmartPointer<vtkTextActor>::New();
     title->SetInput(m.title.c_str());
-    title->GetTextProperty()->SetFontSize(15);
+    title->GetTextProperty()->SetFontSize(
+        std::max(4, static_cast<int>(kTitleFontPx * pixelScale + 0.5)));
     title->GetTextProperty()->SetColor(colours::kText.r, colours::kText.g, colours::kText.b);
     title->GetTextProperty()->SetVerticalJustificationToTop();
     title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     title->SetPosition(0.012, 0.985);
     renderer->AddActor2D(title);
     status = vtkSmartPointer<vtkTextActor>::New();
-    status->GetTextProperty()->SetFontSize(13);
+    status->GetTextProperty()->SetFontSize(
+        std::max(4, static_cast<int>(kStatusFontPx * pixelScale + 0.5)));
     status->GetTextProperty()->SetColor(colours::kText.r, colours::kText.g, colours::kText.b);
-    status->SetPosition(10, 8);
+    status->SetPosition(10 * pixelScale, 8 * pixelScale);
     renderer->AddActor2D(status);
 }
 
@@ -553,16 +555,17 @@ void CellScene::Impl::updateStatus() {
     if (key == statusKey) return;
     statusKey = key;
     char buf[200];
+    // Short: at 1280x720 the view is ~500 px wide and a longer line ran past its edge.
+    const char* tool = toolName.c_str();
     if (model.linkage &&
         model.pathWork.empty()) // no planned path: the machine follows a control law
-        std::snprintf(buf, sizeof buf, "progress %d %%", percent);
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s", percent, tool, torchOn ? "ON" : "off");
     else if (unreachable > 0)
-        std::snprintf(buf, sizeof buf,
-                      "progress %d %%   torch %s   %d path points NOT reachable (red)", percent,
-                      torchOn ? "ON" : "off", unreachable);
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %d points NOT reachable (red)", percent,
+                      tool, torchOn ? "ON" : "off", unreachable);
     else
-        std::snprintf(buf, sizeof buf, "progress %d %%   torch %s   %zu path points, all reachable",
-                      percent, torchOn ? "ON" : "off", model.pathWork.size());
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %zu points reachable", percent, tool,
+                      torchOn ? "ON" : "off", model.pathWork.size());
     status->SetInput(buf);
 }
 
@@ -596,6 +599,17 @@ Vec3 CellScene::pipeSurfaceWorld(double zWork, double angleRad) const {
     const double R = d->model.workPipe.radius_mm;
     return d->pipe ? apply(d->pipe, Vec3(R * std::cos(angleRad), R * std::sin(angleRad), zWork))
                    : Vec3::Zero();
+}
+
+void CellScene::setToolName(const std::string& name) {
+    d->toolName = name.empty() ? std::string("tool") : name;
+    d->statusKey = -1;
+    if (d->hasScene) d->updateStatus();
+}
+
+std::string CellScene::statusText() const {
+    const char* text = d->status ? d->status->GetInput() : nullptr;
+    return text ? text : "";
 }
 
 int CellScene::doneCount() const {

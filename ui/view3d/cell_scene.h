@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 
 class vtkRenderer;
 
@@ -41,6 +42,9 @@ class CellScene {
     void resetView();
     // Called before each render: keeps the near/far planes around what is visible.
     void prepareRender();
+    // Render pixels per screen pixel (0.5 while moving at half resolution): the overlay texts
+    // and the short-view rule are sized in screen pixels.
+    void setPixelScale(double scale);
     // The job title is drawn only in views at least this tall (device pixels).
     static constexpr int kTitleMinViewHeightPx = 360;
 
@@ -53,6 +57,10 @@ class CellScene {
     Vec3 pipeSurfaceWorld(double zWork, double angleRad) const;
     // World bounds of the machine and the pipes (xmin, xmax, ymin, ymax, zmin, zmax).
     std::array<double, 6> machineBounds() const;
+    // The process tool the status line names ("torch", "saw", "cutter"), translated by the
+    // caller; the line reads "42 %  |  saw ON  |  131 points reachable".
+    void setToolName(const std::string& name);
+    std::string statusText() const;
     int doneCount() const;        // path points drawn as done
     int unreachableShown() const; // path points flagged unreachable (drawn red)
     int drawnPathPoints() const;  // points of the drawn polyline (decimated to <= 5000)

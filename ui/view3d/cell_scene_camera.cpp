@@ -3,6 +3,7 @@
 #include "ui/view3d/cell_scene_impl.h"
 
 #include <vtkCamera.h>
+#include <vtkTextProperty.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,12 +94,23 @@ void CellScene::resetView() {
     setPreset(ViewPreset::Iso);
 }
 
+void CellScene::setPixelScale(double scale) {
+    if (!(scale > 0) || scale == d->pixelScale) return;
+    d->pixelScale = scale;
+    const auto px = [scale](int size) { return std::max(4, static_cast<int>(size * scale + 0.5)); };
+    if (d->title) d->title->GetTextProperty()->SetFontSize(px(Impl::kTitleFontPx));
+    if (d->status) {
+        d->status->GetTextProperty()->SetFontSize(px(Impl::kStatusFontPx));
+        d->status->SetPosition(10 * scale, 8 * scale);
+    }
+}
+
 void CellScene::prepareRender() {
     // A short view (1280x720 screens) has no room for the job title above the machine: the
     // window title names the job; the title comes back when the view is tall enough.
     if (d->title) {
         const int* size = d->renderer->GetSize();
-        d->title->SetVisibility(size[1] >= kTitleMinViewHeightPx ? 1 : 0);
+        d->title->SetVisibility(size[1] >= kTitleMinViewHeightPx * d->pixelScale ? 1 : 0);
     }
     double b[6];
     d->renderer->ComputeVisiblePropBounds(b);

@@ -36,6 +36,9 @@ struct CellScene::Impl {
     int done = 0;
     int unreachable = 0;
     int statusKey = -1;
+    std::string toolName = "torch"; // the status line's tool (the program's terms)
+    static constexpr int kTitleFontPx = 15, kStatusFontPx = 13;
+    double pixelScale = 1.0; // render pixels per screen pixel (CellScene::setPixelScale)
 
     // Moved with the work pipe (baseFromWork).
     std::vector<vtkSmartPointer<vtkActor>> workActors;

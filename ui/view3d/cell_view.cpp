@@ -85,7 +85,12 @@ CellView::CellView(QWidget* parent, Surface surface)
     if (openGlAvailable() && surface == Surface::NativeWindow) {
         glWindow_ = new VtkGlWindow;
         glWindow_->renderWindow()->AddRenderer(scene_->renderer());
-        glWindow_->setBeforeRender([this] { scene_->prepareRender(); });
+        glWindow_->setBeforeRender([this] {
+            // A moving machine renders at half resolution, scaled up: the texts shrink with it
+            // so that they keep their size on screen (they were drawn twice as large).
+            scene_->setPixelScale(glWindow_->renderScale());
+            scene_->prepareRender();
+        });
         container_ = QWidget::createWindowContainer(glWindow_, this); // takes ownership
         container_->setObjectName(QStringLiteral("view3dNativeWindow"));
         container_->setMinimumSize(160, 120);
@@ -210,6 +215,15 @@ Vec3 CellView::pipeCentreWorld() const {
 std::array<double, 6> CellView::machineBounds() const {
     return scene_->machineBounds();
 }
+void CellView::setToolName(const QString& name) {
+    scene_->setToolName(name.toStdString());
+    requestRender();
+}
+
+QString CellView::statusText() const {
+    return QString::fromStdString(scene_->statusText());
+}
+
 int CellView::doneCount() const {
     return scene_->doneCount();
 }

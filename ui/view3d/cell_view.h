@@ -83,6 +83,8 @@ class CellView : public QWidget {
     Vec3 torchBodyCentreWorld() const;
     Vec3 pipeCentreWorld() const;
     std::array<double, 6> machineBounds() const;
+    void setToolName(const QString& name); // CellScene::setToolName
+    QString statusText() const;
     int doneCount() const;
 
   signals:
