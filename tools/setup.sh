@@ -17,6 +17,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-serialbus-dev libqt6serialbus6-bin
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
+  openbox xdotool x11-apps netpbm dbus-daemon at-spi2-core python3-gi gir1.2-atspi-2.0
   poppler-utils linuxcnc-uspace
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
   nodejs

@@ -209,7 +209,10 @@ void MainWindow::buildMenus() {
     recentMenu_ = file->addMenu(tr("Open &recent"));
     addImportActions(file, this, [this](const std::string& name) { importFromMenu(name); });
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
-    file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { saveAs(); });
+    // Ctrl+Shift+S spelt out: QKeySequence::SaveAs is empty outside GNOME and KDE (seen under
+    // openbox: the walkthrough's Ctrl+Shift+S did nothing).
+    file->addAction(tr("Save &as..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
+                    [this] { saveAs(); });
     file->addSeparator();
     file->addAction(tr("Export plots as PNG..."), this, [this] {
         const QString p =

@@ -189,6 +189,10 @@ QString JobForm::displayUnit(const char* unit) {
 }
 
 void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, const QString& unit) {
+    // The field's own name and unit for screen readers and test automation: inside the row
+    // widget it is no longer the label's buddy, and its accessible name was empty.
+    field->setAccessibleName(label);
+    if (!unit.isEmpty()) field->setAccessibleDescription(unit);
     if (unit.isEmpty()) { // no unit (names, choices): the field takes the whole row
         form->addRow(label, field);
         return;
