@@ -7,8 +7,9 @@ would (XTEST events through the X server, not Qt events). What the window shows 
 accessibility tree (AT-SPI over a private D-Bus session): after every step the EMERGENCY STOP
 button must lie wholly on the screen, and the Start reason says what the machine does.
 
-Steps: a number field on the machine's first parameter page takes "2,5"-style and "2.5"-style
-input and letters (the job file, saved with Ctrl+S, must hold the typed value; letters change
+Steps: the first typeable decimal field of the machine's parameter pages (topmost on the first
+page that has one; a catalogue section's greyed dimensions are skipped) takes "2,5"-style and
+"2.5"-style input and letters (the job file, saved with Ctrl+S, must hold the typed value; letters change
 nothing); Enable (F2), Home (F3), Start (F5), Feed hold (F6), Resume (F7), E-STOP (F1), Release
 (Ctrl+Shift+F1), Reset (F4), Enable, Home, the cut recovery's "Resume from stop" where the
 machine offers it (clicked with the mouse), Abort (F8 twice), Save As (Ctrl+Shift+S, a path
@@ -273,7 +274,7 @@ def save_and_read(desk, step):
 
 
 def type_numbers(desk):
-    """Types into the first decimal field of the machine's first parameter page."""
+    """Types into the first typeable decimal field of the machine's parameter pages."""
     # The form's tabs on screen (the other machines' pages are hidden tabs of no size).
     tabs = [t for t in desk.nodes("page tab")
             if t.get_extents(Atspi.CoordType.SCREEN).width > 0]
