@@ -53,7 +53,6 @@ QString csvName(QString s) {
 constexpr int kTickSpacingPx = 24;
 void fitTicks(QCustomPlot* p) {
     const int h = p->axisRect()->height() > 0 ? p->axisRect()->height() : p->height() - 60;
-    p->yAxis->ticker()->setTickStepStrategy(QCPAxisTicker::tssMeetTickCount);
     p->yAxis->ticker()->setTickCount(std::clamp(h / kTickSpacingPx, 2, 8));
 }
 
@@ -123,6 +122,7 @@ struct TrackingPlotsWidget::Impl {
         // Three significant digits ("0.000432", "1.5e-05"): long labels squeezed the plot.
         p->yAxis->setNumberFormat(QStringLiteral("g"));
         p->yAxis->setNumberPrecision(3);
+        p->yAxis->ticker()->setTickStepStrategy(QCPAxisTicker::tssMeetTickCount); // fitTicks()
         // The plot's name sits in a row above the axes: a vertical y label ("Cartesian error
         // (mm)") was cut when the plot was shorter than the text. usePlot() sets its text.
         auto* head = new QCPLayoutGrid;

@@ -72,6 +72,12 @@ void abortPartWay(MainWindow& w) {
                               qPrintable(w.progress()->stopText()), 5000);
 }
 
+// The window on screen with the short robot job (run logs in `runs`).
+void showShortRobotJob(MainWindow& w, const QTemporaryDir& runs) {
+    w.editor()->setJob(shortRobotJob(runs));
+    w.show();
+}
+
 // Enable, Home, Start by hand, then the abort.
 void startAndAbort(MainWindow& w) {
     startManually(w);
@@ -198,8 +204,7 @@ class TestOperatorDefectsMore : public QObject {
     void defect14_statesReadAsWords() {
         MainWindow w(&cutcell::app::makeRig);
         QTemporaryDir runs;
-        w.editor()->setJob(shortRobotJob(runs));
-        w.show();
+        showShortRobotJob(w, runs);
         startManually(w);
         QTest::mouseClick(w.controls()->eStopButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(state(w), cutcell::EngineState::EmergencyStop, 5000);
@@ -212,8 +217,7 @@ class TestOperatorDefectsMore : public QObject {
     void defect15_everyOperatorActionHasAKey() {
         MainWindow w(&cutcell::app::makeRig);
         QTemporaryDir runs;
-        w.editor()->setJob(shortRobotJob(runs));
-        w.show();
+        showShortRobotJob(w, runs);
         QVERIFY(QTest::qWaitForWindowActive(&w));
         const QString keys = CutCell::ui::ControlPanel::keysHelp();
         for (const char* k : {"F1:", "F2: Enable", "F3: Home", "F4: Reset",
@@ -245,8 +249,7 @@ class TestOperatorDefectsMore : public QObject {
     void defect15_startAfterAnAbortWaitsForHome() {
         MainWindow w(&cutcell::app::makeRig);
         QTemporaryDir runs;
-        w.editor()->setJob(shortRobotJob(runs));
-        w.show();
+        showShortRobotJob(w, runs);
         startAndAbort(w);
         QTRY_VERIFY_WITH_TIMEOUT(w.controls()->startBlockedReason().contains("Home"), 3000);
         QVERIFY(!w.controls()->startButton()->isEnabled());
