@@ -344,8 +344,7 @@ struct TrackingPlotsWidget::Impl {
     void refresh() {
         sync();
         if (autoscale) rescaleAll();
-        status->setText(
-            QStringLiteral("%1 samples, %2 dropped").arg(ring.size()).arg(ring.dropped()));
+        status->setText(tr("%1 samples, %2 dropped").arg(ring.size()).arg(ring.dropped()));
         dirty = false;
     }
 

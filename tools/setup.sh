@@ -15,6 +15,7 @@ packages=(
   libeigen3-dev libgtest-dev libgmock-dev
   libcli11-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-serialbus-dev libqt6serialbus6-bin
+  qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
   libqcustomplot-dev libvtk9-dev libgl1-mesa-dri
   xvfb xauth libsocketcan2
   openbox xdotool x11-apps netpbm dbus-daemon at-spi2-core python3-gi gir1.2-atspi-2.0

@@ -42,6 +42,7 @@ DevicePanel::DevicePanel(QWidget* parent) : QWidget(parent) {
     load_ = new QLabel(tr("Load: -"));
     load_->setWordWrap(true);
     nodes_ = new QTableWidget(0, ColCount);
+    nodes_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     nodes_->setHorizontalHeaderLabels({tr("Node"), tr("Axis"), tr("NMT"), tr("CiA 402"),
                                        tr("Heartbeat"), tr("Last EMCY"), tr("Fault")});
     nodes_->verticalHeader()->hide();

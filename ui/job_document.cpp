@@ -29,6 +29,13 @@ void JobDocument::newJob(const cutcell::Job& job) {
     emit changed();
 }
 
+void JobDocument::adopt(const cutcell::Job& job, const QString& path, bool modified) {
+    editor_->setJob(job);
+    path_ = path;
+    modified_ = modified;
+    emit changed();
+}
+
 bool JobDocument::open(const QString& path, QString* error) {
     try {
         const std::string text = cutcell::readTextFile(path.toStdString());

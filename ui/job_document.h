@@ -23,6 +23,9 @@ class JobDocument : public QObject {
     QString displayName() const;
 
     void newJob(const cutcell::Job& job);
+    // Another window's document as it was: the job (with its unsaved edits), its file and its
+    // modified mark (a rebuild of the window, ui/window_host.h).
+    void adopt(const cutcell::Job& job, const QString& path, bool modified);
     bool open(const QString& path, QString* error);
     bool save(QString* error); // to path(); fails when there is none
     bool saveAs(const QString& path, QString* error);

@@ -5,8 +5,10 @@
 #include "ui/file_places.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
+#include "ui/help_menu.h"
 #include "ui/job_document.h"
 #include "ui/job_import.h"
+#include "ui/language.h"
 #include "ui/machine/machine_choice.h"
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/machine_exports.h"
@@ -240,10 +242,44 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
-    auto* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&Keys"), this, [this] {
-        QMessageBox::information(this, tr("Keys"), ControlPanel::keysHelp());
-    });
+    addLanguageMenu(menuBar(), this,
+                    [this](const QString& code) { emit languageChangeRequested(code); });
+    addHelpMenu(menuBar(), this);
+}
+
+MainWindow::Carry MainWindow::carry() const {
+    const EngineState s = run_->bridge()->state();
+    return {editor_->job(), document_->path(), document_->modified(),
+            params_->tabs()->currentIndex(),
+            s == EngineState::Ready || s == EngineState::Completed};
+}
+
+void MainWindow::takeOver(const Carry& carry) {
+    document_->adopt(carry.job, carry.path, carry.modified);
+    params_->tabs()->setCurrentIndex(carry.tab);
+}
+
+bool MainWindow::canRebuild(QString* why) const {
+    const EngineState s = run_->bridge()->state();
+    switch (s) {
+    case EngineState::Idle:
+    case EngineState::Ready:
+    case EngineState::Completed:
+        return true;
+    case EngineState::EmergencyStop:
+    case EngineState::Fault:
+        *why = tr("clear the %1 first (Release E-STOP, Reset)").arg(stateWord(s));
+        return false;
+    default:
+        *why = tr("the machine is moving (%1): stop it first").arg(stateWord(s));
+        return false;
+    }
+}
+
+QString MainWindow::languageName() const {
+    for (const GuiLanguage& l : guiLanguages())
+        if (l.code == shownLanguage()) return l.nativeName;
+    return shownLanguage();
 }
 
 void MainWindow::connectRun() {

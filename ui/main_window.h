@@ -93,6 +93,28 @@ class MainWindow : public QMainWindow {
     RecoveryPanel* recovery() const { return recovery_; }
     BusPanel* busPanel() const { return bus_; }
     QWidget* operatorColumn() const { return column_; }
+
+    // What a rebuilt window (another language, ui/window_host.h) takes over from this one.
+    struct Carry {
+        cutcell::Job job;
+        QString path;
+        bool modified = false;
+        int tab = 0;                // the parameter tab shown
+        bool drivesEnabled = false; // they are disabled by the rebuild
+    };
+    Carry carry() const;
+    void takeOver(const Carry& carry);
+    // The window may be rebuilt only with the machine at rest and no alarm latched (an E-STOP
+    // or a fault must be cleared where it was raised); otherwise false with the reason.
+    bool canRebuild(QString* why) const;
+    // The language the window is shown in, as its menu names it ("English", "Deutsch").
+    QString languageName() const;
+
+  signals:
+    // Language -> a language: the host rebuilds the window in it (ui/window_host.h).
+    void languageChangeRequested(const QString& code);
+
+  public:
     // The narrowest the left part (forms, 3D view, plots, log) may become; what it holds may
     // not widen the window beyond it plus the operator column (ui/main_window.cpp).
     static constexpr int kMinWorkAreaWidth = 640;

@@ -11,6 +11,9 @@
 #include "ui/view3d/cell_view.h"
 #endif
 
+#include "ui/language.h"
+#include "ui/window_host.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QMessageBox>
@@ -94,7 +97,13 @@ int main(int argc, char** argv) {
                                     "Show the N-th parameter tab the job's machine has (0 = Job, 1 "
                                     "= Pipes or the machine's first page, ...).",
                                     "N", "0");
-    cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt});
+    const QCommandLineOption languageOpt(
+        "language",
+        "The GUI's language: system (the desktop's), en or de (default: the one chosen last in "
+        "the Language menu, else system). Not remembered.",
+        "CODE");
+    cli.addOptions(
+        {jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt, languageOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
 
@@ -116,7 +125,17 @@ int main(int argc, char** argv) {
         return 64;
     }
     CutCell::ui::applyDarkIndustrialTheme(app);
-    CutCell::ui::MainWindow window(&cutcell::app::makeRig);
+    const QString language =
+        cli.isSet(languageOpt) ? cli.value(languageOpt) : CutCell::ui::rememberedLanguage();
+    QString languageWhy;
+    if (!CutCell::ui::applyGuiLanguage(language, &languageWhy)) {
+        std::fprintf(stderr, "cutcell: --language: %s\n", qPrintable(languageWhy));
+        if (cli.isSet(languageOpt)) return 64;
+    }
+    // The host rebuilds the window for a change of language (Language menu); unattended runs
+    // below hold the first window, which no menu replaces while they run.
+    CutCell::ui::WindowHost host(&cutcell::app::makeRig);
+    CutCell::ui::MainWindow& window = *host.window();
     // Without --size the window fits the screen it opens on (MainWindow::fitToScreen): a fixed
     // 1440x900 put the E-STOP column off a 1280x720 panel.
     if (cli.isSet(sizeOpt)) window.resize(size[0].toInt(), size[1].toInt());

@@ -25,16 +25,16 @@ class IssueChecker {
     // lo <= v <= hi (NaN fails).
     void range(const std::string& key, double v, double lo, double hi, const char* unit) {
         if (!(v >= lo && v <= hi))
-            add(key, key + " = " + num(v) + " " + unit + " is outside [" + num(lo) + ", " +
-                         num(hi) + "] " + unit);
+            issues.push_back({key,
+                              key + " = " + num(v) + " " + unit + " is outside [" + num(lo) + ", " +
+                                  num(hi) + "] " + unit,
+                              v, lo, hi, unit});
     }
-    // A physical quantity that must be > 0: in (tiny, hi]. The lower bound keeps values such as
-    // 5e-324 (which pass "> 0") from dividing into infinities later.
+    // A physical quantity that must be > 0: in [lo, hi] with a tiny lo > 0, which keeps values
+    // such as 5e-324 (which pass "> 0") from dividing into infinities later. Zero or less is
+    // told with the same range the field has ("must be > 0" read as if 0.01 were allowed
+    // where the form allowed 0.1).
     void positive(const std::string& key, double v, double lo, double hi, const char* unit) {
-        if (!(v > 0)) {
-            add(key, key + " = " + num(v) + " " + unit + " must be > 0 " + unit);
-            return;
-        }
         range(key, v, lo, hi, unit);
     }
 };

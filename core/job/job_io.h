@@ -6,8 +6,10 @@
 #include "core/job/job.h"
 #include "core/json/json.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cutcell {
@@ -18,8 +20,21 @@ struct JobError : std::runtime_error {
 
 // One problem with a job value: the dotted key and a full sentence for the user.
 struct JobIssue {
+    JobIssue() = default;
+    JobIssue(std::string k, std::string m) : key(std::move(k)), message(std::move(m)) {}
+    JobIssue(std::string k, std::string m, double v, double low, double high, std::string u)
+        : key(std::move(k)), message(std::move(m)), value(v), lo(low), hi(high),
+          unit(std::move(u)) {}
+
     std::string key;
     std::string message;
+    // A value outside its range (IssueChecker::range, positive): the value, the limits and the
+    // unit, so that a form can say it in its own words with its field's label. The limits are
+    // NaN for an issue of another kind (the message is all there is).
+    double value = std::numeric_limits<double>::quiet_NaN();
+    double lo = std::numeric_limits<double>::quiet_NaN();
+    double hi = std::numeric_limits<double>::quiet_NaN();
+    std::string unit;
 };
 
 // Parses the JSON document (schema 1 or 2) into a Job; the machine section is read by the

@@ -92,6 +92,39 @@ TEST(QuickReturnEngine, EmergencyStopRemovesTorqueWithinOneCycle) {
     EXPECT_EQ(cell.rig->drive().read(0).state, DriveState::Disabled);
 }
 
+// A feed hold in any phase of the stroke brings the crank to rest (Paused) within 1.5 s — the
+// cut or the open-loop return it came in is finished first — and Resume goes on to the last
+// stroke. The operator station's walkthrough found the hold in the open-loop return (64 ms
+// after Start) never coming to rest: still Running 20 s later; braked half-way, a resume then
+// ended the run at once (Completed after 0 of 3 strokes).
+TEST(QuickReturnEngine, FeedHoldInEveryPhaseComesToRestAndResumes) {
+    using quick_return::QrPhase;
+    for (const bool contact : {false, true})
+        for (const QrPhase at : {QrPhase::ReturnPush, QrPhase::ReturnBrake, QrPhase::Cut}) {
+            SCOPED_TRACE(std::string(toString(at)) + (contact ? ", with contact" : ""));
+            QrCell cell(StopCategory::Cat0, 1, contact);
+            ASSERT_TRUE(cell.until([&] { return cell.law().phase() == at; }, 20000));
+            cell.engine->feedHold();
+            EXPECT_TRUE(
+                cell.until([&] { return cell.engine->state() != EngineState::Running; }, 1500))
+                << "still " << toString(cell.engine->state()) << " in "
+                << toString(cell.law().phase()) << " 1.5 s after the hold";
+            ASSERT_EQ(cell.engine->state(), EngineState::Paused);
+            cell.engine->resume();
+            ASSERT_TRUE(cell.until(
+                [&] {
+                    return cell.engine->state() != EngineState::Running &&
+                           cell.engine->state() != EngineState::Paused;
+                },
+                30000));
+            std::string events;
+            for (EngineEvent e; cell.engine->popEvent(e);)
+                events += std::string(e.text.data()) + "\n";
+            EXPECT_EQ(cell.engine->state(), EngineState::Completed) << events;
+            EXPECT_EQ(cell.law().strokesDone(), quickReturnSpec(cell.job).strokes);
+        }
+}
+
 TEST(QuickReturnEngine, InvalidScaleIsAFaultWithTorqueOff) {
     QrCell cell;
     ASSERT_TRUE(cell.until([&] { return cell.law().phase() == quick_return::QrPhase::Cut; }));

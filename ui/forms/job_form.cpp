@@ -1,5 +1,7 @@
 #include "ui/forms/job_form.h"
 
+#include "ui/forms/issue_text.h"
+
 #include "ui/forms/number_fields.h"
 
 #include <QCheckBox>
@@ -181,7 +183,8 @@ QString JobForm::fieldLabel(const char* label) {
 }
 
 QString JobForm::displayUnit(const char* unit) {
-    QString u = QString::fromUtf8(unit);
+    // A unit that is a word ("strokes") in the GUI's language (tools/core_labels.py).
+    QString u = QCoreApplication::translate("SectionUnit", unit);
     if (u == QLatin1String("1")) return QStringLiteral(" "); // a ratio: the row keeps its column
     u.replace(QLatin1String("^2"), QStringLiteral("²"));
     u.replace(QLatin1String("^3"), QStringLiteral("³"));
@@ -226,9 +229,11 @@ void JobForm::markIssues() {
     for (const auto& issue : editor_->issues()) {
         auto [lo, hi] = fields_.equal_range(issue.key);
         if (lo == hi) continue;
-        mine << QString::fromStdString(issue.message);
+        // Named as the form names the field (its label), not by the job file's key.
+        const QString text = issueText(issue, lo->second->accessibleName());
+        mine << text;
         for (auto it = lo; it != hi; ++it)
-            messages[it->second] << QString::fromStdString(issue.message);
+            messages[it->second] << text;
     }
     marked_ = 0;
     for (const auto& [w, msgs] : messages) {
@@ -236,6 +241,12 @@ void JobForm::markIssues() {
         if (!msgs.isEmpty()) ++marked_;
     }
     mine.removeDuplicates();
+    // The note sits below the page's fields (they are all added by now): above them it pushed
+    // the fields down as it came, under the operator's pointer.
+    if (layout_->indexOf(issuesLabel_) != layout_->count() - 1) {
+        layout_->removeWidget(issuesLabel_);
+        layout_->addWidget(issuesLabel_);
+    }
     issuesLabel_->setVisible(!mine.isEmpty());
     issuesLabel_->setText(mine.join('\n'));
 }

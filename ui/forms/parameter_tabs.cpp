@@ -43,10 +43,15 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     lockNote_->setObjectName("lockNote");
     lockNote_->setWordWrap(true);
     lockNote_->hide();
-    v->addWidget(lockNote_);
     tabs_->setObjectName("parameterTabs");
     tabs_->setUsesScrollButtons(true);
+    // The issue icon no taller than the titles' text: at the default 16 px it made the tab bar
+    // 2 px taller as the first bad value came, and every field moved down with it.
+    tabs_->setIconSize(QSize(12, 12));
     v->addWidget(tabs_, 1);
+    // The notes go below the forms: one shown above them pushed every field down ~30 px as it
+    // came (at Start, at a typing error), and the click meant for a field landed in the next.
+    v->addWidget(lockNote_);
     otherIssues_->setObjectName("formIssues");
     otherIssues_->setWordWrap(true);
     otherIssues_->hide();

@@ -44,6 +44,7 @@ QString csvField(QString s) {
 AlarmPanel::AlarmPanel(QWidget* parent)
     : QWidget(parent), summary_(new QLabel(this)), ack_(new QPushButton(tr("Acknowledge"), this)),
       table_(new QTableWidget(0, ColCount, this)) {
+    table_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     setObjectName("alarmPanel");
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);

@@ -37,6 +37,7 @@ BusPanel::BusPanel(QWidget* parent)
     : QWidget(parent), state_(new QLabel(this)), detail_(new QLabel(this)),
       progress_(new QProgressBar(this)), nodes_(new QTableWidget(0, ColCount, this)),
       reconnect_(new QPushButton(tr("Reconnect"), this)) {
+    nodes_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     setObjectName("busPanel");
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(6, 4, 6, 4);
@@ -89,9 +90,28 @@ void BusPanel::setLink(const RigLink& link) {
     refreshRows();
 }
 
+// The link's state in the GUI's language ("up", "lost" ...: the engine's words are English).
+static QString linkStateWord(RigLink::State s) {
+    switch (s) {
+    case RigLink::State::None:
+        return BusPanel::tr("none");
+    case RigLink::State::Down:
+        return BusPanel::tr("down");
+    case RigLink::State::Connecting:
+        return BusPanel::tr("connecting");
+    case RigLink::State::Up:
+        return BusPanel::tr("up");
+    case RigLink::State::Lost:
+        return BusPanel::tr("lost");
+    case RigLink::State::Failed:
+        return BusPanel::tr("failed");
+    }
+    return QStringLiteral("?");
+}
+
 void BusPanel::refreshState() {
     const QString where = QString::fromStdString(link_.where);
-    QString state = tr("Bus %1").arg(QString::fromLatin1(toString(link_.state))).toUpper();
+    QString state = tr("Bus %1").arg(linkStateWord(link_.state)).toUpper();
     QString text = QString::fromStdString(link_.text);
     QString color = stateColor(link_.state);
     QStringList silent;

@@ -13,6 +13,7 @@ using cutcell::Severity;
 
 EventLogPanel::EventLogPanel(QWidget* parent)
     : QWidget(parent), table_(new QTableWidget(0, 3, this)) {
+    table_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     setObjectName("eventLog");
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);

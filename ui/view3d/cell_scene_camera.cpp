@@ -49,8 +49,19 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
         const bool fresh = followTip.x() > 1e299; // set by setPreset
         if (fresh) {
             // First frame of the follow mode: close to the tip, from the iso side.
-            const Vec3 dir = lookFor(ViewPreset::Iso, model.isoToCamera).toCamera;
-            const Vec3 c = tip + dir * (1.8 * model.toolLength_mm);
+            const Vec3 dir = lookFor(ViewPreset::Iso, model.followToCamera.squaredNorm() > 0
+                                                          ? model.followToCamera
+                                                          : model.isoToCamera)
+                                 .toCamera;
+            // Close to the tip, but never inside the tool: a machine without a torch length
+            // (the saw: 0 mm) put the camera at the tip and the view was empty. At least a
+            // fifth of the scene's extent, so the work around the tip is in view.
+            double b[6];
+            renderer->ComputeVisiblePropBounds(b);
+            const double extent =
+                b[0] <= b[1] ? Vec3(b[1] - b[0], b[3] - b[2], b[5] - b[4]).norm() : 0.0;
+            const double distance = std::max({1.8 * model.toolLength_mm, 0.2 * extent, 150.0});
+            const Vec3 c = tip + dir * distance;
             cam->SetFocalPoint(tip.x(), tip.y(), tip.z());
             cam->SetPosition(c.x(), c.y(), c.z());
             cam->SetViewUp(0, 0, 1);

@@ -64,10 +64,10 @@ CellView::CellView(QWidget* parent, Surface surface)
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     presets_ = new QActionGroup(this);
     const std::pair<const char*, ViewPreset> entries[] = {
-        {"Iso", ViewPreset::Iso},
-        {"Front", ViewPreset::Front},
-        {"Top", ViewPreset::Top},
-        {"Follow torch", ViewPreset::FollowTorch}};
+        {QT_TR_NOOP("Iso"), ViewPreset::Iso},
+        {QT_TR_NOOP("Front"), ViewPreset::Front},
+        {QT_TR_NOOP("Top"), ViewPreset::Top},
+        {QT_TR_NOOP("Follow tool"), ViewPreset::FollowTorch}};
     for (const auto& [label, preset] : entries) {
         QAction* a = bar->addAction(tr(label));
         a->setCheckable(true);

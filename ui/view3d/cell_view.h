@@ -3,7 +3,7 @@
 // pipe ghosted, the planned path (amber; red where not reachable), the part already cut
 // (green), the torch (orange body, copper nozzle, flame while on) on the arm drawn from its DH
 // frames. Mouse: left drag rotates, middle drag (or shift + left) pans, right drag / wheel
-// zooms. A small toolbar offers the presets (Iso, Front, Top, Follow torch) and Reset.
+// zooms. A small toolbar offers the presets (Iso, Front, Top, Follow tool) and Reset.
 // Colours: ui/view3d/view_style.h.
 //
 // Where OpenGL is unavailable (Qt's offscreen platform) a label takes the 3D view's place;

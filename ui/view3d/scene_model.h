@@ -101,6 +101,9 @@ struct SceneModel {
 
     // Direction from the focal point to the camera of the Iso and Follow-torch views.
     Vec3 isoToCamera = Vec3(0.75, -1.0, 0.7);
+    // The same for the Follow-torch view when the Iso side has the machine between the camera
+    // and the tool (the section steel's arm); zero: the Iso direction.
+    Vec3 followToCamera = Vec3::Zero();
 
     // Where to put the floor (world z) and the default joint vector (first path point).
     double floorZ_mm = 0;

@@ -11,6 +11,8 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr const char* kReturnReason = "open-loop torque return stroke";
 constexpr const char* kBlendReason = "near a singular point: no crank reference (parabolic blend)";
 constexpr const char* kBrakeReason = "braking the crank";
+// Where a feed hold rests the crank before a cut: this share of the cutting arc past its top.
+constexpr double kTopRestArc = 0.05;
 } // namespace
 
 double holdBandwidth(const QuickReturnLawConfig& c, double period_s) {
@@ -80,6 +82,15 @@ double QuickReturnLaw::crankForSlider(double y) const {
     return 0.5 * (lo + hi);
 }
 
+void QuickReturnLaw::holdAtRest(double q, QrPhase resume) {
+    phase_ = QrPhase::Braking;
+    brakeAt_ = q;
+    rest_ = 0;
+    held_ = true;
+    holdPending_ = false;
+    resumePhase_ = resume;
+}
+
 void QuickReturnLaw::start(const SourceInput& in) {
     const DriveFeedback& d = (*in.axes)[static_cast<size_t>(c_.axis)];
     phase_ = c_.experiment == Experiment::Tracking ? QrPhase::Tracking
@@ -89,6 +100,8 @@ void QuickReturnLaw::start(const SourceInput& in) {
     strokes_ = 0;
     rest_ = 0;
     restarted_ = false;
+    held_ = false;
+    holdPending_ = false;
 }
 
 double QuickReturnLaw::controlTorque(double q, double y, double dy, double yd, double dyd,
@@ -139,7 +152,34 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
         supervised = true;
     } else {
         const bool run = in.request == SourceRequest::Run;
-        if (!run && phase_ != QrPhase::Braking && phase_ != QrPhase::Done) {
+        const bool hold = in.request == SourceRequest::FeedHold;
+        // Resume after a feed hold: on from where the hold rested.
+        if (run && held_ && phase_ == QrPhase::Braking) {
+            held_ = false;
+            phase_ = resumePhase_;
+            if (phase_ == QrPhase::Cut) {
+                t0_ = now_;
+                restarted_ = false;
+            } else if (phase_ == QrPhase::Tracking) {
+                t0_ = now_ - heldAt_;
+            }
+        }
+        if (!hold) holdPending_ = false; // resumed while finishing the stroke, or a stop
+        const bool stroke = phase_ == QrPhase::Cut || phase_ == QrPhase::ReturnPush ||
+                            phase_ == QrPhase::ReturnBrake;
+        if (hold && stroke) {
+            // A feed hold rests the crank where a stroke may begin again: the cut is finished
+            // (a cutter never stops in the workpiece) and the crank rests past its end; the
+            // open-loop return is finished (braked half-way, its torques cannot start it again)
+            // and the crank rests at the top, where the next cut begins.
+            holdPending_ = true;
+        } else if (!run && phase_ != QrPhase::Braking && phase_ != QrPhase::Done) {
+            // Abort or a controlled stop (and a hold while tracking): to rest where it is.
+            if (hold) {
+                held_ = true;
+                resumePhase_ = phase_;
+                heldAt_ = now_ - t0_;
+            }
             phase_ = QrPhase::Braking;
             rest_ = 0;
             brakeAt_ = q;
@@ -200,6 +240,8 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
                     phase_ = QrPhase::Braking;
                     brakeAt_ = q;
                     rest_ = 0;
+                } else if (holdPending_) {
+                    holdAtRest(q, QrPhase::ReturnPush);
                 } else {
                     phase_ = QrPhase::ReturnPush;
                 }
@@ -221,9 +263,19 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
                 return;
             }
             if (onCutBranch(q)) {
-                phase_ = QrPhase::Cut;
-                t0_ = now_;
-                restarted_ = false;
+                if (holdPending_) {
+                    // At rest a little into the cutting branch: held right at its top, the
+                    // hold's small hunting crossed back over the singular point and the resumed
+                    // run took that for the end of a stroke (then stalled in its return).
+                    double into = std::fmod(q - c_.stroke.q_top, kTwoPi);
+                    if (into < 0) into += kTwoPi;
+                    holdAtRest(q + std::max(0.0, kTopRestArc * c_.stroke.cut_arc - into),
+                               QrPhase::Cut);
+                } else {
+                    phase_ = QrPhase::Cut;
+                    t0_ = now_;
+                    restarted_ = false;
+                }
             }
             break;
         case QrPhase::Braking:

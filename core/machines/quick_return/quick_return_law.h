@@ -90,12 +90,18 @@ class QuickReturnLaw : public MotionSource {
   private:
     double controlTorque(double q, double y, double dy, double yd, double dyd, double ddyd,
                          double T, double tSince, double* u);
+    // A feed hold's rest: braking at q, then on in `resume` at the Resume.
+    void holdAtRest(double q, QrPhase resume);
     QuickReturnLawConfig c_;
     TaskController ctl_;
     QrPhase phase_ = QrPhase::Hold;
     double t0_ = 0, now_ = 0, brakeAt_ = 0;
     int strokes_ = 0, rest_ = 0;
     bool restarted_ = false;
+    bool holdPending_ = false; // a feed hold waits for the end of the cut or of the return
+    bool held_ = false;        // braking for a feed hold: Resume goes on in resumePhase_
+    QrPhase resumePhase_ = QrPhase::ReturnPush;
+    double heldAt_ = 0; // s into the tracking experiment when it was held
     QrSample last_;
 };
 

@@ -50,6 +50,55 @@ class StepFailed(Exception):
     pass
 
 
+# What the walkthrough reads on screen, in the GUI's languages. Under a German locale the GUI
+# speaks German (ui/language.h: it follows the desktop); each German fragment is checked
+# against the catalogue's translation of the text it comes from before the walk starts, so a
+# changed translation fails here, named, not as a timeout half-way.
+WORDS = {
+    # fragment: (German fragment, the catalogue source the fragment is taken from)
+    "Job": ("Auftrag", "Job"),
+    "Start:": ("Start:", "Start: %1"),
+    "E-STOP pressed": ("NOT-HALT betätigt",
+                       "E-STOP pressed: remove the hazard, then Release E-STOP and Reset."),
+    "EMERGENCY": ("NOT-HALT", "EMERGENCY\nSTOP  [%1]"),
+    "Feed hold": ("Vorschub halt", "Feed hold"),
+    "Resume from stop": ("Ab Halt fortsetzen", "Resume from stop"),
+    "press Home": ("Referenzieren drücken", "axes not homed - press Home"),
+    "homing": ("Referenzieren läuft", "homing in progress"),
+    "running": ("läuft", "the cut is running"),
+    "feed hold": ("Vorschub halt", "feed hold - press Resume or Abort"),
+    "EMERGENCY STOP latched": ("NOT-HALT gespeichert", "EMERGENCY STOP latched - press Reset"),
+    "press Enable": ("Freigeben drücken", "drives disabled - press Enable"),
+}
+LANGUAGE = "en"
+
+
+def w(fragment):
+    """The fragment as the GUI shows it in its language."""
+    return WORDS[fragment][0] if LANGUAGE == "de" else fragment
+
+
+def check_words(catalogue):
+    """Each German fragment lies in the catalogue's translation of its source."""
+    import xml.etree.ElementTree as ET
+
+    translations = {}
+    for ctx in ET.parse(catalogue).getroot().findall("context"):
+        for m in ctx.findall("message"):
+            translations.setdefault(m.find("source").text, []).append(
+                m.find("translation").text or "")
+    for english, (german, source) in WORDS.items():
+        source = source.replace("\\n", "\n")
+        if english not in source:
+            raise StepFailed("walkthrough table: %r is not in its source %r" % (english, source))
+        found = translations.get(source)
+        if not found:
+            raise StepFailed("walkthrough table: %r is not in %s" % (source, catalogue))
+        if not any(german in t for t in found):
+            raise StepFailed("walkthrough table: %r is not in the German of %r: %r"
+                             % (german, source, found))
+
+
 class Desk:
     """Xvfb, openbox, the AT-SPI bus and the cutcell process of one walkthrough."""
 
@@ -81,7 +130,11 @@ class Desk:
                 self.spawn([launcher, "--launch-immediately"], env)
                 break
         time.sleep(1.0)
-        app_env = dict(env, QT_LINUX_ACCESSIBILITY_ALWAYS_ON="1", LC_ALL=self.args.locale,
+        self.start_app()
+
+    def start_app(self):
+        """The cutcell process on this display (again after it quit, for the monkey)."""
+        app_env = dict(self.env, QT_LINUX_ACCESSIBILITY_ALWAYS_ON="1", LC_ALL=self.args.locale,
                        LANG=self.args.locale, HOME=self.work,
                        XDG_CONFIG_HOME=os.path.join(self.work, "config"),
                        QT_LOGGING_RULES="qt.accessibility.atspi=false")
@@ -233,14 +286,14 @@ class Desk:
                 return self.reason_label.get_name() or ""
             except Exception:
                 self.reason_label = None
-        labels = self.nodes("label", lambda n: n.startswith("Start:") or n.startswith("E-STOP pressed"))
+        labels = self.nodes("label", lambda n: n.startswith(w("Start:")) or n.startswith(w("E-STOP pressed")))
         if labels:
             self.reason_label = labels[0]
         return labels[0].get_name() if labels else ""
 
 
 def estop_on_screen(desk, step):
-    button = desk.one("push button", lambda n: n.startswith("EMERGENCY"), "the E-STOP button")
+    button = desk.one("push button", lambda n: n.startswith(w("EMERGENCY")), "the E-STOP button")
     e = button.get_extents(Atspi.CoordType.SCREEN)
     inside = e.x >= 0 and e.y >= 0 and e.x + e.width <= desk.width and e.y + e.height <= desk.height
     print("  %-34s E-STOP at %d,%d %dx%d  | %s" % (step, e.x, e.y, e.width, e.height,
@@ -251,7 +304,7 @@ def estop_on_screen(desk, step):
 
 
 def reason_says(desk, words, seconds, step):
-    desk.wait(lambda: any(w in desk.start_reason() for w in words), seconds,
+    desk.wait(lambda: any(word in desk.start_reason() for word in words), seconds,
               "%s: Start reason with %s" % (step, " or ".join(words)))
 
 
@@ -290,9 +343,9 @@ def type_numbers(desk):
     tabs = [t for t in desk.nodes("page tab")
             if t.get_extents(Atspi.CoordType.SCREEN).width > 0]
     names = [t.get_name() for t in tabs]
-    if "Job" not in names:
+    if w("Job") not in names:
         raise StepFailed("no Job tab among the form's tabs %s" % names)
-    for page in tabs[names.index("Job") + 1:]:
+    for page in tabs[names.index(w("Job")) + 1:]:
         desk.click(page)
         time.sleep(0.5)
         try:
@@ -366,62 +419,62 @@ def type_on_page(desk, page):
 
 def walkthrough(desk):
     desk.wait(lambda: desk.app_root() is not None, 30, "cutcell on the accessibility bus")
-    desk.one("push button", lambda n: n.startswith("EMERGENCY"), "the main window")
-    desk.wait(lambda: "Enable" in desk.start_reason(), 90, "the plan loaded ('press Enable')")
+    desk.one("push button", lambda n: n.startswith(w("EMERGENCY")), "the main window")
+    desk.wait(lambda: w("press Enable") in desk.start_reason(), 90, "the plan loaded ('press Enable')")
     estop_on_screen(desk, "opened")
     type_numbers(desk)
     estop_on_screen(desk, "typed numbers")
-    reason_says(desk, ["press Enable"], 90, "replanned")
+    reason_says(desk, [w("press Enable")], 90, "replanned")
     desk.key("F2")
-    reason_says(desk, ["press Home"], 20, "Enable (F2)")
+    reason_says(desk, [w("press Home")], 20, "Enable (F2)")
     estop_on_screen(desk, "Enable (F2)")
     desk.key("F3")
     desk.wait(lambda: desk.start_reason().strip() in ("Start:", "Start: ready", ""), 90,
               "Home (F3): Start free")
     estop_on_screen(desk, "Home (F3)")
-    hold = desk.one("push button", lambda n: n.startswith("Feed hold"), "the Feed hold button")
+    hold = desk.one("push button", lambda n: n.startswith(w("Feed hold")), "the Feed hold button")
     desk.key("F5")
-    reason_says(desk, ["running"], 20, "Start (F5)")
+    reason_says(desk, [w("running")], 20, "Start (F5)")
     # At once: the quick-return cutter's three strokes take 2.8 s.
     desk.wait(lambda: hold.get_state_set().contains(Atspi.StateType.ENABLED), 5,
               "Feed hold (F6): the button enabled while running")
     desk.key("F6")
-    reason_says(desk, ["feed hold"], 20, "Feed hold (F6)")
+    reason_says(desk, [w("feed hold")], 20, "Feed hold (F6)")
     estop_on_screen(desk, "Feed hold (F6)")
     estop_on_screen(desk, "Start (F5)")
     desk.key("F7")
-    reason_says(desk, ["running"], 20, "Resume (F7)")
+    reason_says(desk, [w("running")], 20, "Resume (F7)")
     estop_on_screen(desk, "Resume (F7)")
     # 1.5 s into the resumed run (after an E-STOP 0.3 s in, the saw homed for over 120 s: open)
     time.sleep(1.5)
     desk.key("F1")
-    reason_says(desk, ["E-STOP pressed"], 5, "E-STOP (F1)")
+    reason_says(desk, [w("E-STOP pressed")], 5, "E-STOP (F1)")
     estop_on_screen(desk, "E-STOP (F1)")
     desk.key("ctrl+shift+F1")
-    reason_says(desk, ["EMERGENCY STOP latched"], 5, "Release (Ctrl+Shift+F1)")
+    reason_says(desk, [w("EMERGENCY STOP latched")], 5, "Release (Ctrl+Shift+F1)")
     estop_on_screen(desk, "Release (Ctrl+Shift+F1)")
     desk.key("F4")
-    reason_says(desk, ["press Enable"], 20, "Reset (F4)")
+    reason_says(desk, [w("press Enable")], 20, "Reset (F4)")
     estop_on_screen(desk, "Reset (F4)")
     desk.key("F2")
-    reason_says(desk, ["press Home"], 20, "Enable again (F2)")
+    reason_says(desk, [w("press Home")], 20, "Enable again (F2)")
     desk.key("F3")
-    desk.wait(lambda: "press Home" not in desk.start_reason() and "homing" not in
+    desk.wait(lambda: w("press Home") not in desk.start_reason() and w("homing") not in
               desk.start_reason(), 120, "Home again (F3): homed")
     estop_on_screen(desk, "Home again (F3)")
-    resume = desk.nodes("push button", lambda n: n == "Resume from stop")
+    resume = desk.nodes("push button", lambda n: n == w("Resume from stop"))
     if resume and resume[0].get_state_set().contains(Atspi.StateType.ENABLED):
         desk.click(resume[0])
-        reason_says(desk, ["running"], 20, "Resume from stop (mouse)")
+        reason_says(desk, [w("running")], 20, "Resume from stop (mouse)")
         estop_on_screen(desk, "Resume from stop (mouse)")
         time.sleep(1.5)
     else:
         print("  (no cut recovery for this machine: its motion is not a path in time)")
         desk.key("F5")
-        reason_says(desk, ["running"], 20, "Start again (F5)")
+        reason_says(desk, [w("running")], 20, "Start again (F5)")
         time.sleep(1.0)
     desk.key("F8", "F8")
-    desk.wait(lambda: "running" not in desk.start_reason(), 20,
+    desk.wait(lambda: w("running") not in desk.start_reason(), 20,
               "Abort (F8 twice)")
     estop_on_screen(desk, "Abort (F8 twice)")
     target = os.path.join(desk.work, "saved as.json")
@@ -450,10 +503,21 @@ def main():
             skip(tool + " not installed (tools/setup.sh installs it)")
     if not os.environ.get("DBUS_SESSION_BUS_ADDRESS"):
         skip("no D-Bus session: run under dbus-run-session")
+    # The GUI follows the desktop's language (no choice is stored in the fresh HOME).
+    global LANGUAGE
+    LANGUAGE = "de" if args.locale.startswith("de") else "en"
+    catalogue = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                             "resources", "i18n", "cutcell_de.ts")
+    try:
+        check_words(catalogue)
+    except StepFailed as e:
+        print("FAILED: %s" % e)
+        return 1
     work = tempfile.mkdtemp(prefix="cutcell-walk-")
     args.job_copy = os.path.join(work, os.path.basename(args.job))
     shutil.copy(args.job, args.job_copy)
-    print("walkthrough: %s at %s, %s" % (os.path.basename(args.job), args.size, args.locale))
+    print("walkthrough: %s at %s, %s (GUI in %s)" % (os.path.basename(args.job), args.size,
+                                                      args.locale, LANGUAGE))
     desk = Desk(args, work)
     try:
         desk.start()

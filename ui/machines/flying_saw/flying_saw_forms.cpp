@@ -130,7 +130,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
     addRow(fl, tr("Roller pulses per revolution"),
            bindInt("line.roller_pulses_per_rev",
                    [](Job& j) -> int& { return spec(j).roller_pulses_per_rev; }),
-           "pulses/rev");
+           tr("pulses/rev"));
     row(fl, "line.roller_diameter_mm");
     resolution_ = new QLabel(line);
     resolution_->setObjectName("sawEncoderResolution");
@@ -141,6 +141,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
     auto* cut = queueGroup_ = new QGroupBox(tr("Pieces: the queue of cut lengths"), this);
     auto* vc = new QVBoxLayout(cut);
     queue_ = new QTableWidget(0, 2, cut);
+    queue_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     queue_->setObjectName("sawQueue");
     queue_->setHorizontalHeaderLabels({tr("Length (mm)"), tr("Count (pieces)")});
     queue_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
@@ -376,7 +377,7 @@ FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* p
     row(fs, "saw.turntable_deg_s2");
     addRow(fs, tr("Cam table points per 180°"),
            bindInt("saw.table_points", [](Job& j) -> int& { return spec(j).saw.table_points; }),
-           "points");
+           tr("points"));
 
     QFormLayout* fb = group(tr("Blade"));
     row(fb, "blade.diameter_mm");
@@ -388,7 +389,7 @@ FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* p
                                    [](Job& j) -> bool& { return spec(j).gauge_enabled; }));
     addRow(fg, tr("Reports after"),
            bindInt("gauge.delay_pieces", [](Job& j) -> int& { return spec(j).gauge_delay_pieces; }),
-           "pieces");
+           tr("pieces"));
     row(fg, "gauge.noise_mm");
     row(fg, "gauge.gain");
 

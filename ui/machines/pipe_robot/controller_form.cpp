@@ -19,6 +19,7 @@ const QStringList kAxisNames = {"0 chuck", "1 base", "2 shoulder", "3 elbow", "4
 
 QTableWidget* makeTable(QWidget* parent, const QStringList& headers) {
     auto* t = new QTableWidget(cutcell::kAxisCount, static_cast<int>(headers.size()), parent);
+    t->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     t->setHorizontalHeaderLabels(headers);
     t->setVerticalHeaderLabels(kAxisNames);
     t->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);

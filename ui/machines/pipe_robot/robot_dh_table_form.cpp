@@ -16,6 +16,7 @@ RobotDhTableForm::RobotDhTableForm(JobEditor* editor, QWidget* parent) : JobForm
     auto* box = new QGroupBox(tr("Denavit-Hartenberg table and joint limits"), this);
     auto* v = new QVBoxLayout(box);
     auto* table = new QTableWidget(cutcell::kAxisCount, 6, box);
+    table->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     table->setObjectName("dhTable");
     table->setHorizontalHeaderLabels({tr("alpha\n[deg]"), tr("a\n[mm]"), tr("d\n[mm]"),
                                       tr("offset\n[deg]"), tr("min\n[deg]"), tr("max\n[deg]")});

@@ -24,11 +24,11 @@ ProfileCutterForm::ProfileCutterForm(JobEditor* editor, QWidget* parent) : JobFo
     addRow(fa, tr("Steps per revolution (n)"),
            bindInt("profile_cutter.steps_per_rev_a",
                    [](Job& j) -> int& { return j.profile_cutter.steps_per_rev_a; }),
-           "steps/rev");
+           tr("steps/rev"));
     addRow(fa, tr("Pulses per step"),
            bindInt("profile_cutter.pulses_per_step_a",
                    [](Job& j) -> int& { return j.profile_cutter.pulses_per_step_a; }),
-           "pulses/step");
+           tr("pulses/step"));
     mainLayout()->addWidget(a);
 
     auto* x = new QGroupBox(tr("X axis (torch carriage)"), this);
@@ -36,7 +36,7 @@ ProfileCutterForm::ProfileCutterForm(JobEditor* editor, QWidget* parent) : JobFo
     addRow(fx, tr("Travel per pulse"),
            bindDouble("profile_cutter.mm_per_pulse_x", 5,
                       [](Job& j) -> double& { return j.profile_cutter.mm_per_pulse_x; }),
-           "mm/pulse");
+           tr("mm/pulse"));
     addRow(fx, tr("Carriage travel"),
            bindDouble("profile_cutter.x_travel_mm", 1,
                       [](Job& j) -> double& { return j.profile_cutter.x_travel_mm; }),

@@ -65,6 +65,7 @@ QuickReturnTrackingForm::QuickReturnTrackingForm(JobEditor* editor, QWidget* par
     status_->setObjectName("quickReturnExperiment1Status");
     status_->setWordWrap(true);
     table_ = new QTableWidget(4, 4, this);
+    table_->setTabKeyNavigation(false); // Tab leaves the table (it walked its cells for ever)
     table_->setObjectName("quickReturnExperiment1Table");
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->hide();

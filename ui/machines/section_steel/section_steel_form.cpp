@@ -42,8 +42,13 @@ struct Series {
     int legs; // 0: any, 1: equal legs, 2: unequal legs
 };
 constexpr Series kSeries[] = {
-    {"IPE", "IPE", 0}, {"HEA", "HEA", 0},          {"HEB", "HEB", 0},           {"UPN", "UPN", 0},
-    {"UPE", "UPE", 0}, {"L (equal legs)", "L", 1}, {"L (unequal legs)", "L", 2}};
+    {"IPE", "IPE", 0},
+    {"HEA", "HEA", 0},
+    {"HEB", "HEB", 0},
+    {"UPN", "UPN", 0},
+    {"UPE", "UPE", 0},
+    {QT_TRANSLATE_NOOP("CutCell::ui::SectionSteelSectionForm", "L (equal legs)"), "L", 1},
+    {QT_TRANSLATE_NOOP("CutCell::ui::SectionSteelSectionForm", "L (unequal legs)"), "L", 2}};
 constexpr int kSeriesCount = static_cast<int>(std::size(kSeries));
 constexpr int kUserDefined = kSeriesCount; // the entry after the series
 
@@ -68,7 +73,7 @@ int seriesOf(const SectionSteelSpec& s) {
 QStringList SectionSteelSectionForm::seriesNames() {
     QStringList out;
     for (const Series& s : kSeries)
-        out << QString::fromUtf8(s.label);
+        out << tr(s.label);
     out << tr("User-defined dimensions");
     return out;
 }

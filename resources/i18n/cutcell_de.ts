@@ -1,0 +1,4301 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>CutCell::ui::AlarmPanel</name>
+    <message>
+        <location filename="../../ui/panels/alarm_panel.cpp" line="+45"/>
+        <source>Acknowledge</source>
+        <translation>Quittieren</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The operator has seen the alarms; they stay active until Reset [%1].</source>
+        <translation>Der Bediener hat die Alarme zur Kenntnis genommen; sie bleiben aktiv bis Reset [%1].</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>What to do</source>
+        <translation>Abhilfe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Check the axis for a collision or binding, then its gains and the following error limit.</source>
+        <translation>Achse auf Kollision oder Schwergängigkeit prüfen, dann ihre Reglerverstärkungen und die Schleppfehlergrenze.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Look the drive&apos;s fault code up in its manual (Devices tab); remove the cause.</source>
+        <translation>Fehlercode des Antriebs im Handbuch nachschlagen (Registerkarte Geräte); Ursache beseitigen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the encoder, its cable and the bus.</source>
+        <translation>Geber, Geberkabel und Bus prüfen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the drive&apos;s power and its enable chain.</source>
+        <translation>Spannungsversorgung und Freigabekette des Antriebs prüfen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check gas, consumables and the work clamp.</source>
+        <translation>Gas, Verschleißteile und Masseklemme prüfen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the CAN cable, the node&apos;s power and the bus termination.</source>
+        <translation>CAN-Kabel, Spannungsversorgung des Knotens und Busabschluss prüfen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Check the axes&apos; tuning and the in-position window.</source>
+        <translation>Reglereinstellung der Achsen und Positionierfenster prüfen.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>operator (E-STOP)</source>
+        <translation>Bediener (NOT-HALT)</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>No alarms.</source>
+        <translation>Keine Alarme.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 active, %2 not acknowledged, %3 in the list</source>
+        <translation>%1 aktiv, %2 nicht quittiert, %3 in der Liste</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+18"/>
+        <source>Cannot write the alarm list &apos;%1&apos;: %2</source>
+        <translation>Alarmliste &apos;%1&apos; kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::BusPanel</name>
+    <message>
+        <location filename="../../ui/panels/bus_panel.cpp" line="+39"/>
+        <location line="+49"/>
+        <source>Reconnect</source>
+        <translation>Neu verbinden</translation>
+    </message>
+    <message>
+        <location line="-43"/>
+        <source>CAN bus and nodes</source>
+        <translation>CAN-Bus und Knoten</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>NMT</source>
+        <translation>NMT</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CiA 402</source>
+        <translation>CiA 402</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>HB ms</source>
+        <translation>HB ms</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>down</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>up</source>
+        <translation>bereit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>lost</source>
+        <translation>verloren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Bus %1</source>
+        <translation>Bus %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>BUS UP - %1 OF %2 NODES SILENT</source>
+        <translation>BUS UP - %1 VON %2 KNOTEN STUMM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No heartbeat within %1 ms from node(s) %2: check their power and cable.</source>
+        <translation>Kein Heartbeat innerhalb %1 ms von Knoten %2: Spannungsversorgung und Kabel prüfen.</translation>
+    </message>
+    <message>
+        <location line="-25"/>
+        <location line="+58"/>
+        <source>none</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&gt;9999</source>
+        <translation>&gt;9999</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>node %1, axis %2</source>
+        <translation>Knoten %1, Achse %2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::CellViewPanel</name>
+    <message>
+        <location filename="../../ui/panels/monitor_views.cpp" line="+30"/>
+        <source>3D view not built in this configuration.</source>
+        <translation>3D-Ansicht in dieser Konfiguration nicht verfügbar.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ControlPanel</name>
+    <message>
+        <location filename="../../ui/panels/control_panel.cpp" line="+29"/>
+        <source>%1: EMERGENCY STOP (works from any field, also in dialogs)
+%2: Enable
+%3: Home
+%4: Reset
+%5: Release E-STOP
+</source>
+        <translation>%1: NOT-HALT (wirkt aus jedem Feld, auch in Dialogen)
+%2: Freigeben
+%3: Referenzieren
+%4: Reset
+%5: NOT-HALT entriegeln
+</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: Start
+%2: Feed hold
+%3: Resume
+%4: Abort (press twice within %5 s)
+</source>
+        <translation>%1: Start
+%2: Vorschub halt
+%3: Fortsetzen
+%4: Abbruch (innerhalb %5 s zweimal drücken)
+</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 / %2: speed override -%3 % / +%3 %
+F12: acknowledge the alarms
+Ctrl+N / Ctrl+O / Ctrl+S: job files</source>
+        <translation>%1 / %2: Geschwindigkeits-Override -%3 % / +%3 %
+F12: Alarme quittieren
+Ctrl+N / Ctrl+O / Ctrl+S: Auftragsdateien</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>EMERGENCY
+STOP  [%1]</source>
+        <translation>NOT-HALT
+[%1]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torch off and drives disabled at once; latched until released and Reset. Shortcut %1 works from any field.</source>
+        <translation>Brenner aus und Antriebe sofort gesperrt; bleibt verriegelt bis zum Entriegeln und Reset. Tastenkürzel %1 wirkt aus jedem Feld.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Enable</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home</source>
+        <translation>Referenzieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feed hold</source>
+        <translation>Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Decelerates along the path and holds there [%1]</source>
+        <translation>Bremst entlang der Bahn ab und hält dort an [%1]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Continues the cut from where it held [%1]</source>
+        <translation>Setzt den Schnitt dort fort, wo er angehalten wurde [%1]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Abort</source>
+        <translation>Abbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Release
+E-STOP</source>
+        <translation>NOT-HALT
+entriegeln</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stops the cut along the path with the torch off. Press twice: the first press asks, the second (within %1 s) aborts.</source>
+        <translation>Stoppt den Schnitt entlang der Bahn bei ausgeschaltetem Brenner. Zweimal drücken: der erste Druck fragt nach, der zweite (innerhalb %1 s) bricht ab.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The emergency stop button was pulled back out (the hazard is gone). Reset then clears the latch [%1].</source>
+        <translation>Der NOT-HALT-Taster wurde wieder herausgezogen (die Gefahr ist beseitigt). Reset hebt danach die Verriegelung auf [%1].</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Clears a fault, or an emergency stop once it is released [%1].</source>
+        <translation>Setzt einen Fehler zurück, oder einen NOT-HALT, sobald er entriegelt ist [%1].</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Enables the drives (and connects the CAN bus) [%1]</source>
+        <translation>Gibt die Antriebe frei (und verbindet den CAN-Bus) [%1]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves every axis to its reference at the job&apos;s home speed [%1]</source>
+        <translation>Fährt alle Achsen mit der Referenziergeschwindigkeit des Auftrags auf ihren Referenzpunkt [%1]</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Speed override [%1 -, %2 +]</source>
+        <translation>Geschw.-Override [%1 -, %2 +]</translation>
+    </message>
+    <message>
+        <location line="+128"/>
+        <source>Press again to ABORT  [%1]</source>
+        <translation>Erneut drücken: ABBRUCH  [%1]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Abort  [%1]</source>
+        <translation>Abbruch  [%1]</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>E-STOP pressed: remove the hazard, then Release E-STOP and Reset.</source>
+        <translation>NOT-HALT betätigt: Gefahr beseitigen, dann NOT-HALT entriegeln und Reset.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start: %1</source>
+        <translation>Start: %1</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ControllerForm</name>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+39"/>
+        <source>PID with first-order filter, per joint</source>
+        <translation>PID mit Filter 1. Ordnung, je Gelenk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kp
+[N m/rad]</source>
+        <translation>Kp
+[N m/rad]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ki
+[N m/(rad s)]</source>
+        <translation>Ki
+[N m/(rad s)]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kd
+[N m s/rad]</source>
+        <translation>Kd
+[N m s/rad]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>tau_f
+[s]</source>
+        <translation>tau_f
+[s]</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); output in N m.</source>
+        <translation>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); Ausgang in N m.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Joint plant (simulated drives)</source>
+        <translation>Regelstrecke Gelenk (simulierte Antriebe)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Inertia
+[kg m^2]</source>
+        <translation>Trägheit
+[kg m^2]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Viscous
+[N m s/rad]</source>
+        <translation>Dämpfung
+[N m s/rad]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Torque limit
+[N m]</source>
+        <translation>Momentgrenze
+[N m]</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::CutForm</name>
+    <message>
+        <location filename="../../ui/forms/cut_form.cpp" line="+16"/>
+        <source>Target and bevel</source>
+        <translation>Ziel und Fase</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hole in the main pipe</source>
+        <translation>Ausschnitt im Hauptrohr</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>End of the branch pipe</source>
+        <translation>Ende des Abzweigrohrs</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bevel angle</source>
+        <translation>Fasenwinkel</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Speed</source>
+        <translation>Drehzahl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cutting speed</source>
+        <translation>Schnittgeschw.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start / stop ramp</source>
+        <translation>Start-/Stopp-Rampe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Path</source>
+        <translation>Bahn</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Knot spacing</source>
+        <translation>Stützpunktabstand</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Max. torch tilt</source>
+        <translation>Max. Brennerneigung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>automatic start point</source>
+        <translation>automatischer Startpunkt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start point</source>
+        <translation>Startpunkt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start angle phi</source>
+        <translation>Startwinkel phi</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::CycleDevicesForm</name>
+    <message>
+        <location filename="../../ui/forms/cycle_devices_form.cpp" line="+23"/>
+        <source>Control cycle</source>
+        <translation>Regeltakt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cycle period</source>
+        <translation>Taktzeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Simulation duration</source>
+        <translation>Simulationsdauer</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Safety and feed hold</source>
+        <translation>Sicherheit und Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>E-stop category</source>
+        <translation>NOT-HALT-Kategorie</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cat 0: torch off, drives off at once</source>
+        <translation>Kat. 0: Brenner aus, Antriebe sofort aus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cat 1: controlled stop, then off</source>
+        <translation>Kat. 1: gesteuertes Stillsetzen, dann aus</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Feed hold deceleration</source>
+        <translation>Verzögerung Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Torch in feed hold</source>
+        <translation>Brenner bei Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>keep the torch on</source>
+        <translation>Brenner eingeschaltet lassen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Following error limit, rotary axes</source>
+        <translation>Schleppfehlergrenze, Rundachsen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Following error limit, linear axes</source>
+        <translation>Schleppfehlergrenze, Linearachsen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Homing speed, rotary axes</source>
+        <translation>Referenziergeschw., Rundachsen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Homing speed, linear axes</source>
+        <translation>Referenziergeschw., Linearachsen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run records folder</source>
+        <translation>Ordner Laufprotokolle</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Drives</source>
+        <translation>Antriebe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Simulated cell</source>
+        <translation>Simulierte Zelle</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CANopen CiA 402</source>
+        <translation>CANopen CiA 402</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>CAN plugin</source>
+        <translation>CAN-Plugin</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CAN interface</source>
+        <translation>CAN-Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bit rate</source>
+        <translation>Bitrate</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Heartbeat timeout</source>
+        <translation>Heartbeat-Timeout</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Node ID</source>
+        <translation>Knoten-ID</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Counts/unit</source>
+        <translation>Inkr./Einheit</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Counts per degree (rotary axes) or per mm (linear axes).</source>
+        <translation>Inkremente pro Grad (Rundachsen) bzw. pro mm (Linearachsen).</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::DecimalField</name>
+    <message>
+        <location filename="../../ui/forms/number_fields.cpp" line="+54"/>
+        <source>takes %1 to %2</source>
+        <translation>erlaubt %1 bis %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+56"/>
+        <source>&apos;%1&apos; refused: %2 %3</source>
+        <translation>&apos;%1&apos; abgelehnt: %2 %3</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>; the previous value is kept</source>
+        <translation>; der vorherige Wert bleibt erhalten</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>needs a number</source>
+        <translation>erfordert eine Zahl</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>takes no negative numbers</source>
+        <translation>erlaubt keine negativen Zahlen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>takes a whole number</source>
+        <translation>erlaubt nur ganze Zahlen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>takes one decimal separator (&apos;.&apos; or &apos;,&apos;), no group separators</source>
+        <translation>erlaubt ein Dezimaltrennzeichen (&apos;.&apos; oder &apos;,&apos;), keine Tausendertrennzeichen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>takes a sign only in front</source>
+        <translation>erlaubt ein Vorzeichen nur am Anfang</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>takes a number (digits, a sign, &apos;.&apos; or &apos;,&apos; as the decimal point)</source>
+        <translation>erlaubt nur eine Zahl (Ziffern, ein Vorzeichen, &apos;.&apos; oder &apos;,&apos; als Dezimaltrennzeichen)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>keeps %n decimal(s)</source>
+        <translation>
+            <numerusform>erlaubt höchstens %n Nachkommastelle</numerusform>
+            <numerusform>erlaubt höchstens %n Nachkommastellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>takes a finite number</source>
+        <translation>erfordert eine endliche Zahl</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::DroPanel</name>
+    <message>
+        <location filename="../../ui/panels/dro_panel.cpp" line="+32"/>
+        <source>Position: commanded / actual</source>
+        <translation>Position: Soll / Ist</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The axis to jog</source>
+        <translation>Achse für den Tippbetrieb</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>cont.</source>
+        <translation>kont.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Jog step in the axis unit (deg or mm); cont.: the axis moves while - or + is held, up to its limit</source>
+        <translation>Tippschrittweite in der Achseinheit (deg oder mm); kont.: die Achse fährt, solange - oder + gedrückt ist, bis zu ihrer Grenze</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>axis %1</source>
+        <translation>Achse %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 .. %3 %4</source>
+        <translation>%1: %2 .. %3 %4</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::EventLogPanel</name>
+    <message>
+        <location filename="../../ui/panels/event_log_panel.cpp" line="+20"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Severity</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>To clear: remove the hazard, release the E-STOP, press Reset, then Enable.</source>
+        <translation>Zum Aufheben: Gefahr beseitigen, NOT-HALT entriegeln, Reset drücken, dann Freigeben.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>To clear: correct the cause named above, press Reset, then Enable and Home.</source>
+        <translation>Zum Aufheben: oben genannte Ursache beheben, Reset drücken, dann Freigeben und Referenzieren.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>ERROR</source>
+        <translation>FEHLER</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>WARNING</source>
+        <translation>WARNUNG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>info</source>
+        <translation>Info</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::FlyingSawCarriageSawForm</name>
+    <message>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+361"/>
+        <source>Carriage (five periods: BC, CE, EF, FG-GH-HI)</source>
+        <translation>Schlitten (fünf Phasen: BC, CE, EF, FG-GH-HI)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Saw cycle in sync (C → D settle, feeds, half turn, retract)</source>
+        <translation>Sägezyklus im Gleichlauf (C → D Einschwingen, Vorschübe, halbe Drehung, Rückzug)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Cam table points per 180°</source>
+        <translation>Punkte Kurventabelle je 180°</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Blade</source>
+        <translation>Sägeblatt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Length gauge after the saw (corrects the encoder scale)</source>
+        <translation>Längenmessung nach der Säge (korrigiert die Geberskalierung)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gauge on</source>
+        <translation>Messung ein</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reports after</source>
+        <translation>Meldet nach</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pieces</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Simulated line and roller</source>
+        <translation>Simulierte Linie und Messrolle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed wander ±</source>
+        <translation>Geschw.-Schwankung ±</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+5"/>
+        <source>of speed</source>
+        <translation>der Geschw.</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Speed steps ±</source>
+        <translation>Geschw.-Sprünge ±</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Roller slip</source>
+        <translation>Rollenschlupf</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>of travel</source>
+        <translation>des Wegs</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::FlyingSawFiguresForm</name>
+    <message>
+        <location filename="../../ui/machines/flying_saw/flying_saw_figures.cpp" line="+55"/>
+        <source>the job is not for the flying saw</source>
+        <translation>der Auftrag ist nicht für die fliegende Säge</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Plan and simulate the queue</source>
+        <translation>Schnittliste planen und simulieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export cam table CSV…</source>
+        <translation>Kurventabelle als CSV exportieren…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not simulated yet.</source>
+        <translation>Noch nicht simuliert.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Carriage position over one cycle (nominal line speed)</source>
+        <translation>Schlittenposition über einen Zyklus (Nenn-Liniengeschwindigkeit)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>s (mm)</source>
+        <translation>s (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Carriage velocity</source>
+        <translation>Schlittengeschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>v (mm/s)</source>
+        <translation>v (mm/s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Carriage acceleration</source>
+        <translation>Schlittenbeschleunigung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a (mm/s²)</source>
+        <translation>a (mm/s²)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cam table: radial feed against the turntable angle</source>
+        <translation>Kurventabelle: radialer Vorschub über dem Drehtellerwinkel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>turntable θ (deg)</source>
+        <translation>Drehteller θ (deg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>feed (mm)</source>
+        <translation>Vorschub (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cut length error of every piece (simulated queue)</source>
+        <translation>Schnittlängenfehler jedes Stücks (simulierte Schnittliste)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>piece</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>length - ordered (mm)</source>
+        <translation>Länge - Soll (mm)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Export the cam table</source>
+        <translation>Kurventabelle exportieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cam table written to %1.</source>
+        <translation>Kurventabelle in %1 geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot plan: %1</source>
+        <translation>Planung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>feed, blades 1 and 2</source>
+        <translation>Vorschub, Blatt 1 und 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>blade tip radius</source>
+        <translation>Radius der Blattspitze</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>± tolerance</source>
+        <translation>± Toleranz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>error (tolerance ± %1 mm far outside)</source>
+        <translation>Fehler (Toleranz ± %1 mm weit außerhalb)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 pieces measured: error mean %2 mm, std %3 mm, max |e| %4 mm, Cpk %5 (± %6 mm); largest cut spread on the pipe %7 mm.</source>
+        <translation>%1 Stück gemessen: Fehler Mittelwert %2 mm, Std.-Abw. %3 mm, max |e| %4 mm, Cpk %5 (± %6 mm); größte Schnittstreuung am Rohr %7 mm.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Not completed: %1</source>
+        <translation>Nicht abgeschlossen: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+9"/>
+        <source>Cam table not written to %1: %2</source>
+        <translation>Kurventabelle nicht in %1 geschrieben: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::FlyingSawTubeLineForm</name>
+    <message>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-360"/>
+        <source>length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>pieces</source>
+        <translation>Stückzahl</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The tube leaves the mill continuously; the carriage meets it at each cut position, rides with it while the turntable&apos;s two blades cut, and returns. A length changed in the queue applies from the next piece.</source>
+        <translation>Das Rohr verlässt die Schweißanlage kontinuierlich; der Schlitten synchronisiert sich an jeder Schnittposition mit ihm, fährt mit, während die beiden Sägeblätter des Drehtellers schneiden, und fährt zurück. Eine in der Schnittliste geänderte Länge gilt ab dem nächsten Stück.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Tube (cut plane)</source>
+        <translation>Rohr (Schnittebene)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Round (D)</source>
+        <translation>Rund (D)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Square (a × a)</source>
+        <translation>Quadratisch (a × a)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rectangular (a × b)</source>
+        <translation>Rechteckig (a × b)</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Line and measuring roller</source>
+        <translation>Linie und Messrolle</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Roller pulses per revolution</source>
+        <translation>Rollenimpulse pro Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>pulses/rev</source>
+        <translation>Imp./U</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Encoder resolution</source>
+        <translation>Geberauflösung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pieces: the queue of cut lengths</source>
+        <translation>Stücke: Schnittliste der Längen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Length (mm)</source>
+        <translation>Länge (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Count (pieces)</source>
+        <translation>Anzahl (Stück)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add length</source>
+        <translation>Länge hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove selected</source>
+        <translation>Auswahl entfernen</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Send the queue to the running line (from the next piece)</source>
+        <translation>Schnittliste an die laufende Linie senden (ab dem nächsten Stück)</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Not sent: no flying-saw program is loaded.</source>
+        <translation>Nicht gesendet: kein Programm für fliegende Säge geladen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not sent: the queue is empty.</source>
+        <translation>Nicht gesendet: die Schnittliste ist leer.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not sent: the queue has %1 entries; the line takes up to %2.</source>
+        <translation>Nicht gesendet: die Schnittliste hat %1 Einträge; die Linie nimmt höchstens %2.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not sent: the previous change is not taken yet (it is, when the carriage is back at its wait position).</source>
+        <translation>Nicht gesendet: die vorherige Änderung ist noch nicht übernommen (das geschieht, sobald der Schlitten wieder in seiner Warteposition ist).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Sent: %1 pieces replace the pieces not begun yet, from the next piece.</source>
+        <translation>Gesendet: %1 Stück ersetzen die noch nicht begonnenen Stücke, ab dem nächsten Stück.</translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>%1 mm per pulse (π D / pulses)</source>
+        <translation>%1 mm pro Impuls (π D / Impulse)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 pieces, %2 m</source>
+        <translation>%1 Stück, %2 m</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::JobDocument</name>
+    <message>
+        <location filename="../../ui/job_document.cpp" line="+21"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The job has no file yet: use Save As.</source>
+        <translation>Der Auftrag hat noch keine Datei: Speichern unter verwenden.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::JobInfoForm</name>
+    <message>
+        <location filename="../../ui/forms/job_info_form.cpp" line="+13"/>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::LinkControl</name>
+    <message>
+        <location filename="../../ui/link_control.cpp" line="+40"/>
+        <source>Enable: bringing the CAN bus up first (%1); the drives are enabled once every node is operational.</source>
+        <translation>Freigeben: zuerst wird der CAN-Bus hochgefahren (%1); die Antriebe werden freigegeben, sobald alle Knoten betriebsbereit (Operational) sind.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Enable cancelled: the drives stay disabled when the bus comes up.</source>
+        <translation>Freigeben abgebrochen: die Antriebe bleiben gesperrt, wenn der Bus hochkommt.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The CAN bus is already being connected.</source>
+        <translation>Der CAN-Bus wird bereits verbunden.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Reconnecting the CAN bus (%1).</source>
+        <translation>CAN-Bus wird neu verbunden (%1).</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <location line="+18"/>
+        <source>CAN bus: %1</source>
+        <translation>CAN-Bus: %1</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <source>CAN bus %1</source>
+        <translation>CAN-Bus %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1. The connection is closed and the port released: check the drives and the bus, then press Enable to try again.</source>
+        <translation>%1. Die Verbindung ist geschlossen und der Port freigegeben: Antriebe und Bus prüfen, dann Freigeben drücken, um es erneut zu versuchen.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1. Drives that were enabled are in Fault. Press Reconnect (bus box) or Reset, then Enable.</source>
+        <translation>%1. Freigegebene Antriebe sind im Fehlerzustand. Neu verbinden (Bus-Feld) oder Reset drücken, dann Freigeben.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::MainWindow</name>
+    <message>
+        <location filename="../../ui/main_window.cpp" line="+138"/>
+        <source>Event log</source>
+        <translation>Ereignisprotokoll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+204"/>
+        <source>Alarms</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <location line="-203"/>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Idle</source>
+        <translation>Inaktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no machine yet</source>
+        <translation>noch keine Maschine</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>planning %p %</source>
+        <translation>Planung %p %</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel planning</source>
+        <translation>Planung abbrechen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>E-STOP: %1 (any field)</source>
+        <translation>NOT-HALT: %1 (aus jedem Feld)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New...</source>
+        <translation>&amp;Neu...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open job</source>
+        <translation>Auftrag öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CutCell jobs (*.json);;All files (*)</source>
+        <translation>CutCell-Aufträge (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save &amp;as...</source>
+        <translation>Speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export plots as PNG...</source>
+        <translation>Diagramme als PNG exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export plots</source>
+        <translation>Diagramme exportieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export plot data as CSV...</source>
+        <translation>Diagrammdaten als CSV exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export data</source>
+        <translation>Daten exportieren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export alarms as CSV...</source>
+        <translation>Alarme als CSV exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export alarms</source>
+        <translation>Alarme exportieren</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>clear the %1 first (Release E-STOP, Reset)</source>
+        <translation>zuerst %1 aufheben (NOT-HALT entriegeln, Reset)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the machine is moving (%1): stop it first</source>
+        <translation>die Maschine fährt (%1): zuerst anhalten</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>This run starts at a speed override of %1 %.</source>
+        <translation>Dieser Lauf startet mit einem Geschwindigkeits-Override von %1 %.</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Alarms (%1)</source>
+        <translation>Alarme (%1)</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>cycle %1 ms, jitter p99 %2 us, overruns %3</source>
+        <translation>Zyklus %1 ms, Jitter p99 %2 us, Überläufe %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, E-STOP latency %1 us</source>
+        <translation>, NOT-HALT-Latenz %1 us</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Parameters are locked while the machine moves.</source>
+        <translation>Parameter sind gesperrt, solange die Maschine verfährt.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1[*] - CutCell</source>
+        <translation>%1[*] - CutCell</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Clear list</source>
+        <translation>Liste leeren</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Speed override set back to 100 % after the %1 (was %2 %).</source>
+        <translation>Geschwindigkeits-Override nach %1 auf 100 % zurückgesetzt (war %2 %).</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot open the job</source>
+        <translation>Auftrag kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot import the file</source>
+        <translation>Datei kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Imported %1 as a new job (%2 report lines); save it to keep it.</source>
+        <translation>%1 als neuer Auftrag importiert (%2 Berichtszeilen); zum Behalten speichern.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>No machine &quot;%1&quot; in this build.</source>
+        <translation>Keine Maschine &quot;%1&quot; in dieser Programmversion.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>No default job for the %1: %2</source>
+        <translation>Kein Standardauftrag für %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>New job for the %1.</source>
+        <translation>Neuer Auftrag für %1.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is an example shipped with CutCell or a read-only file: Save writes a copy (Save As).</source>
+        <translation>%1 ist ein mit CutCell geliefertes Beispiel oder eine schreibgeschützte Datei: Speichern legt eine Kopie an (Speichern unter).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+18"/>
+        <source>Cannot save the job</source>
+        <translation>Auftrag kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <location line="+18"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Save job</source>
+        <translation>Auftrag speichern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CutCell jobs (*.json)</source>
+        <translation>CutCell-Aufträge (*.json)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The job &quot;%1&quot; has unsaved changes. Save them?</source>
+        <translation>Der Auftrag &quot;%1&quot; hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Machine in motion</source>
+        <translation>Maschine in Bewegung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The machine is %1. Quitting stops it at once (emergency stop). Quit?</source>
+        <translation>Maschinenzustand: %1. Beenden stoppt die Maschine sofort (NOT-HALT). Beenden?</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::MethodForm</name>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="+28"/>
+        <source>Cutting method</source>
+        <translation>Schneidverfahren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rotating pipe</source>
+        <translation>Drehendes Rohr</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Static pipe</source>
+        <translation>Stehendes Rohr</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Method</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Chuck angle (static)</source>
+        <translation>Futterwinkel (stehend)</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ParameterTabs</name>
+    <message>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+74"/>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pipes</source>
+        <translation>Rohre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cycle &amp;&amp; devices</source>
+        <translation>Zyklus &amp;&amp; Geräte</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>This machine has no linear axis.</source>
+        <translation>Diese Maschine hat keine Linearachse.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>This machine has no rotary axis.</source>
+        <translation>Diese Maschine hat keine Rundachse.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::PipesForm</name>
+    <message>
+        <location filename="../../ui/forms/pipes_form.cpp" line="+21"/>
+        <source>Outer radius</source>
+        <translation>Außenradius</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Wall thickness</source>
+        <translation>Wandstärke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Main pipe (run)</source>
+        <translation>Hauptrohr (Durchgang)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Branch pipe</source>
+        <translation>Abzweigrohr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Intersection</source>
+        <translation>Verschneidung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Angle between axes</source>
+        <translation>Winkel zwischen Achsen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Eccentricity</source>
+        <translation>Exzentrizität</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::PlotsPanel</name>
+    <message>
+        <location filename="../../ui/panels/monitor_views.cpp" line="+88"/>
+        <source>Tracking plots not built in this configuration.</source>
+        <translation>Diagramme der Bahnverfolgung sind in dieser Konfiguration nicht enthalten.</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Cartesian error (mm)</source>
+        <translation>Kartesischer Fehler (mm)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>torch miss on the pipe</source>
+        <translation>Brennerabweichung am Rohr</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>miss (mm)</source>
+        <translation>Abweichung (mm)</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <location line="+10"/>
+        <source>plots not built</source>
+        <translation>Diagramme nicht enthalten</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ProfileCutterForm</name>
+    <message>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_form.cpp" line="+16"/>
+        <source>2-axis NC profile cutter: the pipe turns in the chuck (A), the torch rides the X carriage. Stepper axes behind a pulse card.</source>
+        <translation>2-Achsen-NC-Rohrprofilschneider: Das Rohr dreht sich im Futter (A), der Brenner fährt auf dem X-Schlitten. Schrittmotorachsen, angesteuert über eine Impulskarte.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>A axis (pipe turn)</source>
+        <translation>A-Achse (Rohrdrehung)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Steps per revolution (n)</source>
+        <translation>Schritte pro Umdrehung (n)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>steps/rev</source>
+        <translation>Schritte/U</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pulses per step</source>
+        <translation>Impulse pro Schritt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>pulses/step</source>
+        <translation>Imp./Schritt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>X axis (torch carriage)</source>
+        <translation>X-Achse (Brennerschlitten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Travel per pulse</source>
+        <translation>Weg pro Impuls</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>mm/pulse</source>
+        <translation>mm/Imp.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Carriage travel</source>
+        <translation>Verfahrweg Schlitten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Pulse card and torch</source>
+        <translation>Impulskarte und Brenner</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Max. pulse rate per axis</source>
+        <translation>Max. Impulsrate je Achse</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pierce dwell</source>
+        <translation>Einstechzeit</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Hole in the main pipe</source>
+        <translation>Loch im Hauptrohr</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>middle of the main pipe</source>
+        <translation>Mitte des Hauptrohrs</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Branch position</source>
+        <translation>Abzweigposition</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Branch axis at X (S)</source>
+        <translation>Abzweigachse bei X (S)</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ProgressPanel</name>
+    <message>
+        <location filename="../../ui/panels/progress_panel.cpp" line="+37"/>
+        <source>Elapsed</source>
+        <translation>Verstrichen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remaining</source>
+        <translation>Verbleibend</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Stopped (%1) at %2, %3 after Start</source>
+        <translation>Gestoppt (%1) bei %2, %3 nach Start</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Last cycle %1   %2 %3</source>
+        <translation>Letzter Zyklus %1   %2 %3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Last run completed.</source>
+        <translation>Letzter Lauf abgeschlossen.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Approach to the start position: %1 %</source>
+        <translation>Anfahren der Startposition: %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At the start position: the run starts</source>
+        <translation>In Startposition: Lauf beginnt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Approach to the first cut point: %1 %</source>
+        <translation>Anfahren des ersten Schnittpunkts: %1 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc on: the cut starts</source>
+        <translation>Lichtbogen ein: Schnitt beginnt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At the first cut point: settling, then the arc</source>
+        <translation>Am ersten Schnittpunkt: Einschwingen, dann Lichtbogen</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Idle</source>
+        <translation>Inaktiv</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::QuickReturnControllerForm</name>
+    <message>
+        <location filename="../../ui/machines/quick_return/quick_return_form.cpp" line="+99"/>
+        <source>Experiment and control law</source>
+        <translation>Experiment und Regelgesetz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cutting (constant velocity over the workpiece)</source>
+        <translation>Schneiden (konstante Geschwindigkeit über dem Werkstück)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tracking y_d = offset + amplitude sin(ω t)</source>
+        <translation>Folgeregelung y_d = Offset + Amplitude sin(ω t)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Controller</source>
+        <translation>Regler</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FFC (feed-forward + PD)</source>
+        <translation>FFC (Vorsteuerung + PD)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>LQT</source>
+        <translation>LQT</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SMC</source>
+        <translation>SMC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OSMC (optimal sliding mode)</source>
+        <translation>OSMC (optimaler Sliding Mode)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Jacobian</source>
+        <translation>Jacobi-Matrix</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compensator (Eq. 33, K_ρ)</source>
+        <translation>Kompensator (Gl. 33, K_ρ)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Exact ρ_y of the model</source>
+        <translation>Exaktes ρ_y des Modells</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>FFC (Eq. 37-38)</source>
+        <translation>FFC (Gl. 37-38)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>LQT (Eq. 39): Q = diag(q1, q2), R</source>
+        <translation>LQT (Gl. 39): Q = diag(q1, q2), R</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>SMC: s = c e + ė, boundary layer φ</source>
+        <translation>SMC: s = c e + ė, Grenzschicht φ</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>OSMC (Eq. 20-33): Q = [q11 q12; q12 q22], λ, k1, k2</source>
+        <translation>OSMC (Gl. 20-33): Q = [q11 q12; q12 q22], λ, k1, k2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::QuickReturnFiguresForm</name>
+    <message>
+        <location filename="../../ui/machines/quick_return/quick_return_figures.cpp" line="+51"/>
+        <source>Simulate the cut offline (experiment 2, the job&apos;s controller)</source>
+        <translation>Schnitt offline simulieren (Experiment 2, Regler des Auftrags)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Figures of the last run on the engine appear here while it runs; or simulate the job&apos;s cut offline.</source>
+        <translation>Diagramme des letzten Laufs in der Steuerung erscheinen hier, während er läuft; oder den Schnitt des Auftrags offline simulieren.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No run and no simulation yet.</source>
+        <translation>Noch kein Lauf und keine Simulation.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Velocity profile</source>
+        <translation>Geschwindigkeitsprofil</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <source>y&apos; (m/s)</source>
+        <translation>y&apos; (m/s)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Phase diagram</source>
+        <translation>Phasendiagramm</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+1"/>
+        <location line="+75"/>
+        <location line="+62"/>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <location line="-137"/>
+        <source>Velocity error in the work</source>
+        <translation>Geschwindigkeitsfehler im Werkstück</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+75"/>
+        <location line="+62"/>
+        <source>y_d&apos; - y&apos; (m/s)</source>
+        <translation>y_d&apos; - y&apos; (m/s)</translation>
+    </message>
+    <message>
+        <location line="-94"/>
+        <source>a simulation is running</source>
+        <translation>eine Simulation läuft</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot simulate: %1</source>
+        <translation>Simulation nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Simulating the cut with %1 ...</source>
+        <translation>Schnitt wird mit %1 simuliert ...</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+62"/>
+        <source>Velocity error in the work: max %1, RMS %2 m/s</source>
+        <translation>Geschwindigkeitsfehler im Werkstück: max. %1, RMS %2 m/s</translation>
+    </message>
+    <message>
+        <location line="-58"/>
+        <source>Source: offline simulation of the job&apos;s cut (core runCutting, the engine&apos;s control law on the crank plant).</source>
+        <translation>Quelle: Offline-Simulation des Schnitts des Auftrags (Kern runCutting, Regelgesetz der Steuerung an der Kurbelstrecke).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 strokes, velocity error in the work max %3 m/s, RMS %4 m/s (%5 samples); peak torque %6 N m.</source>
+        <translation>%1: %2 Hübe, Geschwindigkeitsfehler im Werkstück max. %3 m/s, RMS %4 m/s (%5 Messwerte); Spitzenmoment %6 N m.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Not completed: %1</source>
+        <translation>Nicht abgeschlossen: %1</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>Source: run %1 on the engine, live from its telemetry.</source>
+        <translation>Quelle: Lauf %1 in der Steuerung, live aus deren Telemetrie.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Source: run %1 on the engine (ended), from its telemetry.</source>
+        <translation>Quelle: Lauf %1 in der Steuerung (beendet), aus deren Telemetrie.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2 cuts, velocity error in the work [%3, %4] m max %5 m/s, RMS %6 m/s (%7 samples); peak torque %8 N m.</source>
+        <translation>%1: %2 Schnitte, Geschwindigkeitsfehler im Werkstück [%3, %4] m max. %5 m/s, RMS %6 m/s (%7 Messwerte); Spitzenmoment %8 N m.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>y&apos;</source>
+        <translation>y&apos;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y_d&apos;</source>
+        <translation>y_d&apos;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y&apos;(y)</source>
+        <translation>y&apos;(y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y_d&apos;(y)</source>
+        <translation>y_d&apos;(y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y_d&apos; - y&apos;</source>
+        <translation>y_d&apos; - y&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::QuickReturnMechanismForm</name>
+    <message>
+        <location filename="../../ui/machines/quick_return/quick_return_form.cpp" line="-124"/>
+        <source>Inverted Whitworth quick-return mechanism: the crank (O2, r2) drives the rocker through O3; the link r4 from B moves the slider with the tool on the line x = Dx. The crank must turn fully (the loop closes for every angle).</source>
+        <translation>Invertiertes Whitworth-Schnellrücklaufgetriebe: Die Kurbel (O2, r2) treibt die Schwinge über O3 an; das Koppelglied r4 von B bewegt den Schlitten mit dem Werkzeug auf der Geraden x = Dx. Die Kurbel muss voll umlaufen (die Schleife schließt sich für jeden Winkel).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Mechanism (crank frame, y up)</source>
+        <translation>Getriebe (Kurbel-KS, y nach oben)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Slider and crank motor</source>
+        <translation>Schlitten und Kurbelmotor</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cutting stroke (experiment 2)</source>
+        <translation>Schnitthub (Experiment 2)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Tracking y_d = offset + amplitude sin(ω t) (experiment 1)</source>
+        <translation>Folgeregelung y_d = Offset + Amplitude sin(ω t) (Experiment 1)</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::QuickReturnTrackingForm</name>
+    <message>
+        <location filename="../../ui/machines/quick_return/quick_return_tracking_page.cpp" line="+62"/>
+        <source>Run experiment 1 (FFC, LQT, SMC, OSMC)</source>
+        <translation>Experiment 1 ausführen (FFC, LQT, SMC, OSMC)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not run yet.</source>
+        <translation>Noch nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1: y and y_d</source>
+        <translation>%1: y und y_d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tracking error e = y_d - y</source>
+        <translation>Folgefehler e = y_d - y</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>e (mm)</source>
+        <translation>e (mm)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Tracking y_d = %1 %2 %3 sin(%4 t) for %5 s without contact force, each controller with the job&apos;s parameters (Controller page); MSE of L e over the last %6 s with L = %7.</source>
+        <translation>Folgeregelung y_d = %1 %2 %3 sin(%4 t) über %5 s ohne Kontaktkraft, jeder Regler mit den Parametern des Auftrags (Seite Regler); MSE von L e über die letzten %6 s mit L = %7.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Controller</source>
+        <translation>Regler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MSE, last %1 s</source>
+        <translation>MSE, letzte %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max |e| (mm)</source>
+        <translation>max |e| (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>peak torque (N m)</source>
+        <translation>Spitzenmoment (N m)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>experiment 1 is running</source>
+        <translation>Experiment 1 läuft</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot run: %1</source>
+        <translation>Ausführung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Running the four controllers ...</source>
+        <translation>Die vier Regler laufen ...</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y_d</source>
+        <translation>y_d</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Done in %1 s (off the GUI thread). Lowest MSE: %2 (%3).</source>
+        <translation>Fertig in %1 s (außerhalb des GUI-Threads). Kleinster MSE: %2 (%3).</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::RecoveryPanel</name>
+    <message>
+        <location filename="../../ui/panels/recovery_panel.cpp" line="+25"/>
+        <source>Cut recovery</source>
+        <translation>Wiederaufnahme</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+2"/>
+        <source>Lead-in</source>
+        <translation>Anschnitt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The resumed cut starts this far back along the path from the stop point, so the kerf joins (0 .. 50 mm).</source>
+        <translation>Der fortgesetzte Schnitt beginnt um diese Strecke entlang der Bahn vor dem Haltepunkt, damit die Schnittfuge anschließt (0 .. 50 mm).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Resume from stop</source>
+        <translation>Ab Halt fortsetzen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source>From point</source>
+        <translation>Ab Punkt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Run the rest of the cut from this point of the path.</source>
+        <translation>Den Rest des Schnitts ab diesem Bahnpunkt ausführen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run from point</source>
+        <translation>Ab Punkt starten</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Count the part as good</source>
+        <translation>Teil als Gutteil zählen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The run completed, but part of the path was never cut (Run from point). Count the part only if it was finished otherwise.</source>
+        <translation>Der Lauf wurde abgeschlossen, aber ein Teil der Bahn wurde nie geschnitten (Ab Punkt starten). Das Teil nur zählen, wenn es anderweitig fertiggestellt wurde.</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>No program loaded.</source>
+        <translation>Kein Programm geladen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This machine&apos;s motion follows %1, not a path in time: no cut recovery; start the cycle again.</source>
+        <translation>Die Bewegung dieser Maschine folgt %1, nicht einer Bahn über der Zeit: keine Schnitt-Wiederaufnahme; Zyklus neu starten.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the line</source>
+        <translation>der Linie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a control law</source>
+        <translation>einem Regelgesetz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recovery starts from Ready (state now: %1).</source>
+        <translation>Wiederaufnahme startet aus Bereit (Zustand jetzt: %1).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home first: the axes lost their reference.</source>
+        <translation>Zuerst referenzieren: Die Achsen haben ihre Referenz verloren.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Part not counted: %1.</source>
+        <translation>Teil nicht gezählt: %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Stopped at %1.</source>
+        <translation>Gestoppt bei %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped at point %1 / %2, %3 of %4 mm (path time %5 s). Resume starts at %6 s.</source>
+        <translation>Gestoppt bei Punkt %1 / %2, %3 von %4 mm (Bahnzeit %5 s). Fortsetzen beginnt bei %6 s.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No stopped cut to recover.</source>
+        <translation>Kein gestoppter Schnitt zum Wiederaufnehmen.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::RobotDhTableForm</name>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/robot_dh_table_form.cpp" line="+16"/>
+        <source>Denavit-Hartenberg table and joint limits</source>
+        <translation>Denavit-Hartenberg-Tabelle und Gelenkgrenzen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>alpha
+[deg]</source>
+        <translation>alpha
+[deg]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>a
+[mm]</source>
+        <translation>a
+[mm]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>d
+[mm]</source>
+        <translation>d
+[mm]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset
+[deg]</source>
+        <translation>Offset
+[deg]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>min
+[deg]</source>
+        <translation>min
+[deg]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>max
+[deg]</source>
+        <translation>max
+[deg]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 chuck</source>
+        <translation>0 Futter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>1 base</source>
+        <translation>1 Basis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>2 shoulder</source>
+        <translation>2 Schulter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>3 elbow</source>
+        <translation>3 Ellbogen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>4 wrist</source>
+        <translation>4 Handgelenk</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>5 roll</source>
+        <translation>5 Rollachse</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Row 0 is the pipe chuck: its d is the distance from the robot base to the cut centre. The analytic inverse kinematics needs the seed arm&apos;s structure (alpha = 90, 0, 0, 90, 0 deg for rows 1..5).</source>
+        <translation>Zeile 0 ist das Rohrfutter: Sein d ist der Abstand von der Roboterbasis zur Schnittmitte. Die analytische inverse Kinematik setzt den Aufbau des Standardarms voraus (alpha = 90, 0, 0, 90, 0 deg für Zeilen 1..5).</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::RunController</name>
+    <message>
+        <location filename="../../ui/run_controller.cpp" line="+72"/>
+        <source>Planning cancelled by the operator.</source>
+        <translation>Planung vom Bediener abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Planning failed: %1</source>
+        <translation>Planung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the CAN bus did not come up: %1</source>
+        <translation>der CAN-Bus ist nicht hochgefahren: %1</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>Path not reachable: %1</source>
+        <translation>Bahn nicht erreichbar: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>machine not available: %1</source>
+        <translation>Maschine nicht verfügbar: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no machine: %1</source>
+        <translation>keine Maschine: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>cannot load the program: %1</source>
+        <translation>Programm kann nicht geladen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Part not counted as good: %1. Confirm it in the recovery box if it was finished otherwise.</source>
+        <translation>Teil nicht als Gutteil gezählt: %1. Falls es anderweitig fertiggestellt wurde, im Feld Wiederaufnahme bestätigen.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>emergency stop</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>abort</source>
+        <translation>Abbruch</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
+        <source>%n invalid field(s) - %1</source>
+        <translation>
+            <numerusform>%n ungültiges Feld - %1</numerusform>
+            <numerusform>%n ungültige Felder - %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>planning the path...</source>
+        <translation>Bahn wird geplant...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no plan yet</source>
+        <translation>noch keine Planung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>path not reachable - %1</source>
+        <translation>Bahn nicht erreichbar - %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the new plan is loaded when the machine is at rest</source>
+        <translation>die neue Planung wird im Stillstand der Maschine geladen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no program loaded</source>
+        <translation>kein Programm geladen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>drives disabled - press Enable</source>
+        <translation>Antriebe gesperrt - Freigeben drücken</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>axes not homed - press Home</source>
+        <translation>Achsen nicht referenziert - Referenzieren drücken</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>homing in progress</source>
+        <translation>Referenzieren läuft</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>jogging in progress</source>
+        <translation>Tippbetrieb läuft</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the cut is running</source>
+        <translation>Schnitt läuft</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>feed hold - press Resume or Abort</source>
+        <translation>Vorschub halt - Fortsetzen oder Abbruch drücken</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cut completed - press Home to cut again</source>
+        <translation>Schnitt beendet - für neuen Schnitt Referenzieren drücken</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>EMERGENCY STOP pressed - release it, then press Reset</source>
+        <translation>NOT-HALT betätigt - NOT-HALT entriegeln, dann Reset drücken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EMERGENCY STOP latched - press Reset</source>
+        <translation>NOT-HALT gespeichert - Reset drücken</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>fault - CAN bus %1: press Reset (it reconnects the bus), then Enable</source>
+        <translation>Störung - CAN-Bus %1: Reset drücken (verbindet den Bus neu), dann Freigeben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fault - see the event log, then press Reset</source>
+        <translation>Störung - Ereignisprotokoll prüfen, dann Reset drücken</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>run aborted - press Home to cut again (or resume in the cut recovery box)</source>
+        <translation>Ablauf abgebrochen - für neuen Schnitt Referenzieren drücken (oder im Feld Wiederaufnahme fortsetzen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>drives disabled, CAN bus not connected - press Enable (it connects the bus)</source>
+        <translation>Antriebe aus, CAN-Bus nicht verbunden - Freigeben drücken (verbindet den Bus)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>connecting the CAN bus - %1; the drives are enabled when every node is up</source>
+        <translation>CAN-Bus wird verbunden - %1; die Antriebe werden freigegeben, sobald alle Knoten bereit sind</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>connecting the CAN bus - %1</source>
+        <translation>CAN-Bus wird verbunden - %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CAN bus not up - %1 - press Enable to try again</source>
+        <translation>CAN-Bus nicht bereit - %1 - für neuen Versuch Freigeben drücken</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CAN bus lost - %1 - press Reconnect or Reset, then Enable</source>
+        <translation>CAN-Bus ausgefallen - %1 - Neu verbinden oder Reset drücken, dann Freigeben</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 - bus %2</source>
+        <translation>%1 - Bus %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reconnect refused: the drives are enabled (%1); a reconnection takes their torque away. Abort or stop first.</source>
+        <translation>Neu verbinden abgelehnt: die Antriebe sind freigegeben (%1); ein Neuverbinden nimmt ihnen das Moment. Zuerst abbrechen oder anhalten.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Part counted as good by the operator (%1).</source>
+        <translation>Teil vom Bediener als gut gezählt (%1).</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>path time %1 to %2 s not cut</source>
+        <translation>Bahnzeit %1 bis %2 s nicht geschnitten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>points %1 to %2 (%3 mm) never cut</source>
+        <translation>Punkte %1 bis %2 (%3 mm) nicht geschnitten</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Reset refused: the EMERGENCY STOP is still pressed (Release E-STOP first).</source>
+        <translation>Reset abgelehnt: NOT-HALT ist noch betätigt (zuerst NOT-HALT entriegeln).</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reset: reconnecting the CAN bus; press Enable when it is up (the bus box shows it).</source>
+        <translation>Reset: CAN-Bus wird neu verbunden; Freigeben drücken, sobald er bereit ist (Anzeige im Bus-Feld).</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>EMERGENCY STOP pressed by the operator.</source>
+        <translation>NOT-HALT vom Bediener betätigt.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>EMERGENCY STOP released: press Reset to clear the latch.</source>
+        <translation>NOT-HALT entriegelt: Reset drücken, um den gespeicherten NOT-HALT zu löschen.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Jog refused: axis %1 is at its limit.</source>
+        <translation>Tippen abgelehnt: Achse %1 steht an ihrer Begrenzung.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>emergency stop during the run</source>
+        <translation>NOT-HALT während des Ablaufs</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fault during the run (see the event log)</source>
+        <translation>Störung während des Ablaufs (siehe Ereignisprotokoll)</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::SectionSteelArmsForm</name>
+    <message>
+        <location filename="../../ui/machines/section_steel/section_steel_arms_form.cpp" line="+41"/>
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>min (deg)</source>
+        <translation>min (deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max (deg)</source>
+        <translation>max (deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>park (deg)</source>
+        <translation>Park (deg)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Path arm (3R in the cut plane, joint axes along the bar)</source>
+        <translation>Bahnarm (3R in der Schnittebene, Gelenkachsen längs des Stabs)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Link a%1</source>
+        <translation>Glied a%1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Groove arm (5-DOF, modified DH; bevel head at the nozzle)</source>
+        <translation>Fasenarm (5-achsig, modifiziertes DH; Fasenkopf an der Düse)</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::SectionSteelDrivesForm</name>
+    <message>
+        <location line="+18"/>
+        <source>Simulated drives: a PID on the joint error (torque out, filtered derivative) and a joint plant (inertia, viscous friction, torque limit) per axis. Axes 0..2: path arm, 3..7: groove arm.</source>
+        <translation>Simulierte Antriebe: je Achse ein PID-Regler auf den Gelenkfehler (Ausgang Moment, gefilterter D-Anteil) und eine Gelenkstrecke (Trägheit, viskose Reibung, Momentgrenze). Achsen 0..2: Bahnarm, 3..7: Fasenarm.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Kp (N m/rad)</source>
+        <translation>Kp (N m/rad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ki (N m/(rad s))</source>
+        <translation>Ki (N m/(rad s))</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kd (N m s/rad)</source>
+        <translation>Kd (N m s/rad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>τ_f (s)</source>
+        <translation>τ_f (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>J (kg m²)</source>
+        <translation>J (kg m²)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>b (N m s/rad)</source>
+        <translation>b (N m s/rad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>τ max (N m)</source>
+        <translation>τ max (N m)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Drives</source>
+        <translation>Antriebe</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::SectionSteelEndCutForm</name>
+    <message>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+219"/>
+        <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
+        <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Mitre</source>
+        <translation>Gehrung</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Groove of the flanges (angles: horizontal leg)</source>
+        <translation>Fuge der Flansche (L-Winkel: waagr. Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Groove of the web (angles: vertical leg)</source>
+        <translation>Fuge des Stegs (L-Winkel: senkr. Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>none (square)</source>
+        <translation>keine (rechtwinklig)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Y (with root face)</source>
+        <translation>Y (mit Steg)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>K (double bevel)</source>
+        <translation>K (Doppelfase)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bevel angle</source>
+        <translation>Fasenwinkel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Root face</source>
+        <translation>Steghöhe</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Setup (turning the section over)</source>
+        <translation>Aufspannung (Profil wenden)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>1 - as loaded (underside on the conveyor)</source>
+        <translation>1 - wie aufgelegt (Unterseite auf Rollgang)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>2 - turned over 180° about its long axis</source>
+        <translation>2 - um 180° um die Längsachse gewendet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Setup</source>
+        <translation>Aufspannung</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>end_cut.setup - 1: the section as loaded, its underside on the conveyor: the end is cut and every face the torches reach is bevelled. A K groove (double bevel) on the flanges also needs a bevel on the underside of the bottom flange (angles: the horizontal leg), which lies on the conveyor. After setup 1 the operator turns the section over, 180° about its long axis, and runs setup 2: it cuts only that bevel, on the turned section (a channel&apos;s web and an angle&apos;s vertical leg change sides; the mitres are mirrored in the cell). Setup 2 without a K groove on the flanges has nothing to cut and is refused.</source>
+        <translation>end_cut.setup - 1: das Profil wie aufgelegt, Unterseite auf dem Rollgang: das Ende wird geschnitten und jede für die Brenner erreichbare Fläche angefast. Eine K-Fuge (Doppelfase) an den Flanschen braucht auch eine Fase an der Unterseite des Unterflanschs (L-Winkel: waagr. Schenkel), der auf dem Rollgang liegt. Nach Aufspannung 1 wendet der Bediener das Profil um 180° um seine Längsachse und startet Aufspannung 2: sie schneidet nur diese Fase, am gewendeten Profil (der Steg eines U-Profils und der senkrechte Schenkel eines L-Winkels wechseln die Seite; die Gehrungen werden in der Zelle gespiegelt). Aufspannung 2 ohne K-Fuge an den Flanschen hat nichts zu schneiden und wird abgelehnt.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>No K groove on the flanges: setup 1 cuts the whole end.</source>
+        <translation>Keine K-Fuge an den Flanschen: Aufspannung 1 schneidet das ganze Ende.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setup 2 of 2: the section lies turned over; only the bevel on the underside of the bottom flange (angles: horizontal leg), now on top, is cut.</source>
+        <translation>Aufspannung 2 von 2: das Profil liegt gewendet; nur die Fase an der Unterseite des Unterflanschs (L-Winkel: waagr. Schenkel), jetzt oben, wird geschnitten.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Setup 1 of 2: the underside of the bottom flange (angles: horizontal leg) lies on the conveyor. Then turn the section over and run setup 2.</source>
+        <translation>Aufspannung 1 von 2: die Unterseite des Unterflanschs (L-Winkel: waagr. Schenkel) liegt auf dem Rollgang. Danach das Profil wenden und Aufspannung 2 starten.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::SectionSteelSectionForm</name>
+    <message>
+        <location line="-273"/>
+        <source>L (equal legs)</source>
+        <translation>L (gleichschenklig)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>L (unequal legs)</source>
+        <translation>L (ungleichschenklig)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>User-defined dimensions</source>
+        <translation>Benutzerdefinierte Maße</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The section lies on the cutting table along x, its underside on the table; the end at x = 0 is cut. Catalogue dimensions after EN 10365:2017 (IPE, HEA, HEB, UPN, UPE) and EN 10056-1:2017 (angles); the root radii are drawn and cut.</source>
+        <translation>Das Profil liegt längs x auf dem Schneidtisch, mit der Unterseite auf dem Tisch; das Ende bei x = 0 wird geschnitten. Katalogmaße nach EN 10365:2017 (IPE, HEA, HEB, UPN, UPE) und EN 10056-1:2017 (Winkel); die Ausrundungsradien werden gezeichnet und geschnitten.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Section</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Series</source>
+        <translation>Reihe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Designation</source>
+        <translation>Bezeichnung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>I / H section</source>
+        <translation>I-/H-Profil</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>U channel</source>
+        <translation>U-Profil</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>L angle</source>
+        <translation>L-Winkel</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shape (user-defined)</source>
+        <translation>Form (benutzerdef.)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Height h (L: vertical leg)</source>
+        <translation>Höhe h (L: senkr. Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Width b (L: horizontal leg)</source>
+        <translation>Breite b (L: waagr. Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Web thickness tw (L: leg)</source>
+        <translation>Stegdicke tw (L: Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flange thickness tf (L: leg)</source>
+        <translation>Flanschdicke tf (L: Schenkel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Root radius r</source>
+        <translation>Ausrundung r</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toe radius r2 (U, L)</source>
+        <translation>Kantenradius r2 (U, L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bar length</source>
+        <translation>Stablänge</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>User-defined dimensions: checked against the section&apos;s own limits (the root radius must leave a flat flange).</source>
+        <translation>Benutzerdefinierte Maße: geprüft gegen die Grenzen des Profils (der Ausrundungsradius muss einen ebenen Flansch übrig lassen).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 from the catalogue (%2 shape): the dimensions are the standard&apos;s; choose &quot;User-defined dimensions&quot; to change them.</source>
+        <translation>%1 aus dem Katalog (Form %2): die Maße sind die der Norm; zum Ändern &quot;Benutzerdefinierte Maße&quot; wählen.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::StateLamps</name>
+    <message>
+        <location filename="../../ui/panels/state_lamps.cpp" line="+67"/>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paused</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E-STOP</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torch</source>
+        <translation>Brenner</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::WindowHost</name>
+    <message>
+        <location filename="../../ui/window_host.cpp" line="+34"/>
+        <location line="+7"/>
+        <source>The language was not changed: %1.</source>
+        <translation>Die Sprache wurde nicht gewechselt: %1.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Language: %1.</source>
+        <translation>Sprache: %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The drives were disabled for the change of language: press Enable and Home.</source>
+        <translation>Für den Sprachwechsel wurden die Antriebe gesperrt: Freigeben und Referenzieren drücken.</translation>
+    </message>
+</context>
+<context>
+    <name>GuiLanguage</name>
+    <message>
+        <location filename="../../ui/language.cpp" line="+61"/>
+        <source>System (%1)</source>
+        <translation>System (%1)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>unknown language &quot;%1&quot; (known: en, de)</source>
+        <translation>unbekannte Sprache &quot;%1&quot; (bekannt: en, de)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the %1 catalogue is missing from this build</source>
+        <translation>der Katalog %1 fehlt in diesem Build</translation>
+    </message>
+</context>
+<context>
+    <name>HelpMenu</name>
+    <message>
+        <location filename="../../ui/help_menu.cpp" line="+17"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Keys</source>
+        <translation>&amp;Tasten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Manual</source>
+        <translation>&amp;Handbuch</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;About CutCell</source>
+        <translation>&amp;Über CutCell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About CutCell</source>
+        <translation>Über CutCell</translation>
+    </message>
+</context>
+<context>
+    <name>HelpTexts</name>
+    <message>
+        <location filename="../../ui/help_texts.cpp" line="+38"/>
+        <source>&lt;h3&gt;CutCell operator station %1&lt;/h3&gt;&lt;p&gt;Build: %2 (%3), %4, %5&lt;br&gt;Qt %6 (built with %7)&lt;br&gt;Language: %8&lt;/p&gt;&lt;p&gt;Machines in this build:&lt;/p&gt;&lt;ul&gt;&lt;li&gt;%9&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;The manual (Help &amp;rarr; Manual) is the README&apos;s operator sections of this build.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;CutCell Bedienstation %1&lt;/h3&gt;&lt;p&gt;Build: %2 (%3), %4, %5&lt;br&gt;Qt %6 (gebaut mit %7)&lt;br&gt;Sprache: %8&lt;/p&gt;&lt;p&gt;Maschinen in diesem Build:&lt;/p&gt;&lt;ul&gt;&lt;li&gt;%9&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Das Handbuch (Hilfe &amp;rarr; Handbuch) sind die Bedienabschnitte der README dieses Builds (auf Englisch).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>CutCell manual: the operator station</source>
+        <translation>CutCell-Handbuch: die Bedienstation</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The manual is missing from this build (README.md).</source>
+        <translation>Das Handbuch fehlt in diesem Build (README.md).</translation>
+    </message>
+</context>
+<context>
+    <name>IssueText</name>
+    <message>
+        <location filename="../../ui/forms/issue_text.cpp" line="+25"/>
+        <source>%1 is not a finite number: it must lie in [%2, %3] %4</source>
+        <translation>%1 ist keine endliche Zahl: erlaubt sind %2 bis %3 %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 = %2 %3 is outside [%4, %5] %3</source>
+        <translation>%1 = %2 %3 liegt außerhalb von %4 bis %5 %3</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../../ui/job_import.cpp" line="+17"/>
+        <source>No importer &quot;%1&quot; in this build.</source>
+        <translation>Kein Import &quot;%1&quot; in dieser Version.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Cannot import %1: %2</source>
+        <translation>%1 kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 files (%2);;All files (*)</source>
+        <translation>%1-Dateien (%2);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Import %1...</source>
+        <translation>%1 importieren...</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Import report</source>
+        <translation>Importbericht</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: imported; the job does everything the file asks.</source>
+        <translation>%1: importiert; der Auftrag setzt alles um, was die Datei verlangt.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%1: imported. %n thing(s) of the file the job does not do (also in the event log):</source>
+        <translation>
+            <numerusform>%1: importiert. %n Angabe der Datei setzt der Auftrag nicht um (auch im Ereignisprotokoll):</numerusform>
+            <numerusform>%1: importiert. %n Angaben der Datei setzt der Auftrag nicht um (auch im Ereignisprotokoll):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../../ui/machine/machine_choice.cpp" line="+19"/>
+        <source>New job</source>
+        <translation>Neuer Auftrag</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Machine for the new job:</source>
+        <translation>Maschine für den neuen Auftrag:</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machine/machine_ui_registry.cpp" line="+71"/>
+        <source>Export &amp;G-code...</source>
+        <translation>&amp;G-code exportieren...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export template (SVG)...</source>
+        <translation>Schablone exportieren (SVG)...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export template (PDF)...</source>
+        <translation>Schablone exportieren (PDF)...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>G-code (*.ngc *.nc *.gcode)</source>
+        <translation>G-code (*.ngc *.nc *.gcode)</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machine_exports.cpp" line="+22"/>
+        <source>Export to %1 failed: %2</source>
+        <translation>Export nach %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no machine module for machine = &quot;%1&quot;</source>
+        <translation>kein Maschinenmodul für machine = &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the %1 offers no &quot;%2&quot; export</source>
+        <translation>die Maschine %1 bietet keinen Export &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>paper &quot;%1&quot; is not single, A4 or A3</source>
+        <translation>Papier &quot;%1&quot; ist weder single, A4 noch A3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>cutting template (%1, 1:1): %2 x %3 mm</source>
+        <translation>Schneidschablone (%1, 1:1): %2 x %3 mm</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source> on %1 sheets of %2 %3 (%4 x %5)</source>
+        <translation> auf %1 Blatt %2 %3 (%4 x %5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>landscape</source>
+        <translation>quer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>portrait</source>
+        <translation>hoch</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Exported %1 to %2</source>
+        <translation>%1 nach %2 exportiert</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Export to %1 refused: the job has invalid fields.</source>
+        <translation>Export nach %1 abgelehnt: der Auftrag hat ungültige Felder.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>&amp;Single sheet (template size)...</source>
+        <translation>&amp;Einzelblatt (Schablonengröße)...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A&amp;4 tiles (1:1, alignment crosses)...</source>
+        <translation>A&amp;4-Kacheln (1:1, Passkreuze)...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A&amp;3 tiles (1:1, alignment crosses)...</source>
+        <translation>A&amp;3-Kacheln (1:1, Passkreuze)...</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Export cut</source>
+        <translation>Schnitt &amp;exportieren</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/flying_saw/flying_saw_ui.cpp" line="+22"/>
+        <source>Flying saw on a welded-pipe line (carriage, turntable, 2 blade feeds)</source>
+        <translation>Fliegende Säge an einer Rohrschweißanlage (Wagen, Drehtisch, 2 Blattvorschübe)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Tube &amp;&amp; line</source>
+        <translation>Rohr &amp;&amp; Anlage</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Carriage &amp;&amp; saw</source>
+        <translation>Wagen &amp;&amp; Säge</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cycle &amp;&amp; cuts</source>
+        <translation>Zyklus &amp;&amp; Schnitte</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The flying saw cuts the tube of its line across: its tube, line and lengths are set on the Tube &amp; line page.</source>
+        <translation>Die fliegende Säge trennt das Rohr ihrer Anlage quer: Rohr, Anlage und Längen werden auf der Seite Rohr &amp; Anlage eingestellt.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+71"/>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+92"/>
+        <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="+49"/>
+        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+50"/>
+        <source>3D view not built in this configuration.</source>
+        <translation>3D-Ansicht in dieser Konfiguration nicht enthalten.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="-22"/>
+        <source>Static pipe: the chuck holds the pipe at a fixed angle and the arm follows the whole saddle curve around it.</source>
+        <translation>Stehendes Rohr: das Futter hält das Rohr unter festem Winkel, und der Arm fährt die gesamte Sattelkurve um das Rohr ab.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rotating pipe: the chuck turns the pipe so that the cut point stays on top; the torch moves on a short straight line.</source>
+        <translation>Drehendes Rohr: das Futter dreht das Rohr so, dass der Schnittpunkt oben bleibt; der Brenner fährt auf einer kurzen Geraden.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-53"/>
+        <source>Pipe-cutting robot: 5-DOF arm + pipe chuck (6 axes)</source>
+        <translation>Rohrschneidroboter: 5-achsiger Arm + Rohrfutter (6 Achsen)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Method</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Robot</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="-24"/>
+        <source>Controller</source>
+        <translation>Regler</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).</source>
+        <translation>%1 Punkte geplant, %2 mm in %3 s (max. Brennerneigung %4 deg).</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="-66"/>
+        <source>2-axis NC pipe profile cutter: chuck A + carriage X</source>
+        <translation>2-Achs-NC-Rohrprofilschneidmaschine: Futter A + Wagen X</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Profile cutter</source>
+        <translation>Profilschneider</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The profile cutter&apos;s torch stands radial: no bevel.</source>
+        <translation>Der Brenner des Profilschneiders steht radial: keine Fase.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The profile cutter&apos;s torch never tilts: no deviation limit.</source>
+        <translation>Der Brenner des Profilschneiders neigt sich nie: keine Abweichungsgrenze.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>G-code (X/A): %1 moves, %2 mm developed, %3 s</source>
+        <translation>G-code (X/A): %1 Bewegungen, %2 mm abgewickelt, %3 s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Profile cutter: %1 points, %2 mm in %3 s.</source>
+        <translation>Profilschneider: %1 Punkte, %2 mm in %3 s.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="-7"/>
+        <source>Quick-return (Whitworth) cutter: crank in torque mode</source>
+        <translation>Schnellrücklauf-Schneidmaschine (Whitworth): Kurbel in Momentenregelung</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Mechanism</source>
+        <translation>Mechanik</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cut figures</source>
+        <translation>Schnittdiagramme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Experiment 1</source>
+        <translation>Versuch 1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The quick-return cutter planes a flat workpiece along its stroke: no pipes, its cut is set on the Mechanism page.</source>
+        <translation>Die Schnellrücklauf-Maschine hobelt ein flaches Werkstück entlang ihres Hubs: keine Rohre, ihr Schnitt wird auf der Seite Mechanik eingestellt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="-33"/>
+        <source>Section-steel cutter (3R path arm + 5-DOF groove arm)</source>
+        <translation>Profilstahl-Schneidanlage (3R-Bahnarm + 5-achsiger Fasenarm)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Section</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>End cut</source>
+        <translation>Endschnitt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Motion &amp;&amp; arms</source>
+        <translation>Bewegung &amp;&amp; Arme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Drives</source>
+        <translation>Antriebe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The section-steel cutter cuts the end of a structural section: no pipes; its section, cut and speed are set on the Section, End cut and Motion pages.</source>
+        <translation>Die Profilstahl-Schneidanlage schneidet das Ende eines Stahlprofils: keine Rohre; Profil, Schnitt und Geschwindigkeit werden auf den Seiten Profil, Endschnitt und Bewegung eingestellt.</translation>
+    </message>
+    <message>
+        <location filename="../../ui/panels/alarm_panel.cpp" line="-238"/>
+        <source>active, ack.</source>
+        <translation>aktiv, quitt.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ACTIVE</source>
+        <translation>AKTIV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>past, ack.</source>
+        <translation>gegangen, quitt.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>past</source>
+        <translation>gegangen</translation>
+    </message>
+    <message>
+        <location filename="../../app/gui/main.cpp" line="+159"/>
+        <source>Cannot open the job</source>
+        <translation>Auftrag kann nicht geöffnet werden</translation>
+    </message>
+</context>
+<context>
+    <name>RunWords</name>
+    <message>
+        <location filename="../../ui/panels/run_words.cpp" line="+25"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parts</source>
+        <translation>Teile</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pierce</source>
+        <translation>Einstich</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pierces</source>
+        <translation>Einstiche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Piece</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>piece</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <location line="+1"/>
+        <source>pieces</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Pieces</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stroke</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>stroke</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <location line="+1"/>
+        <source>strokes</source>
+        <translation>Hübe</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Strokes</source>
+        <translation>Hübe</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>torch</source>
+        <translation>Brenner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saw</source>
+        <translation>Säge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutter</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Idle</source>
+        <translation>Inaktiv</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Homing</source>
+        <translation>Referenzieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Jogging</source>
+        <translation>Tippen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Running</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Feed hold</source>
+        <translation>Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Completed</source>
+        <translation>Beendet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Emergency stop</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>point %1 / %2, %3 of %4 mm</source>
+        <translation>Punkt %1 / %2, %3 von %4 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 %2 of %3, %4 %5 made</source>
+        <translation>%1 %2 von %3, %4 %5 erledigt</translation>
+    </message>
+</context>
+<context>
+    <name>SectionField</name>
+    <message>
+        <location filename="core_labels.cpp" line="+6"/>
+        <source>Tube</source>
+        <translation>Rohr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diameter D</source>
+        <translation>Durchmesser D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Width a (across)</source>
+        <translation>Breite a (waagr.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Height b (up)</source>
+        <translation>Höhe b (senkr.)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Corner radius r</source>
+        <translation>Eckenradius r</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wall</source>
+        <translation>Wandstärke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Line speed</source>
+        <translation>Liniengeschw.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roller encoder</source>
+        <translation>Rollengeber</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roller diameter</source>
+        <translation>Rollendurchmesser</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Master filter gain α</source>
+        <translation>Leitachs-Filterfaktor α</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Queue of lengths</source>
+        <translation>Schnittliste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length tolerance ±</source>
+        <translation>Längentoleranz ±</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First sync-in at</source>
+        <translation>1. Gleichlauf bei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stroke</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed limit</source>
+        <translation>Max. Geschw.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Acceleration limit</source>
+        <translation>Max. Beschleunigung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jerk limit</source>
+        <translation>Max. Ruck</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wait position</source>
+        <translation>Warteposition</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Settle C → D</source>
+        <translation>Einschwingen C → D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fast feed (in air)</source>
+        <translation>Eilvorschub (in Luft)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slow feed (through the wall)</source>
+        <translation>Schnittvorschub (durch die Wand)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fast feed stops before the tube</source>
+        <translation>Eilvorschub endet vor dem Rohr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overcut past the bore</source>
+        <translation>Überschnitt in die Bohrung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retracted clearance</source>
+        <translation>Abstand in Rückzugslage</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retract speed</source>
+        <translation>Rückzugsgeschw.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Turntable speed</source>
+        <translation>Drehtellergeschw.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Turntable acceleration</source>
+        <translation>Drehtellerbeschleunigung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cam table points</source>
+        <translation>Punkte Kurventabelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kerf</source>
+        <translation>Schnittbreite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed</source>
+        <translation>Drehzahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length gauge</source>
+        <translation>Längenmessung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gauge delay</source>
+        <translation>Messverzug</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gauge noise ±</source>
+        <translation>Messrauschen ±</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Correction gain</source>
+        <translation>Korrekturfaktor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed wander</source>
+        <translation>Geschw.-Schwankung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wander frequency</source>
+        <translation>Schwankungsfrequenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed step</source>
+        <translation>Geschw.-Sprung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean time between steps</source>
+        <translation>Mittlerer Sprungabstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step ramp</source>
+        <translation>Sprungrampe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reading noise ±</source>
+        <translation>Geberrauschen ±</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Roller slip</source>
+        <translation>Rollenschlupf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Random seed</source>
+        <translation>Zufallsstartwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rocker pivot O3x</source>
+        <translation>Schwingenlager O3x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rocker pivot O3y</source>
+        <translation>Schwingenlager O3y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Crank r2</source>
+        <translation>Kurbel r2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A to B on the rocker (AB)</source>
+        <translation>A bis B auf der Schwinge (AB)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Link r4</source>
+        <translation>Koppel r4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slider line Dx</source>
+        <translation>Schieberbahn Dx</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale offset</source>
+        <translation>Maßstabsoffset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slider mass m5</source>
+        <translation>Schiebermasse m5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale resolution</source>
+        <translation>Maßstabsauflösung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Crank inertia</source>
+        <translation>Kurbelträgheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rocker inertia</source>
+        <translation>Schwingenträgheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Viscous friction</source>
+        <translation>Viskose Reibung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coulomb friction</source>
+        <translation>Coulomb-Reibung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torque limit</source>
+        <translation>Momentgrenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Workpiece length L_d</source>
+        <translation>Werkstücklänge L_d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stroke L_c</source>
+        <translation>Hub L_c</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cutting velocity v</source>
+        <translation>Schnittgeschw. v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Contact force</source>
+        <translation>Kontaktkraft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Strokes</source>
+        <translation>Hübe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return torque, first half</source>
+        <translation>Rücklaufmoment, 1. Hälfte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return torque, second half</source>
+        <translation>Rücklaufmoment, 2. Hälfte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ω</source>
+        <translation>ω</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MSE window</source>
+        <translation>MSE-Fenster</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MSE scale L</source>
+        <translation>MSE-Faktor L</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controller</source>
+        <translation>Regler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sample time</source>
+        <translation>Abtastzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jacobian</source>
+        <translation>Jacobi-Matrix</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>K_ρ</source>
+        <translation>K_ρ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model slider mass</source>
+        <translation>Schiebermasse Modell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disturbance amplitude</source>
+        <translation>Störamplitude</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disturbance frequency</source>
+        <translation>Störfrequenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ω_n²</source>
+        <translation>ω_n²</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ξ</source>
+        <translation>ξ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>q1</source>
+        <translation>q1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>q2</source>
+        <translation>q2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>c</source>
+        <translation>c</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>η</source>
+        <translation>η</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>φ</source>
+        <translation>φ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>q11</source>
+        <translation>q11</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>q12</source>
+        <translation>q12</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>q22</source>
+        <translation>q22</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>λ</source>
+        <translation>λ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>k1</source>
+        <translation>k1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>k2</source>
+        <translation>k2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About the vertical axis (z)</source>
+        <translation>Um die senkrechte Achse (z)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About the horizontal axis (y)</source>
+        <translation>Um die waagrechte Achse (y)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flange groove</source>
+        <translation>Fuge Flansch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flange bevel angle</source>
+        <translation>Fasenwinkel Flansch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flange root face</source>
+        <translation>Steghöhe Flansch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Web groove</source>
+        <translation>Fuge Steg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Web bevel angle</source>
+        <translation>Fasenwinkel Steg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Web root face</source>
+        <translation>Steghöhe Steg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Setup</source>
+        <translation>Aufspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cutting speed along the outline</source>
+        <translation>Schnittgeschw. entlang der Kontur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramp to and from the speed</source>
+        <translation>Anfahr-/Bremsrampe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Knot spacing</source>
+        <translation>Stützpunktabstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torch turn at the toes</source>
+        <translation>Brennerschwenk an Kanten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bevel blend per face</source>
+        <translation>Fasenübergang je Fläche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torch length (collision check)</source>
+        <translation>Brennerlänge (Kollisionsprüfung)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torch body radius</source>
+        <translation>Radius Brennerkörper</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest lean along the cut edge</source>
+        <translation>Max. Neigung längs der Schnittkante</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base y</source>
+        <translation>Basis y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base z (above the table)</source>
+        <translation>Basis z (über dem Tisch)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Path arm links</source>
+        <translation>Glieder Bahnarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Path arm joint limits</source>
+        <translation>Gelenkgrenzen Bahnarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base x (past the cut)</source>
+        <translation>Basis x (hinter Schnitt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Base z</source>
+        <translation>Basis z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Groove arm joint limits</source>
+        <translation>Gelenkgrenzen Fasenarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Park position</source>
+        <translation>Parkposition</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drives</source>
+        <translation>Antriebe</translation>
+    </message>
+</context>
+<context>
+    <name>SectionUnit</name>
+    <message>
+        <location line="+1"/>
+        <source>pulses/rev</source>
+        <translation>Imp./U</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pieces</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>strokes</source>
+        <translation>Hübe</translation>
+    </message>
+</context>
+<context>
+    <name>cutcell::plots::TrackingPlotsWidget</name>
+    <message>
+        <location filename="../../plots/tracking_plots_widget.cpp" line="+211"/>
+        <source>error (%1)</source>
+        <translation>Schleppfehler (%1)</translation>
+    </message>
+    <message>
+        <location line="+137"/>
+        <source>%1 samples, %2 dropped</source>
+        <translation>%1 Messwerte, %2 verworfen</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Freeze the plots; data keeps being recorded</source>
+        <translation>Diagramme einfrieren; die Daten werden weiter aufgezeichnet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Autoscale both plots and follow the data</source>
+        <translation>Beide Diagramme automatisch skalieren und den Daten folgen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Legend</source>
+        <translation>Legende</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show or hide the trace names above the plots</source>
+        <translation>Kurvennamen über den Diagrammen ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Export PNG...</source>
+        <translation>PNG exportieren...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export plots as PNG</source>
+        <translation>Diagramme als PNG exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export PNG</source>
+        <translation>PNG exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export CSV...</source>
+        <translation>CSV exportieren...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export errors as CSV</source>
+        <translation>Schleppfehler als CSV exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export CSV</source>
+        <translation>CSV exportieren</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cartesian error (mm)</source>
+        <translation>Kartesischer Fehler (mm)</translation>
+    </message>
+    <message>
+        <location line="+159"/>
+        <source>Cannot write the PNG file &apos;%1&apos;: %2</source>
+        <translation>PNG-Datei &apos;%1&apos; kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+26"/>
+        <source>Cannot write the CSV file &apos;%1&apos;: %2</source>
+        <translation>CSV-Datei &apos;%1&apos; kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>cutcell::ui::DevicePanel</name>
+    <message>
+        <location filename="../../ui/device_panel.cpp" line="+22"/>
+        <source>Simulated drives (in-process)</source>
+        <translation>Simulierte Antriebe (intern)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CANopen CiA 402 drives</source>
+        <translation>Antriebe CANopen CiA 402</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Qt CAN plugin: socketcan on a real bus, virtualcan for tests</source>
+        <translation>Qt-CAN-Plugin: socketcan am realen Bus, virtualcan für Tests</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+10"/>
+        <source>Bit rate</source>
+        <translation>Bitrate</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source> kbit/s</source>
+        <translation> kbit/s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Drives</source>
+        <translation>Antriebe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN plugin</source>
+        <translation>CAN-Plugin</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Interface</source>
+        <translation>Schnittstelle</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bus: -</source>
+        <translation>Bus: -</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load: -</source>
+        <translation>Buslast: -</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>NMT</source>
+        <translation>NMT</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CiA 402</source>
+        <translation>CiA 402</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Heartbeat</source>
+        <translation>Heartbeat</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Last EMCY</source>
+        <translation>Letzte EMCY</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Fault reset</source>
+        <translation>Störungsreset</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Bus: none (simulated in-process drives)</source>
+        <translation>Bus: keiner (simulierte interne Antriebe)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bus: %1</source>
+        <translation>Bus: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Load: %1 %</source>
+        <translation>Buslast: %1 %</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>none</source>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>cutcell::view3d::CellView</name>
+    <message>
+        <location filename="../../ui/view3d/cell_view.cpp" line="+67"/>
+        <source>Iso</source>
+        <translation>Iso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Front</source>
+        <translation>Vorne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Top</source>
+        <translation>Oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Follow tool</source>
+        <translation>Werkzeug folgen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reset view</source>
+        <translation>Grundansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Back to the iso view of the whole cell</source>
+        <translation>Zurück zur Iso-Ansicht der ganzen Zelle</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>3D view unavailable: no OpenGL on this platform (offscreen)</source>
+        <translation>3D-Ansicht nicht verfügbar: kein OpenGL auf dieser Plattform (offscreen)</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,287 @@
+// Issue 21: the GUI in German and English (Qt Linguist catalogue, ui/language.h), switched from
+// the Language menu without losing the job (ui/window_host.h), and Help -> About / Manual.
+#include "sim_rig.h"
+
+#include "main_window_run.h"
+#include "ui/build_info.h"
+#include "ui/forms/job_editor.h"
+#include "ui/forms/number_fields.h"
+#include "ui/forms/parameter_tabs.h"
+#include "ui/help_texts.h"
+#include "ui/job_document.h"
+#include "ui/language.h"
+#include "ui/machine/machine_ui_registry.h"
+#include "ui/main_window.h"
+#include "ui/panels/control_panel.h"
+#include "ui/panels/event_log_panel.h"
+#include "ui/window_host.h"
+
+#include "core/job/default_job.h"
+#include "core/job/job_io.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QDialog>
+#include <QFile>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QImage>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTextBrowser>
+#include <QTextDocument>
+#include <QtTest>
+
+using CutCell::ui::MainWindow;
+
+namespace {
+
+// Every text a widget of the window shows or tells (labels, buttons, group titles, tabs,
+// table headers, combo items, menus, tooltips), in the order the widgets were made.
+QStringList shownTexts(const MainWindow& w) {
+    QStringList out;
+    auto add = [&out](const QString& t) {
+        QTextDocument d;
+        d.setHtml(t);
+        const QString plain = Qt::mightBeRichText(t) ? d.toPlainText() : t;
+        out << plain.simplified();
+    };
+    for (const QWidget* c : w.findChildren<QWidget*>()) {
+        if (auto* l = qobject_cast<const QLabel*>(c)) add(l->text());
+        if (auto* b = qobject_cast<const QAbstractButton*>(c)) add(b->text());
+        if (auto* g = qobject_cast<const QGroupBox*>(c)) add(g->title());
+        if (auto* t = qobject_cast<const QTabWidget*>(c))
+            for (int i = 0; i < t->count(); ++i)
+                add(t->tabText(i));
+        if (auto* t = qobject_cast<const QTableWidget*>(c))
+            for (int i = 0; i < t->columnCount(); ++i)
+                if (t->horizontalHeaderItem(i)) add(t->horizontalHeaderItem(i)->text());
+        if (auto* cb = qobject_cast<const QComboBox*>(c))
+            for (int i = 0; i < cb->count(); ++i)
+                add(cb->itemText(i));
+        add(c->toolTip());
+    }
+    for (const QMenu* m : w.menuBar()->findChildren<QMenu*>()) {
+        add(m->title());
+        for (const QAction* a : m->actions())
+            add(a->text());
+    }
+    return out;
+}
+
+// A text the same in both languages that is a sentence or a label an operator reads: a word of
+// four or more letters that is none of the names both languages share.
+bool readsAsEnglish(const QString& text) {
+    static const QStringList shared = {
+        // units, formats, buses and names that German keeps
+        "deg",     "rpm",      "JSON",      "CSV",       "PNG",        "SVG",       "PDF",
+        "G-code",  "DSTV",     "CANopen",   "SocketCAN", "virtualcan", "Override",  "Start",
+        "Reset",   "Jacobian", "Whitworth", "English",   "Deutsch",    "System",    "Experiment",
+        "CutCell", "Pitch",    "Status",    "Name",      "Info",       "Heartbeat", "Alarm",
+        "Pause",   "json",     "alpha",     "Offset",    "Amplitude"};
+    // The machines' axis names are names ("chuck (theta0)", "groove θ2"), as in the papers.
+    if (text.contains(QStringLiteral("theta")) || text.contains(QChar(0x03B8))) return false;
+    static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
+    for (auto it = word.globalMatch(text); it.hasNext();) {
+        const QString m = it.next().captured();
+        if (!shared.contains(m)) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+class TestGuiLanguage : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+
+  private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().remove("ui/language");
+        QVERIFY(dir_.isValid());
+    }
+    void cleanup() { QVERIFY(CutCell::ui::applyGuiLanguage("en")); }
+
+    // The German catalogue is in the binary and reaches the window's texts and numbers.
+    void germanWindowSpeaksGerman() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        QCOMPARE(CutCell::ui::shownLanguage(), QStringLiteral("de"));
+        MainWindow w(&cutcell::app::makeRig);
+        QVERIFY2(w.controls()->eStopButton()->text().startsWith("NOT-HALT"),
+                 qPrintable(w.controls()->eStopButton()->text()));
+        QCOMPARE(w.menuBar()->actions().front()->text(), QStringLiteral("&Datei"));
+        QCOMPARE(QLocale().decimalPoint(), QStringLiteral(","));
+        auto* speed = qobject_cast<QAbstractSpinBox*>(w.parameters()->fieldFor("cut.speed_mm_s"));
+        QVERIFY(speed);
+        QVERIFY2(speed->text().contains(','), qPrintable(speed->text()));
+        // Qt's own texts follow (qt6-translations-l10n): the dialogs' buttons.
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"),
+                 QStringLiteral("Abbrechen"));
+    }
+
+    // A language the build has no catalogue for is refused with its name; English stays.
+    void unknownLanguageIsRefused() {
+        QString why;
+        QVERIFY(!CutCell::ui::applyGuiLanguage("fr", &why));
+        QVERIFY2(why.contains("fr") && why.contains("de"), qPrintable(why));
+        QCOMPARE(CutCell::ui::shownLanguage(), QStringLiteral("en"));
+    }
+
+    // The Language menu rebuilds the window in German with the job as it was: the file, the
+    // unsaved edit, the modified mark and the tab; the choice is remembered.
+    void switchingKeepsTheJob() {
+        const QString path = dir_.filePath("job.json");
+        cutcell::saveJobFile(cutcell::defaultJob(), path.toStdString());
+        CutCell::ui::WindowHost host(&cutcell::app::makeRig);
+        MainWindow* before = host.window();
+        QString error;
+        QVERIFY2(before->openJob(path, &error), qPrintable(error));
+        before->editor()->edit([](cutcell::Job& j) {
+            j.cut.speed_mm_s = 33.5;
+            j.description = "edited, not saved";
+        });
+        before->parameters()->tabs()->setCurrentIndex(2);
+        QVERIFY(before->document()->modified());
+        before->show();
+
+        QString why;
+        QVERIFY2(host.changeLanguage("de", &why), qPrintable(why));
+        MainWindow* after = host.window();
+        QVERIFY(after != before);
+        QVERIFY(after->isVisible());
+        QVERIFY2(after->controls()->eStopButton()->text().startsWith("NOT-HALT"),
+                 qPrintable(after->controls()->eStopButton()->text()));
+        QCOMPARE(after->editor()->job().cut.speed_mm_s, 33.5);
+        QCOMPARE(after->editor()->job().description, std::string("edited, not saved"));
+        QVERIFY(after->document()->modified());
+        QCOMPARE(after->document()->path(), QFileInfo(path).absoluteFilePath());
+        QCOMPARE(after->parameters()->tabs()->currentIndex(), 2);
+        auto* speed =
+            qobject_cast<QAbstractSpinBox*>(after->parameters()->fieldFor("cut.speed_mm_s"));
+        QVERIFY2(speed->text().startsWith("33,5"), qPrintable(speed->text()));
+        QCOMPARE(QSettings().value("ui/language").toString(), QStringLiteral("de"));
+        // The file on disk is untouched (C notation, the saved values).
+        QCOMPARE(cutcell::loadJobFile(path.toStdString()).cut.speed_mm_s,
+                 cutcell::defaultJob().cut.speed_mm_s);
+
+        QVERIFY2(host.changeLanguage("en", &why), qPrintable(why));
+        QVERIFY2(host.window()->controls()->eStopButton()->text().startsWith("EMERGENCY"),
+                 qPrintable(host.window()->controls()->eStopButton()->text()));
+        QCOMPARE(host.window()->editor()->job().cut.speed_mm_s, 33.5);
+        QSettings().remove("ui/language");
+    }
+
+    // While the machine moves the window stays as it is (no rebuild under a running cut),
+    // and the log says why.
+    void noSwitchWhileTheMachineMoves() {
+        QTemporaryDir runs;
+        CutCell::ui::WindowHost host(&cutcell::app::makeRig);
+        MainWindow* w = host.window();
+        auto job = cutcell::defaultJob();
+        job.sim.duration_s = 6;
+        job.engine.runs_dir = runs.path().toStdString();
+        w->editor()->setJob(job);
+        w->show();
+        startManually(*w);
+        QTRY_VERIFY2_WITH_TIMEOUT(state(*w) == cutcell::EngineState::Running,
+                                  cutcell::toString(state(*w)), 10000);
+        QString why;
+        QVERIFY(!host.changeLanguage("de", &why));
+        QVERIFY2(why.contains("moving"), qPrintable(why));
+        QCOMPARE(host.window(), w);
+        QVERIFY2(lastLog(*w).contains("The language was not changed"), qPrintable(lastLog(*w)));
+        QVERIFY(w->controls()->eStopButton()->text().startsWith("EMERGENCY"));
+        w->run()->emergencyStop();
+        QTRY_VERIFY2_WITH_TIMEOUT(state(*w) == cutcell::EngineState::EmergencyStop,
+                                  cutcell::toString(state(*w)), 5000);
+        QVERIFY(!host.changeLanguage("de", &why));
+        QVERIFY2(why.contains("first"), qPrintable(why));
+    }
+
+    // Each text the German window shows that reads as English in both windows is a text
+    // without tr() or with a context the catalogue does not know: none may be left.
+    void everyShownTextIsTranslated() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        MainWindow english(nullptr);
+        const QStringList en = shownTexts(english);
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        MainWindow german(nullptr);
+        const QStringList de = shownTexts(german);
+        QCOMPARE(de.size(), en.size());
+        QStringList untranslated;
+        for (int i = 0; i < en.size(); ++i)
+            if (!en[i].isEmpty() && en[i] == de[i] && readsAsEnglish(en[i]) &&
+                !untranslated.contains(en[i]))
+                untranslated << en[i];
+        for (const QString& t : untranslated)
+            qWarning("the same in German: %s", qPrintable(t));
+        QVERIFY2(untranslated.isEmpty(), qPrintable(QString("%1 texts the same in German:\n%2")
+                                                        .arg(untranslated.size())
+                                                        .arg(untranslated.join("\n"))));
+        QVERIFY(en.size() > 300); // the window was walked, not an empty one
+    }
+
+    // Help -> About names the version, the build's commit and every machine.
+    void aboutNamesTheBuildAndTheMachines() {
+        const QString about = CutCell::ui::aboutText();
+        QVERIFY2(about.contains(QString::fromUtf8(CutCell::ui::buildCommit())), qPrintable(about));
+        QVERIFY(QString::fromUtf8(CutCell::ui::buildCommit()) != "");
+        QVERIFY2(about.contains(QString::fromUtf8(qVersion())), qPrintable(about));
+        for (const auto* m : CutCell::ui::machineUis())
+            QVERIFY2(about.contains(m->title().toHtmlEscaped()), qPrintable(m->title()));
+    }
+
+    // Help -> Manual is the README's operator section of this build, offline: its pictures
+    // come from the binary, the developers' sections stay out.
+    void manualIsTheReadmesOperatorSection() {
+        const QString manual = CutCell::ui::builtInManual();
+        QFile readme(QStringLiteral(CUTCELL_SOURCE_DIR "/README.md"));
+        QVERIFY(readme.open(QIODevice::ReadOnly));
+        const QString source = QString::fromUtf8(readme.readAll());
+        // Every paragraph of the README's operator section is in the manual, word for word.
+        const qsizetype from = source.indexOf("\n## The operator station");
+        const qsizetype to = source.indexOf("\n## ", from + 5);
+        QVERIFY(from > 0 && to > from);
+        for (const QString& para : source.mid(from, to - from).split("\n\n"))
+            QVERIFY2(manual.contains(para.trimmed()), qPrintable(para.left(80)));
+        QVERIFY(manual.contains("## Flying saw"));         // a machine's "In the GUI"
+        QVERIFY(!manual.contains("## The motion engine")); // the developers' sections stay
+        QVERIFY(!manual.contains("## Set-up"));
+        static const QRegularExpression image(QStringLiteral("!\\[[^\\]]*\\]\\(([^)]+)\\)"));
+        int images = 0;
+        for (auto it = image.globalMatch(manual); it.hasNext(); ++images) {
+            const QString file = CutCell::ui::manualImageRoot() + "/" + it.next().captured(1);
+            QVERIFY2(!QImage(file).isNull(), qPrintable(file + " is not in the binary"));
+        }
+        QVERIFY(images >= 3);
+        // The window shows it.
+        MainWindow w(nullptr);
+        QDialog* window = CutCell::ui::makeManualWindow(&w);
+        window->show();
+        auto* text = window->findChild<QTextBrowser*>("manualText");
+        QVERIFY(text);
+        QVERIFY(text->toPlainText().contains("EMERGENCY STOP"));
+        window->close();
+    }
+
+    // No menu takes F1: it is the EMERGENCY STOP's (Help's usual key included).
+    void noMenuTakesF1() {
+        MainWindow w(nullptr);
+        for (const QAction* a : w.menuBar()->findChildren<QAction*>())
+            QVERIFY2(a->shortcut() != QKeySequence(Qt::Key_F1), qPrintable(a->text()));
+        QVERIFY(w.menuBar()->findChild<QMenu*>("languageMenu"));
+        QVERIFY(w.menuBar()->findChild<QMenu*>("helpMenu"));
+    }
+};
+
+QTEST_MAIN(TestGuiLanguage)
+#include "test_gui_language.moc"
