@@ -257,7 +257,7 @@ STOP  [%1]</source>
     <message>
         <location line="+1"/>
         <source>Home</source>
-        <translation>Referenzieren</translation>
+        <translation>Referenz</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -267,7 +267,7 @@ STOP  [%1]</source>
     <message>
         <location line="+2"/>
         <source>Feed hold</source>
-        <translation>Vorschub halt</translation>
+        <translation>Halt</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2621,7 +2621,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::SectionSteelEndCutForm</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+219"/>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+223"/>
         <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
         <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
     </message>
@@ -2861,7 +2861,7 @@ entriegeln</translation>
         <translation>Die Sprache wurde nicht gewechselt: %1.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Language: %1.</source>
         <translation>Sprache: %1.</translation>
     </message>
@@ -2879,7 +2879,7 @@ entriegeln</translation>
         <translation>System (%1)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>unknown language &quot;%1&quot; (known: en, de)</source>
         <translation>unbekannte Sprache &quot;%1&quot; (bekannt: en, de)</translation>
     </message>
@@ -2897,7 +2897,7 @@ entriegeln</translation>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -2912,7 +2912,7 @@ entriegeln</translation>
         <translation>Tasten</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>&amp;Manual</source>
         <translation>&amp;Handbuch</translation>
     </message>
@@ -2930,12 +2930,12 @@ entriegeln</translation>
 <context>
     <name>HelpTexts</name>
     <message>
-        <location filename="../../ui/help_texts.cpp" line="+38"/>
+        <location filename="../../ui/help_texts.cpp" line="+40"/>
         <source>&lt;h3&gt;CutCell operator station %1&lt;/h3&gt;&lt;p&gt;Build: %2 (%3), %4, %5&lt;br&gt;Qt %6 (built with %7)&lt;br&gt;Language: %8&lt;/p&gt;&lt;p&gt;Machines in this build:&lt;/p&gt;&lt;ul&gt;&lt;li&gt;%9&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;The manual (Help &amp;rarr; Manual) is the README&apos;s operator sections of this build.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;CutCell Bedienstation %1&lt;/h3&gt;&lt;p&gt;Build: %2 (%3), %4, %5&lt;br&gt;Qt %6 (gebaut mit %7)&lt;br&gt;Sprache: %8&lt;/p&gt;&lt;p&gt;Maschinen in diesem Build:&lt;/p&gt;&lt;ul&gt;&lt;li&gt;%9&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Das Handbuch (Hilfe &amp;rarr; Handbuch) sind die Bedienabschnitte der README dieses Builds (auf Englisch).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+60"/>
         <source>CutCell manual: the operator station</source>
         <translation>CutCell-Handbuch: die Bedienstation</translation>
     </message>
@@ -4050,7 +4050,7 @@ entriegeln</translation>
         <translation>Schleppfehler (%1)</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+136"/>
         <source>%1 samples, %2 dropped</source>
         <translation>%1 Messwerte, %2 verworfen</translation>
     </message>

@@ -118,11 +118,11 @@ INSTANTIATE_TEST_SUITE_P(
             {"|eccentricity_mm| + branch radius = 64.15 mm", "<= main_pipe.radius_mm = 57.15 mm"}},
         BadValue{"angle_deg", 0, {"angle_deg = 0 deg", "[0.1, 90] deg"}},
         BadValue{"angle_deg", 95, {"angle_deg = 95 deg", "[0.1, 90] deg"}},
-        BadValue{"main_pipe.wall_mm", -1, {"main_pipe.wall_mm = -1 mm", "> 0 mm"}},
+        BadValue{"main_pipe.wall_mm", -1, {"main_pipe.wall_mm = -1 mm", "outside [0.1, 500] mm"}},
         BadValue{"branch_pipe.wall_mm",
                  30,
                  {"branch_pipe.wall_mm = 30 mm", "less than branch_pipe.radius_mm = 24.15 mm"}},
-        BadValue{"cut.speed_mm_s", 0, {"cut.speed_mm_s = 0 mm/s", "> 0 mm/s"}},
+        BadValue{"cut.speed_mm_s", 0, {"cut.speed_mm_s = 0 mm/s", "outside [0.1, 500] mm/s"}},
         BadValue{"cut.bevel_deg", 75, {"cut.bevel_deg = 75 deg", "[-60, 60] deg"}},
         BadValue{"sim.period_s", 0.5, {"sim.period_s = 0.5 s", "[0.0001, 0.02] s"}},
         BadValue{"sim.duration_s", -3, {"sim.duration_s = -3 s", "[0.1, 3600] s"}}));
@@ -166,7 +166,8 @@ TEST(Job, StructuralErrorsAreNamed) {
         parseJob(json::write(doc));
         FAIL();
     } catch (const JobError& e) {
-        EXPECT_NE(std::string(e.what()).find("missing required section machine.cut"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("missing required section machine.cut"),
+                  std::string::npos);
     }
     try {
         parseJob("{ \"schema\": 1, ");

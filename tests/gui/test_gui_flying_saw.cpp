@@ -134,7 +134,9 @@ class TestGuiFlyingSaw : public QObject {
         QVERIFY(message);
         QTRY_VERIFY(message->isVisibleTo(form));
         const QString text = message->text();
-        QVERIFY2(text.contains("line.speed_m_min") && text.contains("500") &&
+        // Named by the field's label, not the job key (issue 21, defect 14).
+        QVERIFY2(!speed->accessibleName().isEmpty() && text.contains(speed->accessibleName()) &&
+                     !text.contains("line.speed_m_min") && text.contains("500") &&
                      text.contains("m/min") && text.contains("300"),
                  qPrintable(text));
         QVERIFY(speed->property("invalid").toBool());

@@ -186,8 +186,12 @@ class TestGuiSectionSteel : public QObject {
             ->setCurrentIndex(1); // V: nothing left for setup 2
         QVERIFY(!w.editor()->valid());
         QVERIFY(setup->property("invalid").toBool());
-        QVERIFY2(formIssues(setup).contains("end_cut.setup = 2 (the section turned over): nothing "
-                                            "is left to cut"),
+        // Named by the field's label, not the job key (issue 21, defect 14).
+        QVERIFY(!setup->accessibleName().isEmpty());
+        QVERIFY2(formIssues(setup).contains(setup->accessibleName() +
+                                            " = 2 (the section turned over): nothing "
+                                            "is left to cut") &&
+                     !formIssues(setup).contains("end_cut.setup"),
                  qPrintable(formIssues(setup)));
         qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.flanges.groove"))
             ->setCurrentIndex(3);
@@ -220,7 +224,8 @@ class TestGuiSectionSteel : public QObject {
         QVERIFY(h->isEnabled());
         h->setValue(5);
         QVERIFY(!w.editor()->valid());
-        const QString expected = "section.h_mm = 5 mm is outside [10, 1200] mm";
+        QVERIFY(!h->accessibleName().isEmpty());
+        const QString expected = h->accessibleName() + " = 5 mm is outside [10, 1200] mm";
         QVERIFY(h->property("invalid").toBool());
         QVERIFY2(h->toolTip().contains(expected), qPrintable(h->toolTip()));
         QVERIFY2(formIssues(h).contains(expected), qPrintable(formIssues(h)));
@@ -235,7 +240,8 @@ class TestGuiSectionSteel : public QObject {
         qobject_cast<QComboBox*>(w.parameters()->fieldFor("end_cut.web.groove"))
             ->setCurrentIndex(1);
         angle->setValue(75);
-        const QString steep = "end_cut.web.angle_deg = 75 deg is outside [5, 60] deg";
+        QVERIFY(!angle->accessibleName().isEmpty());
+        const QString steep = angle->accessibleName() + " = 75 deg is outside [5, 60] deg";
         QVERIFY2(formIssues(angle).contains(steep), qPrintable(formIssues(angle)));
         QVERIFY(angle->property("invalid").toBool());
     }

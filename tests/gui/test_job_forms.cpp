@@ -1,6 +1,7 @@
 // Parameter forms: a bad value marks its field (red, tooltip naming key, value, unit and
 // limit), counts in its tab title and disables Start with the reason; fixing it clears all.
 #include "core/job/default_job.h"
+#include "ui/forms/issue_text.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
@@ -40,7 +41,9 @@ class TestJobForms : public QObject {
             QWidget* f = w.parameters()->fieldFor(issue.key);
             QVERIFY2(f, issue.key.c_str());
             QVERIFY2(f->property("invalid").toBool(), issue.key.c_str());
-            QVERIFY(f->toolTip().contains(QString::fromStdString(issue.message)));
+            // The issue as the form says it: the field's label instead of the key (defect 14).
+            QVERIFY2(f->toolTip().contains(CutCell::ui::issueText(issue, f->accessibleName())),
+                     qPrintable(f->toolTip()));
         }
     }
 
@@ -72,7 +75,10 @@ class TestJobForms : public QObject {
         field->setValue(bad); // as typed by the operator: no clamping
         QCOMPARE(field->value(), bad);
         QVERIFY(field->property("invalid").toBool());
-        QVERIFY2(field->toolTip().contains(key), qPrintable(field->toolTip()));
+        // Named by its label where it has one (a table's cells have none: the key).
+        const QString name = field->accessibleName().isEmpty() ? key : field->accessibleName();
+        QVERIFY2(field->toolTip().contains(name), qPrintable(field->toolTip()));
+        if (name != key) QVERIFY2(!field->toolTip().contains(key), qPrintable(field->toolTip()));
         QVERIFY2(field->toolTip().contains(unit), qPrintable(field->toolTip()));
         auto* start = w.controls()->startButton();
         QVERIFY(!start->isEnabled());

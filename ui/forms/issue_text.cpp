@@ -29,7 +29,11 @@ QString issueText(const cutcell::JobIssue& issue, const QString& label) {
             .arg(name, number(issue.value), unit, number(issue.lo), number(issue.hi));
     }
     QString message = QString::fromStdString(issue.message);
-    if (!label.isEmpty() && !key.isEmpty()) message.replace(key, label);
+    // The key as the job file spells it (schema 2 puts the machine's keys under "machine.").
+    if (!label.isEmpty() && !key.isEmpty()) {
+        message.replace(QStringLiteral("machine.") + key, label);
+        message.replace(key, label);
+    }
     return message;
 }
 

@@ -61,7 +61,7 @@ WORDS = {
     "E-STOP pressed": ("NOT-HALT betätigt",
                        "E-STOP pressed: remove the hazard, then Release E-STOP and Reset."),
     "EMERGENCY": ("NOT-HALT", "EMERGENCY\nSTOP  [%1]"),
-    "Feed hold": ("Vorschub halt", "Feed hold"),
+    "Feed hold": ("Halt", "Feed hold"),
     "Resume from stop": ("Ab Halt fortsetzen", "Resume from stop"),
     "press Home": ("Referenzieren drücken", "axes not homed - press Home"),
     "homing": ("Referenzieren läuft", "homing in progress"),
