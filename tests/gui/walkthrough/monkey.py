@@ -13,7 +13,6 @@ Run as: dbus-run-session -- /usr/bin/python3 monkey.py --cutcell BIN --job FILE
 Exit 0 = no crash, 1 = a crash (the last events and the program's output are printed), 77 = a
 tool is missing (skipped).
 """
-import argparse
 import os
 import random
 import shutil
@@ -150,21 +149,11 @@ class Monkey:
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--cutcell", required=True)
-    ap.add_argument("--job", required=True)
-    ap.add_argument("--size", default="1280x720")
-    ap.add_argument("--locale", default="C.UTF-8")
-    ap.add_argument("--seconds", type=float, default=600)
-    ap.add_argument("--seed", type=int, default=1)
-    args = ap.parse_args()
-    if walk.Atspi is None:
-        walk.skip("no AT-SPI for Python (python3-gi, gir1.2-atspi-2.0): " + walk.ATSPI_ERROR)
-    for tool in ("Xvfb", "openbox", "xdotool"):
-        if not shutil.which(tool):
-            walk.skip(tool + " not installed (tools/setup.sh installs it)")
-    if not os.environ.get("DBUS_SESSION_BUS_ADDRESS"):
-        walk.skip("no D-Bus session: run under dbus-run-session")
+    def options(ap):
+        ap.add_argument("--seconds", type=float, default=600)
+        ap.add_argument("--seed", type=int, default=1)
+
+    args = walk.desk_arguments(options)
     work = tempfile.mkdtemp(prefix="cutcell-monkey-")
     args.job_copy = os.path.join(work, os.path.basename(args.job))
     shutil.copy(args.job, args.job_copy)

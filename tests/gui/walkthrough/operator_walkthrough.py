@@ -489,12 +489,16 @@ def walkthrough(desk):
     estop_on_screen(desk, "Save As (Ctrl+Shift+S)")
 
 
-def main():
+def desk_arguments(extra=None):
+    """The options of a real-input run (and the caller's own); skips (77) when a tool it needs
+    is missing: AT-SPI for Python, Xvfb, openbox, xdotool or a D-Bus session."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--cutcell", required=True)
     ap.add_argument("--job", required=True)
     ap.add_argument("--size", default="1280x720")
     ap.add_argument("--locale", default="C.UTF-8")
+    if extra:
+        extra(ap)
     args = ap.parse_args()
     if Atspi is None:
         skip("no AT-SPI for Python (python3-gi, gir1.2-atspi-2.0): " + ATSPI_ERROR)
@@ -503,6 +507,11 @@ def main():
             skip(tool + " not installed (tools/setup.sh installs it)")
     if not os.environ.get("DBUS_SESSION_BUS_ADDRESS"):
         skip("no D-Bus session: run under dbus-run-session")
+    return args
+
+
+def main():
+    args = desk_arguments()
     # The GUI follows the desktop's language (no choice is stored in the fresh HOME).
     global LANGUAGE
     LANGUAGE = "de" if args.locale.startswith("de") else "en"
