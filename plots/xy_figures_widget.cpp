@@ -14,6 +14,9 @@
 namespace cutcell::plots {
 
 struct XyFiguresWidget::Impl {
+    QGridLayout* grid = nullptr; // the grid constructor's; null for a row or column
+    int columns = 1;             // asked for
+    int shownColumns = 0;        // as arranged now
     std::vector<QCustomPlot*> plots;
     std::vector<QCPTextElement*> titles;
     std::vector<int> points;
@@ -21,10 +24,12 @@ struct XyFiguresWidget::Impl {
 
 namespace {
 
+constexpr int kPanelMinWidth = 220, kPanelMinHeight = 230;
+
 QCustomPlot* makePanel(QWidget* parent, std::vector<QCPTextElement*>* titles) {
     auto* p = new QCustomPlot(parent);
     p->setLocale(QLocale::c()); // tick labels with a decimal point under any locale
-    p->setMinimumSize(220, 230);
+    p->setMinimumSize(kPanelMinWidth, kPanelMinHeight);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->plotLayout()->insertRow(0);
     auto* title = new QCPTextElement(p, QString(), QFont(parent->font().family(), 9, QFont::Bold));
@@ -53,19 +58,37 @@ XyFiguresWidget::XyFiguresWidget(int panels, Qt::Orientation orientation, QWidge
 
 XyFiguresWidget::XyFiguresWidget(int panels, int columns, QWidget* parent)
     : QWidget(parent), d(std::make_unique<Impl>()) {
-    auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(0, 0, 0, 0);
-    columns = std::max(1, columns);
+    d->grid = new QGridLayout(this);
+    d->grid->setContentsMargins(0, 0, 0, 0);
+    d->columns = std::max(1, columns);
     for (int i = 0; i < panels; ++i) {
-        QCustomPlot* p = makePanel(this, &d->titles);
-        // The last panel spans what is left of its row.
-        const int span = i == panels - 1 ? columns - i % columns : 1;
-        grid->addWidget(p, i / columns, i % columns, 1, span);
-        d->plots.push_back(p);
+        d->plots.push_back(makePanel(this, &d->titles));
         d->points.push_back(0);
     }
-    for (int c = 0; c < columns; ++c)
-        grid->setColumnStretch(c, 1);
+    // One panel's width at least (the layout's minimum height stays: rows grow as columns go).
+    setMinimumWidth(kPanelMinWidth);
+    arrange(d->columns);
+}
+
+void XyFiguresWidget::arrange(int columns) {
+    if (!d->grid || columns == d->shownColumns) return;
+    d->shownColumns = columns;
+    for (QCustomPlot* p : d->plots)
+        d->grid->removeWidget(p);
+    const int panels = static_cast<int>(d->plots.size());
+    for (int i = 0; i < panels; ++i) {
+        // The last panel spans what is left of its row.
+        const int span = i == panels - 1 ? columns - i % columns : 1;
+        d->grid->addWidget(d->plots[static_cast<size_t>(i)], i / columns, i % columns, 1, span);
+    }
+    for (int c = 0; c < d->columns; ++c)
+        d->grid->setColumnStretch(c, c < columns ? 1 : 0);
+}
+
+void XyFiguresWidget::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    const int spacing = d->grid ? std::max(0, d->grid->spacing()) : 0;
+    arrange(std::clamp((width() + spacing) / (kPanelMinWidth + spacing), 1, d->columns));
 }
 
 XyFiguresWidget::~XyFiguresWidget() = default;

@@ -30,7 +30,8 @@ class XyFiguresWidget : public QWidget {
     // The panels side by side (Horizontal) or stacked (Vertical, for a narrow dock).
     XyFiguresWidget(int panels, Qt::Orientation orientation, QWidget* parent = nullptr);
     // The panels in a grid of `columns`, row by row (e.g. four controllers side by side); the
-    // last panel spans the rest of its row.
+    // last panel spans the rest of its row. Narrower than `columns` panels need, the grid has
+    // fewer columns (one at least) and more rows: a narrow pane never scrolls sideways.
     XyFiguresWidget(int panels, int columns, QWidget* parent = nullptr);
     ~XyFiguresWidget() override;
 
@@ -46,7 +47,11 @@ class XyFiguresWidget : public QWidget {
     int curveCount(int panel) const;
     int pointCount(int panel) const; // drawn points over the panel's curves
 
+  protected:
+    void resizeEvent(QResizeEvent* event) override;
+
   private:
+    void arrange(int columns);
     struct Impl;
     std::unique_ptr<Impl> d;
 };

@@ -1,4 +1,5 @@
 #include "ui/device_panel.h"
+#include "ui/shown_number.h"
 
 #include "ui/forms/number_fields.h"
 
@@ -109,14 +110,15 @@ void DevicePanel::setSnapshot(const DevicePanelSnapshot& s) {
         bus_->setText(tr("Bus: %1").arg(s.bus_state));
         bus_->setStyleSheet(s.bus_error ? QStringLiteral("color: #b00020; font-weight: bold")
                                         : QString());
-        load_->setText(tr("Load: %1 %").arg(s.load * 100, 0, 'f', 1));
+        load_->setText(tr("Load: %1 %").arg(CutCell::ui::shownNumber(s.load * 100, 1)));
         load_->setToolTip(s.load_text);
     }
     nodes_->setRowCount(static_cast<int>(s.nodes.size()));
     for (int r = 0; r < nodes_->rowCount(); ++r) {
         const DevicePanelNode& n = s.nodes[static_cast<size_t>(r)];
-        const QString hb =
-            n.heartbeat_age_ms < 0 ? tr("none") : tr("%1 ms").arg(n.heartbeat_age_ms, 0, 'f', 0);
+        const QString hb = n.heartbeat_age_ms < 0
+                               ? tr("none")
+                               : tr("%1 ms").arg(CutCell::ui::shownNumber(n.heartbeat_age_ms, 0));
         const QString cells[ColCount] = {
             QString::number(n.node), n.axis, n.nmt, n.cia402, hb, n.last_emcy, n.fault};
         for (int c = 0; c < ColCount; ++c) {

@@ -1,4 +1,5 @@
 #include "ui/machine_exports.h"
+#include "ui/shown_number.h"
 
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/template_layout.h"
@@ -41,8 +42,8 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
             const bool svg = kind == ExportKind::TemplateSvg;
             what = QObject::tr("cutting template (%1, 1:1): %2 x %3 mm")
                        .arg(svg ? "SVG" : "PDF")
-                       .arg(drawing.width_mm, 0, 'f', 1)
-                       .arg(drawing.height_mm, 0, 'f', 1);
+                       .arg(shownNumber(drawing.width_mm, 1))
+                       .arg(shownNumber(drawing.height_mm, 1));
             if (paper->short_mm <= 0) {
                 text = svg ? cutcell::templateSvg(drawing) : cutcell::templatePdf(drawing);
             } else {

@@ -1,4 +1,5 @@
 #include "ui/main_window.h"
+#include "ui/shown_number.h"
 
 #include "core/job/default_job.h"
 #include "ui/device_panel.h"
@@ -392,11 +393,11 @@ void MainWindow::connectRun() {
     connect(bridge, &EngineBridge::stateChanged, this, &MainWindow::onState);
     connect(bridge, &EngineBridge::cycleStats, this, [this](const cutcell::CycleStats& c) {
         QString text = tr("cycle %1 ms, jitter p99 %2 us, overruns %3")
-                           .arg(c.period_s * 1000.0, 0, 'g', 3)
-                           .arg(c.jitter_us_p99, 0, 'f', 0)
+                           .arg(shownSignificant(c.period_s * 1000.0, 3))
+                           .arg(shownNumber(c.jitter_us_p99, 0))
                            .arg(c.overruns);
         if (c.estops_measured > 0)
-            text += tr(", E-STOP latency %1 us").arg(c.last_estop_latency_us, 0, 'f', 0);
+            text += tr(", E-STOP latency %1 us").arg(shownNumber(c.last_estop_latency_us, 0));
         cycleLabel_->setFullText(text);
     });
 }

@@ -1,4 +1,5 @@
 #include "ui/run_controller.h"
+#include "ui/shown_number.h"
 
 #include "ui/panels/run_words.h"
 
@@ -401,15 +402,15 @@ QString RunController::describeGaps() const {
     for (const PartCoverage::Gap& g : coverage_.gaps()) {
         if (dt <= 0 || T <= 0) {
             parts << tr("path time %1 to %2 s not cut")
-                         .arg(g.from_s, 0, 'f', 3)
-                         .arg(g.to_s, 0, 'f', 3);
+                         .arg(shownNumber(g.from_s, 3))
+                         .arg(shownNumber(g.to_s, 3));
             continue;
         }
         // Points shown 1-based as the progress panel does; mm in the recovery's own measure.
         parts << tr("points %1 to %2 (%3 mm) never cut")
                      .arg(static_cast<long>(g.from_s / dt) + 1)
                      .arg(static_cast<long>(g.to_s / dt) + 1)
-                     .arg((g.to_s - g.from_s) / T * program_->length_mm, 0, 'f', 1);
+                     .arg(shownNumber((g.to_s - g.from_s) / T * program_->length_mm, 1));
     }
     return parts.join(QStringLiteral("; "));
 }

@@ -5,6 +5,7 @@
 #include "devices/process/safe_shutdown.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
+#include "ui/panels/monitor_views.h"
 #include "ui/run_controller.h"
 #include "ui/theme.h"
 #ifdef CUTCELL_HAVE_VIEW3D
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 
 namespace {
 
@@ -102,8 +104,11 @@ int main(int argc, char** argv) {
         "The GUI's language: system (the desktop's), en or de (default: the one chosen last in "
         "the Language menu, else system). Not remembered.",
         "CODE");
-    cli.addOptions(
-        {jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt, languageOpt});
+    const QCommandLineOption viewOpt(
+        "view", "The 3D view's preset at the start: iso, front, top or follow (the tool).",
+        "PRESET", "iso");
+    cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,
+                    languageOpt, viewOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
 
@@ -122,6 +127,17 @@ int main(int argc, char** argv) {
     if (cli.isSet(sizeOpt) &&
         (size.size() != 2 || size[0].toInt() < 320 || size[1].toInt() < 240)) {
         std::fprintf(stderr, "cutcell: --size must be WIDTHxHEIGHT, e.g. 1440x900\n");
+        return 64;
+    }
+    using cutcell::view3d::ViewPreset;
+    const std::map<QString, ViewPreset> presets = {{"iso", ViewPreset::Iso},
+                                                   {"front", ViewPreset::Front},
+                                                   {"top", ViewPreset::Top},
+                                                   {"follow", ViewPreset::FollowTorch}};
+    const auto preset = presets.find(cli.value(viewOpt));
+    if (preset == presets.end()) {
+        std::fprintf(stderr, "cutcell: --view must be iso, front, top or follow, not '%s'\n",
+                     qPrintable(cli.value(viewOpt)));
         return 64;
     }
     CutCell::ui::applyDarkIndustrialTheme(app);
@@ -153,6 +169,7 @@ int main(int argc, char** argv) {
         }
     }
     window.parameters()->showVisibleTab(cli.value(tabOpt).toInt());
+    window.cellView()->view()->setPreset(preset->second);
     window.show();
     if (!openError.isEmpty() && !unattended) // the window was not on screen when it failed
         QTimer::singleShot(0, &window, [&window, openError] {

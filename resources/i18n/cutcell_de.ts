@@ -98,7 +98,7 @@
 <context>
     <name>CutCell::ui::BusPanel</name>
     <message>
-        <location filename="../../ui/panels/bus_panel.cpp" line="+39"/>
+        <location filename="../../ui/panels/bus_panel.cpp" line="+40"/>
         <location line="+49"/>
         <source>Reconnect</source>
         <translation>Neu verbinden</translation>
@@ -180,7 +180,7 @@
         <translation>aus</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>&gt;9999</source>
         <translation>&gt;9999</translation>
     </message>
@@ -695,7 +695,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::DroPanel</name>
     <message>
-        <location filename="../../ui/panels/dro_panel.cpp" line="+32"/>
+        <location filename="../../ui/panels/dro_panel.cpp" line="+33"/>
         <source>Position: commanded / actual</source>
         <translation>Position: Soll / Ist</translation>
     </message>
@@ -771,7 +771,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawCarriageSawForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+361"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+364"/>
         <source>Carriage (five periods: BC, CE, EF, FG-GH-HI)</source>
         <translation>Schlitten (fünf Phasen: BC, CE, EF, FG-GH-HI)</translation>
     </message>
@@ -855,7 +855,7 @@ entriegeln</translation>
         <translation>der Auftrag ist nicht für die fliegende Säge</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>Plan and simulate the queue</source>
         <translation>Schnittliste planen und simulieren</translation>
     </message>
@@ -982,7 +982,7 @@ entriegeln</translation>
         <translation>± Toleranz</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>error (tolerance ± %1 mm far outside)</source>
         <translation>Fehler (Toleranz ± %1 mm weit außerhalb)</translation>
     </message>
@@ -1006,7 +1006,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawTubeLineForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-360"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-362"/>
         <source>length</source>
         <translation>Länge</translation>
     </message>
@@ -1061,7 +1061,7 @@ entriegeln</translation>
         <translation>Imp./U</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Encoder resolution</source>
         <translation>Geberauflösung</translation>
     </message>
@@ -1091,7 +1091,7 @@ entriegeln</translation>
         <translation>Auswahl entfernen</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Send the queue to the running line (from the next piece)</source>
         <translation>Schnittliste an die laufende Linie senden (ab dem nächsten Stück)</translation>
     </message>
@@ -1229,7 +1229,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+138"/>
+        <location filename="../../ui/main_window.cpp" line="+139"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>
@@ -1513,7 +1513,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ParameterTabs</name>
     <message>
-        <location filename="../../ui/forms/parameter_tabs.cpp" line="+74"/>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+76"/>
         <source>Job</source>
         <translation>Auftrag</translation>
     </message>
@@ -1706,7 +1706,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ProgressPanel</name>
     <message>
-        <location filename="../../ui/panels/progress_panel.cpp" line="+37"/>
+        <location filename="../../ui/panels/progress_panel.cpp" line="+40"/>
         <source>Elapsed</source>
         <translation>Verstrichen</translation>
     </message>
@@ -1716,7 +1716,7 @@ entriegeln</translation>
         <translation>Verbleibend</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <source>Stopped (%1) at %2, %3 after Start</source>
         <translation>Gestoppt (%1) bei %2, %3 nach Start</translation>
     </message>
@@ -1731,7 +1731,7 @@ entriegeln</translation>
         <translation>Letzter Lauf abgeschlossen.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
         <source>Approach to the start position: %1 %</source>
         <translation>Anfahren der Startposition: %1 %</translation>
     </message>
@@ -1741,7 +1741,7 @@ entriegeln</translation>
         <translation>In Startposition: Lauf beginnt</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Approach to the first cut point: %1 %</source>
         <translation>Anfahren des ersten Schnittpunkts: %1 %</translation>
     </message>
@@ -1847,7 +1847,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::QuickReturnFiguresForm</name>
     <message>
-        <location filename="../../ui/machines/quick_return/quick_return_figures.cpp" line="+51"/>
+        <location filename="../../ui/machines/quick_return/quick_return_figures.cpp" line="+52"/>
         <source>Simulate the cut offline (experiment 2, the job&apos;s controller)</source>
         <translation>Schnitt offline simulieren (Experiment 2, Regler des Auftrags)</translation>
     </message>
@@ -2010,7 +2010,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::QuickReturnTrackingForm</name>
     <message>
-        <location filename="../../ui/machines/quick_return/quick_return_tracking_page.cpp" line="+62"/>
+        <location filename="../../ui/machines/quick_return/quick_return_tracking_page.cpp" line="+63"/>
         <source>Run experiment 1 (FFC, LQT, SMC, OSMC)</source>
         <translation>Experiment 1 ausführen (FFC, LQT, SMC, OSMC)</translation>
     </message>
@@ -2020,7 +2020,7 @@ entriegeln</translation>
         <translation>Noch nicht ausgeführt.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+20"/>
         <source>%1: y and y_d</source>
         <translation>%1: y und y_d</translation>
     </message>
@@ -2051,27 +2051,33 @@ entriegeln</translation>
         <translation>Folgeregelung y_d = %1 %2 %3 sin(%4 t) über %5 s ohne Kontaktkraft, jeder Regler mit den Parametern des Auftrags (Seite Regler); MSE von L e über die letzten %6 s mit L = %7.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Controller</source>
         <translation>Regler</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>MSE, last %1 s</source>
-        <translation>MSE, letzte %1 s</translation>
+        <source>MSE,
+last %1 s</source>
+        <translation>MSE,
+letzte %1 s</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>max |e| (mm)</source>
-        <translation>max |e| (mm)</translation>
+        <source>max |e|
+(mm)</source>
+        <translation>max |e|
+(mm)</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>peak torque (N m)</source>
-        <translation>Spitzenmoment (N m)</translation>
+        <source>peak torque
+(N m)</source>
+        <translation>Spitzenmoment
+(N m)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+17"/>
         <source>experiment 1 is running</source>
         <translation>Experiment 1 läuft</translation>
     </message>
@@ -2104,7 +2110,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::RecoveryPanel</name>
     <message>
-        <location filename="../../ui/panels/recovery_panel.cpp" line="+25"/>
+        <location filename="../../ui/panels/recovery_panel.cpp" line="+26"/>
         <source>Cut recovery</source>
         <translation>Wiederaufnahme</translation>
     </message>
@@ -2130,7 +2136,7 @@ entriegeln</translation>
         <translation>Ab Halt fortsetzen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <location line="+2"/>
         <source>From point</source>
         <translation>Ab Punkt</translation>
@@ -2294,7 +2300,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::RunController</name>
     <message>
-        <location filename="../../ui/run_controller.cpp" line="+72"/>
+        <location filename="../../ui/run_controller.cpp" line="+73"/>
         <source>Planning cancelled by the operator.</source>
         <translation>Planung vom Bediener abgebrochen.</translation>
     </message>
@@ -2613,9 +2619,14 @@ entriegeln</translation>
         <translation>τ max (N m)</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Drives</source>
-        <translation>Antriebe</translation>
+        <location line="+27"/>
+        <source>Drives: controller</source>
+        <translation>Antriebe: Regler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drives: joint plant</source>
+        <translation>Antriebe: Gelenkstrecke</translation>
     </message>
 </context>
 <context>
@@ -3029,7 +3040,7 @@ entriegeln</translation>
         <translation>G-code (*.ngc *.nc *.gcode)</translation>
     </message>
     <message>
-        <location filename="../../ui/machine_exports.cpp" line="+22"/>
+        <location filename="../../ui/machine_exports.cpp" line="+23"/>
         <source>Export to %1 failed: %2</source>
         <translation>Export nach %1 fehlgeschlagen: %2</translation>
     </message>
@@ -3125,8 +3136,8 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+71"/>
-        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+92"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+72"/>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+93"/>
         <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="+49"/>
         <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+50"/>
         <source>3D view not built in this configuration.</source>
@@ -3274,7 +3285,7 @@ entriegeln</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+159"/>
+        <location filename="../../app/gui/main.cpp" line="+176"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>
@@ -3282,7 +3293,7 @@ entriegeln</translation>
 <context>
     <name>RunWords</name>
     <message>
-        <location filename="../../ui/panels/run_words.cpp" line="+25"/>
+        <location filename="../../ui/panels/run_words.cpp" line="+26"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
@@ -4144,7 +4155,7 @@ entriegeln</translation>
 <context>
     <name>cutcell::ui::DevicePanel</name>
     <message>
-        <location filename="../../ui/device_panel.cpp" line="+22"/>
+        <location filename="../../ui/device_panel.cpp" line="+23"/>
         <source>Simulated drives (in-process)</source>
         <translation>Simulierte Antriebe (intern)</translation>
     </message>
@@ -4255,7 +4266,7 @@ entriegeln</translation>
         <translation>keiner</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>

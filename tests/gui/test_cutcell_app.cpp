@@ -2,6 +2,7 @@
 // where xvfb-run exists, on a virtual X display with the 3D view), the no-display message and
 // a missing job file.
 #include <QImage>
+#include <QLocale>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -62,7 +63,9 @@ class TestCutcellApp : public QObject {
                               "--screenshot", shot, "--size", "1280x800"},
                              env);
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
-        QVERIFY(r.out.contains("100.0 %"));
+        // The percent in the desktop's number form (the GUI follows it: "100,0 %" under de_DE).
+        QVERIFY2(r.out.contains(QLocale::system().toString(100.0, 'f', 1) + " %"),
+                 qPrintable(r.out));
         const QImage img(shot);
         QVERIFY(!img.isNull());
         QCOMPARE(img.size(), QSize(1280, 800));

@@ -244,10 +244,12 @@ class TestGuiQuickReturn : public QObject {
     }
 
     // Experiment 1 from the GUI: the four controllers with the job's parameters, computed off the
-    // GUI thread; the table holds the core's MSE, written with a decimal point under de_DE.
+    // GUI thread; the table holds the core's MSE in the GUI language's form (German here: a
+    // decimal comma, no group separator).
     void experiment1RunsTheFourControllersOffTheGuiThread() {
         const QLocale before;
-        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const QLocale german(QLocale::German, QLocale::Germany);
+        QLocale::setDefault(german);
         MainWindow w(&cutcell::app::makeRig);
         newQuickReturnJob(w);
         auto* page = w.findChild<CutCell::ui::QuickReturnTrackingForm*>();
@@ -274,13 +276,14 @@ class TestGuiQuickReturn : public QObject {
             const auto core = cutcell::quick_return::runTracking(page->lastSetup(), kind);
             for (int col = 1; col < 4; ++col) {
                 const QString text = table->item(row, col)->text();
-                QVERIFY2(!text.contains(QLatin1Char(',')), qPrintable(text));
+                QVERIFY2(!text.contains(QLatin1Char('.')), qPrintable(text));
                 bool ok = false;
-                text.toDouble(&ok); // QString::toDouble reads the C locale only
+                german.toDouble(text, &ok);
                 QVERIFY2(ok, qPrintable(text));
             }
-            QCOMPARE(table->item(row, 1)->text().toDouble(), std::round(core.mse * 1e4) / 1e4);
-            QCOMPARE(table->item(row, 2)->text().toDouble(),
+            QCOMPARE(german.toDouble(table->item(row, 1)->text()),
+                     std::round(core.mse * 1e4) / 1e4);
+            QCOMPARE(german.toDouble(table->item(row, 2)->text()),
                      std::round(core.max_abs_error * 1e6) / 1e3);
             QVERIFY(page->figures()->pointCount(row) > 100); // y and y_d over the run
         }

@@ -1,7 +1,11 @@
-// Issue 21's defects 12, 14 and 15 (the rest of them), one case each; each failed on main at
-// f3d8811:
+// Issue 21's defects 7 (sideways), 12, 14 and 15 (the rest of them), one case each; each failed
+// on main at f3d8811 (7 at 1d85373):
+// 7.  Nothing in the operator column is cut at its right edge or shows a cut text: the percent,
+//     the figures, the recovery buttons, in English and German, at 1280x720 and 1600x1000.
 // 12. A note that comes (parameters locked at Start, a typing error) never moves the fields
-//     under the operator's pointer: the notes sit below them.
+//     under the operator's pointer: the notes sit below them. No page of any machine is wider
+//     than its pane at 1280x720, in English and German: nothing (a unit, a right-aligned value)
+//     is cut at its right edge (failed at 1d85373).
 // 14. A form's message names the field by its label, not the job file's key, and a speed of
 //     0 is told with the field's range, not "must be > 0".
 // 15. The keyboard focus is visible (an amber frame), and Tab leaves a table.
@@ -12,10 +16,17 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/elided_label.h"
+#include "ui/panels/progress_panel.h"
+#include "ui/panels/recovery_panel.h"
 #include "ui/theme.h"
 
+#include <QAbstractScrollArea>
 #include <QAbstractSpinBox>
+#include <QGroupBox>
 #include <QImage>
+#include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QTabWidget>
@@ -52,6 +63,48 @@ int yOnWindow(const QWidget* field, const MainWindow& w) {
     return field->mapTo(&w, QPoint(0, 0)).y();
 }
 
+// What in the column is cut sideways: a widget reaching past the right (or left) edge of what
+// shows it (the column, or the scroll area it sits in), a one-line label or a button narrower
+// than its text. Elided labels carry their whole text in the tooltip and are allowed.
+QStringList clippedSideways(QWidget* column) {
+    QStringList out;
+    for (QWidget* c : column->findChildren<QWidget*>()) {
+        auto* label = qobject_cast<QLabel*>(c);
+        auto* button = qobject_cast<QAbstractButton*>(c);
+        if (!c->isVisibleTo(column) || !(label || button || qobject_cast<QAbstractSpinBox*>(c) ||
+                                         qobject_cast<QProgressBar*>(c)))
+            continue;
+        QWidget* area = column;
+        for (QWidget* p = c->parentWidget(); p && p != column; p = p->parentWidget())
+            if (auto* scroll = qobject_cast<QAbstractScrollArea*>(p)) {
+                area = scroll->viewport();
+                break;
+            }
+        const QString text = label ? label->text() : button ? button->text() : QString();
+        const QString what =
+            QStringLiteral("%1 %2 '%3'").arg(c->metaObject()->className(), c->objectName(), text);
+        const int left = c->mapTo(area, QPoint(0, 0)).x();
+        if (left < 0 || left + c->width() > area->width())
+            out << QStringLiteral("%1 spans x %2..%3 of %4")
+                       .arg(what)
+                       .arg(left)
+                       .arg(left + c->width())
+                       .arg(area->width());
+        if (label && !label->wordWrap() && !qobject_cast<CutCell::ui::ElidedLabel*>(label) &&
+            !text.isEmpty() && label->width() < label->sizeHint().width())
+            out << QStringLiteral("%1 is %2 px wide for its %3 px text")
+                       .arg(what)
+                       .arg(label->width())
+                       .arg(label->sizeHint().width());
+        if (button && !text.isEmpty() && button->width() < button->sizeHint().width())
+            out << QStringLiteral("%1 is %2 px wide for its %3 px text")
+                       .arg(what)
+                       .arg(button->width())
+                       .arg(button->sizeHint().width());
+    }
+    return out;
+}
+
 } // namespace
 
 class TestOperatorDefectsLast : public QObject {
@@ -59,6 +112,46 @@ class TestOperatorDefectsLast : public QObject {
 
   private slots:
     void initTestCase() { QVERIFY(CutCell::ui::applyDarkIndustrialTheme(*qApp)); }
+
+    void defect7_theOperatorColumnIsNeverClippedSideways_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        for (const char* language : {"en", "de"})
+            for (const QSize size : {QSize(1280, 720), QSize(1600, 1000)})
+                QTest::addRow("%s %dx%d", language, size.width(), size.height())
+                    << QString(language) << size;
+    }
+    void defect7_theOperatorColumnIsNeverClippedSideways() {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        QVERIFY(CutCell::ui::applyGuiLanguage(language));
+        MainWindow w(nullptr);
+        w.resize(size);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // The widest figures the column shows: a long run of a long program completed, and a
+        // stop in the recovery box.
+        cutcell::TelemetrySample done{};
+        done.state = cutcell::EngineState::Completed;
+        done.progress = 1.0;
+        done.elapsed_s = 5999.9;
+        done.point_index = 99998;
+        done.point_count = 99999;
+        w.progress()->setSample(done);
+        w.progress()->setCycleFigures(9999, 5999.9);
+        cutcell::RunStopPoint stop;
+        stop.valid = true;
+        stop.progress = 0.5;
+        stop.elapsed_s = 2999.9;
+        stop.point_index = 49999;
+        stop.point_count = 99999;
+        w.recovery()->setStopPoint(stop);
+        w.recovery()->setState(cutcell::EngineState::Ready, true);
+        QTest::qWait(50); // the layouts settle (posted layout requests)
+        const QStringList clipped = clippedSideways(w.operatorColumn());
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("\n")));
+    }
 
     void defect12_notesNeverMoveTheFields() {
         MainWindow w(nullptr);
@@ -78,6 +171,65 @@ class TestOperatorDefectsLast : public QObject {
         QTRY_VERIFY(!w.editor()->valid());
         QTest::qWait(50); // the layouts settle (posted layout requests)
         QCOMPARE(yOnWindow(speed, w), before);
+    }
+
+    void defect12_everyPageFitsItsPane_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("job");
+        for (const char* language : {"en", "de"})
+            for (const char* job : {"default_job", "profile_cutter_job", "section_steel_job",
+                                    "flying_saw_job", "quick_return_job"})
+                QTest::addRow("%s %s", language, job) << QString(language) << QString(job);
+    }
+    void defect12_everyPageFitsItsPane() {
+        QFETCH(QString, language);
+        QFETCH(QString, job);
+        QVERIFY(CutCell::ui::applyGuiLanguage(language));
+        MainWindow w(nullptr);
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QString error;
+        QVERIFY2(w.openJob(QStringLiteral(CUTCELL_SOURCE_DIR "/resources/jobs/") + job + ".json",
+                           &error),
+                 qPrintable(error));
+        QStringList wide;
+        QTabWidget* tabs = w.parameters()->tabs();
+        for (int i = 0; i < tabs->count(); ++i) {
+            if (!tabs->isTabVisible(i)) continue;
+            tabs->setCurrentIndex(i);
+            QTest::qWait(20); // the layouts settle (posted layout requests)
+            auto* scroll = qobject_cast<QScrollArea*>(tabs->widget(i));
+            QVERIFY(scroll && scroll->widget());
+            const int need = scroll->widget()->minimumSizeHint().width();
+            const int have = scroll->viewport()->width();
+            if (need <= have) continue;
+            // Name what asks for the width: the widest widgets without a layout of their own.
+            QStringList widest;
+            for (QWidget* c : scroll->widget()->findChildren<QWidget*>()) {
+                const int least =
+                    c->minimumWidth() > 0 ? c->minimumWidth() : c->minimumSizeHint().width();
+                auto* label = qobject_cast<QLabel*>(c);
+                auto* button = qobject_cast<QAbstractButton*>(c);
+                if (auto* box = qobject_cast<QGroupBox*>(c); box && c->isVisibleTo(scroll))
+                    widest << QStringLiteral("QGroupBox '%1' %2 px")
+                                  .arg(box->title())
+                                  .arg(box->minimumSizeHint().width());
+                if (c->isVisibleTo(scroll) && !c->layout() && least > have / 3)
+                    widest << QStringLiteral("%1 '%2' %3 px")
+                                  .arg(c->metaObject()->className(), label    ? label->text()
+                                                                     : button ? button->text()
+                                                                              : c->accessibleName())
+                                  .arg(least);
+            }
+            wide << QStringLiteral("'%1' needs %2 px, its pane shows %3 (%4)")
+                        .arg(tabs->tabText(i))
+                        .arg(need)
+                        .arg(have)
+                        .arg(widest.join(", "));
+        }
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        QVERIFY2(wide.isEmpty(), qPrintable(wide.join("; ")));
     }
 
     void defect14_messagesNameTheFieldAndItsRange() {

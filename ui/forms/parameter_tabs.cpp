@@ -3,6 +3,7 @@
 #include "ui/forms/cut_form.h"
 #include "ui/forms/cycle_devices_form.h"
 #include "ui/forms/job_info_form.h"
+#include "ui/forms/narrow_page.h"
 #include "ui/forms/pipes_form.h"
 #include "ui/machine/machine_ui_registry.h"
 
@@ -62,6 +63,7 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
         scroll->setWidgetResizable(true);
         scroll->setFrameShape(QFrame::NoFrame);
         scroll->setWidget(form);
+        narrowPage(form);
         tabs_->addTab(scroll, title);
         forms_.push_back(form);
         owners_.push_back(owner);

@@ -1,4 +1,5 @@
 #include "ui/panels/bus_panel.h"
+#include "ui/shown_number.h"
 
 #include <QFont>
 #include <QHBoxLayout>
@@ -120,7 +121,7 @@ void BusPanel::refreshState() {
     if (link_.state == State::Up && !silent.isEmpty()) {
         state = tr("BUS UP - %1 OF %2 NODES SILENT").arg(silent.size()).arg(nodes_->rowCount());
         text = tr("No heartbeat within %1 ms from node(s) %2: check their power and cable.")
-                   .arg(snapshot_.heartbeat_timeout_ms, 0, 'f', 0)
+                   .arg(shownNumber(snapshot_.heartbeat_timeout_ms, 0))
                    .arg(silent.join(QStringLiteral(", ")));
         color = stateColor(State::Lost);
     }
@@ -152,10 +153,9 @@ void BusPanel::refreshRows() {
             n.heartbeat_age_ms < 0 || (snapshot_.heartbeat_timeout_ms > 0 &&
                                        n.heartbeat_age_ms > snapshot_.heartbeat_timeout_ms);
         stale_[static_cast<size_t>(r)] = stale;
-        const QString hb = n.heartbeat_age_ms < 0 ? tr("none")
-                           : n.heartbeat_age_ms > 9999
-                               ? tr(">9999")
-                               : QString::number(n.heartbeat_age_ms, 'f', 0);
+        const QString hb = n.heartbeat_age_ms < 0      ? tr("none")
+                           : n.heartbeat_age_ms > 9999 ? tr(">9999")
+                                                       : shownNumber(n.heartbeat_age_ms, 0);
         const QString cells[ColCount] = {QString::number(n.node), n.nmt, n.cia402, hb};
         QString tip = tr("node %1, axis %2").arg(n.node).arg(n.axis);
         if (!n.fault.isEmpty()) tip += QStringLiteral("\n") + n.fault;

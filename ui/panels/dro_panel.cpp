@@ -1,4 +1,5 @@
 #include "ui/panels/dro_panel.h"
+#include "ui/shown_number.h"
 
 #include "core/common/types.h"
 
@@ -111,8 +112,8 @@ void DroPanel::setProgram(const std::shared_ptr<const cutcell::MotionProgram>& p
                             : QString::fromStdString(program->axis_names[a]);
         const QString range = tr("%1: %2 .. %3 %4")
                                   .arg(names_[a])
-                                  .arg(toDisplay(i, program->min_position[i]), 0, 'f', 1)
-                                  .arg(toDisplay(i, program->max_position[i]), 0, 'f', 1)
+                                  .arg(shownNumber(toDisplay(i, program->min_position[i]), 1))
+                                  .arg(shownNumber(toDisplay(i, program->max_position[i]), 1))
                                   .arg(unit(i));
         r.name->setText(QStringLiteral("%1 (%2)").arg(names_[a], unit(i)));
         r.name->setToolTip(range);
@@ -142,9 +143,9 @@ void DroPanel::setSample(const cutcell::TelemetrySample& s) {
         const auto a = static_cast<size_t>(i);
         commanded_[a] = toDisplay(i, s.setpoint[i]);
         actual_[a] = toDisplay(i, s.actual[i]);
-        // Locale-independent digits with a fixed count: the columns do not jitter.
-        rows_[a].commanded->setText(QString::number(commanded_[a], 'f', kDecimals));
-        rows_[a].actual->setText(QString::number(actual_[a], 'f', kDecimals));
+        // A fixed count of digits (the columns do not jitter), in the GUI language's form.
+        rows_[a].commanded->setText(shownNumber(commanded_[a], kDecimals));
+        rows_[a].actual->setText(shownNumber(actual_[a], kDecimals));
     }
 }
 

@@ -1,4 +1,5 @@
 #include "ui/panels/progress_panel.h"
+#include "ui/shown_number.h"
 
 #include "ui/panels/run_words.h"
 
@@ -21,37 +22,40 @@ ProgressPanel::ProgressPanel(QWidget* parent)
     auto* g = new QGridLayout(this);
     g->setContentsMargins(6, 6, 6, 6);
     state_->setObjectName("stateText");
-    g->addWidget(state_, 0, 0, 1, 3);
+    g->addWidget(state_, 0, 0);
     percent_->setObjectName("percentText");
     percent_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    g->addWidget(percent_, 0, 3);
+    g->addWidget(percent_, 0, 1);
     bar_->setRange(0, 1000);
     bar_->setTextVisible(false);
     bar_->setMinimumHeight(22);
-    g->addWidget(bar_, 1, 0, 1, 4);
+    g->addWidget(bar_, 1, 0, 1, 2);
     const auto caption = [this](const QString& t) {
         auto* l = new QLabel(t, this);
         l->setObjectName("caption");
         return l;
     };
+    // Two figures a row: the times, then the count. Three in a row reached 345 px with a
+    // program of 99999 points, past the column's 306 (a count's digits are never elided).
     g->addWidget(caption(tr("Elapsed")), 2, 0);
     g->addWidget(caption(tr("Remaining")), 2, 1);
-    pointsCaption_ = caption(countCaption(terms_.counts));
-    g->addWidget(pointsCaption_, 2, 2, 1, 2);
     for (auto* l : {elapsed_, remaining_, points_})
         l->setObjectName("bigValue");
     g->addWidget(elapsed_, 3, 0);
     g->addWidget(remaining_, 3, 1);
-    g->addWidget(points_, 3, 2, 1, 2);
+    pointsCaption_ = caption(countCaption(terms_.counts));
+    g->addWidget(pointsCaption_, 4, 0);
+    g->addWidget(points_, 4, 1);
     // The detail line (approach phase, or where a run stopped) keeps its place (two lines)
     // whether shown or not: nothing jumps.
     stop_->setObjectName("stopText");
     stop_->setWordWrap(true);
     stop_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     stop_->setFixedHeight(QFontMetrics(stop_->font()).lineSpacing() * 2 + 6);
-    g->addWidget(stop_, 4, 0, 1, 4);
+    g->addWidget(stop_, 5, 0, 1, 2);
     cycle_->setObjectName("cycleText");
-    g->addWidget(cycle_, 5, 0, 1, 4);
+    cycle_->setWordWrap(true);
+    g->addWidget(cycle_, 6, 0, 1, 2);
     clear();
     setCycleFigures(0, 0);
 }
@@ -110,7 +114,7 @@ void ProgressPanel::setStopPoint(const cutcell::RunStopPoint& stop) {
     // The figures above the line show it too: the last sample shown may predate the last piece.
     const double p = std::clamp(stop.progress, 0.0, 1.0);
     bar_->setValue(static_cast<int>(std::lround(p * 1000)));
-    percent_->setText(QStringLiteral("%1 %").arg(p * 100.0, 0, 'f', 1));
+    percent_->setText(QStringLiteral("%1 %").arg(shownNumber(p * 100.0, 1)));
     const auto shown = stop.point_count ? std::min(stop.point_index + 1, stop.point_count) : 0u;
     points_->setText(QStringLiteral("%1 / %2").arg(shown).arg(stop.point_count));
     showStop(stop);
@@ -163,7 +167,7 @@ void ProgressPanel::show(const cutcell::TelemetrySample& s) {
         bar_->setValue(value);
         bar_->setUpdatesEnabled(true);
     }
-    percent_->setText(QStringLiteral("%1 %").arg(p * 100.0, 0, 'f', 1));
+    percent_->setText(QStringLiteral("%1 %").arg(shownNumber(p * 100.0, 1)));
     elapsed_->setText(formatDuration(s.elapsed_s));
     remaining_->setText(formatDuration(s.remaining_s));
     // The engine counts knots passed from 0; the operator reads "point n of N" from 1.
@@ -178,12 +182,14 @@ void ProgressPanel::show(const cutcell::TelemetrySample& s) {
         if (!approachStart_ || d > *approachStart_) approachStart_ = d;
         const double f = *approachStart_ > 1e-9 ? 1.0 - d / *approachStart_ : 1.0;
         if (!terms_.path_length)
-            phase = f < 0.999 ? tr("Approach to the start position: %1 %").arg(f * 100, 0, 'f', 0)
-                              : tr("At the start position: the run starts");
+            phase = f < 0.999
+                        ? tr("Approach to the start position: %1 %").arg(shownNumber(f * 100, 0))
+                        : tr("At the start position: the run starts");
         else
-            phase = f < 0.999 ? tr("Approach to the first cut point: %1 %").arg(f * 100, 0, 'f', 0)
-                              : (s.torch_on ? tr("Arc on: the cut starts")
-                                            : tr("At the first cut point: settling, then the arc"));
+            phase = f < 0.999
+                        ? tr("Approach to the first cut point: %1 %").arg(shownNumber(f * 100, 0))
+                        : (s.torch_on ? tr("Arc on: the cut starts")
+                                      : tr("At the first cut point: settling, then the arc"));
     }
     if (!stopped_) {
         stop_->setText(phase);

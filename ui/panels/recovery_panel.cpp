@@ -1,4 +1,5 @@
 #include "ui/panels/recovery_panel.h"
+#include "ui/shown_number.h"
 
 #include "ui/panels/run_words.h"
 
@@ -30,7 +31,7 @@ RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
     where_ = new QLabel(box);
     where_->setObjectName("recoveryWhere");
     where_->setWordWrap(true);
-    g->addWidget(where_, 0, 0, 1, 3);
+    g->addWidget(where_, 0, 0, 1, 2);
     g->addWidget(new QLabel(tr("Lead-in"), box), 1, 0);
     auto* leadIn = new DecimalField(box);
     leadIn->setFieldName(tr("Lead-in"));
@@ -45,32 +46,34 @@ RecoveryPanel::RecoveryPanel(QWidget* parent) : QWidget(parent) {
     g->addWidget(leadIn_, 1, 1);
     resume_ = new QPushButton(tr("Resume from stop"), box);
     resume_->setObjectName("recoveryResume");
-    g->addWidget(resume_, 1, 2);
-    g->addWidget(new QLabel(tr("From point"), box), 2, 0);
+    // Each button under its field, the box's width: beside it the German "Ab Halt fortsetzen"
+    // was cut at the column's edge.
+    g->addWidget(resume_, 2, 0, 1, 2);
+    g->addWidget(new QLabel(tr("From point"), box), 3, 0);
     auto* point = new WholeNumberField(box);
     point->setFieldName(tr("From point"));
     point_ = point;
     point_->setObjectName("recoveryPoint");
     point_->setToolTip(tr("Run the rest of the cut from this point of the path."));
-    g->addWidget(point_, 2, 1);
+    g->addWidget(point_, 3, 1);
     runFrom_ = new QPushButton(tr("Run from point"), box);
     runFrom_->setObjectName("recoveryRunFrom");
-    g->addWidget(runFrom_, 2, 2);
+    g->addWidget(runFrom_, 4, 0, 1, 2);
     reason_ = new QLabel(box);
     reason_->setObjectName("recoveryReason");
     reason_->setWordWrap(true);
-    g->addWidget(reason_, 3, 0, 1, 3);
+    g->addWidget(reason_, 5, 0, 1, 2);
     unconfirmed_ = new QLabel(box);
     unconfirmed_->setObjectName("recoveryUnconfirmed");
     unconfirmed_->setWordWrap(true);
     unconfirmed_->hide();
-    g->addWidget(unconfirmed_, 4, 0, 1, 3);
+    g->addWidget(unconfirmed_, 6, 0, 1, 2);
     confirm_ = new QPushButton(tr("Count the part as good"), box);
     confirm_->setObjectName("recoveryConfirmPart");
     confirm_->setToolTip(tr("The run completed, but part of the path was never cut (Run from "
                             "point). Count the part only if it was finished otherwise."));
     confirm_->hide();
-    g->addWidget(confirm_, 5, 0, 1, 3);
+    g->addWidget(confirm_, 7, 0, 1, 2);
     connect(confirm_, &QPushButton::clicked, this, &RecoveryPanel::partConfirmed);
     connect(resume_, &QPushButton::clicked, this,
             [this] { emit startFromRequested(resumePathTime()); });
@@ -155,10 +158,10 @@ void RecoveryPanel::refresh() {
                            "starts at %6 s.")
                             .arg(std::min(stop_->point_index + 1, stop_->point_count))
                             .arg(stop_->point_count)
-                            .arg(stop_->length_mm, 0, 'f', 1)
-                            .arg(program_ ? program_->length_mm : 0.0, 0, 'f', 1)
-                            .arg(stop_->path_time_s, 0, 'f', 2)
-                            .arg(resumePathTime(), 0, 'f', 2));
+                            .arg(shownNumber(stop_->length_mm, 1))
+                            .arg(shownNumber(program_ ? program_->length_mm : 0.0, 1))
+                            .arg(shownNumber(stop_->path_time_s, 2))
+                            .arg(shownNumber(resumePathTime(), 2)));
     else
         where_->setText(tr("No stopped cut to recover."));
     resume_->setEnabled(ok && stop_.has_value());

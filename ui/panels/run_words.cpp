@@ -1,4 +1,5 @@
 #include "ui/panels/run_words.h"
+#include "ui/shown_number.h"
 
 #include <QCoreApplication>
 
@@ -95,8 +96,8 @@ QString stopFigures(const cutcell::RunTerms& terms, const cutcell::RunStopPoint&
         return RunWords::tr("point %1 / %2, %3 of %4 mm")
             .arg(shown)
             .arg(at.point_count)
-            .arg(at.length_mm, 0, 'f', 1)
-            .arg(pathLengthMm, 0, 'f', 1);
+            .arg(shownNumber(at.length_mm, 1))
+            .arg(shownNumber(pathLengthMm, 1));
     return RunWords::tr("%1 %2 of %3, %4 %5 made")
         .arg(countNoun(terms.counts, 1))
         .arg(shown)

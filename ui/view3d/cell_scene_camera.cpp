@@ -28,12 +28,26 @@ Look lookFor(ViewPreset p, const Vec3& iso) {
     }
     return {iso.normalized(), Vec3::UnitZ()};
 }
+// The middle of a linkage's tool pieces at q (the origin without any).
+Vec3 linkageToolCentre(const SceneModel& model, const JointVector& q) {
+    if (!model.linkage) return Vec3::Zero();
+    Vec3 sum = Vec3::Zero();
+    int count = 0;
+    for (const LinkagePiece& piece : model.linkage(q))
+        if (piece.colour == LinkagePiece::Tool) {
+            sum += 0.5 * (piece.a + piece.b);
+            ++count;
+        }
+    return count ? Vec3(sum / count) : Vec3(Vec3::Zero());
+}
+
 } // namespace
 
 void CellScene::Impl::applyCamera(ViewPreset p) {
     vtkCamera* cam = renderer->GetActiveCamera();
     if (p == ViewPreset::FollowTorch) {
-        // A linkage machine has no tool pose: follow the current point of its path.
+        // A linkage machine has no tool pose: follow the current point of its path, or without
+        // a path (the flying saw) the middle of its tool pieces (the two blades: the cut).
         const size_t n = model.pathWork.size();
         const Vec3 tip =
             torchBody ? Vec3(model.toolPose(q).translation())
@@ -41,7 +55,7 @@ void CellScene::Impl::applyCamera(ViewPreset p) {
                 ? model.pathPointWorld(std::min(n - 1, static_cast<size_t>(std::lround(
                                                            progress * static_cast<double>(n - 1)))),
                                        q)
-                : Vec3(Vec3::Zero());
+                : linkageToolCentre(model, q);
         if (preset != ViewPreset::FollowTorch || !hasScene) return;
         double f[3], pos[3];
         cam->GetFocalPoint(f);

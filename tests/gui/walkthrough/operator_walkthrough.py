@@ -29,6 +29,7 @@ import tempfile
 import time
 
 SKIP = 77
+STARTED = time.monotonic()  # the steps print their time since the start (a slow step shows)
 
 
 def skip(why):
@@ -296,8 +297,8 @@ def estop_on_screen(desk, step):
     button = desk.one("push button", lambda n: n.startswith(w("EMERGENCY")), "the E-STOP button")
     e = button.get_extents(Atspi.CoordType.SCREEN)
     inside = e.x >= 0 and e.y >= 0 and e.x + e.width <= desk.width and e.y + e.height <= desk.height
-    print("  %-34s E-STOP at %d,%d %dx%d  | %s" % (step, e.x, e.y, e.width, e.height,
-                                                  desk.start_reason()))
+    print("  %5.1f s  %-34s E-STOP at %d,%d %dx%d  | %s" % (time.monotonic() - STARTED, step, e.x, e.y,
+                                                          e.width, e.height, desk.start_reason()))
     if not inside or e.width < 100 or e.height < 60:
         raise StepFailed("%s: the E-STOP button at %d,%d %dx%d is not wholly on the %dx%d screen"
                          % (step, e.x, e.y, e.width, e.height, desk.width, desk.height))

@@ -1,4 +1,5 @@
 #include "ui/machines/flying_saw/flying_saw_figures.h"
+#include "ui/shown_number.h"
 
 #include "core/common/types.h"
 #include "core/job/job_io.h"
@@ -9,7 +10,6 @@
 #include "plots/xy_figures_widget.h"
 
 #include <QFileDialog>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -71,12 +71,14 @@ bool planOf(const JobEditor& editor, cutcell::MachinePlan* out, QString* problem
 
 FlyingSawFiguresForm::FlyingSawFiguresForm(JobEditor* editor, QWidget* parent)
     : JobForm(editor, parent) {
-    auto* buttons = new QHBoxLayout;
+    // One above the other: side by side the German texts needed 533 px, the pane at 1280x720
+    // shows 424.
+    auto* buttons = new QVBoxLayout;
     simulate_ = new QPushButton(tr("Plan and simulate the queue"), this);
     simulate_->setObjectName("sawSimulate");
     export_ = new QPushButton(tr("Export cam table CSV…"), this);
     export_->setObjectName("sawExportCam");
-    buttons->addWidget(simulate_, 1);
+    buttons->addWidget(simulate_);
     buttons->addWidget(export_);
     mainLayout()->addLayout(buttons);
     summary_ = new QLabel(tr("Not simulated yet."), this);
@@ -174,7 +176,8 @@ bool FlyingSawFiguresForm::simulate(QString* why) {
     // The tolerance band only where it does not flatten the errors to a line (the stats name
     // it and the Cpk either way).
     const bool showBand = r.stats.max_abs >= 0.2 * tol;
-    if (!showBand) err.name = tr("error (tolerance ± %1 mm far outside)").arg(tol, 0, 'g', 4);
+    if (!showBand)
+        err.name = tr("error (tolerance ± %1 mm far outside)").arg(shownSignificant(tol, 4));
     if (!r.pieces.empty()) {
         const double x0 = r.pieces.front().piece - 0.5, x1 = r.pieces.back().piece + 0.5;
         mean.x = {x0, x1}, mean.y = {r.stats.mean, r.stats.mean};
@@ -188,19 +191,19 @@ bool FlyingSawFiguresForm::simulate(QString* why) {
     QString stats = tr("%1 pieces measured: error mean %2 mm, std %3 mm, max |e| %4 mm, Cpk %5 "
                        "(± %6 mm); largest cut spread on the pipe %7 mm.")
                         .arg(r.stats.count)
-                        .arg(r.stats.mean, 0, 'f', 4)
-                        .arg(r.stats.std, 0, 'f', 4)
-                        .arg(r.stats.max_abs, 0, 'f', 4)
-                        .arg(r.stats.cpk, 0, 'g', 4)
-                        .arg(tol, 0, 'g', 4)
-                        .arg(
+                        .arg(shownNumber(r.stats.mean, 4))
+                        .arg(shownNumber(r.stats.std, 4))
+                        .arg(shownNumber(r.stats.max_abs, 4))
+                        .arg(shownSignificant(r.stats.cpk, 4))
+                        .arg(shownSignificant(tol, 4))
+                        .arg(shownNumber(
                             [&] {
                                 double m = 0;
                                 for (const cutcell::PieceRecord& p : r.pieces)
                                     m = std::max(m, p.spread_mm);
                                 return m;
                             }(),
-                            0, 'f', 3);
+                            3));
     if (!r.completed)
         stats += QLatin1Char(' ') + tr("Not completed: %1").arg(QString::fromStdString(r.problem));
     stats_->setText(stats);

@@ -1,4 +1,5 @@
 #include "ui/machines/flying_saw/flying_saw_forms.h"
+#include "ui/shown_number.h"
 
 #include "ui/forms/number_fields.h"
 
@@ -134,6 +135,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
     row(fl, "line.roller_diameter_mm");
     resolution_ = new QLabel(line);
     resolution_->setObjectName("sawEncoderResolution");
+    resolution_->setWordWrap(true); // "0,05 mm pro Impuls (π D / Impulse)" on one line: too wide
     fl->addRow(tr("Encoder resolution"), resolution_);
     row(fl, "line.filter_alpha");
     mainLayout()->addWidget(line);
@@ -155,6 +157,7 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
     auto* remove = new QPushButton(tr("Remove selected"), cut);
     remove->setObjectName("sawQueueRemove");
     queueTotal_ = new QLabel(cut);
+    queueTotal_->setWordWrap(true); // beside the German buttons it made the page too wide
     buttons->addWidget(add);
     buttons->addWidget(remove);
     buttons->addWidget(queueTotal_, 1);
@@ -333,12 +336,12 @@ void FlyingSawTubeLineForm::updateDerived(const Job& job) {
     if (!s) return;
     const double res = s->encoderResolutionMm();
     resolution_->setText(std::isfinite(res) && res > 0
-                             ? tr("%1 mm per pulse (π D / pulses)").arg(res, 0, 'g', 4)
+                             ? tr("%1 mm per pulse (π D / pulses)").arg(shownSignificant(res, 4))
                              : tr("—"));
     double metres = 0;
     for (const cutcell::PieceOrder& o : s->queue)
         metres += o.length_mm * o.count / 1000.0;
-    queueTotal_->setText(tr("%1 pieces, %2 m").arg(s->pieceCount()).arg(metres, 0, 'f', 1));
+    queueTotal_->setText(tr("%1 pieces, %2 m").arg(s->pieceCount()).arg(shownNumber(metres, 1)));
 }
 
 FlyingSawCarriageSawForm::FlyingSawCarriageSawForm(JobEditor* editor, QWidget* parent)

@@ -1,4 +1,5 @@
 #include "ui/machines/pipe_robot/pipe_robot_ui.h"
+#include "ui/shown_number.h"
 
 #include "core/job/default_job.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
@@ -55,9 +56,9 @@ std::size_t PipeRobotUi::plannedPointCount(const cutcell::Job&,
 QString PipeRobotUi::planSummary(const cutcell::Job&, const cutcell::CutPlan& plan) const {
     return QObject::tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
         .arg(plan.knots.size())
-        .arg(plan.length_mm, 0, 'f', 1)
-        .arg(plan.cut_time_s, 0, 'f', 1)
-        .arg(plan.max_deviation_deg, 0, 'f', 1);
+        .arg(shownNumber(plan.length_mm, 1))
+        .arg(shownNumber(plan.cut_time_s, 1))
+        .arg(shownNumber(plan.max_deviation_deg, 1));
 }
 
 bool PipeRobotUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,

@@ -1,4 +1,5 @@
 #include "ui/machines/profile_cutter/profile_cutter_ui.h"
+#include "ui/shown_number.h"
 
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/gcode_export.h"
@@ -64,16 +65,16 @@ std::string ProfileCutterUi::exportText(ExportKind kind, const cutcell::Job& job
     if (what)
         *what = QObject::tr("G-code (X/A): %1 moves, %2 mm developed, %3 s")
                     .arg(st.moves)
-                    .arg(st.length_mm, 0, 'f', 1)
-                    .arg(st.time_s, 0, 'f', 1);
+                    .arg(shownNumber(st.length_mm, 1))
+                    .arg(shownNumber(st.time_s, 1));
     return text;
 }
 
 QString ProfileCutterUi::planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const {
     return QObject::tr("Profile cutter: %1 points, %2 mm in %3 s.")
         .arg(plannedPointCount(job, plan))
-        .arg(plan.length_mm, 0, 'f', 1)
-        .arg(plan.cut_time_s, 0, 'f', 1);
+        .arg(shownNumber(plan.length_mm, 1))
+        .arg(shownNumber(plan.cut_time_s, 1));
 }
 
 bool ProfileCutterUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan&,

@@ -1,4 +1,5 @@
 #include "ui/machines/quick_return/quick_return_figures.h"
+#include "ui/shown_number.h"
 
 #include "core/machines/quick_return/quick_return_spec.h"
 #include "plots/xy_figures_widget.h"
@@ -134,8 +135,8 @@ void QuickReturnFiguresForm::simulationFinished() {
     draw(fromTrace(r.trace, lo, hi));
     figures_->setPanel(2,
                        tr("Velocity error in the work: max %1, RMS %2 m/s")
-                           .arg(r.velocity_error_max, 0, 'f', 3)
-                           .arg(r.velocity_error_rms, 0, 'f', 3),
+                           .arg(shownNumber(r.velocity_error_max, 3))
+                           .arg(shownNumber(r.velocity_error_rms, 3)),
                        tr("y (m)"), tr("y_d' - y' (m/s)"));
     sourceLabel_->setText(tr("Source: offline simulation of the job's cut (core runCutting, "
                              "the engine's control law on the crank plant)."));
@@ -143,10 +144,10 @@ void QuickReturnFiguresForm::simulationFinished() {
                       "(%5 samples); peak torque %6 N m.")
                        .arg(simController_)
                        .arg(r.strokes)
-                       .arg(r.velocity_error_max, 0, 'f', 4)
-                       .arg(r.velocity_error_rms, 0, 'f', 4)
+                       .arg(shownNumber(r.velocity_error_max, 4))
+                       .arg(shownNumber(r.velocity_error_rms, 4))
                        .arg(r.samples_in_work)
-                       .arg(r.max_torque, 0, 'f', 2);
+                       .arg(shownNumber(r.max_torque, 2));
     if (!r.completed)
         text += QLatin1Char(' ') + tr("Not completed: %1").arg(QString::fromStdString(r.problem));
     summary_->setText(text);
@@ -196,8 +197,8 @@ void QuickReturnFiguresForm::redraw() {
     const qr::RunFigureStats st = run_.stats();
     figures_->setPanel(2,
                        tr("Velocity error in the work: max %1, RMS %2 m/s")
-                           .arg(st.velocity_error_max, 0, 'f', 3)
-                           .arg(st.velocity_error_rms, 0, 'f', 3),
+                           .arg(shownNumber(st.velocity_error_max, 3))
+                           .arg(shownNumber(st.velocity_error_rms, 3)),
                        tr("y (m)"), tr("y_d' - y' (m/s)"));
     sourceLabel_->setText(
         run_.active()
@@ -207,12 +208,12 @@ void QuickReturnFiguresForm::redraw() {
                          "RMS %6 m/s (%7 samples); peak torque %8 N m.")
                           .arg(QString::fromUtf8(qr::toString(run_.law().controller)))
                           .arg(st.cuts)
-                          .arg(lo, 0, 'f', 4)
-                          .arg(hi, 0, 'f', 4)
-                          .arg(st.velocity_error_max, 0, 'f', 4)
-                          .arg(st.velocity_error_rms, 0, 'f', 4)
+                          .arg(shownNumber(lo, 4))
+                          .arg(shownNumber(hi, 4))
+                          .arg(shownNumber(st.velocity_error_max, 4))
+                          .arg(shownNumber(st.velocity_error_rms, 4))
                           .arg(st.samples_in_work)
-                          .arg(st.max_torque, 0, 'f', 2));
+                          .arg(shownNumber(st.max_torque, 2)));
     ++redraws_;
     emit runFiguresDrawn();
 }

@@ -1,4 +1,5 @@
 #include "ui/machines/quick_return/quick_return_tracking_page.h"
+#include "ui/shown_number.h"
 
 #include "core/machines/quick_return/quick_return_spec.h"
 #include "plots/xy_figures_widget.h"
@@ -30,9 +31,9 @@ QString upper(qr::ControllerKind k) {
     return QString::fromUtf8(qr::toString(k)).toUpper();
 }
 
-// Numbers in the C locale: QString::number never uses the default QLocale.
+// Numbers in the GUI language's form.
 QString num(double v, int decimals) {
-    return QString::number(v, 'f', decimals);
+    return shownNumber(v, decimals);
 }
 
 TrackingBatch runAll(const qr::ExperimentSetup& setup,
@@ -77,10 +78,7 @@ QuickReturnTrackingForm::QuickReturnTrackingForm(JobEditor* editor, QWidget* par
         for (int c = 1; c < 4; ++c)
             table_->setItem(r, c, new QTableWidgetItem(QStringLiteral("-")));
     }
-    // Exactly the four rows: no empty band below them.
-    table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
-                           4 * table_->verticalHeader()->defaultSectionSize() +
-                           2 * table_->frameWidth());
+    fitTableHeight();
     // Two rows: FFC, LQT, SMC; OSMC and the four errors (twice as wide).
     figures_ = new cutcell::plots::XyFiguresWidget(5, 3, this);
     for (int i = 0; i < 4; ++i)
@@ -120,9 +118,18 @@ void QuickReturnTrackingForm::describe(const cutcell::Job& job) {
                         .arg(num(spec->track_duration, 1))
                         .arg(num(spec->mse_window, 1))
                         .arg(num(spec->mse_scale, 0)));
+    // Two lines a heading: on one line they were cut in a pane of 424 px (1280x720).
     table_->setHorizontalHeaderLabels({tr("Controller"),
-                                       tr("MSE, last %1 s").arg(num(spec->mse_window, 1)),
-                                       tr("max |e| (mm)"), tr("peak torque (N m)")});
+                                       tr("MSE,\nlast %1 s").arg(num(spec->mse_window, 1)),
+                                       tr("max |e|\n(mm)"), tr("peak torque\n(N m)")});
+    fitTableHeight(); // the headings' two lines
+}
+
+void QuickReturnTrackingForm::fitTableHeight() {
+    // Exactly the header and the four rows: no empty band below them, no row cut.
+    table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
+                           4 * table_->verticalHeader()->defaultSectionSize() +
+                           2 * table_->frameWidth());
 }
 
 bool QuickReturnTrackingForm::running() const {

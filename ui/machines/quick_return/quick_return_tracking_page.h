@@ -63,6 +63,7 @@ class QuickReturnTrackingForm : public JobForm {
     void reloadExtra(const cutcell::Job& job) override;
 
   private:
+    void fitTableHeight();
     void batchFinished();
     void describe(const cutcell::Job& job);
 

@@ -144,24 +144,33 @@ SectionSteelDrivesForm::SectionSteelDrivesForm(JobEditor* editor, QWidget* paren
          [](SectionSteelSpec& s, size_t i) -> double& { return s.plant[i].viscous_nm_s_per_rad; }},
         {"torque_limit_nm", tr("τ max (N m)"), 1,
          [](SectionSteelSpec& s, size_t i) -> double& { return s.plant[i].torque_limit_nm; }}};
-    auto* box = new QGroupBox(tr("Drives"), this);
-    auto* grid = new QGridLayout(box);
+    // Two tables, the controller's four columns and the plant's three: seven in one were
+    // 726 px wide, the pane at 1280x720 shows 438 (the units were cut at its edge).
     const char* const names[kSteelAxes] = {"path θ1",   "path θ2",   "path θ3",   "groove θ1",
                                            "groove θ2", "groove θ3", "groove θ4", "groove θ5"};
-    for (int c = 0; c < static_cast<int>(std::size(columns)); ++c)
-        grid->addWidget(new QLabel(columns[c].title, box), 0, c + 1);
-    for (size_t i = 0; i < kSteelAxes; ++i) {
-        const int row = static_cast<int>(i) + 1;
-        grid->addWidget(new QLabel(QString::fromUtf8(names[i]), box), row, 0);
-        for (int c = 0; c < static_cast<int>(std::size(columns)); ++c) {
-            const auto ref = columns[c].ref;
-            grid->addWidget(bindDouble(indexed("drives", i) + "." + columns[c].key,
-                                       columns[c].decimals,
-                                       [ref, i](Job& j) -> double& { return ref(spec(j), i); }),
-                            row, c + 1);
+    const auto table = [&](const QString& title, int first, int count) {
+        auto* box = new QGroupBox(title, this);
+        auto* grid = new QGridLayout(box);
+        for (int c = 0; c < count; ++c) {
+            auto* head = new QLabel(columns[first + c].title, box);
+            head->setWordWrap(true); // "Ki" over "(N m/(rad s))"
+            grid->addWidget(head, 0, c + 1);
         }
-    }
-    mainLayout()->addWidget(box);
+        for (size_t i = 0; i < kSteelAxes; ++i) {
+            const int row = static_cast<int>(i) + 1;
+            grid->addWidget(new QLabel(QString::fromUtf8(names[i]), box), row, 0);
+            for (int c = 0; c < count; ++c) {
+                const auto ref = columns[first + c].ref;
+                grid->addWidget(bindDouble(indexed("drives", i) + "." + columns[first + c].key,
+                                           columns[first + c].decimals,
+                                           [ref, i](Job& j) -> double& { return ref(spec(j), i); }),
+                                row, c + 1);
+            }
+        }
+        mainLayout()->addWidget(box);
+    };
+    table(tr("Drives: controller"), 0, 4);
+    table(tr("Drives: joint plant"), 4, 3);
     mainLayout()->addStretch(1);
 }
 
