@@ -8,7 +8,8 @@
 //     is cut at its right edge (failed at 1d85373).
 // 14. A form's message names the field by its label, not the job file's key, and a speed of
 //     0 is told with the field's range, not "must be > 0".
-// 15. The keyboard focus is visible (an amber frame), and Tab leaves a table.
+// 15. The keyboard focus is visible (an amber frame), and Tab leaves a table. The position
+//     readout shows no "-0.000" and numbers in the GUI language's form (failed at 1d85373).
 #include "core/job/default_job.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/number_fields.h"
@@ -16,6 +17,7 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/dro_panel.h"
 #include "ui/panels/elided_label.h"
 #include "ui/panels/progress_panel.h"
 #include "ui/panels/recovery_panel.h"
@@ -291,6 +293,26 @@ class TestOperatorDefectsLast : public QObject {
         estop->setFocus();
         QTRY_VERIFY(estop->hasFocus());
         QVERIFY(pixelsNear(estop->grab().toImage(), Qt::white) > whiteBefore + estop->width());
+    }
+
+    void defect15_theDroShowsNoMinusZeroAndTheGuiLanguagesNumbers() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        auto program = std::make_shared<cutcell::MotionProgram>();
+        program->axis_count = 2;
+        program->axis_names[0] = "x";
+        program->axis_linear[0] = true;
+        program->axis_names[1] = "a";
+        CutCell::ui::DroPanel dro;
+        dro.setProgram(program);
+        QCOMPARE(dro.axisCount(), 2);
+        cutcell::TelemetrySample s{};
+        s.setpoint = cutcell::JointVector::Constant(-1e-7); // 0 on the readout, from below
+        s.actual = cutcell::JointVector::Constant(0.5);     // 0.5 mm, 28.648 deg
+        dro.setSample(s);
+        const QString commanded = dro.commandedText(1), actual = dro.actualText(0);
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        QVERIFY2(!commanded.startsWith('-') && commanded.startsWith("0,"), qPrintable(commanded));
+        QVERIFY2(actual.contains(',') && !actual.contains('.'), qPrintable(actual));
     }
 
     void defect15_tabLeavesATable() {
