@@ -47,7 +47,7 @@ class PdSliderLaw : public MotionSource {
     double pd(double xRef, double vRef, double x, double v) const;
     PdSliderLawConfig cfg_;
     SliderPhase phase_ = SliderPhase::Track;
-    double ref_ = 0, strokeSince_ = 0, brakeAt_ = 0;
+    double ref_ = 0, brakeAt_ = 0;
     int strokes_ = 0, restCount_ = 0;
     bool caught_ = false;
 };

@@ -132,7 +132,7 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
     // touches both edges at r from the corner and has its centre at v - r d_in + r d_out.
     auto dir = [&](size_t i) { return Vec2((c[i + 1].v - c[i].v).normalized()); };
     for (size_t i = 0; i < e.size(); ++i) {
-        const Vec2 d = dir(i);
+        const Vec2 along = dir(i);
         const double cutStart = c[i].r, cutEnd = c[i + 1].r;
         OutlineSegment s;
         s.name = e[i].name;
@@ -140,9 +140,9 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
         s.thickness_mm = e[i].thickness;
         s.groove_side = e[i].grooveSide;
         s.former_table_face = e[i].tableFace;
-        s.p0 = c[i].v + cutStart * d;
-        s.p1 = c[i + 1].v - cutEnd * d;
-        s.n0 = s.n1 = outward(d);
+        s.p0 = c[i].v + cutStart * along;
+        s.p1 = c[i + 1].v - cutEnd * along;
+        s.n0 = s.n1 = outward(along);
         s.length = (s.p1 - s.p0).norm();
         segments_.push_back(s);
         if (cutEnd > 0) {
@@ -152,14 +152,14 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
             OutlineSegment f;
             // Counter-clockwise: a left turn is a convex corner (toe radius), a right turn a
             // concave one (root fillet).
-            const bool convex = d.x() * dOut.y() - d.y() * dOut.x() > 0;
+            const bool convex = along.x() * dOut.y() - along.y() * dOut.x() > 0;
             f.name = std::string(convex ? "toe radius (" : "root fillet (") + e[i].name + " / " +
                      next.name + ")";
             f.kind = FaceKind::Fillet;
             f.thickness_mm = std::min(e[i].thickness, next.thickness);
             f.arc = true;
             f.radius = cutEnd;
-            f.centre = c[i + 1].v - cutEnd * d + cutEnd * dOut;
+            f.centre = c[i + 1].v - cutEnd * along + cutEnd * dOut;
             f.p0 = s.p1;
             f.p1 = c[i + 1].v + cutEnd * dOut;
             f.a0 = angleOf(f.p0 - f.centre);
@@ -169,7 +169,7 @@ SectionOutline::SectionOutline(const SectionDims& d, bool turnedOver)
             while (a1 - f.a0 < -kPi)
                 a1 += 2 * kPi;
             f.a1 = a1;
-            f.n0 = outward(d);
+            f.n0 = outward(along);
             f.n1 = outward(dOut);
             f.length = cutEnd * std::fabs(f.a1 - f.a0);
             segments_.push_back(f);
