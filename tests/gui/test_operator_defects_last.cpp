@@ -150,7 +150,18 @@ class TestOperatorDefectsLast : public QObject {
         w.recovery()->setStopPoint(stop);
         w.recovery()->setState(cutcell::EngineState::Ready, true);
         QTest::qWait(50); // the layouts settle (posted layout requests)
-        const QStringList clipped = clippedSideways(w.operatorColumn());
+        QStringList clipped = clippedSideways(w.operatorColumn());
+        // Each state's word beside the percent (after the run: the figures stay).
+        using cutcell::EngineState;
+        for (EngineState state :
+             {EngineState::Idle, EngineState::Ready, EngineState::Homing, EngineState::Jogging,
+              EngineState::EmergencyStop, EngineState::Fault}) {
+            cutcell::TelemetrySample after{};
+            after.state = state;
+            w.progress()->setSample(after);
+            QTest::qWait(20);
+            clipped << clippedSideways(w.operatorColumn());
+        }
         QVERIFY(CutCell::ui::applyGuiLanguage("en"));
         QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("\n")));
     }
