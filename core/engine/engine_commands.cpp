@@ -31,7 +31,9 @@ double MotionEngine::Impl::speedLimit(int i) const {
     return linear ? cfg.spec.home_speed_mm_s : deg2rad(cfg.spec.home_speed_deg_s);
 }
 JointVector MotionEngine::Impl::homeTarget() const {
-    JointVector target = program->reference;
+    return nearestEquivalent(program->reference);
+}
+JointVector MotionEngine::Impl::nearestEquivalent(JointVector target) const {
     for (int i = 0; i < axisCount(); ++i) {
         if (!program->axis_continuous[static_cast<size_t>(i)]) continue;
         // The reference's equivalent nearest to the set-point: the difference wrapped into

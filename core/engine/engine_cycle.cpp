@@ -284,7 +284,10 @@ JointSample MotionEngine::Impl::evaluate(double t) const {
 }
 
 JointVector MotionEngine::Impl::startPosition() const {
-    return isSourceProgram() ? program->start_position : program->spline.evaluate(startTau).q;
+    // A source starts from where the axes are (it reads the set-point at its reset): a
+    // continuous axis needs no whole turns unwound to get there.
+    return isSourceProgram() ? nearestEquivalent(program->start_position)
+                             : program->spline.evaluate(startTau).q;
 }
 
 void MotionEngine::Impl::startPath() {

@@ -217,7 +217,10 @@ struct MotionEngine::Impl {
     int axisCount() const { return program ? program->axis_count : 0; }
     bool axisPresent(int i) const { return dev.axes[static_cast<size_t>(i)] != nullptr; }
     double speedLimit(int i) const;
-    // The reference, with every continuous axis at its equivalent nearest to the set-point.
+    // `target` with every continuous axis at its equivalent nearest to the set-point (whole
+    // turns dropped: at most half a turn away).
+    JointVector nearestEquivalent(JointVector target) const;
+    // The reference, so.
     JointVector homeTarget() const;
     // Where this run started on the path if it is a cut recovery (not valid otherwise).
     RunStopPoint recoveryStart() const;

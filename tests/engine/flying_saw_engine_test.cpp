@@ -144,6 +144,49 @@ TrackingReport runToEnd(SawCell& cell) {
     return r;
 }
 
+// The set-point of the next cycle (the telemetry drained first: the newest sample).
+JointVector setpointNow(SawCell& cell) {
+    TelemetrySample t{};
+    while (cell.engine->popTelemetry(t)) {
+    }
+    cell.engine->runCycles(1, static_cast<EngineState>(255));
+    while (cell.engine->popTelemetry(t)) {
+    }
+    return t.setpoint;
+}
+
+// The turntable turns half a turn a cut and has no end stops: after five pieces it stands five
+// half turns on. Home takes it the short way to its reference (at most half a turn), and the
+// next Start approaches its start the short way too; before, Home unwound every turn at the
+// home speed (the walkthrough saw 120 s) and Start unwound them again.
+TEST(FlyingSawEngine, TheTurntableHomesAndStartsTheShortWayAfterARun) {
+    SawCell cell(5);
+    runToEnd(cell);
+    const double before = setpointNow(cell)[1];
+    EXPECT_GT(before, 4.5 * kPi); // five half turns
+    cell.engine->home();
+    cell.engine->runCycles(1, EngineState::Idle);
+    const std::uint64_t limit = 200000;
+    std::uint64_t cycles = 0;
+    while (cell.engine->state() == EngineState::Homing && cycles < limit)
+        cycles += 1, cell.engine->runCycles(1, static_cast<EngineState>(255));
+    ASSERT_EQ(cell.engine->state(), EngineState::Ready) << cell.events();
+    const double homed = setpointNow(cell)[1];
+    EXPECT_LE(std::fabs(homed - before), kPi + 1e-9);
+    EXPECT_NEAR(std::remainder(homed, 2 * kPi), 0.0, 1e-9); // the reference's equivalent
+    // Half a turn at the home speed, with its ramps: well under what five half turns took.
+    const double halfTurnS = kPi / deg2rad(cell.job.engine.home_speed_deg_s);
+    EXPECT_LE(static_cast<double>(cycles) * cell.job.sim.period_s, 1.5 * halfTurnS + 2.0)
+        << cycles << " cycles";
+    cell.engine->start();
+    cell.engine->runCycles(1, EngineState::Idle);
+    ASSERT_EQ(cell.engine->state(), EngineState::Running) << cell.events();
+    double farthest = 0;
+    for (int i = 0; i < 3000; ++i)
+        farthest = std::max(farthest, std::fabs(setpointNow(cell)[1] - homed));
+    EXPECT_LE(farthest, kPi + 1e-9); // the approach and the first cut: no unwinding
+}
+
 // Over a bus the feedback of a cycle can come cycles late (a TPDO held up on a loaded host).
 // Told its age, the engine pairs it with the set-point of its own cycle: the carriage's
 // tracking figures are those of feedback on time. Untold, the same drive shows the set-point's

@@ -34,6 +34,10 @@ std::shared_ptr<MotionProgram> buildFlyingSawProgram(const Job& job, const Flyin
     p->axis_count = 4;
     p->axis_names = {"carriage", "turntable", "feed 1", "feed 2"};
     p->axis_linear = {true, false, true, true};
+    // The turntable turns on, half a turn a cut: Home and the approach at Start take the short
+    // way instead of unwinding every turn of the runs before (120 s and more at the home speed
+    // after a long run).
+    p->axis_continuous[1] = true;
     p->axis_modes = {AxisCommandMode::Position, AxisCommandMode::Position,
                      AxisCommandMode::Position, AxisCommandMode::Position};
     JointVector start = JointVector::Zero();
