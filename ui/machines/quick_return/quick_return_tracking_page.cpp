@@ -31,11 +31,6 @@ QString upper(qr::ControllerKind k) {
     return QString::fromUtf8(qr::toString(k)).toUpper();
 }
 
-// Numbers in the GUI language's form.
-QString num(double v, int decimals) {
-    return shownNumber(v, decimals);
-}
-
 TrackingBatch runAll(const qr::ExperimentSetup& setup,
                      const std::shared_ptr<std::atomic<bool>>& cancel) {
     TrackingBatch b;
@@ -111,16 +106,16 @@ void QuickReturnTrackingForm::describe(const cutcell::Job& job) {
     intro_->setText(tr("Tracking y_d = %1 %2 %3 sin(%4 t) for %5 s without contact force, "
                        "each controller with the job's parameters (Controller page); MSE of "
                        "L e over the last %6 s with L = %7.")
-                        .arg(num(spec->track_offset, 3))
+                        .arg(shownNumber(spec->track_offset, 3))
                         .arg(spec->track_amplitude < 0 ? QStringLiteral("-") : QStringLiteral("+"))
-                        .arg(num(std::abs(spec->track_amplitude), 3))
-                        .arg(num(spec->track_omega, 4))
-                        .arg(num(spec->track_duration, 1))
-                        .arg(num(spec->mse_window, 1))
-                        .arg(num(spec->mse_scale, 0)));
+                        .arg(shownNumber(std::abs(spec->track_amplitude), 3))
+                        .arg(shownNumber(spec->track_omega, 4))
+                        .arg(shownNumber(spec->track_duration, 1))
+                        .arg(shownNumber(spec->mse_window, 1))
+                        .arg(shownNumber(spec->mse_scale, 0)));
     // Two lines a heading: on one line they were cut in a pane of 424 px (1280x720).
     table_->setHorizontalHeaderLabels({tr("Controller"),
-                                       tr("MSE,\nlast %1 s").arg(num(spec->mse_window, 1)),
+                                       tr("MSE,\nlast %1 s").arg(shownNumber(spec->mse_window, 1)),
                                        tr("max |e|\n(mm)"), tr("peak torque\n(N m)")});
     fitTableHeight(); // the headings' two lines
 }
@@ -165,9 +160,9 @@ void QuickReturnTrackingForm::batchFinished() {
         const qr::TrackingResult& r = last_.results[i];
         const int row = static_cast<int>(i);
         table_->item(row, 0)->setText(upper(r.controller));
-        table_->item(row, 1)->setText(num(r.mse, 4));
-        table_->item(row, 2)->setText(num(r.max_abs_error * 1000, 3));
-        table_->item(row, 3)->setText(num(r.max_torque, 2));
+        table_->item(row, 1)->setText(shownNumber(r.mse, 4));
+        table_->item(row, 2)->setText(shownNumber(r.max_abs_error * 1000, 3));
+        table_->item(row, 3)->setText(shownNumber(r.max_torque, 2));
         XyCurve y{tr("y"), {}, {}, kColours[i]};
         XyCurve yd{tr("y_d"), {}, {}, QColor(220, 60, 30), true};
         XyCurve e{upper(r.controller), {}, {}, kColours[i]};
@@ -186,9 +181,9 @@ void QuickReturnTrackingForm::batchFinished() {
         if (last_.results[i].mse < last_.results[best].mse) best = i;
     if (!last_.results.empty())
         status_->setText(tr("Done in %1 s (off the GUI thread). Lowest MSE: %2 (%3).")
-                             .arg(num(last_.seconds, 2))
+                             .arg(shownNumber(last_.seconds, 2))
                              .arg(upper(last_.results[best].controller))
-                             .arg(num(last_.results[best].mse, 4)));
+                             .arg(shownNumber(last_.results[best].mse, 4)));
     emit finished();
 }
 
