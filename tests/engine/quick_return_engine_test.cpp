@@ -125,6 +125,23 @@ TEST(QuickReturnEngine, FeedHoldInEveryPhaseComesToRestAndResumes) {
         }
 }
 
+// Abort in any phase of the stroke brings the crank to rest within 1.5 s (the CI walkthrough
+// of 2026-12-03 saw the crank Running at stroke 1 of 3 over 20 s after F8 twice).
+TEST(QuickReturnEngine, AbortInEveryPhaseComesToRest) {
+    using quick_return::QrPhase;
+    for (const bool contact : {false, true})
+        for (const QrPhase at : {QrPhase::ReturnPush, QrPhase::ReturnBrake, QrPhase::Cut}) {
+            SCOPED_TRACE(std::string(toString(at)) + (contact ? ", with contact" : ""));
+            QrCell cell(StopCategory::Cat0, 1, contact);
+            ASSERT_TRUE(cell.until([&] { return cell.law().phase() == at; }, 20000));
+            cell.engine->abort();
+            EXPECT_TRUE(
+                cell.until([&] { return cell.engine->state() != EngineState::Running; }, 1500))
+                << "still " << toString(cell.engine->state()) << " in "
+                << toString(cell.law().phase()) << " 1.5 s after the abort";
+        }
+}
+
 TEST(QuickReturnEngine, InvalidScaleIsAFaultWithTorqueOff) {
     QrCell cell;
     ASSERT_TRUE(cell.until([&] { return cell.law().phase() == quick_return::QrPhase::Cut; }));

@@ -280,6 +280,10 @@ void QuickReturnLaw::update(const SourceInput& in, SourceOutput& out) {
             break;
         case QrPhase::Braking:
         case QrPhase::Done: {
+            // Still fast (an abort in the open-loop return, ~1 rev/s): damp the speed only and
+            // hold where the crank comes to rest; pulling it back to where the stop began made
+            // the torque-limited crank overshoot and swing for ever (never at rest).
+            if (std::fabs(dq) > 10 * c_.rest_speed) brakeAt_ = q;
             tau = holdTorque(c_, q, dq, brakeAt_, 0, T);
             rest_ = std::fabs(dq) < c_.rest_speed ? rest_ + 1 : 0;
             if (rest_ >= c_.rest_cycles) {
