@@ -92,23 +92,33 @@ TEST(QuickReturnEngine, EmergencyStopRemovesTorqueWithinOneCycle) {
     EXPECT_EQ(cell.rig->drive().read(0).state, DriveState::Disabled);
 }
 
-// A feed hold in any phase of the stroke brings the crank to rest (Paused) within 1.5 s — the
-// cut or the open-loop return it came in is finished first — and Resume goes on to the last
-// stroke. The operator station's walkthrough found the hold in the open-loop return (64 ms
-// after Start) never coming to rest: still Running 20 s later; braked half-way, a resume then
-// ended the run at once (Completed after 0 of 3 strokes).
-TEST(QuickReturnEngine, FeedHoldInEveryPhaseComesToRestAndResumes) {
+// Runs `stop` on a cell in each phase of the stroke (with and without the cutting force) and
+// expects the crank out of Running within 1.5 s; then `after` (may be empty) on that cell.
+template <class Stop, class After> void stopInEveryPhase(const char* what, Stop stop, After after) {
     using quick_return::QrPhase;
     for (const bool contact : {false, true})
         for (const QrPhase at : {QrPhase::ReturnPush, QrPhase::ReturnBrake, QrPhase::Cut}) {
             SCOPED_TRACE(std::string(toString(at)) + (contact ? ", with contact" : ""));
             QrCell cell(StopCategory::Cat0, 1, contact);
             ASSERT_TRUE(cell.until([&] { return cell.law().phase() == at; }, 20000));
-            cell.engine->feedHold();
+            stop(*cell.engine);
             EXPECT_TRUE(
                 cell.until([&] { return cell.engine->state() != EngineState::Running; }, 1500))
                 << "still " << toString(cell.engine->state()) << " in "
-                << toString(cell.law().phase()) << " 1.5 s after the hold";
+                << toString(cell.law().phase()) << " 1.5 s after the " << what;
+            after(cell);
+        }
+}
+
+// A feed hold in any phase of the stroke brings the crank to rest (Paused) within 1.5 s — the
+// cut or the open-loop return it came in is finished first — and Resume goes on to the last
+// stroke. The operator station's walkthrough found the hold in the open-loop return (64 ms
+// after Start) never coming to rest: still Running 20 s later; braked half-way, a resume then
+// ended the run at once (Completed after 0 of 3 strokes).
+TEST(QuickReturnEngine, FeedHoldInEveryPhaseComesToRestAndResumes) {
+    stopInEveryPhase(
+        "hold", [](MotionEngine& e) { e.feedHold(); },
+        [](QrCell& cell) {
             ASSERT_EQ(cell.engine->state(), EngineState::Paused);
             cell.engine->resume();
             ASSERT_TRUE(cell.until(
@@ -122,24 +132,14 @@ TEST(QuickReturnEngine, FeedHoldInEveryPhaseComesToRestAndResumes) {
                 events += std::string(e.text.data()) + "\n";
             EXPECT_EQ(cell.engine->state(), EngineState::Completed) << events;
             EXPECT_EQ(cell.law().strokesDone(), quickReturnSpec(cell.job).strokes);
-        }
+        });
 }
 
 // Abort in any phase of the stroke brings the crank to rest within 1.5 s (the CI walkthrough
 // of 2026-12-03 saw the crank Running at stroke 1 of 3 over 20 s after F8 twice).
 TEST(QuickReturnEngine, AbortInEveryPhaseComesToRest) {
-    using quick_return::QrPhase;
-    for (const bool contact : {false, true})
-        for (const QrPhase at : {QrPhase::ReturnPush, QrPhase::ReturnBrake, QrPhase::Cut}) {
-            SCOPED_TRACE(std::string(toString(at)) + (contact ? ", with contact" : ""));
-            QrCell cell(StopCategory::Cat0, 1, contact);
-            ASSERT_TRUE(cell.until([&] { return cell.law().phase() == at; }, 20000));
-            cell.engine->abort();
-            EXPECT_TRUE(
-                cell.until([&] { return cell.engine->state() != EngineState::Running; }, 1500))
-                << "still " << toString(cell.engine->state()) << " in "
-                << toString(cell.law().phase()) << " 1.5 s after the abort";
-        }
+    stopInEveryPhase(
+        "abort", [](MotionEngine& e) { e.abort(); }, [](QrCell&) {});
 }
 
 TEST(QuickReturnEngine, InvalidScaleIsAFaultWithTorqueOff) {
