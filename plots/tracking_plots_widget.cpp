@@ -51,6 +51,9 @@ QString csvName(QString s) {
 // the count (tssMeetTickCount) instead of rounding the step to 1-2-5, which could leave one
 // tick in view or pack five into 60 px.
 constexpr int kTickSpacingPx = 24;
+// The narrowest y range a plot shows, as a half span in the axis's unit (deg or mm) or, away
+// from 0, relative to the value: an error that stays 0 is drawn as a line in the middle.
+constexpr double kMinHalfSpan = 1e-3;
 void fitTicks(QCustomPlot* p) {
     const int h = p->axisRect()->height() > 0 ? p->axisRect()->height() : p->height() - 60;
     p->yAxis->ticker()->setTickCount(std::clamp(h / kTickSpacingPx, 2, 8));
@@ -331,10 +334,26 @@ struct TrackingPlotsWidget::Impl {
     }
 
     void rescale(QCustomPlot* p) {
-        p->rescaleAxes(true);
-        QCPRange y = p->yAxis->range();
-        const double pad = std::max(1e-6, y.size() * 0.06);
-        p->yAxis->setRange(y.lower - pad, y.upper + pad);
+        p->rescaleAxes(true); // x from the data
+        // y from the data alone, never from the range shown: for a flat trace (an error that
+        // stays 0) QCPAxis::rescale keeps the current span, and the pad added to it grew the
+        // range 12 % on every redraw, to +-1e15 within a minute.
+        bool found = false;
+        QCPRange y;
+        for (int g = 0; g < p->graphCount(); ++g) {
+            if (!p->graph(g)->visible()) continue;
+            bool ok = false;
+            const QCPRange r = p->graph(g)->getValueRange(ok, QCP::sdBoth, p->xAxis->range());
+            if (!ok) continue;
+            y = found ? QCPRange(std::min(y.lower, r.lower), std::max(y.upper, r.upper)) : r;
+            found = true;
+        }
+        if (!found) return;
+        const double centre = y.center();
+        const double half =
+            std::max(0.5 * y.size(), kMinHalfSpan * std::max(1.0, std::fabs(centre)));
+        const double shown = half * 1.12; // 6 % of the data's span as a margin on each side
+        p->yAxis->setRange(centre - shown, centre + shown);
     }
     void rescaleAll() {
         for (int i = 0; i < shown; ++i)

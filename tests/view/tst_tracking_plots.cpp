@@ -54,6 +54,7 @@ class TstTrackingPlots : public QObject {
     void readableAtOperatorSizes_data();
     void readableAtOperatorSizes();
     void clearFollowsTheNewDataAgain();
+    void flatTraceKeepsANarrowRange();
 };
 
 void TstTrackingPlots::ringKeepsNewestAndCountsDrops() {
@@ -388,4 +389,28 @@ void TstTrackingPlots::clearFollowsTheNewDataAgain() {
     QVERIFY(!w.autoscale());
     w.clear();
     QVERIFY(w.autoscale());
+}
+
+void TstTrackingPlots::flatTraceKeepsANarrowRange() {
+    // A run whose errors stay exactly 0 (a crank at rest, a simulated axis): redraw after redraw
+    // the y range stays narrow around the line (it grew 12 % a redraw, to +-1e15 on screen).
+    TrackingPlotsWidget w;
+    w.resize(560, 300);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const double zeros[6] = {0, 0, 0, 0, 0, 0};
+    const double tip[3] = {5, 5, 5}; // flat away from 0: the span follows the value
+    for (int i = 0; i < 400; ++i) {
+        w.append(i * 1e-2, zeros, 6, tip);
+        w.replotNow();
+    }
+    const QList<QCustomPlot*> plots = w.findChildren<QCustomPlot*>();
+    QCOMPARE(plots.size(), 2);
+    const QCPRange axes = plots[0]->yAxis->range();
+    QVERIFY2(axes.contains(0) && axes.size() < 3e-3, qPrintable(QString::number(axes.size())));
+    const QCPRange tipRange = plots[1]->yAxis->range();
+    QVERIFY2(tipRange.contains(5) && tipRange.size() < 15e-3,
+             qPrintable(QString::number(tipRange.size())));
+    // The line lies inside the axis, not on its edge.
+    QVERIFY(axes.lower < -1e-4 && axes.upper > 1e-4);
 }
