@@ -181,11 +181,14 @@ int runRun(const RunOptions& o) {
     bool ok = engine.load(program) && engine.enable() && step(EngineState::Ready);
     ok = ok && engine.home() && step(EngineState::Ready);
     ok = ok && engine.start() && step(EngineState::Completed);
+    // A signal's safe stop latches the E-STOP before it has disabled the drives and logged:
+    // wait for it, so the run ends as stopped by the signal and its last line is logged.
+    const int sig = SafeShutdown::requestedSignalAfterActions(2000);
     if (realtime) engine.stopThread();
     (void)ok;
     engine.flushRunLog();
     printEvents(engine, quiet);
-    if (const int sig = SafeShutdown::requestedSignal()) {
+    if (sig) {
         std::fprintf(stderr, "cutcell-cli run: stopped by %s\n", SafeShutdown::signalName(sig));
         return 128 + sig;
     }

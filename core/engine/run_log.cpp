@@ -71,6 +71,7 @@ void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std
         // The events still go to events.log; a missing job.json is visible in the folder.
     }
     openFile((dir / "events.log").string());
+    runOpen_ = true;
     (void)jobName;
 }
 
@@ -90,7 +91,10 @@ void RunLog::event(const EngineEvent& e) {
 }
 
 void RunLog::eventForLastRun(const EngineEvent& e) {
-    if (file_ || dir_.empty()) {
+    // Not "if a file is open": an event after the run's end opens engine.log, and the line
+    // that says why the program ended went there, not to the run it ended (seen in CI under
+    // load: the E-STOP's events still in the ring when the SIGTERM line came).
+    if (runOpen_ || dir_.empty()) {
         event(e);
         return;
     }
@@ -148,6 +152,7 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
         std::fclose(file_);
         file_ = nullptr;
     }
+    runOpen_ = false;
 }
 
 json::Value RunLog::madeToJson(const RunTerms& terms, const RunStopPoint& end) {

@@ -55,7 +55,8 @@ class RunLog {
     std::string problem_;
     std::vector<std::string> reported_;
     std::string dir_;
-    std::FILE* file_ = nullptr;
+    std::FILE* file_ = nullptr; // the run's events.log, or engine.log between runs
+    bool runOpen_ = false;      // file_ is the open run's events.log
     std::array<std::string, kMaxAxes> names_{};
     RunTerms terms_;
 };

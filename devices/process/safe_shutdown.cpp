@@ -47,6 +47,7 @@ std::function<void(int)>& onRequest() {
 
 int g_pipe[2] = {-1, -1};
 std::atomic<int> g_requested{0};
+std::atomic<bool> g_signalActionsRunning{false};
 std::atomic<int> g_signalsSeen{0};
 std::terminate_handler g_previousTerminate = nullptr;
 
@@ -73,8 +74,10 @@ void watch() {
             any = !registry().empty();
         }
         if (!any) _exit(128 + sig); // nothing to bring to a safe state: the default action
+        g_signalActionsRunning.store(true);
         SafeShutdown::bringToSafeState(SafeShutdown::signalName(sig));
         g_requested.store(sig);
+        g_signalActionsRunning.store(false);
         {
             std::lock_guard lock(callbackMutex());
             if (onRequest()) onRequest()(sig);
@@ -188,6 +191,14 @@ void SafeShutdown::bringToSafeState(const std::string& why) {
 
 int SafeShutdown::requestedSignal() {
     return g_requested.load(std::memory_order_acquire);
+}
+
+int SafeShutdown::requestedSignalAfterActions(int timeout_ms) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+    while (g_signalActionsRunning.load() && g_requested.load() == 0 &&
+           std::chrono::steady_clock::now() < until)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return requestedSignal();
 }
 
 void SafeShutdown::setOnRequest(std::function<void(int signal)> callback) {

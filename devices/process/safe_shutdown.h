@@ -44,6 +44,10 @@ class SafeShutdown {
     static void bringToSafeState(const std::string& why);
     // The signal that asked the program to end after its actions ran; 0 when none.
     static int requestedSignal();
+    // requestedSignal(), but first waits (at most timeout_ms) while a signal's actions are
+    // still running: a loop that ended because the machine stopped (the action's E-STOP) learns
+    // that a signal stopped it, not that the run failed.
+    static int requestedSignalAfterActions(int timeout_ms);
     // Called by the watcher after the actions ran (any thread: post to your event loop).
     static void setOnRequest(std::function<void(int signal)> callback);
     // "SIGINT", "SIGTERM", ... (async-signal-safe: static strings).

@@ -1,10 +1,12 @@
 // Telemetry drained at 30 Hz loses nothing; each run leaves a complete run log.
 #include "engine_fixture.h"
 
+#include "core/engine/run_log.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -148,6 +150,37 @@ TEST(RunLog, EachRunWritesJobEventsAndSummary) {
                         1e-12 * r.joints[i].max_abs); // as written by the JSON writer
         // Events outside a run go to the runs folder's engine.log.
         EXPECT_NE(slurp(dir / "engine.log").find("Drives enabled"), std::string::npos);
+    }
+    fs::remove_all(dir);
+}
+
+// Why the program ended belongs to the run it ended, even when another event came after the
+// run's end and opened engine.log (CI, canopen_cli under load: the SIGTERM line was missing
+// from the run's events.log).
+TEST(RunLog, TheLastRunsLineGoesToItsRunAfterLaterEvents) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("cutcell_runlog_last_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    {
+        RunLog log(dir.string());
+        const auto event = [](const char* text) {
+            EngineEvent e;
+            std::snprintf(e.text.data(), e.text.size(), "%s", text);
+            return e;
+        };
+        log.beginRun(1, "job", "{}");
+        const fs::path run = log.runDirectory();
+        log.event(event("inside the run"));
+        log.endRun("emergency stop", TrackingReport{}, CycleStats{});
+        log.event(event("after the run"));
+        log.eventForLastRun(event("program ending (SIGTERM)"));
+        const std::string runLog = slurp(run / "events.log");
+        EXPECT_NE(runLog.find("inside the run"), std::string::npos) << runLog;
+        EXPECT_NE(runLog.find("program ending (SIGTERM)"), std::string::npos) << runLog;
+        EXPECT_EQ(runLog.find("after the run"), std::string::npos) << runLog;
+        const std::string engineLog = slurp(dir / "engine.log");
+        EXPECT_NE(engineLog.find("after the run"), std::string::npos) << engineLog;
+        EXPECT_EQ(engineLog.find("program ending"), std::string::npos) << engineLog;
     }
     fs::remove_all(dir);
 }
