@@ -72,6 +72,8 @@ MainWindow::~MainWindow() = default;
 void MainWindow::buildLayout() {
     params_ = new ParameterTabs(editor_, this);
     params_->setMinimumWidth(420);
+    run_->setIssueDescriber(
+        [this](const cutcell::JobIssue& i) { return params_->issueMessage(i); });
     cell_ = new CellViewPanel(this);
     plots_ = new PlotsPanel(this);
     controls_ = new ControlPanel(this);

@@ -5,6 +5,7 @@
 
 #include "core/job/job_io.h"
 #include "core/json/json.h"
+#include "ui/forms/issue_text.h"
 #include "ui/forms/job_editor.h"
 #include "ui/link_control.h"
 #include "ui/plan_worker.h"
@@ -252,7 +253,8 @@ void RunController::updateBlocked() {
     const auto& issues = editor_->issues();
     if (!issues.empty())
         r = tr("%n invalid field(s) - %1", nullptr, static_cast<int>(issues.size()))
-                .arg(QString::fromStdString(issues.front().message));
+                .arg(describeIssue_ ? describeIssue_(issues.front())
+                                    : issueText(issues.front(), QString()));
     else if (planning())
         r = tr("planning the path...");
     else if (!plan_)

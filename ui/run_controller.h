@@ -6,6 +6,7 @@
 //
 // Threading contract: GUI thread only; nothing here waits on the engine or the planner.
 #include "core/job/job.h"
+#include "core/job/job_io.h"
 #include "core/trajectory/cut_planner.h"
 #include "ui/engine_bridge.h"
 #include "ui/engine_rig.h"
@@ -13,6 +14,7 @@
 
 #include <QObject>
 
+#include <functional>
 #include <memory>
 
 class QTimer;
@@ -31,6 +33,10 @@ class RunController : public QObject {
     ~RunController() override;
 
     void setClockMode(cutcell::ClockMode clock) { clock_ = clock; }
+    // How an invalid field is named in the Start reason (the forms know the labels).
+    void setIssueDescriber(std::function<QString(const cutcell::JobIssue&)> describe) {
+        describeIssue_ = std::move(describe);
+    }
     EngineBridge* bridge() const { return bridge_; }
     PlanWorker* planner() const { return planner_; }
     std::shared_ptr<const cutcell::CutPlan> plan() const { return plan_; }
@@ -159,6 +165,7 @@ class RunController : public QObject {
     bool autoRun_ = false;
     bool userCancelled_ = false;
     bool autoEnableSent_ = false, autoHomeSent_ = false, autoStartSent_ = false;
+    std::function<QString(const cutcell::JobIssue&)> describeIssue_;
 };
 
 } // namespace CutCell::ui

@@ -39,7 +39,12 @@
         <translation>Zustand</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+26"/>
+        <source>engine</source>
+        <translation>Steuerung</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Check the axis for a collision or binding, then its gains and the following error limit.</source>
         <translation>Achse auf Kollision oder Schwergängigkeit prüfen, dann ihre Reglerverstärkungen und die Schleppfehlergrenze.</translation>
     </message>
@@ -728,7 +733,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::EventLogPanel</name>
     <message>
-        <location filename="../../ui/panels/event_log_panel.cpp" line="+20"/>
+        <location filename="../../ui/panels/event_log_panel.cpp" line="+22"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -771,7 +776,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawCarriageSawForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+364"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+365"/>
         <source>Carriage (five periods: BC, CE, EF, FG-GH-HI)</source>
         <translation>Schlitten (fünf Phasen: BC, CE, EF, FG-GH-HI)</translation>
     </message>
@@ -850,7 +855,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawFiguresForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_figures.cpp" line="+55"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_figures.cpp" line="+56"/>
         <source>the job is not for the flying saw</source>
         <translation>der Auftrag ist nicht für die fliegende Säge</translation>
     </message>
@@ -1229,7 +1234,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+139"/>
+        <location filename="../../ui/main_window.cpp" line="+141"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>
@@ -1513,7 +1518,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ParameterTabs</name>
     <message>
-        <location filename="../../ui/forms/parameter_tabs.cpp" line="+76"/>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+77"/>
         <source>Job</source>
         <translation>Auftrag</translation>
     </message>
@@ -2010,7 +2015,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::QuickReturnTrackingForm</name>
     <message>
-        <location filename="../../ui/machines/quick_return/quick_return_tracking_page.cpp" line="+63"/>
+        <location filename="../../ui/machines/quick_return/quick_return_tracking_page.cpp" line="+58"/>
         <source>Run experiment 1 (FFC, LQT, SMC, OSMC)</source>
         <translation>Experiment 1 ausführen (FFC, LQT, SMC, OSMC)</translation>
     </message>
@@ -2300,7 +2305,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::RunController</name>
     <message>
-        <location filename="../../ui/run_controller.cpp" line="+73"/>
+        <location filename="../../ui/run_controller.cpp" line="+74"/>
         <source>Planning cancelled by the operator.</source>
         <translation>Planung vom Bediener abgebrochen.</translation>
     </message>
@@ -2363,7 +2368,7 @@ letzte %1 s</translation>
         </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>planning the path...</source>
         <translation>Bahn wird geplant...</translation>
     </message>
@@ -2959,7 +2964,7 @@ letzte %1 s</translation>
 <context>
     <name>IssueText</name>
     <message>
-        <location filename="../../ui/forms/issue_text.cpp" line="+25"/>
+        <location filename="../../ui/forms/issue_text.cpp" line="+16"/>
         <source>%1 is not a finite number: it must lie in [%2, %3] %4</source>
         <translation>%1 ist keine endliche Zahl: erlaubt sind %2 bis %3 %4</translation>
     </message>
@@ -4031,9 +4036,27 @@ letzte %1 s</translation>
     </message>
 </context>
 <context>
+    <name>SectionSteelScene</name>
+    <message>
+        <location filename="../../ui/machines/section_steel/section_steel_scene.cpp" line="+120"/>
+        <source>Section-steel cutter</source>
+        <translation>Profilstahl-Schneidanlage</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>setup 2: the section turned over</source>
+        <translation>Aufspannung 2: das Profil gewendet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>NOT feasible:</source>
+        <translation>NICHT ausführbar:</translation>
+    </message>
+</context>
+<context>
     <name>SectionUnit</name>
     <message>
-        <location line="+1"/>
+        <location filename="core_labels.cpp" line="+1"/>
         <source>pulses/rev</source>
         <translation>Imp./U</translation>
     </message>
@@ -4056,12 +4079,12 @@ letzte %1 s</translation>
 <context>
     <name>cutcell::plots::TrackingPlotsWidget</name>
     <message>
-        <location filename="../../plots/tracking_plots_widget.cpp" line="+211"/>
+        <location filename="../../plots/tracking_plots_widget.cpp" line="+214"/>
         <source>error (%1)</source>
         <translation>Schleppfehler (%1)</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+152"/>
         <source>%1 samples, %2 dropped</source>
         <translation>%1 Messwerte, %2 verworfen</translation>
     </message>
@@ -4274,7 +4297,27 @@ letzte %1 s</translation>
 <context>
     <name>cutcell::view3d::CellView</name>
     <message>
-        <location filename="../../ui/view3d/cell_view.cpp" line="+67"/>
+        <location filename="../../ui/view3d/cell_view.cpp" line="+56"/>
+        <source>ON</source>
+        <translation>EIN</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>points reachable</source>
+        <translation>Punkte erreichbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>points NOT reachable (red)</source>
+        <translation>Punkte NICHT erreichbar (rot)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Iso</source>
         <translation>Iso</translation>
     </message>

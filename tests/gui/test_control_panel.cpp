@@ -7,6 +7,7 @@
 #include "ui/panels/control_panel.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/progress_panel.h"
+#include "ui/panels/run_words.h"
 #include "ui/panels/state_lamps.h"
 
 #include <QDialog>
@@ -138,6 +139,21 @@ class TestControlPanel : public QObject {
         for (int i = 0; i < CutCell::ui::EventLogPanel::kMaxRows + 10; ++i)
             log.add(cutcell::Severity::Info, QString::number(i));
         QCOMPARE(log.rowCount(), CutCell::ui::EventLogPanel::kMaxRows);
+    }
+
+    void eventTransitionsUseTheStatesWords() {
+        // "Running -> Emergency stop" as the lamps and the state label say it (in German
+        // "Läuft -> NOT-HALT"), not the enum's "EmergencyStop" (issue 21, defect 14).
+        CutCell::ui::EventLogPanel log;
+        cutcell::EngineEvent e;
+        e.from = EngineState::Running;
+        e.to = EngineState::EmergencyStop;
+        log.addEngineEvent(e);
+        QCOMPARE(log.rowCount(), 1);
+        QVERIFY2(log.message(0).contains(CutCell::ui::stateWord(EngineState::Running) + " -> " +
+                                         CutCell::ui::stateWord(EngineState::EmergencyStop)),
+                 qPrintable(log.message(0)));
+        QVERIFY2(!log.message(0).contains("EmergencyStop"), qPrintable(log.message(0)));
     }
 
     void durationFormat() {

@@ -2,6 +2,7 @@
 
 #include "ui/forms/cut_form.h"
 #include "ui/forms/cycle_devices_form.h"
+#include "ui/forms/issue_text.h"
 #include "ui/forms/job_info_form.h"
 #include "ui/forms/narrow_page.h"
 #include "ui/forms/pipes_form.h"
@@ -179,10 +180,15 @@ void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
     lockNote_->setText(reason);
 }
 
+QString ParameterTabs::issueMessage(const cutcell::JobIssue& issue) const {
+    const QWidget* field = fieldFor(issue.key);
+    return issueText(issue, field ? field->accessibleName() : QString());
+}
+
 void ParameterTabs::refreshTitles() {
     QStringList other;
     for (const auto& issue : editor_->issues())
-        if (!fieldFor(issue.key)) other << QString::fromStdString(issue.message);
+        if (!fieldFor(issue.key)) other << issueMessage(issue);
     otherIssues_->setVisible(!other.isEmpty());
     otherIssues_->setText(other.join('\n'));
     for (size_t i = 0; i < forms_.size(); ++i) {

@@ -27,6 +27,9 @@ class ParameterTabs : public QWidget {
     explicit ParameterTabs(JobEditor* editor, QWidget* parent = nullptr);
 
     QWidget* fieldFor(const std::string& key) const;
+    // An issue as the operator reads it: named by its field's label when a form shows the key,
+    // a range issue in the GUI's language (issueText).
+    QString issueMessage(const cutcell::JobIssue& issue) const;
     // Shows the tab holding the field and focuses it.
     void revealField(const std::string& key);
     QTabWidget* tabs() const { return tabs_; }

@@ -90,7 +90,7 @@ QString AlarmPanel::sourceOf(const QString& text, const cutcell::RunTerms& terms
     if (const auto m = axis.match(text); m.hasMatch()) return m.captured(0);
     const QString tool = QString::fromStdString(terms.tool);
     if (!tool.isEmpty() && text.contains(tool, Qt::CaseInsensitive)) return toolWord(terms);
-    return QStringLiteral("engine");
+    return tr("engine");
 }
 
 QString AlarmPanel::actionFor(const QString& text, bool emergencyStop) {

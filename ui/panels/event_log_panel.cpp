@@ -1,5 +1,7 @@
 #include "ui/panels/event_log_panel.h"
 
+#include "ui/panels/run_words.h"
+
 #include <QHeaderView>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -73,9 +75,9 @@ void EventLogPanel::addEngineEvent(const cutcell::EngineEvent& e) {
     const auto len = strnlen(e.text.data(), e.text.size());
     QString msg = QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len));
     if (e.from != e.to) {
-        const QString transition = QStringLiteral("%1 -> %2")
-                                       .arg(QString::fromLatin1(cutcell::toString(e.from)),
-                                            QString::fromLatin1(cutcell::toString(e.to)));
+        // The states in the GUI's words ("Emergency stop", "Not-Halt"), not the enum's names.
+        const QString transition =
+            QStringLiteral("%1 -> %2").arg(stateWord(e.from), stateWord(e.to));
         msg = msg.isEmpty() ? transition : QStringLiteral("%1 (%2)").arg(msg, transition);
         const QString hint = clearHint(e.to);
         if (!hint.isEmpty()) msg += QStringLiteral(". ") + hint;

@@ -557,15 +557,16 @@ void CellScene::Impl::updateStatus() {
     char buf[200];
     // Short: at 1280x720 the view is ~500 px wide and a longer line ran past its edge.
     const char* tool = toolName.c_str();
+    const char* state = (torchOn ? words.on : words.off).c_str();
     if (model.linkage &&
         model.pathWork.empty()) // no planned path: the machine follows a control law
-        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s", percent, tool, torchOn ? "ON" : "off");
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s", percent, tool, state);
     else if (unreachable > 0)
-        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %d points NOT reachable (red)", percent,
-                      tool, torchOn ? "ON" : "off", unreachable);
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %d %s", percent, tool, state,
+                      unreachable, words.notReachable.c_str());
     else
-        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %zu points reachable", percent, tool,
-                      torchOn ? "ON" : "off", model.pathWork.size());
+        std::snprintf(buf, sizeof buf, "%d %%  |  %s %s  |  %zu %s", percent, tool, state,
+                      model.pathWork.size(), words.reachable.c_str());
     status->SetInput(buf);
 }
 
@@ -603,6 +604,12 @@ Vec3 CellScene::pipeSurfaceWorld(double zWork, double angleRad) const {
 
 void CellScene::setToolName(const std::string& name) {
     d->toolName = name.empty() ? std::string("tool") : name;
+    d->statusKey = -1;
+    if (d->hasScene) d->updateStatus();
+}
+
+void CellScene::setStatusWords(const StatusWords& words) {
+    d->words = words;
     d->statusKey = -1;
     if (d->hasScene) d->updateStatus();
 }

@@ -60,6 +60,13 @@ class CellScene {
     // The process tool the status line names ("torch", "saw", "cutter"), translated by the
     // caller; the line reads "42 %  |  saw ON  |  131 points reachable".
     void setToolName(const std::string& name);
+    // The rest of the status line's words in the GUI's language (the Qt side translates):
+    // the tool's state and what follows the point count.
+    struct StatusWords {
+        std::string on = "ON", off = "off";
+        std::string reachable = "points reachable", notReachable = "points NOT reachable (red)";
+    };
+    void setStatusWords(const StatusWords& words);
     std::string statusText() const;
     int doneCount() const;        // path points drawn as done
     int unreachableShown() const; // path points flagged unreachable (drawn red)

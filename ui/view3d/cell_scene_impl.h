@@ -37,6 +37,7 @@ struct CellScene::Impl {
     int unreachable = 0;
     int statusKey = -1;
     std::string toolName = "torch"; // the status line's tool (the program's terms)
+    CellScene::StatusWords words;
     static constexpr int kTitleFontPx = 15, kStatusFontPx = 13;
     double pixelScale = 1.0; // render pixels per screen pixel (CellScene::setPixelScale)
 

@@ -53,6 +53,9 @@ bool CellView::openGlAvailable() {
 
 CellView::CellView(QWidget* parent, Surface surface)
     : QWidget(parent), scene_(std::make_unique<CellScene>()) {
+    scene_->setStatusWords({tr("ON").toStdString(), tr("off").toStdString(),
+                            tr("points reachable").toStdString(),
+                            tr("points NOT reachable (red)").toStdString()});
     const QByteArray forced = qgetenv("CUTCELL_VIEW3D_SURFACE");
     if (forced == "widget") surface = Surface::Widget;
     if (forced == "native") surface = Surface::NativeWindow;

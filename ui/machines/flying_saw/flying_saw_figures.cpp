@@ -1,4 +1,5 @@
 #include "ui/machines/flying_saw/flying_saw_figures.h"
+#include "ui/forms/issue_text.h"
 #include "ui/shown_number.h"
 
 #include "core/common/types.h"
@@ -56,7 +57,7 @@ bool planOf(const JobEditor& editor, cutcell::MachinePlan* out, QString* problem
         return false;
     }
     if (!editor.issues().empty()) {
-        *problem = QString::fromStdString(editor.issues().front().message);
+        *problem = issueText(editor.issues().front(), QString());
         return false;
     }
     *out = module->plan(job, {});

@@ -1,4 +1,5 @@
 #include "ui/machines/flying_saw/flying_saw_forms.h"
+#include "ui/forms/issue_text.h"
 #include "ui/shown_number.h"
 
 #include "ui/forms/number_fields.h"
@@ -228,7 +229,7 @@ bool FlyingSawTubeLineForm::sendQueueToRunningLine(QString* why) {
     if (!source) return refuse(tr("Not sent: no flying-saw program is loaded."));
     for (const cutcell::JobIssue& issue : editor()->issues())
         if (issue.key.rfind("cut.queue", 0) == 0)
-            return refuse(tr("Not sent: %1").arg(QString::fromStdString(issue.message)));
+            return refuse(tr("Not sent: %1").arg(issueText(issue, QString())));
     const FlyingSawSpec* s = specOf(editor()->job());
     if (!s || s->queue.empty()) return refuse(tr("Not sent: the queue is empty."));
     if (s->queue.size() > cutcell::PieceQueue::kCapacity)

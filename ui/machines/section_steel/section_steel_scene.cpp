@@ -5,6 +5,8 @@
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_spec.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -113,9 +115,17 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     const SteelCell cell(spec);
 
     SceneModel m;
-    m.title = job.name.empty() ? "Section-steel cutter" : job.name;
-    if (spec.cut.setup == 2) m.title += "  -  setup 2: the section turned over";
-    if (plan && !plan->ok) m.title += "  -  NOT feasible: " + plan->problem;
+    const auto words = [](const QString& shown) { return shown.toStdString(); };
+    m.title = job.name.empty()
+                  ? words(QCoreApplication::translate("SectionSteelScene", "Section-steel cutter"))
+                  : job.name;
+    if (spec.cut.setup == 2)
+        m.title += "  -  " + words(QCoreApplication::translate("SectionSteelScene",
+                                                               "setup 2: the section turned over"));
+    if (plan && !plan->ok)
+        m.title += "  -  " +
+                   words(QCoreApplication::translate("SectionSteelScene", "NOT feasible:")) + " " +
+                   plan->problem;
     m.axisCount = section_steel::kSteelAxes;
     m.chuckAxis = -1;      // the section lies still; the arms move
     m.toolLength_mm = 550; // the follow-torch view stands 1.8 x this from the cut
