@@ -52,8 +52,9 @@ QString csvName(QString s) {
 // tick in view or pack five into 60 px.
 constexpr int kTickSpacingPx = 24;
 // The narrowest y range a plot shows, as a half span in the axis's unit (deg or mm) or, away
-// from 0, relative to the value: an error that stays 0 is drawn as a line in the middle.
-constexpr double kMinHalfSpan = 1e-3;
+// from 0, relative to the value: an error that stays 0 is drawn as a line in the middle. Far
+// below any error worth seeing: the simulated robot's are about 1e-5 deg and fill the plot.
+constexpr double kMinHalfSpan = 1e-6;
 void fitTicks(QCustomPlot* p) {
     const int h = p->axisRect()->height() > 0 ? p->axisRect()->height() : p->height() - 60;
     p->yAxis->ticker()->setTickCount(std::clamp(h / kTickSpacingPx, 2, 8));
