@@ -1,6 +1,7 @@
 #include "ui/run_controller.h"
 #include "ui/shown_number.h"
 
+#include "ui/panels/engine_text.h"
 #include "ui/panels/run_words.h"
 
 #include "core/job/job_io.h"
@@ -185,7 +186,8 @@ void RunController::loadProgram() {
         }
         rigJob_ = planJob_;
         bridge_->setEngine(&rig_->engine());
-        rigDescription_ = QString::fromStdString(rig_->description());
+        // In the GUI's language (ui/panels/engine_text.h): the rig writes it in English.
+        rigDescription_ = engineText(QString::fromStdString(rig_->description()));
         emit rigChanged(rigDescription_);
         link_->setRig(rig_.get());
     }

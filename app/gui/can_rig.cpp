@@ -97,11 +97,13 @@ class CanRig : public CutCell::ui::EngineRig {
 
     MotionEngine& engine() override { return *engine_; }
     std::string description() const override {
-        char buf[120];
-        std::snprintf(buf, sizeof buf,
-                      " on %s at %d kbit/s + simulated tool, %.3g ms SYNC, real time",
-                      where().c_str(), config_.bitrate_bps / 1000, period_ * 1000.0);
-        return "CANopen cell: " + cellText_ + buf;
+        // One template, so that the GUI can translate the line (tools/core_messages.py).
+        char buf[320];
+        std::snprintf(
+            buf, sizeof buf,
+            "CANopen cell: %s on %s at %d kbit/s + simulated tool, %.3g ms SYNC, real time",
+            cellText_.c_str(), where().c_str(), config_.bitrate_bps / 1000, period_ * 1000.0);
+        return buf;
     }
     bool deviceSnapshot(ui::DevicePanelSnapshot& out) override {
         const CutCell::ui::RigLink link = link_->status();

@@ -32,10 +32,12 @@ class SimulatedMachineRig : public CutCell::ui::EngineRig {
 
     MotionEngine& engine() override { return *engine_; }
     std::string description() const override {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, ", %.3g ms cycle, %s", period_ * 1000.0,
+        // One template, so that the GUI can translate the line (tools/core_messages.py).
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%s, %.3g ms cycle, %s", rig_->description().c_str(),
+                      period_ * 1000.0,
                       clock_ == ClockMode::RealTime ? "real time" : "as fast as possible");
-        return rig_->description() + buf;
+        return buf;
     }
 
   private:

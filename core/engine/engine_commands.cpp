@@ -269,8 +269,11 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
         // A second fault during a controlled stop: no more waiting, torque off now.
         const bool wasStopping = stopping != StopReason::None;
         disableAll();
-        emitf(EventKind::Fault, Severity::Error, state, state, "Fault: %s%s", reason,
-              wasStopping ? " (controlled stop cut short: drives disabled)" : "");
+        if (wasStopping)
+            emitf(EventKind::Fault, Severity::Error, state, state,
+                  "Fault: %s (controlled stop cut short: drives disabled)", reason);
+        else
+            emitf(EventKind::Fault, Severity::Error, state, state, "Fault: %s", reason);
         return;
     }
     captureStop();

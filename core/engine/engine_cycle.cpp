@@ -92,8 +92,13 @@ void MotionEngine::Impl::superviseEnabling() {
         travelSinceChange[static_cast<size_t>(i)] = 0;
         lastPairedSetpoint[static_cast<size_t>(i)] = setpoint[i];
     }
-    setState(EngineState::Ready, EventKind::Transition, "Drives enabled%s",
-             homed ? "" : " (not homed: Home before Start)");
+    // Whole sentences, no pieces glued with %s%s: the GUI translates an event by its template
+    // (tools/core_messages.py).
+    if (homed)
+        setState(EngineState::Ready, EventKind::Transition, "Drives enabled");
+    else
+        setState(EngineState::Ready, EventKind::Transition,
+                 "Drives enabled (not homed: Home before Start)");
 }
 
 // State machine step at the current path time (before the set-point is computed).
@@ -416,10 +421,13 @@ void MotionEngine::Impl::superviseDevices() {
             supervisedNow[a] = supervised;
             if (supervisionNotes[a] < 2) {
                 ++supervisionNotes[a];
-                note("axis %d (%s): following-error supervision %s%s%s%s", i, axisName(i),
-                     supervised ? "on again" : "off", supervised ? "" : ": ",
-                     supervised ? "" : srcOut.unsupervised_reason,
-                     supervised ? " (further changes in this run are not logged)" : "");
+                if (supervised)
+                    note("axis %d (%s): following-error supervision on again (further changes "
+                         "in this run are not logged)",
+                         i, axisName(i));
+                else
+                    note("axis %d (%s): following-error supervision off: %s", i, axisName(i),
+                         srcOut.unsupervised_reason);
             }
         }
         if (!supervised) { // no position reference (open-loop torque): nothing to compare

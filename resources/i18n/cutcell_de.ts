@@ -2,9 +2,1032 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>CoreMessage</name>
+    <message>
+        <location filename="core_messages.cpp" line="+12"/>
+        <source>%s refused: %s</source>
+        <translation>%s abgelehnt: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run %u ended: %s (%ld samples)</source>
+        <translation>Lauf %u beendet: %s (%ld Abtastwerte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop (%s, from %s): %s off, drives %s</source>
+        <translation>NOT-HALT (%s, aus %s): %s aus, Antriebe %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>disabled</source>
+        <translation>abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopping along the path, then disabled</source>
+        <translation>halten auf der Bahn an, dann abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fault: %s (controlled stop cut short: drives disabled)</source>
+        <translation>Störung: %s (geführter Halt abgebrochen: Antriebe abgeschaltet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fault: %s</source>
+        <translation>Störung: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault: %.110s</source>
+        <translation>Störung: %.110s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fault: %s; %s off, %s stop</source>
+        <translation>Störung: %s; %s aus, Halt %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%.1f deg/s, %.1f mm/s</source>
+        <translation>%.1f °/s, %.1f mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%.1f mm/s</source>
+        <translation>%.1f mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%.1f deg/s</source>
+        <translation>%.1f °/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %.3f s move at up to %s</source>
+        <translation>%s: Bewegung von %.3f s mit höchstens %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Homing to the reference</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jogging</source>
+        <translation>Tippen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Approach to the start position</source>
+        <translation>Anfahrt der Startposition</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Approach to the first cut point</source>
+        <translation>Anfahrt des ersten Schnittpunkts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run %u started: %s, cut recovery from path time %.3f s (point %u of %zu, %.1f of %.1f mm)</source>
+        <translation>Lauf %u gestartet: %s, Wiederaufnahme ab Bahnzeit %.3f s (Punkt %u von %zu, %.1f von %.1f mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run %u started: %s, %.1f mm in %.2f s</source>
+        <translation>Lauf %u gestartet: %s, %.1f mm in %.2f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start: control law</source>
+        <translation>Start: Regelgesetz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start: approach to the recovery point</source>
+        <translation>Start: Anfahrt des Wiederaufnahmepunkts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start: approach to the first cut point</source>
+        <translation>Start: Anfahrt des ersten Schnittpunkts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a motion is in progress (%s)</source>
+        <translation>eine Bewegung läuft (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no program</source>
+        <translation>kein Programm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis_count = %d is outside 1 .. %d</source>
+        <translation>axis_count = %d liegt außerhalb 1 .. %d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program has no trajectory</source>
+        <translation>das Programm hat keine Bahn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %s program has no motion source</source>
+        <translation>das Programm (%s) hat keine Bewegungsquelle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sensor %zu is used by the program but not connected</source>
+        <translation>Sensor %zu wird vom Programm benutzt, ist aber nicht angeschlossen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s) has no drive</source>
+        <translation>Achse %d (%s) hat keinen Antrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): the program commands %s, the drive is set to %s (set the mode before the run)</source>
+        <translation>Achse %d (%s): das Programm gibt %s vor, der Antrieb steht auf %s (Betriebsart vor dem Lauf einstellen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reference of axis %d = %.4g is outside %.4g .. %.4g</source>
+        <translation>Referenz der Achse %d = %.4g liegt außerhalb %.4g .. %.4g</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Job loaded: %s (%zu points, %.1f mm, %.2f s)</source>
+        <translation>Auftrag geladen: %s (%zu Punkte, %.1f mm, %.2f s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives already enabled (%s)</source>
+        <translation>Antriebe bereits freigegeben (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no job loaded</source>
+        <translation>kein Auftrag geladen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives are already enabling</source>
+        <translation>Antriebe werden bereits freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enabling drives</source>
+        <translation>Antriebe werden freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives already disabled (%s)</source>
+        <translation>Antriebe bereits abgeschaltet (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motion in progress (%s): Abort first</source>
+        <translation>Bewegung läuft (%s): zuerst Abbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives are not enabled</source>
+        <translation>Antriebe sind nicht freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enable cancelled: drives disabled</source>
+        <translation>Freigabe abgebrochen: Antriebe abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drives disabled</source>
+        <translation>Antriebe abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives not enabled</source>
+        <translation>Antriebe nicht freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>already homing</source>
+        <translation>Referenzfahrt läuft bereits</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motion in progress (%s)</source>
+        <translation>Bewegung läuft (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>only while Ready (state %s)</source>
+        <translation>nur im Zustand Bereit (Zustand %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d does not exist (0 .. %d)</source>
+        <translation>Achse %d gibt es nicht (0 .. %d)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the jog distance is not a number</source>
+        <translation>der Tippweg ist keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s) target %.3f %s is outside its range %.3f .. %.3f %s</source>
+        <translation>Achse %d (%s): Ziel %.3f %s liegt außerhalb ihres Bereichs %.3f .. %.3f %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>already running</source>
+        <translation>läuft bereits</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>paused (use Resume)</source>
+        <translation>angehalten (Fortsetzen benutzen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cut is complete (Home, then Start)</source>
+        <translation>der Schnitt ist fertig (Referenz, dann Start)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not homed (Home first)</source>
+        <translation>nicht referenziert (zuerst Referenz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut recovery needs a path in time; this machine&apos;s motion follows a %s source</source>
+        <translation>die Wiederaufnahme braucht eine Bahn in der Zeit; die Bewegung dieser Maschine folgt einer Quelle %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recovery from path time %.3f s is outside the cut (0 .. %.3f s)</source>
+        <translation>Wiederaufnahme ab Bahnzeit %.3f s liegt außerhalb des Schnitts (0 .. %.3f s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not running (state %s)</source>
+        <translation>läuft nicht (Zustand %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a stop is in progress</source>
+        <translation>ein Halt läuft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>already holding</source>
+        <translation>Vorschub hält bereits</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Feed hold: %s (%s)</source>
+        <translation>Vorschub halt: %s (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>finishing the cut, returning, then no more waiting for the line</source>
+        <translation>Schnitt wird beendet, Rückfahrt, dann kein Warten mehr auf die Linie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the control law brings the axes to rest</source>
+        <translation>das Regelgesetz bringt die Achsen zur Ruhe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Feed hold: decelerating along the path (%s %s)</source>
+        <translation>Vorschub halt: Verzögerung auf der Bahn (%s %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stays on</source>
+        <translation>bleibt an</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resume at path time %.3f s</source>
+        <translation>Fortsetzen bei Bahnzeit %.3f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resume while decelerating: back to speed</source>
+        <translation>Fortsetzen während der Verzögerung: zurück auf Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not paused (state %s)</source>
+        <translation>nicht angehalten (Zustand %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%.0f %% is outside 10 .. 150 %%</source>
+        <translation>%.0f %% liegt außerhalb 10 .. 150 %%</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Override %.0f %%</source>
+        <translation>Override %.0f %%</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing to abort (state %s)</source>
+        <translation>nichts abzubrechen (Zustand %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>already aborting</source>
+        <translation>Abbruch läuft bereits</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Abort: %s off, stopping along the path</source>
+        <translation>Abbruch: %s aus, Halt auf der Bahn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop pressed again: already latched</source>
+        <translation>NOT-HALT erneut gedrückt: bereits verriegelt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the emergency stop is not pressed</source>
+        <translation>der NOT-HALT ist nicht gedrückt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop released (Reset to clear)</source>
+        <translation>NOT-HALT entriegelt (Reset zum Quittieren)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing to reset (state %s)</source>
+        <translation>nichts zurückzusetzen (Zustand %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the emergency stop is still pressed (release it first)</source>
+        <translation>der NOT-HALT ist noch gedrückt (zuerst entriegeln)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the controlled stop is still in progress</source>
+        <translation>der geführte Halt läuft noch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reset: %s cleared, drives disabled</source>
+        <translation>Reset: %s quittiert, Antriebe abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="-74"/>
+        <source>emergency stop</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>emergency stop latched (release it, then Reset)</source>
+        <translation>NOT-HALT verriegelt (entriegeln, dann Reset)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault latched (Reset first)</source>
+        <translation>Störung verriegelt (zuerst Reset)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run log: %s</source>
+        <translation>Laufprotokoll: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop complete: drives disabled, %s off, %.0f us after the request</source>
+        <translation>NOT-HALT ausgeführt: Antriebe abgeschaltet, %s aus, %.0f µs nach der Anforderung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enable failed: axis %d (%s) reports drive fault 0x%04X</source>
+        <translation>Freigabe fehlgeschlagen: Achse %d (%s) meldet Antriebsfehler 0x%04X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enable failed: axis %d (%s) is still %s after %.2f s</source>
+        <translation>Freigabe fehlgeschlagen: Achse %d (%s) ist noch %s nach %.2f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drives enabled</source>
+        <translation>Antriebe freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drives enabled (not homed: Home before Start)</source>
+        <translation>Antriebe freigegeben (nicht referenziert: Referenz vor Start)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aborted: stopped on the path at %.3f s</source>
+        <translation>Abgebrochen: auf der Bahn angehalten bei %.3f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Controlled stop complete: drives disabled</source>
+        <translation>Geführter Halt ausgeführt: Antriebe abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Homed: at the reference</source>
+        <translation>Referenziert: an der Referenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog done</source>
+        <translation>Tippen fertig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paused on the path at %.3f s (%s %s)</source>
+        <translation>Auf der Bahn angehalten bei %.3f s (%s %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At the first cut point after %.3f s of settling: %s on</source>
+        <translation>Am ersten Schnittpunkt nach %.3f s Einschwingen: %s an</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start failed: the axes did not settle within %.4g of the first cut point in %.1f s</source>
+        <translation>Start fehlgeschlagen: die Achsen kamen nicht innerhalb %.4g um den ersten Schnittpunkt zur Ruhe in %.1f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %s program running</source>
+        <translation>%s: Programm (%s) läuft</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %s program resumed</source>
+        <translation>%s: Programm (%s) fortgesetzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Process OK</source>
+        <translation>Prozess in Ordnung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc established: piercing for %.3f s</source>
+        <translation>Lichtbogen steht: Einstechen für %.3f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc established: cutting</source>
+        <translation>Lichtbogen steht: Schneiden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc established: resuming the cut</source>
+        <translation>Lichtbogen steht: Schnitt wird fortgesetzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %s not reported within %.1f s</source>
+        <translation>%s: %s nicht gemeldet innerhalb %.1f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pierced: cutting</source>
+        <translation>Eingestochen: Schneiden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program finished (%s, %u of %u %s): %s off</source>
+        <translation>Programm beendet (%s, %u von %u %s): %s aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cut finished at path time %.3f s: %s off</source>
+        <translation>Schnitt beendet bei Bahnzeit %.3f s: %s aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Completed: %.1f of %.1f mm in %.2f s (cut recovery from point %u of %u: the %.1f mm before it were not cut by this run)</source>
+        <translation>Beendet: %.1f von %.1f mm in %.2f s (Wiederaufnahme ab Punkt %u von %u: die %.1f mm davor hat dieser Lauf nicht geschnitten)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Completed: %.1f mm in %.2f s</source>
+        <translation>Beendet: %.1f mm in %.2f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Completed: %u %s in %.2f s</source>
+        <translation>Beendet: %u %s in %.2f s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>completed</source>
+        <translation>beendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s source (%s): %s</source>
+        <translation>Quelle %s (%s): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): drive fault 0x%04X at %.3f %s (set-point %.3f %s)</source>
+        <translation>Achse %d (%s): Antriebsfehler 0x%04X bei %.3f %s (Sollwert %.3f %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): drive left operation (now %s)</source>
+        <translation>Achse %d (%s): Antrieb hat den Betrieb verlassen (jetzt %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): feedback not valid (stale data) at %.3f %s</source>
+        <translation>Achse %d (%s): Rückmeldung ungültig (veraltete Daten) bei %.3f %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): following-error supervision on again (further changes in this run are not logged)</source>
+        <translation>Achse %d (%s): Schleppfehlerüberwachung wieder an (weitere Wechsel in diesem Lauf werden nicht protokolliert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): following-error supervision off: %s</source>
+        <translation>Achse %d (%s): Schleppfehlerüberwachung aus: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): feedback frozen at %.4f %s while the set-point moved %.4f %s</source>
+        <translation>Achse %d (%s): Rückmeldung steht bei %.4f %s, während sich der Sollwert um %.4f %s bewegte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %d (%s): following error %.3f %s exceeds %.3f %s (set-point %.3f %s, actual %.3f %s, feedback %u cycle(s) late)</source>
+        <translation>Achse %d (%s): Schleppfehler %.3f %s überschreitet %.3f %s (Sollwert %.3f %s, Istwert %.3f %s, Rückmeldung %u Zyklus/Zyklen verspätet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: fault 0x%04X</source>
+        <translation>%s: Fehler 0x%04X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %s (%s, %s %u of %u)</source>
+        <translation>%s: %s (%s, %s %u von %u)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: %s at point %u of %zu (path time %.3f s)</source>
+        <translation>%s: %s bei Punkt %u von %zu (Bahnzeit %.3f s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process lost</source>
+        <translation>Prozess verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load</source>
+        <translation>Laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enable</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disable</source>
+        <translation>Abschalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog</source>
+        <translation>Tippen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Feed hold</source>
+        <translation>Vorschub halt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Override</source>
+        <translation>Override</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Abort</source>
+        <translation>Abbruch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Emergency stop</source>
+        <translation>NOT-HALT</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Release emergency stop</source>
+        <translation>NOT-HALT entriegeln</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Disabled</source>
+        <translation>abgeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enabling</source>
+        <translation>wird freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Enabled</source>
+        <translation>freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>QuickStop</source>
+        <translation>Schnellhalt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position (CSP)</source>
+        <translation>Position (CSP)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>velocity (CSV)</source>
+        <translation>Geschwindigkeit (CSV)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torque (CST)</source>
+        <translation>Drehmoment (CST)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint spline</source>
+        <translation>Gelenk-Spline</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>master axis</source>
+        <translation>Leitachse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>control law</source>
+        <translation>Regelgesetz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>waiting</source>
+        <translation>wartet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>synchronizing</source>
+        <translation>synchronisiert sich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in sync</source>
+        <translation>synchron</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>returning</source>
+        <translation>Rückfahrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopping</source>
+        <translation>hält an</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>master encoder: reading not valid</source>
+        <translation>Leitgeber: Messwert ungültig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the master is already past the start of the sync-in</source>
+        <translation>der Leitwert ist schon über den Beginn der Einsynchronisierung hinaus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>master passed the sync position before synchronizing</source>
+        <translation>der Leitwert passierte die Synchronposition vor dem Einsynchronisieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tracking</source>
+        <translation>Folgen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutting stroke</source>
+        <translation>Schnitthub</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open-loop return</source>
+        <translation>gesteuerter Rückhub</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>catching</source>
+        <translation>Abfangen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>braking</source>
+        <translation>Bremsen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>slider position sensor: reading not valid</source>
+        <translation>Schieber-Positionssensor: Messwert ungültig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open-loop torque return stroke</source>
+        <translation>gesteuerter Rückhub mit Drehmoment</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>catching the slider after the open-loop return</source>
+        <translation>Abfangen des Schiebers nach dem gesteuerten Rückhub</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>piece</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stroke</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pierces</source>
+        <translation>Einstiche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pieces</source>
+        <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>strokes</source>
+        <translation>Hübe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torch</source>
+        <translation>Brenner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc established</source>
+        <translation>Lichtbogen steht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc lost</source>
+        <translation>Lichtbogen verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cat0</source>
+        <translation>Kat. 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cat1</source>
+        <translation>Kat. 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saw</source>
+        <translation>Säge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>blade at speed</source>
+        <translation>Sägeblatt auf Drehzahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>blade speed lost</source>
+        <translation>Sägeblattdrehzahl verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>decelerating</source>
+        <translation>verzögert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recovering</source>
+        <translation>Wiederaufnahme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line encoder: reading not valid</source>
+        <translation>Liniengeber: Messwert ungültig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the line is already past the sync-in of the first cut</source>
+        <translation>die Linie ist schon über die Einsynchronisierung des ersten Schnitts hinaus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the line passed the sync position before the carriage started</source>
+        <translation>die Linie passierte die Synchronposition, bevor der Wagen anfuhr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the piece is too short for the cycle at this line speed: the next sync-in has begun before the carriage was back</source>
+        <translation>das Stück ist für den Zyklus bei dieser Liniengeschwindigkeit zu kurz: die nächste Einsynchronisierung begann, bevor der Wagen zurück war</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>holding</source>
+        <translation>hält</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open-loop return (push)</source>
+        <translation>gesteuerter Rückhub (Schub)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open-loop return (brake)</source>
+        <translation>gesteuerter Rückhub (Bremsen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>near a singular point: no crank reference (parabolic blend)</source>
+        <translation>nahe einem singulären Punkt: keine Kurbelführung (Parabelübergang)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>braking the crank</source>
+        <translation>Bremsen der Kurbel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutting stroke: the crank was driven back through the top singular point (the controller cannot hold the slider against the contact force)</source>
+        <translation>Schnitthub: die Kurbel wurde durch den oberen singulären Punkt zurückgedrückt (der Regler kann den Schieber gegen die Kontaktkraft nicht halten)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutting stroke stalled: the slider did not reach the end of the stroke in time (the controller cannot push through the contact force)</source>
+        <translation>Schnitthub blockiert: der Schieber erreichte das Hubende nicht rechtzeitig (der Regler kann die Kontaktkraft nicht überwinden)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open-loop return stalled before the top of the stroke: raise return_torque_1 or lower |return_torque_2|</source>
+        <translation>gesteuerter Rückhub vor dem oberen Hubende blockiert: return_torque_1 erhöhen oder |return_torque_2| senken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutter</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutter ready</source>
+        <translation>Werkzeug bereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cutter lost</source>
+        <translation>Werkzeug verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated flying saw: line encoder, carriage, turntable, 2 feeds + saw</source>
+        <translation>Simulierte fliegende Säge: Liniengeber, Wagen, Drehtisch, 2 Blattvorschübe + Säge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated cell: 6 drives + torch</source>
+        <translation>Simulierte Zelle: 6 Antriebe + Brenner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated profile cutter: A and X steppers + torch</source>
+        <translation>Simulierter Profilschneider: Schrittmotoren A und X + Brenner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated quick-return cutter: crank drive (CST) + slider scale</source>
+        <translation>Simulierte Schnellrücklauf-Schneidmaschine: Kurbelantrieb (CST) + Schiebermaßstab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated cell: 8 drives + torch</source>
+        <translation>Simulierte Zelle: 8 Antriebe + Brenner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s, %.3g ms cycle, %s</source>
+        <translation>%s, Zyklus %.3g ms, %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>real time</source>
+        <translation>Echtzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as fast as possible</source>
+        <translation>so schnell wie möglich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CANopen cell: %s on %s at %d kbit/s + simulated tool, %.3g ms SYNC, real time</source>
+        <translation>CANopen-Zelle: %s an %s mit %d kbit/s + simuliertes Werkzeug, SYNC %.3g ms, Echtzeit</translation>
+    </message>
+</context>
+<context>
     <name>CutCell::ui::AlarmPanel</name>
     <message>
-        <location filename="../../ui/panels/alarm_panel.cpp" line="+45"/>
+        <location filename="../../ui/panels/alarm_panel.cpp" line="+46"/>
         <source>Acknowledge</source>
         <translation>Quittieren</translation>
     </message>
@@ -79,7 +1102,7 @@
         <translation>Reglereinstellung der Achsen und Positionierfenster prüfen.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+18"/>
         <source>operator (E-STOP)</source>
         <translation>Bediener (NOT-HALT)</translation>
     </message>
@@ -733,7 +1756,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::EventLogPanel</name>
     <message>
-        <location filename="../../ui/panels/event_log_panel.cpp" line="+22"/>
+        <location filename="../../ui/panels/event_log_panel.cpp" line="+23"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
@@ -2305,7 +3328,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::RunController</name>
     <message>
-        <location filename="../../ui/run_controller.cpp" line="+74"/>
+        <location filename="../../ui/run_controller.cpp" line="+75"/>
         <source>Planning cancelled by the operator.</source>
         <translation>Planung vom Bediener abgebrochen.</translation>
     </message>
@@ -2335,7 +3358,7 @@ letzte %1 s</translation>
         <translation>keine Maschine: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>cannot load the program: %1</source>
         <translation>Programm kann nicht geladen werden: %1</translation>
     </message>
@@ -3270,7 +4293,7 @@ letzte %1 s</translation>
         <translation>Die Profilstahl-Schneidanlage schneidet das Ende eines Stahlprofils: keine Rohre; Profil, Schnitt und Geschwindigkeit werden auf den Seiten Profil, Endschnitt und Bewegung eingestellt.</translation>
     </message>
     <message>
-        <location filename="../../ui/panels/alarm_panel.cpp" line="-238"/>
+        <location filename="../../ui/panels/alarm_panel.cpp" line="-242"/>
         <source>active, ack.</source>
         <translation>aktiv, quitt.</translation>
     </message>
@@ -4079,7 +5102,7 @@ letzte %1 s</translation>
 <context>
     <name>cutcell::plots::TrackingPlotsWidget</name>
     <message>
-        <location filename="../../plots/tracking_plots_widget.cpp" line="+214"/>
+        <location filename="../../plots/tracking_plots_widget.cpp" line="+215"/>
         <source>error (%1)</source>
         <translation>Schleppfehler (%1)</translation>
     </message>

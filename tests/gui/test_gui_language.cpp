@@ -13,9 +13,11 @@
 #include "ui/machine/machine_ui_registry.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/engine_text.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/window_host.h"
 
+#include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 
@@ -39,9 +41,61 @@
 #include <QTextDocument>
 #include <QtTest>
 
+#include <cstdio>
+#include <cstring>
+
 using CutCell::ui::MainWindow;
 
+namespace CutCell::ui {
+// The engine's event templates (resources/i18n/core_messages.cpp, tools/core_messages.py).
+extern const char* const kCoreMessages[];
+extern const int kCoreMessageCount;
+} // namespace CutCell::ui
+
 namespace {
+
+// A template formatted as core formats it (snprintfC, C notation), with sample values: the
+// words "Qx" (no template's), the integers 7, the reals 1.25, the hex numbers 0x2310.
+QString sampleOf(const char* tmpl) {
+    static const QRegularExpression spec(
+        QStringLiteral(R"(%[-+ #0]*\d*(?:\.\d+)?(?:ll|l|z|h)?[diuxXfgeEsc%])"));
+    const QString t = QString::fromUtf8(tmpl);
+    QString out;
+    qsizetype last = 0;
+    for (auto it = spec.globalMatch(t); it.hasNext();) {
+        const auto m = it.next();
+        out += t.mid(last, m.capturedStart() - last);
+        last = m.capturedEnd();
+        const QByteArray one = m.captured().toLatin1();
+        char buf[64];
+        switch (one.back()) {
+        case '%':
+            std::snprintf(buf, sizeof buf, "%%");
+            break;
+        case 's':
+            std::snprintf(buf, sizeof buf, "Qx");
+            break;
+        case 'f':
+        case 'g':
+        case 'e':
+            cutcell::snprintfC(buf, sizeof buf, one.constData(), 1.25);
+            break;
+        case 'X':
+        case 'x':
+            std::snprintf(buf, sizeof buf, one.constData(), 0x2310u);
+            break;
+        default:
+            if (one.contains('z'))
+                std::snprintf(buf, sizeof buf, one.constData(), size_t{7});
+            else if (one.contains('l'))
+                std::snprintf(buf, sizeof buf, one.constData(), 7L);
+            else
+                std::snprintf(buf, sizeof buf, one.constData(), 7);
+        }
+        out += QString::fromLatin1(buf);
+    }
+    return out + t.mid(last);
+}
 
 // Every text a widget of the window shows or tells (labels, buttons, group titles, tabs,
 // table headers, combo items, menus, tooltips), in the order the widgets were made.
@@ -85,7 +139,7 @@ bool readsAsEnglish(const QString& text) {
         "G-code",  "DSTV",     "CANopen",   "SocketCAN", "virtualcan", "Override",  "Start",
         "Reset",   "Jacobian", "Whitworth", "English",   "Deutsch",    "System",    "Experiment",
         "CutCell", "Pitch",    "Status",    "Name",      "Info",       "Heartbeat", "Alarm",
-        "Pause",   "json",     "alpha",     "Offset",    "Amplitude"};
+        "Pause",   "json",     "alpha",     "Offset",    "Amplitude",  "kbit",      "SYNC"};
     // The machines' axis names are names ("chuck (theta0)", "groove θ2"), as in the papers.
     if (text.contains(QStringLiteral("theta")) || text.contains(QChar(0x03B8))) return false;
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
@@ -94,6 +148,20 @@ bool readsAsEnglish(const QString& text) {
         if (!shared.contains(m)) return true;
     }
     return false;
+}
+
+// The words of an English text (four letters or more, not shared by both languages) that its
+// German text still has.
+QStringList englishWordsKept(const QString& english, const QString& german) {
+    static const QRegularExpression word(QStringLiteral("[A-Za-z_]{4,}"));
+    QStringList kept;
+    for (auto it = word.globalMatch(english); it.hasNext();) {
+        const QString w = it.next().captured();
+        if (readsAsEnglish(w) && !w.contains('_') &&
+            german.contains(QRegularExpression("\\b" + w + "\\b")) && !kept.contains(w))
+            kept << w;
+    }
+    return kept;
 }
 
 } // namespace
@@ -228,6 +296,48 @@ class TestGuiLanguage : public QObject {
                                                         .arg(untranslated.size())
                                                         .arg(untranslated.join("\n"))));
         QVERIFY(en.size() > 300); // the window was walked, not an empty one
+    }
+
+    // The engine's events (core writes them in English) in German: each template is found
+    // again from a text formatted from it, reads the same in English, and in German has no
+    // English word left and its numbers with the decimal comma.
+    void everyEngineTextReadsInGerman() {
+        QVERIFY(CutCell::ui::kCoreMessageCount > 150);
+        QStringList problems;
+        for (int i = 0; i < CutCell::ui::kCoreMessageCount; ++i) {
+            const char* tmpl = CutCell::ui::kCoreMessages[i];
+            const QString sample = sampleOf(tmpl);
+            QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+            const char* found = CutCell::ui::engineTemplateOf(sample);
+            if (!found || std::strcmp(found, tmpl) != 0)
+                problems << QString("\"%1\" was taken for \"%2\"")
+                                .arg(sample, found ? QString::fromUtf8(found) : "nothing");
+            if (CutCell::ui::engineText(sample) != sample)
+                problems << QString("changed in English: \"%1\" -> \"%2\"")
+                                .arg(sample, CutCell::ui::engineText(sample));
+            QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+            const QString german = CutCell::ui::engineText(sample);
+            if (!englishWordsKept(sample, german).isEmpty())
+                problems << QString("English in German: \"%1\" -> \"%2\" (%3)")
+                                .arg(sample, german, englishWordsKept(sample, german).join(' '));
+            if (sample.contains("1.25") && !german.contains("1,25"))
+                problems << QString("no decimal comma: \"%1\" -> \"%2\"").arg(sample, german);
+        }
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join("\n")));
+    }
+
+    // Texts nested in one another (a refusal's reason, the tool, a state) are translated each.
+    void nestedEngineTextsAreTranslatedEach() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        QCOMPARE(CutCell::ui::engineText("Start refused: not homed (Home first)"),
+                 QStringLiteral("Start abgelehnt: nicht referenziert (zuerst Referenz)"));
+        QCOMPARE(CutCell::ui::engineText("Paused on the path at 2.500 s (saw off)"),
+                 QStringLiteral("Auf der Bahn angehalten bei 2,500 s (Säge aus)"));
+        QCOMPARE(CutCell::ui::engineText("Home refused: motion in progress (Paused)"),
+                 QStringLiteral("Referenz abgelehnt: Bewegung läuft (Vorschub halt)"));
+        // A text no template knows (a device's own message) is shown as it came.
+        QCOMPARE(CutCell::ui::engineText("node 3: heartbeat lost"),
+                 QStringLiteral("node 3: heartbeat lost"));
     }
 
     // Help -> About names the version, the build's commit and every machine.

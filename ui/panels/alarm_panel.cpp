@@ -1,4 +1,5 @@
 #include "ui/panels/alarm_panel.h"
+#include "ui/panels/engine_text.h"
 
 #include "ui/panels/run_words.h"
 
@@ -123,12 +124,16 @@ void AlarmPanel::addEngineEvent(const cutcell::EngineEvent& e) {
                        e.from != EngineState::EmergencyStop;
     if (!estop && e.kind != EventKind::Fault) return;
     const auto len = strnlen(e.text.data(), e.text.size());
+    // Source and action are told from core's English words; the operator reads the text in
+    // the GUI's language.
+    const QString english = QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len));
     Alarm a;
-    a.text = QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len));
+    a.text = engineText(english);
+    a.logged = english;
     a.time =
         e.wall_ms > 0 ? QDateTime::fromMSecsSinceEpoch(e.wall_ms) : QDateTime::currentDateTime();
-    a.source = estop ? tr("operator (E-STOP)") : sourceOf(a.text, terms_);
-    a.action = actionFor(a.text, estop);
+    a.source = estop ? tr("operator (E-STOP)") : sourceOf(english, terms_);
+    a.action = actionFor(english, estop);
     a.run_id = e.run_id;
     raise(a);
 }
@@ -225,7 +230,7 @@ QByteArray AlarmPanel::runJson(std::uint32_t runId) const {
         if (a.run_id != runId) continue;
         list.append(QJsonObject{{"time", a.time.toUTC().toString(Qt::ISODateWithMs)},
                                 {"source", a.source},
-                                {"text", a.text},
+                                {"text", a.logged.isEmpty() ? a.text : a.logged},
                                 {"action", a.action},
                                 {"active", a.active},
                                 {"acknowledged", a.acknowledged},
@@ -259,7 +264,7 @@ bool AlarmPanel::exportCsv(const QString& path, QString* error) const {
         out += QStringList{a.time.toUTC().toString(Qt::ISODateWithMs),
                            QString::number(a.run_id),
                            csvField(a.source),
-                           csvField(a.text),
+                           csvField(a.logged.isEmpty() ? a.text : a.logged),
                            csvField(a.action),
                            a.active ? "1" : "0",
                            a.acknowledged ? "1" : "0"}

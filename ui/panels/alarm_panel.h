@@ -26,7 +26,8 @@ namespace CutCell::ui {
 struct Alarm {
     QDateTime time;
     QString source; // "axis 2 (q2 shoulder)", "node 3", "torch", "operator", "engine"
-    QString text;
+    QString text;   // in the GUI's language
+    QString logged; // as core wrote it (English, C notation): what the files keep
     QString action; // what to do
     std::uint32_t run_id = 0;
     bool active = true;

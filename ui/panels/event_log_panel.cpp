@@ -1,4 +1,5 @@
 #include "ui/panels/event_log_panel.h"
+#include "ui/panels/engine_text.h"
 
 #include "ui/panels/run_words.h"
 
@@ -73,7 +74,8 @@ void EventLogPanel::add(Severity severity, const QString& message, const QDateTi
 
 void EventLogPanel::addEngineEvent(const cutcell::EngineEvent& e) {
     const auto len = strnlen(e.text.data(), e.text.size());
-    QString msg = QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len));
+    // In the GUI's language (the log file keeps core's English).
+    QString msg = engineText(QString::fromUtf8(e.text.data(), static_cast<qsizetype>(len)));
     if (e.from != e.to) {
         // The states in the GUI's words ("Emergency stop", "Not-Halt"), not the enum's names.
         const QString transition =
