@@ -2,8 +2,9 @@
 """Prints a C++ file that lists the texts of the motion engine's events: the printf templates
 of core/engine's event calls (emitf, setState, note, refuse, enterFault, endRun, and the
 snprintfC pieces they are built from) and the words passed into them (the commands', stop
-categories', drive states' names, the tools' words, the sources' faults), and the simulated
-cell's line in the status bar (the rigs' description()). core is pure C++ without Qt; the GUI translates an
+categories', drive states' names, the tools' words, the sources' faults), the job's
+validation sentences (messageC), and the simulated cell's line in the status bar (the rigs'
+description()). core is pure C++ without Qt; the GUI translates an
 event's text by matching it against these templates (ui/i18n/core_message_text.cpp), in the
 "CoreMessage" context. tools/update_translations.sh writes the file to
 resources/i18n/core_messages.cpp, which the GUI compiles; gui.translations_complete fails when
@@ -23,10 +24,12 @@ WORD_FUNCTIONS = re.compile(
     r"DriveState|SawPhase|QrPhase|SliderPhase|FollowerState|SyncState)\b[^)]*\)"
     r"|(?:latchedReason|unitSingular|madeNounPlural)\([^)]*\))\s*\{")
 # Texts a motion source or a module hands the engine for its events: faults, the reason
-# supervision is off, the run terms' words (RunTerms::tool, ::process_ok, ::process_lost).
-ASSIGNED = re.compile(r"(?:\.fault|\.unsupervised_reason|\bk\w*Reason|terms\.tool"
+# supervision is off, the run terms' words (RunTerms::tool, ::process_ok, ::process_lost); and
+# a plan's fixed problem texts (.problem = "...").
+ASSIGNED = re.compile(r"(?:\.fault|\.problem|\.unsupervised_reason|\bk\w*Reason|terms\.tool"
                       r"|terms\.process_(?:ok|lost)|std::string (?:tool|process_ok|process_lost))"
-                      r"\s*=\s*([^;]*);")
+                      r"\s*=\s*((?:\"(?:[^\"\\\\]|\\\\.)*\"|[^;\"])*);")
+MESSAGE = re.compile(r"\bmessageC\s*\(")
 DESCRIPTION = re.compile(r"std::string description\(\) const override\s*\{")
 ENGINE_FILES = ("engine_commands.cpp", "engine_cycle.cpp", "motion_engine.cpp")
 
@@ -109,6 +112,11 @@ def messages(source_dir):
         for m in ASSIGNED.finditer(text):
             for s in literals(m.group(1)):
                 add(s)
+        # The job's validation sentences (messageC, core/common/c_format.h): the template only.
+        for m in MESSAGE.finditer(text):
+            pieces = literals(balanced(text, m.end()))
+            if pieces:
+                add(pieces[0])
     add("tool")  # toolName() without a program
     # The status bar's line on the cell (EngineRig::description): the simulated rigs' own
     # words and the GUI rigs' templates around them.

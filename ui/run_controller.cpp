@@ -147,8 +147,9 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
     programError_.clear();
     emit planChanged(plan_, planJob_);
     if (!plan_->reachable) {
-        emit message(Severity::Error,
-                     tr("Path not reachable: %1").arg(QString::fromStdString(plan_->problem)));
+        emit message(
+            Severity::Error,
+            tr("Path not reachable: %1").arg(engineText(QString::fromStdString(plan_->problem))));
         updateBlocked();
         if (autoRun_) {
             autoRun_ = false;
@@ -262,7 +263,7 @@ void RunController::updateBlocked() {
     else if (!plan_)
         r = tr("no plan yet");
     else if (!plan_->reachable)
-        r = tr("path not reachable - %1").arg(QString::fromStdString(plan_->problem));
+        r = tr("path not reachable - %1").arg(engineText(QString::fromStdString(plan_->problem)));
     else if (!programError_.isEmpty())
         r = programError_;
     else if (programPending_ && busyState(s))

@@ -41,14 +41,11 @@ int snprintfC(char* buf, std::size_t size, const char* fmt, ...) {
     return n;
 }
 
-std::string formatC(const char* fmt, ...) {
+std::string vformatC(const char* fmt, std::va_list ap) {
     char small[256];
-    std::va_list ap;
-    va_start(ap, fmt);
     std::va_list again;
     va_copy(again, ap);
     const int n = vsnprintfC(small, sizeof small, fmt, ap);
-    va_end(ap);
     std::string out;
     if (n < 0) {
         out.clear();
@@ -60,6 +57,22 @@ std::string formatC(const char* fmt, ...) {
         out.resize(static_cast<std::size_t>(n));
     }
     va_end(again);
+    return out;
+}
+
+std::string formatC(const char* fmt, ...) {
+    std::va_list ap;
+    va_start(ap, fmt);
+    std::string out = vformatC(fmt, ap);
+    va_end(ap);
+    return out;
+}
+
+std::string messageC(const char* fmt, ...) {
+    std::va_list ap;
+    va_start(ap, fmt);
+    std::string out = vformatC(fmt, ap);
+    va_end(ap);
     return out;
 }
 

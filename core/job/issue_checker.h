@@ -1,5 +1,6 @@
 #pragma once
 // Collects JobIssues; every message names the key, the value with its unit and the limit.
+#include "core/common/c_format.h"
 #include "core/job/job_io.h"
 #include "core/job/section_reader.h"
 
@@ -20,14 +21,14 @@ class IssueChecker {
 
     void finite(const std::string& key, double v, const char* unit) {
         if (!std::isfinite(v))
-            add(key, key + " = " + num(v) + " " + unit + " is not a finite number");
+            add(key, messageC("%s = %.6g %s is not a finite number", key.c_str(), v, unit));
     }
     // lo <= v <= hi (NaN fails).
     void range(const std::string& key, double v, double lo, double hi, const char* unit) {
         if (!(v >= lo && v <= hi))
             issues.push_back({key,
-                              key + " = " + num(v) + " " + unit + " is outside [" + num(lo) + ", " +
-                                  num(hi) + "] " + unit,
+                              messageC("%s = %.6g %s is outside [%.6g, %.6g] %s", key.c_str(), v,
+                                       unit, lo, hi, unit),
                               v, lo, hi, unit});
     }
     // A physical quantity that must be > 0: in [lo, hi] with a tiny lo > 0, which keeps values

@@ -27,36 +27,36 @@ void checkCommon(IssueChecker& c, const Job& job, int axisCount, int sensorCount
     if (std::find(std::begin(kCanBitRates), std::end(kCanBitRates), job.devices.bitrate_bps) ==
         std::end(kCanBitRates))
         c.add("devices.bitrate_bps",
-              "devices.bitrate_bps = " + std::to_string(job.devices.bitrate_bps) +
-                  " bit/s is not a CAN bit rate: one of 10000, 20000, 50000, 125000, 250000, "
-                  "500000, 800000, 1000000 bit/s");
+              messageC("devices.bitrate_bps = %d bit/s is not a CAN bit rate: one of 10000, "
+                       "20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s",
+                       job.devices.bitrate_bps));
     for (int i = 0; i < axisCount; ++i) {
         const int id = job.devices.node_ids[static_cast<size_t>(i)];
         if (id < 1 || id > 127)
-            c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) +
-                                          "] = " + std::to_string(id) + " is outside [1, 127]");
+            c.add("devices.node_ids",
+                  messageC("devices.node_ids[%d] = %d is outside [1, 127]", i, id));
         for (int j = 0; j < i; ++j)
             if (job.devices.node_ids[static_cast<size_t>(j)] == id)
-                c.add("devices.node_ids", "devices.node_ids[" + std::to_string(i) +
-                                              "] = " + std::to_string(id) + " is used twice");
+                c.add("devices.node_ids",
+                      messageC("devices.node_ids[%d] = %d is used twice", i, id));
         c.positive("devices.counts_per_unit[" + std::to_string(i) + "]",
                    job.devices.counts_per_unit[static_cast<size_t>(i)], 1e-3, 1e9, "counts/deg");
     }
     for (int k = 0; k < sensorCount; ++k) {
         const int id = sensorNodeId(job.devices, axisCount, k);
-        const std::string key = "devices.sensor_node_ids[" + std::to_string(k) + "]";
         if (id < 1 || id > 127)
             c.add("devices.sensor_node_ids",
-                  key + " = " + std::to_string(id) + " is outside [1, 127]");
+                  messageC("devices.sensor_node_ids[%d] = %d is outside [1, 127]", k, id));
         for (int i = 0; i < axisCount; ++i)
             if (job.devices.node_ids[static_cast<size_t>(i)] == id)
                 c.add("devices.sensor_node_ids",
-                      key + " = " + std::to_string(id) + " is the node of axis " +
-                          std::to_string(i) + " (devices.node_ids[" + std::to_string(i) + "])");
+                      messageC("devices.sensor_node_ids[%d] = %d is the node of axis %d "
+                               "(devices.node_ids[%d])",
+                               k, id, i, i));
         for (int j = 0; j < k; ++j)
             if (sensorNodeId(job.devices, axisCount, j) == id)
                 c.add("devices.sensor_node_ids",
-                      key + " = " + std::to_string(id) + " is used twice");
+                      messageC("devices.sensor_node_ids[%d] = %d is used twice", k, id));
     }
     c.range("devices.heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms, 10, 10000, "ms");
 }
@@ -68,8 +68,8 @@ std::vector<JobIssue> validateJob(const Job& job) {
     const std::string id = job.machine.empty() ? schema1DefaultMachine() : job.machine;
     const MachineModule* module = findMachine(id);
     if (!module) {
-        c.add("machine.kind",
-              "machine.kind = " + json::quote(id) + " is not one of " + machineIdList());
+        c.add("machine.kind", messageC("machine.kind = %s is not one of %s",
+                                       json::quote(id).c_str(), machineIdList().c_str()));
         checkCommon(c, job, kAxisCount, 0);
         return c.issues;
     }
@@ -83,7 +83,7 @@ std::vector<JobIssue> validateJob(const Job& job) {
     }
     std::string why;
     if (job.devices.kind == DeviceKind::CanOpen && !module->supportsCanOpen(&why))
-        c.add("devices.kind", "devices.kind = \"canopen\": " + why);
+        c.add("devices.kind", messageC("devices.kind = \"canopen\": %s", why.c_str()));
     return c.issues;
 }
 

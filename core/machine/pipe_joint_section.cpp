@@ -1,5 +1,6 @@
 #include "core/machine/pipe_joint_section.h"
 
+#include "core/common/c_format.h"
 #include "core/common/types.h"
 
 #include <cmath>
@@ -26,8 +27,9 @@ void checkPipe(IssueChecker& c, const std::string& name, const PipeSpec& p) {
     c.positive(name + ".wall_mm", p.wall_mm, 0.1, 500, "mm");
     c.positive(name + ".length_mm", p.length_mm, 1, 20000, "mm");
     if (p.wall_mm > 0 && p.radius_mm > 0 && p.wall_mm >= p.radius_mm)
-        c.add(name + ".wall_mm", name + ".wall_mm = " + num(p.wall_mm) + " mm must be less than " +
-                                     name + ".radius_mm = " + num(p.radius_mm) + " mm");
+        c.add(name + ".wall_mm", messageC("%s.wall_mm = %.6g mm must be less than %s.radius_mm = "
+                                          "%.6g mm",
+                                          name.c_str(), p.wall_mm, name.c_str(), p.radius_mm));
 }
 
 } // namespace
@@ -79,16 +81,17 @@ void checkPipeJoint(IssueChecker& c, const Job& job, const CutKeys& keys) {
     checkPipe(c, "branch_pipe", job.branch_pipe);
     // Below 0.1 deg the branch runs along the main pipe: no closed cut of sensible size.
     if (!(job.angle_deg >= 0.1 && job.angle_deg <= 90))
-        c.add("angle_deg", "angle_deg = " + num(job.angle_deg) +
-                               " deg is outside [0.1, 90] deg (angle between the pipe axes)");
+        c.add("angle_deg", messageC("angle_deg = %.6g deg is outside [0.1, 90] deg (angle "
+                                    "between the pipe axes)",
+                                    job.angle_deg));
     c.range("eccentricity_mm", job.eccentricity_mm, -2000, 2000, "mm");
     const double R = job.main_pipe.radius_mm, r = job.branch_pipe.radius_mm;
     const double fit = std::fabs(job.eccentricity_mm) + r;
     if (R > 0 && r > 0 && fit > R)
         c.add("branch_pipe.radius_mm",
-              "branch_pipe.radius_mm = " + num(r) +
-                  " mm does not fit: |eccentricity_mm| + branch radius = " + num(fit) +
-                  " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
+              messageC("branch_pipe.radius_mm = %.6g mm does not fit: |eccentricity_mm| + branch "
+                       "radius = %.6g mm must be <= main_pipe.radius_mm = %.6g mm",
+                       r, fit, R));
 
     if (keys.bevel) c.range("cut.bevel_deg", job.cut.bevel_deg, -60, 60, "deg");
     // 0.1 mm/s: slower than any torch cuts; with 500 mm/s the upper bound of the machines.
@@ -112,17 +115,16 @@ void checkPipeJoint(IssueChecker& c, const Job& job, const CutKeys& keys) {
         const double time = lengthBound / job.cut.speed_mm_s;
         const double typical = 2 * kPi * r / job.cut.speed_mm_s; // a right-angle branch
         if (typical > kMaxCutTime_s)
-            c.add("cut.speed_mm_s", "cut.speed_mm_s = " + num(job.cut.speed_mm_s) +
-                                        " mm/s: the cut around the branch (about " +
-                                        num(2 * kPi * r) + " mm) would take " + num(typical) +
-                                        " s, longer than the limit of " + num(kMaxCutTime_s) +
-                                        " s (one hour)");
+            c.add("cut.speed_mm_s",
+                  messageC("cut.speed_mm_s = %.6g mm/s: the cut around the branch (about %.6g "
+                           "mm) would take %.6g s, longer than the limit of %.6g s (one hour)",
+                           job.cut.speed_mm_s, 2 * kPi * r, typical, kMaxCutTime_s));
         else if (job.sim.period_s > 0 && time / job.sim.period_s > kMaxPlanSamples)
             c.add("cut.speed_mm_s",
-                  "cut.speed_mm_s = " + num(job.cut.speed_mm_s) + " mm/s: the cut (up to " +
-                      num(lengthBound) + " mm, " + num(time) + " s) would need " +
-                      num(time / job.sim.period_s) + " samples at sim.period_s = " +
-                      num(job.sim.period_s) + " s; the limit is " + num(kMaxPlanSamples));
+                  messageC("cut.speed_mm_s = %.6g mm/s: the cut (up to %.6g mm, %.6g s) would "
+                           "need %.6g samples at sim.period_s = %.6g s; the limit is %.6g",
+                           job.cut.speed_mm_s, lengthBound, time, time / job.sim.period_s,
+                           job.sim.period_s, kMaxPlanSamples));
     }
 
     // The pipes must be long enough to hold the cut. A branch point at parameter phi lies at
@@ -132,17 +134,17 @@ void checkPipeJoint(IssueChecker& c, const Job& job, const CutKeys& keys) {
         const double ymin = std::sqrt(std::max(0.0, R * R - fit * fit));
         const double along = 2 * r / std::sin(a) + (R - ymin) / std::tan(a);
         if (job.main_pipe.length_mm > 0 && job.main_pipe.length_mm < along)
-            c.add("main_pipe.length_mm", "main_pipe.length_mm = " + num(job.main_pipe.length_mm) +
-                                             " mm is shorter than the cut along it (" + num(along) +
-                                             " mm for a branch of radius " + num(r) + " mm at " +
-                                             num(job.angle_deg) +
-                                             " deg): the pipe must contain the cut");
+            c.add("main_pipe.length_mm",
+                  messageC("main_pipe.length_mm = %.6g mm is shorter than the cut along it (%.6g "
+                           "mm for a branch of radius %.6g mm at %.6g deg): the pipe must contain "
+                           "the cut",
+                           job.main_pipe.length_mm, along, r, job.angle_deg));
         const double saddle = (R - ymin + 2 * r * std::cos(a)) / std::sin(a);
         if (job.branch_pipe.length_mm > 0 && job.branch_pipe.length_mm < saddle)
             c.add("branch_pipe.length_mm",
-                  "branch_pipe.length_mm = " + num(job.branch_pipe.length_mm) +
-                      " mm is shorter than the saddle of its cut end (" + num(saddle) +
-                      " mm): the pipe must contain the cut");
+                  messageC("branch_pipe.length_mm = %.6g mm is shorter than the saddle of its cut "
+                           "end (%.6g mm): the pipe must contain the cut",
+                           job.branch_pipe.length_mm, saddle));
     }
 }
 

@@ -34,12 +34,11 @@ double SpeedProfile::distance(double t) const {
 
 namespace {
 
-std::string describePoint(size_t index, const PlannedPoint& p) {
-    char buf[160];
-    snprintfC(buf, sizeof buf, "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm)",
-              index, rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
-              p.cut.p_main.z());
-    return buf;
+// Why the point cannot be cut, and where it is.
+std::string pointProblem(size_t index, const PlannedPoint& p, const std::string& why) {
+    return messageC("point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s", index,
+                    rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
+                    p.cut.p_main.z(), why.c_str());
 }
 
 } // namespace
@@ -95,7 +94,7 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
             plan.cancelled = true;
             plan.reachable = false;
-            plan.problem = "planning cancelled";
+            plan.problem = messageC("planning cancelled");
             return plan;
         }
         if (options.progress && k % 64 == 0)
@@ -130,26 +129,20 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         if (plan.first_bad < 0) {
             std::string why;
             if (!robot.withinLimits(0, chuck)) {
-                char buf[160];
-                snprintfC(buf, sizeof buf,
-                          "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
-                          rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
-                why = buf;
+                why = messageC("joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg",
+                               rad2deg(chuck), rad2deg(robot.minRad(0)), rad2deg(robot.maxRad(0)));
             } else if (!p.ik.ok()) {
                 why = describe(p.ik);
             } else if (p.deviation_deg > maxDev + 1e-9) {
-                char buf[200];
-                snprintfC(
-                    buf, sizeof buf,
-                    "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more "
-                    "than cut.max_direction_deviation_deg = %.2f deg",
-                    p.deviation_deg, maxDev);
-                why = buf;
+                why =
+                    messageC("the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), "
+                             "more than cut.max_direction_deviation_deg = %.2f deg",
+                             p.deviation_deg, maxDev);
             }
             if (!why.empty()) {
                 plan.first_bad = static_cast<int>(k);
                 plan.reachable = false;
-                plan.problem = describePoint(k, p) + ": " + why;
+                plan.problem = pointProblem(k, p, why);
             }
         }
     }

@@ -865,6 +865,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>%s = %.6g %s is not a finite number</source>
+        <translation>%s = %.6g %s ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s = %.6g %s is outside [%.6g, %.6g] %s</source>
+        <translation>%s = %.6g %s liegt außerhalb von [%.6g, %.6g] %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cat0</source>
         <translation>Kat. 0</translation>
     </message>
@@ -872,6 +882,101 @@
         <location line="+1"/>
         <source>cat1</source>
         <translation>Kat. 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.bitrate_bps = %d bit/s is not a CAN bit rate: one of 10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s</source>
+        <translation>devices.bitrate_bps = %d bit/s ist keine CAN-Bitrate: eine von 10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.node_ids[%d] = %d is outside [1, 127]</source>
+        <translation>devices.node_ids[%d] = %d liegt außerhalb von [1, 127]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.node_ids[%d] = %d is used twice</source>
+        <translation>devices.node_ids[%d] = %d ist doppelt vergeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.sensor_node_ids[%d] = %d is outside [1, 127]</source>
+        <translation>devices.sensor_node_ids[%d] = %d liegt außerhalb von [1, 127]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.sensor_node_ids[%d] = %d is the node of axis %d (devices.node_ids[%d])</source>
+        <translation>devices.sensor_node_ids[%d] = %d ist der Knoten der Achse %d (devices.node_ids[%d])</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.sensor_node_ids[%d] = %d is used twice</source>
+        <translation>devices.sensor_node_ids[%d] = %d ist doppelt vergeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>machine.kind = %s is not one of %s</source>
+        <translation>machine.kind = %s ist keine von %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>devices.kind = &quot;canopen&quot;: %s</source>
+        <translation>devices.kind = &quot;canopen&quot;: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.wall_mm = %.6g mm must be less than %s.radius_mm = %.6g mm</source>
+        <translation>%s.wall_mm = %.6g mm muss kleiner sein als %s.radius_mm = %.6g mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angle_deg = %.6g deg is outside [0.1, 90] deg (angle between the pipe axes)</source>
+        <translation>angle_deg = %.6g deg liegt außerhalb von [0,1, 90] deg (Winkel zwischen den Rohrachsen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>branch_pipe.radius_mm = %.6g mm does not fit: |eccentricity_mm| + branch radius = %.6g mm must be &lt;= main_pipe.radius_mm = %.6g mm</source>
+        <translation>branch_pipe.radius_mm = %.6g mm passt nicht: |eccentricity_mm| + Abzweigradius = %.6g mm muss &lt;= main_pipe.radius_mm = %.6g mm sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.speed_mm_s = %.6g mm/s: the cut around the branch (about %.6g mm) would take %.6g s, longer than the limit of %.6g s (one hour)</source>
+        <translation>cut.speed_mm_s = %.6g mm/s: der Schnitt um den Abzweig (etwa %.6g mm) dauerte %.6g s, länger als die Grenze von %.6g s (eine Stunde)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.speed_mm_s = %.6g mm/s: the cut (up to %.6g mm, %.6g s) would need %.6g samples at sim.period_s = %.6g s; the limit is %.6g</source>
+        <translation>cut.speed_mm_s = %.6g mm/s: der Schnitt (bis %.6g mm, %.6g s) bräuchte %.6g Abtastwerte bei sim.period_s = %.6g s; die Grenze ist %.6g</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>main_pipe.length_mm = %.6g mm is shorter than the cut along it (%.6g mm for a branch of radius %.6g mm at %.6g deg): the pipe must contain the cut</source>
+        <translation>main_pipe.length_mm = %.6g mm ist kürzer als der Schnitt entlang des Rohrs (%.6g mm für einen Abzweig mit Radius %.6g mm unter %.6g deg): das Rohr muss den Schnitt enthalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>branch_pipe.length_mm = %.6g mm is shorter than the saddle of its cut end (%.6g mm): the pipe must contain the cut</source>
+        <translation>branch_pipe.length_mm = %.6g mm ist kürzer als der Sattel seines Schnittendes (%.6g mm): das Rohr muss den Schnitt enthalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not feasible: machine.%s</source>
+        <translation>nicht ausführbar: machine.%s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>carriage.max_speed_mm_s = %.6g mm/s cannot reach the line: line.speed_m_min = %.6g m/min is up to %.6g mm/s with the line&apos;s wander and steps; the carriage needs &gt;= %.6g mm/s</source>
+        <translation>carriage.max_speed_mm_s = %.6g mm/s erreicht die Linie nicht: line.speed_m_min = %.6g m/min sind mit Schwankung und Sprüngen der Linie bis %.6g mm/s; der Wagen braucht &gt;= %.6g mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>carriage.stroke_mm = %.6g mm is too short: sync-in %.6g mm + sync and cut %.6g mm (%.6g s at up to %.6g mm/s) + deceleration %.6g mm need %.6g mm from the wait position %.6g mm</source>
+        <translation>carriage.stroke_mm = %.6g mm ist zu kurz: Einsynchronisieren %.6g mm + Gleichlauf und Schnitt %.6g mm (%.6g s bei bis %.6g mm/s) + Verzögerung %.6g mm brauchen %.6g mm ab der Warteposition %.6g mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.queue[%zu].length_mm = %.6g mm is too short for the cycle at %.6g m/min (up to %.6g mm/s): the shortest possible is %.6g mm (sync-in %.6g mm, sync and cut %.6g s, deceleration %.6g mm, return %.6g s)</source>
+        <translation>cut.queue[%zu].length_mm = %.6g mm ist zu kurz für den Zyklus bei %.6g m/min (bis %.6g mm/s): am kürzesten möglich sind %.6g mm (Einsynchronisieren %.6g mm, Gleichlauf und Schnitt %.6g s, Verzögerung %.6g mm, Rückfahrt %.6g s)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -887,6 +992,11 @@
         <location line="+1"/>
         <source>blade speed lost</source>
         <translation>Sägeblattdrehzahl verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.queue is empty: at least one length is needed</source>
+        <translation>cut.queue ist leer: mindestens eine Länge ist nötig</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -917,6 +1027,111 @@
         <location line="+1"/>
         <source>the piece is too short for the cycle at this line speed: the next sync-in has begun before the carriage was back</source>
         <translation>das Stück ist für den Zyklus bei dieser Liniengeschwindigkeit zu kurz: die nächste Einsynchronisierung begann, bevor der Wagen zurück war</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the wall + overcut (%.6g mm) leaves no bore in a tube of %.6g x %.6g mm</source>
+        <translation>Wand + Überschnitt (%.6g mm) lassen keine Bohrung in einem Rohr von %.6g x %.6g mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saw.table_points = %d is outside [8, %d]</source>
+        <translation>saw.table_points = %d liegt außerhalb von [8, %d]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of reach: the wrist is %.3f mm beyond the arm&apos;s reach (joint 3)</source>
+        <translation>außer Reichweite: das Handgelenk liegt %.3f mm jenseits der Reichweite des Arms (Gelenk 3)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joint %d = %.3f deg is past its limit %.3f deg by %.3f deg</source>
+        <translation>Gelenk %d = %.3f deg überschreitet seine Grenze %.3f deg um %.3f deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>singular at joint %d (its angle is undefined here)</source>
+        <translation>singulär bei Gelenk %d (sein Winkel ist hier unbestimmt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only tilt its torch within that plane)</source>
+        <translation>die Brennerachse liegt %.3f deg außerhalb der Ebene von Gelenk 1 (ein 5-achsiger Arm kann seinen Brenner nur in dieser Ebene neigen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>robot.dh[%d].min_deg = %.6g deg must be below robot.dh[%d].max_deg = %.6g deg</source>
+        <translation>robot.dh[%d].min_deg = %.6g deg muss unter robot.dh[%d].max_deg = %.6g deg liegen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>robot.dh[%d].alpha_deg = %.6g deg: the pipe robot&apos;s inverse kinematics needs %.6g deg</source>
+        <translation>robot.dh[%d].alpha_deg = %.6g deg: die inverse Kinematik des Rohrroboters braucht %.6g deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>robot.dh[%d].%s = %.6g mm: the pipe robot&apos;s inverse kinematics needs 0 mm</source>
+        <translation>robot.dh[%d].%s = %.6g mm: die inverse Kinematik des Rohrroboters braucht 0 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>robot.dh[2].a_mm and robot.dh[3].a_mm must be &gt; 0 mm (arm links)</source>
+        <translation>robot.dh[2].a_mm und robot.dh[3].a_mm müssen &gt; 0 mm sein (Armglieder)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>controller[%d].tau_f_s = %.6g s must be &gt;= half the control period (%.6g s)</source>
+        <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>path not reachable (%s method): %s</source>
+        <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
+        <translation>der Schnitt braucht X = %.3f mm (beta = %.2f deg), außerhalb des Wagenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>other_branches[%zu].angle_deg = %.6g deg is outside [0.1, 179.9] deg (angle to the main axis)</source>
+        <translation>other_branches[%zu].angle_deg = %.6g deg liegt außerhalb von [0,1, 179,9] deg (Winkel zur Hauptachse)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>other_branches[%zu].radius_mm = %.6g mm does not fit: |eccentricity_mm| + radius = %.6g mm must be &lt;= main_pipe.radius_mm = %.6g mm</source>
+        <translation>other_branches[%zu].radius_mm = %.6g mm passt nicht: |eccentricity_mm| + Radius = %.6g mm muss &lt;= main_pipe.radius_mm = %.6g mm sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>other_branches[%zu]: its axis is %.6g deg from the cut branch&apos;s axis; it must differ by &gt;= 1 deg</source>
+        <translation>other_branches[%zu]: seine Achse liegt %.6g deg von der Achse des geschnittenen Abzweigs; sie muss um &gt;= 1 deg abweichen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.bevel_deg = %.6g deg: the 2-axis profile cutter cuts square only (0 deg)</source>
+        <translation>cut.bevel_deg = %.6g deg: der 2-Achsen-Profilschneider schneidet nur rechtwinklig (0 deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the profile cutter&apos;s A and X steppers are driven by a pulse card, not by CANopen drives: use devices.kind = &quot;simulated&quot;</source>
+        <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = &quot;simulated&quot; verwenden</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>not feasible: %s</source>
+        <translation>nicht ausführbar: %s</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s</source>
+        <translation>Schritt %zu (beta = %.3f deg) braucht %.0f Hz auf der Achse %s, mehr als machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: cut.speed_mm_s senken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>did not finish %d strokes in %d s</source>
+        <translation>%d Hübe nicht in %d s beendet</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -972,6 +1187,216 @@
         <location line="+1"/>
         <source>cutter lost</source>
         <translation>Werkzeug verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be positive definite</source>
+        <translation>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] muss positiv definit sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mechanism: the loop (B.1) does not close for crank angles q in %s: |Dx - O3x - (r3 + AB) cos(theta3)| &gt; r4 = %.6g m there, so the crank cannot turn fully</source>
+        <translation>mechanism: die Schleife (B.1) schließt sich nicht für Kurbelwinkel q in %s: dort ist |Dx - O3x - (r3 + AB) cos(theta3)| &gt; r4 = %.6g m, die Kurbel kann sich nicht ganz drehen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mechanism.r4_m = %.6g m: the link comes within %.4f of horizontal (1 - |cos theta4|), a singular pose; the limit is 0.02</source>
+        <translation>mechanism.r4_m = %.6g m: das Glied kommt der Waagerechten bis auf %.4f nahe (1 - |cos theta4|), eine singuläre Stellung; die Grenze ist 0,02</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mechanism: no two singular crank angles (rho_y = 0) were found</source>
+        <translation>mechanism: keine zwei singulären Kurbelwinkel (rho_y = 0) gefunden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.stroke_length_m = %.6g m does not match the mechanism&apos;s stroke y_min - y_max = %.4f m (tolerance 0.002 m)</source>
+        <translation>cut.stroke_length_m = %.6g m passt nicht zum Hub des Mechanismus y_min - y_max = %.4f m (Toleranz 0,002 m)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.workpiece_length_m = %.6g m must be in (0, %.4f) m (the stroke L_c)</source>
+        <translation>cut.workpiece_length_m = %.6g m muss in (0, %.4f) m liegen (der Hub L_c)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cut.velocity_m_s = %.6g m/s is outside [-10, 0) m/s (the cut runs downwards)</source>
+        <translation>cut.velocity_m_s = %.6g m/s liegt außerhalb von [-10, 0) m/s (der Schnitt läuft abwärts)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tracking: the reference spans [%.4f, %.4f] m; it must stay inside the stroke (%.4f, %.4f) m</source>
+        <translation>tracking: die Führungsgröße überstreicht [%.4f, %.4f] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the mechanism has no full crank turn with two singular points</source>
+        <translation>der Mechanismus hat keine volle Kurbeldrehung mit zwei singulären Punkten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Algorithm 1: %s</source>
+        <translation>Algorithmus 1: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cutting velocity must be a finite number other than 0</source>
+        <translation>die Schnittgeschwindigkeit muss eine endliche Zahl ungleich 0 sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the workpiece length L_d must be &gt; 0 and shorter than the stroke L_c</source>
+        <translation>die Werkstücklänge L_d muss &gt; 0 und kürzer als der Hub L_c sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cutting velocity&apos;s sign must point from the stroke start to its end</source>
+        <translation>das Vorzeichen der Schnittgeschwindigkeit muss vom Hubanfang zum Hubende zeigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>horizontal leg</source>
+        <translation>waagerechten Schenkels</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bottom flange</source>
+        <translation>unteren Flanschs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>end_cut.setup = 2 (the section turned over): nothing is left to cut - setup 2 cuts only the bevel on the underside of the %s (on the conveyor in setup 1) that a K groove on the flanges needs, and end_cut.flanges.groove = &quot;%s&quot;; plan setup 1 (end_cut.setup = 1)</source>
+        <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.%s = %.6g mm is outside [%.6g, %.6g] mm</source>
+        <translation>%s.%s = %.6g mm liegt außerhalb von [%.6g, %.6g] mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.r2_mm = %.6g mm: the toe radius must be below the thickness (%.6g mm)</source>
+        <translation>%s.r2_mm = %.6g mm: der Kantenradius muss unter der Dicke liegen (%.6g mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.r_mm = %.6g mm leaves no flat flange: it must be below %.6g mm (flange outstand)</source>
+        <translation>%s.r_mm = %.6g mm lässt keinen ebenen Flansch: er muss unter %.6g mm liegen (Flanschüberstand)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.r_mm = %.6g mm: two root radii do not fit between the flanges (%.6g mm)</source>
+        <translation>%s.r_mm = %.6g mm: zwei Ausrundungsradien passen nicht zwischen die Flansche (%.6g mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.r_mm = %.6g mm does not fit on the vertical leg (%.6g mm)</source>
+        <translation>%s.r_mm = %.6g mm passt nicht auf den senkrechten Schenkel (%.6g mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s (and %zu more points)</source>
+        <translation>%s (und %zu weitere Punkte)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%s joint %s = %.2f deg is outside its limits [%.1f, %.1f] deg</source>
+        <translation>%s, Gelenk %s = %.2f deg liegt außerhalb seiner Grenzen [%.1f, %.1f] deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: no inverse-kinematics solution (out of reach)</source>
+        <translation>%s: keine Lösung der inversen Kinematik (außer Reichweite)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s (all %zu branches)</source>
+        <translation>%s (alle %zu Lösungszweige)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %zu of pass %s (%s, turning at the corner, s = %.1f mm): %s</source>
+        <translation>Punkt %zu des Durchgangs %s (%s, Drehung an der Ecke, s = %.1f mm): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %zu of pass %s (%s, s = %.1f mm): %s</source>
+        <translation>Punkt %zu des Durchgangs %s (%s, s = %.1f mm): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the torch body hits the section %.0f mm behind the tip at x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f, lean %.0f deg of max_lean_deg = %.0f)</source>
+        <translation>der Brennerkörper trifft das Profil %.0f mm hinter der Spitze bei x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f, Neigung %.0f deg von max_lean_deg = %.0f)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>path arm</source>
+        <translation>Bahnarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>path arm changes branch (joint jump %.1f deg)</source>
+        <translation>Bahnarm wechselt den Lösungszweig (Gelenksprung %.1f deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>groove arm</source>
+        <translation>Fugenarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>groove arm changes branch (joint jump %.1f deg)</source>
+        <translation>Fugenarm wechselt den Lösungszweig (Gelenksprung %.1f deg)</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>the cut has no path</source>
+        <translation>der Schnitt hat keine Bahn</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%s.root_face_mm = %.6g mm: a V groove has no root face (use Y)</source>
+        <translation>%s.root_face_mm = %.6g mm: eine V-Fuge hat keinen Steg (Y verwenden)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>end_cut.setup = %d is outside [1, %d]</source>
+        <translation>end_cut.setup = %d liegt außerhalb von [1, %d]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s.min_deg = %.6g deg must be below max_deg = %.6g deg</source>
+        <translation>%s.min_deg = %.6g deg muss unter max_deg = %.6g deg liegen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>park_deg[%zu] = %.6g deg is outside %s [%.6g, %.6g] deg</source>
+        <translation>park_deg[%zu] = %.6g deg liegt außerhalb von %s [%.6g, %.6g] deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drives[%zu].tau_f_s = %.6g s must be &gt;= half the control period (%.6g s)</source>
+        <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
+        <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>planning cancelled</source>
+        <translation>Planung abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg</source>
+        <translation>Gelenk 0 (Futter) = %.3f deg liegt außerhalb seines Bereichs [%.1f, %.1f] deg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more than cut.max_direction_deviation_deg = %.2f deg</source>
+        <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1878,7 +2303,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawFiguresForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_figures.cpp" line="+56"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_figures.cpp" line="+57"/>
         <source>the job is not for the flying saw</source>
         <translation>der Auftrag ist nicht für die fliegende Säge</translation>
     </message>
@@ -2020,7 +2445,7 @@ entriegeln</translation>
         <translation>%1 Stück gemessen: Fehler Mittelwert %2 mm, Std.-Abw. %3 mm, max |e| %4 mm, Cpk %5 (± %6 mm); größte Schnittstreuung am Rohr %7 mm.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Not completed: %1</source>
         <translation>Nicht abgeschlossen: %1</translation>
     </message>
@@ -2875,7 +3300,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::QuickReturnFiguresForm</name>
     <message>
-        <location filename="../../ui/machines/quick_return/quick_return_figures.cpp" line="+52"/>
+        <location filename="../../ui/machines/quick_return/quick_return_figures.cpp" line="+53"/>
         <source>Simulate the cut offline (experiment 2, the job&apos;s controller)</source>
         <translation>Schnitt offline simulieren (Experiment 2, Regler des Auftrags)</translation>
     </message>
@@ -2914,24 +3339,24 @@ entriegeln</translation>
         <location line="+0"/>
         <location line="+1"/>
         <location line="+75"/>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>y (m)</source>
         <translation>y (m)</translation>
     </message>
     <message>
-        <location line="-137"/>
+        <location line="-138"/>
         <source>Velocity error in the work</source>
         <translation>Geschwindigkeitsfehler im Werkstück</translation>
     </message>
     <message>
         <location line="+0"/>
         <location line="+75"/>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>y_d&apos; - y&apos; (m/s)</source>
         <translation>y_d&apos; - y&apos; (m/s)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-95"/>
         <source>a simulation is running</source>
         <translation>eine Simulation läuft</translation>
     </message>
@@ -2947,12 +3372,12 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+62"/>
+        <location line="+63"/>
         <source>Velocity error in the work: max %1, RMS %2 m/s</source>
         <translation>Geschwindigkeitsfehler im Werkstück: max. %1, RMS %2 m/s</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-59"/>
         <source>Source: offline simulation of the job&apos;s cut (core runCutting, the engine&apos;s control law on the crank plant).</source>
         <translation>Quelle: Offline-Simulation des Schnitts des Auftrags (Kern runCutting, Regelgesetz der Steuerung an der Kurbelstrecke).</translation>
     </message>
@@ -2962,7 +3387,7 @@ entriegeln</translation>
         <translation>%1: %2 Hübe, Geschwindigkeitsfehler im Werkstück max. %3 m/s, RMS %4 m/s (%5 Messwerte); Spitzenmoment %6 N m.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Not completed: %1</source>
         <translation>Nicht abgeschlossen: %1</translation>
     </message>
@@ -3343,7 +3768,7 @@ letzte %1 s</translation>
         <translation>der CAN-Bus ist nicht hochgefahren: %1</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+59"/>
         <source>Path not reachable: %1</source>
         <translation>Bahn nicht erreichbar: %1</translation>
     </message>
@@ -3987,7 +4412,7 @@ letzte %1 s</translation>
 <context>
     <name>IssueText</name>
     <message>
-        <location filename="../../ui/forms/issue_text.cpp" line="+16"/>
+        <location filename="../../ui/forms/issue_text.cpp" line="+17"/>
         <source>%1 is not a finite number: it must lie in [%2, %3] %4</source>
         <translation>%1 ist keine endliche Zahl: erlaubt sind %2 bis %3 %4</translation>
     </message>
@@ -5061,7 +5486,7 @@ letzte %1 s</translation>
 <context>
     <name>SectionSteelScene</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_scene.cpp" line="+120"/>
+        <location filename="../../ui/machines/section_steel/section_steel_scene.cpp" line="+121"/>
         <source>Section-steel cutter</source>
         <translation>Profilstahl-Schneidanlage</translation>
     </message>

@@ -208,7 +208,7 @@ void ProgressPanel::setPlannedTotals(std::uint32_t points, double duration_s) {
 void ProgressPanel::clear() {
     beginRun();
     bar_->setValue(0);
-    percent_->setText(QStringLiteral("0.0 %"));
+    percent_->setText(QStringLiteral("%1 %").arg(shownNumber(0.0, 1)));
     elapsed_->setText(formatDuration(0));
     remaining_->setText(formatDuration(0));
     points_->setText(QStringLiteral("0 / 0"));

@@ -92,7 +92,7 @@ MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText) co
     const FlyingSawSpec& s = data->spec;
     if (!p.ok) {
         out.status = PlanStatus::Infeasible;
-        out.problem = "not feasible: machine." + p.problem;
+        out.problem = messageC("not feasible: machine.%s", p.problem.c_str());
         out.summary = p.problem;
         return out;
     }

@@ -43,10 +43,10 @@ FlyingSawPlan planFlyingSaw(const FlyingSawSpec& spec) {
     const CarriageLimits& lim = spec.carriage;
     if (Vmax > lim.max_speed_mm_s) {
         p.problemKey = "carriage.max_speed_mm_s";
-        p.problem = formatC("carriage.max_speed_mm_s = %.6g mm/s cannot reach the line: "
-                            "line.speed_m_min = %.6g m/min is up to %.6g mm/s with the line's "
-                            "wander and steps; the carriage needs >= %.6g mm/s",
-                            lim.max_speed_mm_s, spec.line_speed_m_min, Vmax, Vmax);
+        p.problem = messageC("carriage.max_speed_mm_s = %.6g mm/s cannot reach the line: "
+                             "line.speed_m_min = %.6g m/min is up to %.6g mm/s with the line's "
+                             "wander and steps; the carriage needs >= %.6g mm/s",
+                             lim.max_speed_mm_s, spec.line_speed_m_min, Vmax, Vmax);
         return p;
     }
     // BC and EF: the seed's cosine ramp at the highest line speed within acceleration and jerk.
@@ -79,7 +79,7 @@ FlyingSawPlan planFlyingSaw(const FlyingSawSpec& spec) {
     const double available = spec.stroke_mm - spec.wait_position_mm;
     if (p.stroke_needed_mm > available) {
         p.problemKey = "carriage.stroke_mm";
-        p.problem = formatC(
+        p.problem = messageC(
             "carriage.stroke_mm = %.6g mm is too short: sync-in %.6g mm + sync and cut %.6g mm "
             "(%.6g s at up to %.6g mm/s) + deceleration %.6g mm need %.6g mm from the wait "
             "position %.6g mm",
@@ -103,7 +103,7 @@ FlyingSawPlan planFlyingSaw(const FlyingSawSpec& spec) {
     for (size_t i = 0; i < spec.queue.size(); ++i) {
         if (spec.queue[i].length_mm < p.shortest_length_mm) {
             p.problemKey = formatC("cut.queue[%zu].length_mm", i);
-            p.problem = formatC(
+            p.problem = messageC(
                 "cut.queue[%zu].length_mm = %.6g mm is too short for the cycle at %.6g m/min "
                 "(up to %.6g mm/s): the shortest possible is %.6g mm (sync-in %.6g mm, sync "
                 "and cut %.6g s, deceleration %.6g mm, return %.6g s)",

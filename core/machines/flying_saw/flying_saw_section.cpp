@@ -217,7 +217,8 @@ std::vector<JobIssue> checkFlyingSawSpec(const FlyingSawSpec& s) {
         s.shape == TubeShape::Round ? s.diameter_mm : std::min(s.width_mm, s.height_mm);
     c.positive("tube.wall_mm", s.wall_mm, 0.1, std::max(0.1, smallest / 2 - s.saw.overcut_mm - 0.1),
                "mm");
-    if (s.queue.empty()) c.add("cut.queue", "cut.queue is empty: at least one length is needed");
+    if (s.queue.empty())
+        c.add("cut.queue", messageC("cut.queue is empty: at least one length is needed"));
     for (size_t i = 0; i < s.queue.size(); ++i) {
         const std::string k = "cut.queue[" + std::to_string(i) + "]";
         c.positive(k + ".length_mm", s.queue[i].length_mm, 10, 100000, "mm");

@@ -41,11 +41,11 @@ std::string buildSawCycle(const TubeOutline& outer, double wall_mm, const SawSet
     c.outer = outer;
     c.cut = outer.inset(wall_mm + s.overcut_mm);
     if (!(c.cut.half_width > 0 && c.cut.half_height > 0))
-        return formatC("the wall + overcut (%.6g mm) leaves no bore in a tube of %.6g x %.6g mm",
-                       wall_mm + s.overcut_mm, 2 * outer.half_width, 2 * outer.half_height);
+        return messageC("the wall + overcut (%.6g mm) leaves no bore in a tube of %.6g x %.6g mm",
+                        wall_mm + s.overcut_mm, 2 * outer.half_width, 2 * outer.half_height);
     if (s.table_points + 1 > CamTable::kCapacity || s.table_points < 8)
-        return formatC("saw.table_points = %d is outside [8, %d]", s.table_points,
-                       CamTable::kCapacity - 1);
+        return messageC("saw.table_points = %d is outside [8, %d]", s.table_points,
+                        CamTable::kCapacity - 1);
     c.retract_radius = outer.maxRadius() + s.clearance_mm;
     c.cam = feedCamTable(outer, c.cut, c.retract_radius, s.table_points);
     const double psiA = outer.cornerA();

@@ -25,28 +25,21 @@ const char* toString(IkStatus s) {
 }
 
 std::string describe(const IkResult& r) {
-    char buf[256];
     switch (r.status) {
     case IkStatus::Ok:
         return "ok";
     case IkStatus::OutOfReach:
-        snprintfC(buf, sizeof buf,
-                  "out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)",
-                  r.residual);
-        return buf;
+        return messageC("out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)",
+                        r.residual);
     case IkStatus::JointLimit:
-        snprintfC(buf, sizeof buf, "joint %d = %.3f deg is past its limit %.3f deg by %.3f deg",
-                  r.axis, rad2deg(r.value), rad2deg(r.limit), rad2deg(r.residual));
-        return buf;
+        return messageC("joint %d = %.3f deg is past its limit %.3f deg by %.3f deg", r.axis,
+                        rad2deg(r.value), rad2deg(r.limit), rad2deg(r.residual));
     case IkStatus::Singular:
-        snprintfC(buf, sizeof buf, "singular at joint %d (its angle is undefined here)", r.axis);
-        return buf;
+        return messageC("singular at joint %d (its angle is undefined here)", r.axis);
     case IkStatus::OrientationUnreachable:
-        snprintfC(buf, sizeof buf,
-                  "torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only tilt "
-                  "its torch within that plane)",
-                  rad2deg(r.residual));
-        return buf;
+        return messageC("torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only "
+                        "tilt its torch within that plane)",
+                        rad2deg(r.residual));
     }
     return "?";
 }

@@ -145,8 +145,9 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
         c.range(k + ".min_deg", d.min_deg, -360, 360, "deg");
         c.range(k + ".max_deg", d.max_deg, -360, 360, "deg");
         if (d.min_deg >= d.max_deg)
-            c.add(k + ".min_deg", k + ".min_deg = " + num(d.min_deg) + " deg must be below " + k +
-                                      ".max_deg = " + num(d.max_deg) + " deg");
+            c.add(k + ".min_deg", messageC("robot.dh[%d].min_deg = %.6g deg must be below "
+                                           "robot.dh[%d].max_deg = %.6g deg",
+                                           i, d.min_deg, i, d.max_deg));
     }
     // The analytic IK is written for the seed's arm structure (alpha = 90, 0, 0, 90, 0).
     const double structure[kAxisCount] = {90, 90, 0, 0, 90, 0};
@@ -154,9 +155,9 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
         const auto& d = job.dh[static_cast<size_t>(i)];
         if (std::fabs(d.alpha_deg - structure[i]) > 1e-9)
             c.add("robot.dh[" + std::to_string(i) + "].alpha_deg",
-                  "robot.dh[" + std::to_string(i) + "].alpha_deg = " + num(d.alpha_deg) +
-                      " deg: the pipe robot's inverse kinematics needs " + num(structure[i]) +
-                      " deg");
+                  messageC("robot.dh[%d].alpha_deg = %.6g deg: the pipe robot's inverse "
+                           "kinematics needs %.6g deg",
+                           i, d.alpha_deg, structure[i]));
     }
     // ... and for its offsets: these lengths are zero on the seed's arm.
     const struct {
@@ -171,12 +172,13 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     for (const auto& z : zeros)
         if (std::fabs(z.value) > 1e-9) {
             const std::string k = "robot.dh[" + std::to_string(z.row) + "]." + z.field;
-            c.add(k,
-                  k + " = " + num(z.value) + " mm: the pipe robot's inverse kinematics needs 0 mm");
+            c.add(k, messageC("robot.dh[%d].%s = %.6g mm: the pipe robot's inverse kinematics "
+                              "needs 0 mm",
+                              z.row, z.field, z.value));
         }
     if (job.dh[2].a_mm <= 0 || job.dh[3].a_mm <= 0)
         c.add("robot.dh[2].a_mm",
-              "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)");
+              messageC("robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"));
 
     // Physical ranges of the drives: far beyond any joint of a cutting robot, but finite, so
     // the discretised controller and plant stay finite numbers.
@@ -194,9 +196,9 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
         c.positive(pk + ".torque_limit_nm", p.torque_limit_nm, 1e-3, 1e5, "N m");
         // The filter time constant must be resolvable at the control period.
         if (g.tau_f > 0 && job.sim.period_s > 0 && g.tau_f < job.sim.period_s / 2)
-            c.add(k + ".tau_f_s", k + ".tau_f_s = " + num(g.tau_f) +
-                                      " s must be >= half the control period (" +
-                                      num(job.sim.period_s / 2) + " s)");
+            c.add(k + ".tau_f_s", messageC("controller[%d].tau_f_s = %.6g s must be >= half the "
+                                           "control period (%.6g s)",
+                                           i, g.tau_f, job.sim.period_s / 2));
     }
     return c.issues;
 }
@@ -210,8 +212,8 @@ MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText) co
                 toString(job.cut.target), cut->length_mm, job.cut.speed_mm_s, cut->cut_time_s);
     if (!cut->reachable) {
         out.status = PlanStatus::Infeasible;
-        out.problem = formatC("path not reachable (%s method): %s", toString(cut->method),
-                              cut->problem.c_str());
+        out.problem = messageC("path not reachable (%s method): %s", toString(cut->method),
+                               cut->problem.c_str());
         return out;
     }
     auto program = buildPipeRobotProgram(job, *cut, jobText);

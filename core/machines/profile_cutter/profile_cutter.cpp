@@ -24,13 +24,9 @@ std::string travelProblem(const Job& job, const ProfileCut& cut) {
     const double travel = job.profile_cutter.x_travel_mm;
     for (const auto& p : cut.points)
         if (p.x_mm < 0 || p.x_mm > travel) {
-            char buf[256];
-            snprintfC(
-                buf, sizeof buf,
-                "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. "
-                "machine.profile_cutter.x_travel_mm = %.3f mm",
-                p.x_mm, p.beta_deg, travel);
-            return buf;
+            return messageC("the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage "
+                            "travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm",
+                            p.x_mm, p.beta_deg, travel);
         }
     return {};
 }

@@ -141,27 +141,28 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
         const std::string k = "other_branches[" + std::to_string(i) + "]";
         c.positive(k + ".radius_mm", o.radius_mm, 1, 2000, "mm");
         if (!(o.angle_deg >= 0.1 && o.angle_deg <= 179.9))
-            c.add(k + ".angle_deg",
-                  k + ".angle_deg = " + num(o.angle_deg) +
-                      " deg is outside [0.1, 179.9] deg (angle to the main axis)");
+            c.add(k + ".angle_deg", messageC("other_branches[%zu].angle_deg = %.6g deg is outside "
+                                             "[0.1, 179.9] deg (angle to the main axis)",
+                                             i, o.angle_deg));
         c.range(k + ".eccentricity_mm", o.eccentricity_mm, -2000, 2000, "mm");
         c.range(k + ".position_mm", o.position_mm, -20000, 20000, "mm");
         c.range(k + ".phase_deg", o.phase_deg, -360, 360, "deg");
         const double fit = std::fabs(o.eccentricity_mm) + o.radius_mm;
         if (R > 0 && o.radius_mm > 0 && fit > R)
             c.add(k + ".radius_mm",
-                  k + ".radius_mm = " + num(o.radius_mm) +
-                      " mm does not fit: |eccentricity_mm| + radius = " + num(fit) +
-                      " mm must be <= main_pipe.radius_mm = " + num(R) + " mm");
+                  messageC("other_branches[%zu].radius_mm = %.6g mm does not fit: "
+                           "|eccentricity_mm| + radius = %.6g mm must be <= main_pipe.radius_mm "
+                           "= %.6g mm",
+                           i, o.radius_mm, fit, R));
         // Axes must not be parallel to the cut branch's: the crossing would be undefined.
         const double aj = deg2rad(o.angle_deg), ph = deg2rad(o.phase_deg);
         const double cosAxes =
             std::sin(a) * std::cos(ph) * std::sin(aj) + std::cos(a) * std::cos(aj);
         const double between = rad2deg(std::acos(std::min(1.0, std::fabs(cosAxes))));
         if (std::isfinite(between) && between < 1.0)
-            c.add(k + ".angle_deg",
-                  k + ": its axis is " + num(between) +
-                      " deg from the cut branch's axis; it must differ by >= 1 deg");
+            c.add(k + ".angle_deg", messageC("other_branches[%zu]: its axis is %.6g deg from the "
+                                             "cut branch's axis; it must differ by >= 1 deg",
+                                             i, between));
     }
     const ProfileCutterSpec& p = job.profile_cutter;
     c.range("profile_cutter.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
@@ -175,15 +176,16 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
                 job.main_pipe.length_mm, "mm");
     // The torch stands radially over the pipe: this machine cannot tilt it for a bevel.
     if (job.cut.bevel_deg != 0)
-        c.add("cut.bevel_deg", "cut.bevel_deg = " + num(job.cut.bevel_deg) +
-                                   " deg: the 2-axis profile cutter cuts square only (0 deg)");
+        c.add("cut.bevel_deg", messageC("cut.bevel_deg = %.6g deg: the 2-axis profile cutter "
+                                        "cuts square only (0 deg)",
+                                        job.cut.bevel_deg));
     return c.issues;
 }
 
 bool ProfileCutterModule::supportsCanOpen(std::string* why) const {
     if (why)
-        *why = "the profile cutter's A and X steppers are driven by a pulse card, not by CANopen "
-               "drives: use devices.kind = \"simulated\"";
+        *why = messageC("the profile cutter's A and X steppers are driven by a pulse card, not by "
+                        "CANopen drives: use devices.kind = \"simulated\"");
     return false;
 }
 
@@ -202,17 +204,17 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
                 job.profile_cutter.max_pulse_rate_hz);
     out.status = PlanStatus::Infeasible;
     if (!sch.problem.empty()) {
-        out.problem = "not feasible: " + sch.problem;
+        out.problem = messageC("not feasible: %s", sch.problem.c_str());
         return out;
     }
     if (const std::string travel = travelProblem(job, data->cut); !travel.empty()) {
-        out.problem = "not feasible: " + travel;
+        out.problem = messageC("not feasible: %s", travel.c_str());
         return out;
     }
     try {
         out.program = buildProfileCutterProgram(job, jobText);
     } catch (const std::invalid_argument& e) {
-        out.problem = std::string("not feasible: ") + e.what();
+        out.problem = messageC("not feasible: %s", e.what());
         return out;
     }
     out.status = PlanStatus::Ok;

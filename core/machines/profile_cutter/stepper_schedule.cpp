@@ -45,13 +45,11 @@ PulseSchedule buildPulseSchedule(const ProfileCut& cut, const ProfileCutterSpec&
         s.max_x_rate_hz = std::max(s.max_x_rate_hz, st.x_rate_hz);
         s.max_a_rate_hz = std::max(s.max_a_rate_hz, st.a_rate_hz);
         if (s.problem.empty() && std::max(st.x_rate_hz, st.a_rate_hz) > spec.max_pulse_rate_hz) {
-            char buf[256];
-            snprintfC(buf, sizeof buf,
-                      "step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above "
-                      "machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s",
-                      i, cut.points[i].beta_deg, std::max(st.x_rate_hz, st.a_rate_hz),
-                      st.x_rate_hz >= st.a_rate_hz ? "X" : "A", spec.max_pulse_rate_hz);
-            s.problem = buf;
+            s.problem = messageC("step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above "
+                                 "machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower "
+                                 "cut.speed_mm_s",
+                                 i, cut.points[i].beta_deg, std::max(st.x_rate_hz, st.a_rate_hz),
+                                 st.x_rate_hz >= st.a_rate_hz ? "X" : "A", spec.max_pulse_rate_hz);
         }
         s.steps.push_back(st);
         px = nx;

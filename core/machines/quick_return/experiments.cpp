@@ -1,4 +1,5 @@
 #include "core/machines/quick_return/experiments.h"
+#include "core/common/c_format.h"
 
 #include <cmath>
 #include <numbers>
@@ -136,8 +137,8 @@ CuttingResult runCutting(const ExperimentSetup& setup, ControllerKind controller
     }
     r.strokes = sim.law.strokesDone();
     if (!r.completed && r.problem.empty())
-        r.problem = "did not finish " + std::to_string(lc.strokes) + " strokes in " +
-                    std::to_string(static_cast<int>(limit)) + " s";
+        r.problem = messageC("did not finish %d strokes in %d s", static_cast<int>(lc.strokes),
+                             static_cast<int>(limit));
     r.velocity_error_rms = r.samples_in_work > 0 ? std::sqrt(sum / r.samples_in_work) : 0;
     r.cycle_time = cuts > 1 ? (lastCut - firstCut) / (cuts - 1) : 0;
     r.return_time = returns > 0 ? returnSum / returns : 0;

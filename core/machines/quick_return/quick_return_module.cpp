@@ -63,7 +63,7 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) 
     auto data = std::make_shared<QuickReturnPlanData>();
     std::string problem;
     if (!buildSetup(spec, &data->setup, &problem)) {
-        out.problem = "not feasible: " + problem;
+        out.problem = messageC("not feasible: %s", problem.c_str());
         return out;
     }
     const ExperimentSetup& s = data->setup;

@@ -189,52 +189,57 @@ std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s) {
     c.positive("tracking.mse_window_s", s.mse_window, 1e-3, s.track_duration, "s");
     const ControllerParams& g = s.gains;
     if (!(g.osmc_q11 * g.osmc_q22 - g.osmc_q12 * g.osmc_q12 > 0))
-        c.add("control.osmc.q11", "control.osmc: Q = [q11 q12; q12 q22] = [" + num(g.osmc_q11) +
-                                      " " + num(g.osmc_q12) + "; " + num(g.osmc_q12) + " " +
-                                      num(g.osmc_q22) + "] must be positive definite");
+        c.add("control.osmc.q11",
+              messageC("control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be "
+                       "positive definite",
+                       g.osmc_q11, g.osmc_q12, g.osmc_q12, g.osmc_q22));
     if (!c.issues.empty()) return c.issues;
 
     // The loop must close for every crank angle (the crank turns fully).
     double margin = 0;
     const std::vector<AngleRange> open = openRanges(d, &margin);
     if (!open.empty()) {
-        c.add("mechanism", "mechanism: the loop (B.1) does not close for crank angles q in " +
-                               describeRanges(open) +
-                               ": |Dx - O3x - (r3 + AB) cos(theta3)| > r4 = " + num(d.r4) +
-                               " m there, so the crank cannot turn fully");
+        c.add("mechanism",
+              messageC("mechanism: the loop (B.1) does not close for crank angles q in %s: "
+                       "|Dx - O3x - (r3 + AB) cos(theta3)| > r4 = %.6g m there, so the crank "
+                       "cannot turn fully",
+                       describeRanges(open).c_str(), d.r4));
         return c.issues;
     }
     if (margin < 0.02) {
-        c.add("mechanism.r4_m", formatC("mechanism.r4_m = %s m: the link comes within %.4f of "
-                                        "horizontal (1 - |cos theta4|), a singular pose; "
-                                        "the limit is 0.02",
-                                        num(d.r4).c_str(), margin));
+        c.add("mechanism.r4_m", messageC("mechanism.r4_m = %.6g m: the link comes within %.4f "
+                                         "of horizontal (1 - |cos theta4|), a singular pose; "
+                                         "the limit is 0.02",
+                                         d.r4, margin));
         return c.issues;
     }
     const StrokeInfo st = strokeInfo(d);
     if (!st.ok) {
-        c.add("mechanism", "mechanism: no two singular crank angles (rho_y = 0) were found");
+        c.add("mechanism",
+              messageC("mechanism: no two singular crank angles (rho_y = 0) were found"));
         return c.issues;
     }
     if (std::fabs(st.stroke - s.stroke_length) > 0.002)
         c.add("cut.stroke_length_m",
-              formatC("cut.stroke_length_m = %s m does not match the mechanism's stroke "
-                      "y_min - y_max = %.4f m (tolerance 0.002 m)",
-                      num(s.stroke_length).c_str(), st.stroke));
+              messageC("cut.stroke_length_m = %.6g m does not match the mechanism's stroke "
+                       "y_min - y_max = %.4f m (tolerance 0.002 m)",
+                       s.stroke_length, st.stroke));
     if (!(s.workpiece_length > 0 && s.workpiece_length < st.stroke))
-        c.add("cut.workpiece_length_m", "cut.workpiece_length_m = " + num(s.workpiece_length) +
-                                            " m must be in (0, " + formatC("%.4f", st.stroke) +
-                                            ") m (the stroke L_c)");
+        c.add("cut.workpiece_length_m",
+              messageC("cut.workpiece_length_m = %.6g m must be in (0, %.4f) m (the stroke L_c)",
+                       s.workpiece_length, st.stroke));
     if (!(s.velocity < 0 && s.velocity >= -10))
-        c.add("cut.velocity_m_s", "cut.velocity_m_s = " + num(s.velocity) +
-                                      " m/s is outside [-10, 0) m/s (the cut runs downwards)");
+        c.add("cut.velocity_m_s",
+              messageC("cut.velocity_m_s = %.6g m/s is outside [-10, 0) m/s (the cut runs "
+                       "downwards)",
+                       s.velocity));
     const double lo = s.track_offset - std::fabs(s.track_amplitude);
     const double hi = s.track_offset + std::fabs(s.track_amplitude);
     if (!(lo > st.y_bottom && hi < st.y_top))
         c.add("tracking.amplitude_m",
-              formatC("tracking: the reference spans [%.4f, %.4f] m; it must stay inside the "
-                      "stroke (%.4f, %.4f) m",
-                      lo, hi, st.y_bottom, st.y_top));
+              messageC("tracking: the reference spans [%.4f, %.4f] m; it must stay inside the "
+                       "stroke (%.4f, %.4f) m",
+                       lo, hi, st.y_bottom, st.y_top));
     return c.issues;
 }
 
@@ -243,13 +248,13 @@ bool buildSetup(const QuickReturnSpec& s, ExperimentSetup* setup, std::string* p
     e.law.dims = s.dims;
     e.law.stroke = strokeInfo(s.dims);
     if (!e.law.stroke.ok) {
-        *problem = "the mechanism has no full crank turn with two singular points";
+        *problem = messageC("the mechanism has no full crank turn with two singular points");
         return false;
     }
     e.law.profile =
         algorithm1(e.law.stroke.y_top, e.law.stroke.y_bottom, s.workpiece_length, s.velocity);
     if (!e.law.profile.ok) {
-        *problem = std::string("Algorithm 1: ") + e.law.profile.problem;
+        *problem = messageC("Algorithm 1: %s", e.law.profile.problem);
         return false;
     }
     e.law.experiment = s.experiment;

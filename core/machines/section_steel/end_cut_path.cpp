@@ -1,4 +1,5 @@
 #include "core/machines/section_steel/end_cut_path.h"
+#include "core/common/c_format.h"
 
 #include "core/trajectory/cut_planner.h"
 
@@ -278,14 +279,14 @@ std::vector<CutPass> EndCut::passes(double dt) const {
 
 std::string setupTwoProblem(const SectionSteelSpec& spec) {
     if (spec.cut.setup != 2 || EndCut(spec).hasGroove()) return {};
-    const char* underside =
-        spec.section.family == SectionFamily::L ? "horizontal leg" : "bottom flange";
-    return std::string("end_cut.setup = 2 (the section turned over): nothing is left to cut - "
-                       "setup 2 cuts only the bevel on the underside of the ") +
-           underside +
-           " (on the conveyor in setup 1) that a K groove on the flanges needs, and "
-           "end_cut.flanges.groove = \"" +
-           toString(spec.cut.flanges.type) + "\"; plan setup 1 (end_cut.setup = 1)";
+    const std::string underside = spec.section.family == SectionFamily::L
+                                      ? messageC("horizontal leg")
+                                      : messageC("bottom flange");
+    return messageC("end_cut.setup = 2 (the section turned over): nothing is left to cut - "
+                    "setup 2 cuts only the bevel on the underside of the %s (on the conveyor in "
+                    "setup 1) that a K groove on the flanges needs, and end_cut.flanges.groove = "
+                    "\"%s\"; plan setup 1 (end_cut.setup = 1)",
+                    underside.c_str(), toString(spec.cut.flanges.type));
 }
 
 } // namespace cutcell::section_steel

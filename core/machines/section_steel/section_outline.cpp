@@ -1,5 +1,6 @@
 #include "core/machines/section_steel/section_outline.h"
 
+#include "core/common/c_format.h"
 #include "core/common/types.h"
 #include "core/job/section_reader.h"
 
@@ -294,8 +295,8 @@ std::vector<std::pair<std::string, std::string>> checkSectionDims(const SectionD
     std::vector<std::pair<std::string, std::string>> out;
     auto range = [&](const char* f, double v, double lo, double hi) {
         if (!(v >= lo && v <= hi))
-            out.push_back({k + "." + f, k + "." + f + " = " + num(v) + " mm is outside [" +
-                                            num(lo) + ", " + num(hi) + "] mm"});
+            out.push_back({k + "." + f, messageC("%s.%s = %.6g mm is outside [%.6g, %.6g] mm",
+                                                 k.c_str(), f, v, lo, hi)});
     };
     range("h_mm", d.h_mm, 10, 1200);
     range("b_mm", d.b_mm, 10, 600);
@@ -305,24 +306,25 @@ std::vector<std::pair<std::string, std::string>> checkSectionDims(const SectionD
     range("r2_mm", d.r2_mm, 0, 50);
     if (!out.empty()) return out;
     if (d.family != SectionFamily::I && d.r2_mm >= std::min(d.tw_mm, d.tf_mm))
-        out.push_back({k + ".r2_mm", k + ".r2_mm = " + num(d.r2_mm) +
-                                         " mm: the toe radius must be below the thickness (" +
-                                         num(std::min(d.tw_mm, d.tf_mm)) + " mm)"});
+        out.push_back({k + ".r2_mm",
+                       messageC("%s.r2_mm = %.6g mm: the toe radius must be below the thickness "
+                                "(%.6g mm)",
+                                k.c_str(), d.r2_mm, std::min(d.tw_mm, d.tf_mm))});
     const bool isI = d.family == SectionFamily::I;
     const double webRoom = isI ? (d.b_mm - d.tw_mm) / 2 : d.b_mm - d.tw_mm;
     if (d.r_mm >= webRoom)
-        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
-                                        " mm leaves no flat flange: it must be below " +
-                                        num(webRoom) + " mm (flange outstand)"});
+        out.push_back({k + ".r_mm", messageC("%s.r_mm = %.6g mm leaves no flat flange: it must be "
+                                             "below %.6g mm (flange outstand)",
+                                             k.c_str(), d.r_mm, webRoom)});
     const double clear = d.family == SectionFamily::L ? d.h_mm - d.tf_mm : d.h_mm - 2 * d.tf_mm;
     if (2 * d.r_mm >= clear && d.family != SectionFamily::L)
-        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
-                                        " mm: two root radii do not fit between the flanges (" +
-                                        num(clear) + " mm)"});
+        out.push_back({k + ".r_mm", messageC("%s.r_mm = %.6g mm: two root radii do not fit "
+                                             "between the flanges (%.6g mm)",
+                                             k.c_str(), d.r_mm, clear)});
     if (d.r_mm >= clear && d.family == SectionFamily::L)
-        out.push_back({k + ".r_mm", k + ".r_mm = " + num(d.r_mm) +
-                                        " mm does not fit on the vertical leg (" + num(clear) +
-                                        " mm)"});
+        out.push_back({k + ".r_mm", messageC("%s.r_mm = %.6g mm does not fit on the vertical leg "
+                                             "(%.6g mm)",
+                                             k.c_str(), d.r_mm, clear)});
     return out;
 }
 

@@ -117,9 +117,10 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText)
                       out.summary;
     if (!plan->ok) {
         out.status = PlanStatus::Infeasible;
-        out.problem = plan->problem;
-        if (plan->failed_points > 1)
-            out.problem += formatC(" (and %zu more points)", plan->failed_points - 1);
+        out.problem = plan->failed_points > 1
+                          ? messageC("%s (and %zu more points)", plan->problem.c_str(),
+                                     plan->failed_points - 1)
+                          : plan->problem;
         return out;
     }
     out.program = buildSectionSteelProgram(job, s, *plan, jobText);

@@ -31,8 +31,8 @@ std::string limitViolation(const std::array<double, N>& q, const std::array<Join
     for (size_t i = 0; i < N; ++i) {
         const double d = rad2deg(q[i]);
         if (d < lim[i].min_deg - 1e-9 || d > lim[i].max_deg + 1e-9)
-            return formatC("%s joint %s = %.2f deg is outside its limits [%.1f, %.1f] deg", arm,
-                           names[i], d, lim[i].min_deg, lim[i].max_deg);
+            return messageC("%s joint %s = %.2f deg is outside its limits [%.1f, %.1f] deg", arm,
+                            names[i], d, lim[i].min_deg, lim[i].max_deg);
     }
     return {};
 }
@@ -44,7 +44,7 @@ bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& 
           const std::array<JointLimit, N>& lim, const char* const* names, const char* arm,
           std::array<double, N>& out, std::string* why, bool unwrap = true) {
     if (sols.empty()) {
-        *why = std::string(arm) + ": no inverse-kinematics solution (out of reach)";
+        *why = messageC("%s: no inverse-kinematics solution (out of reach)", arm);
         return false;
     }
     double best = 1e300;
@@ -65,7 +65,7 @@ bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& 
         }
     }
     if (best < 1e300) return true;
-    *why = firstViolation + formatC(" (all %zu branches)", sols.size());
+    *why = messageC("%s (all %zu branches)", firstViolation.c_str(), sols.size());
     return false;
 }
 
@@ -152,11 +152,15 @@ void SteelCell::grooveTorch(const Q5& q, Vec3& p, Vec3& t) const {
     t = T.linear().col(0);
 }
 
-std::string describePoint(const EndCut& cut, const CutPass& pass, size_t k) {
+// Why point k of the pass cannot be cut, and where it is.
+std::string pointProblem(const EndCut& cut, const CutPass& pass, size_t k, const std::string& why) {
     const TorchTarget& t = pass.samples[k];
-    return formatC("point %zu of pass %s (%s%s, s = %.1f mm)", k, pass.name.c_str(),
-                   cut.outline().segments()[t.segment].name.c_str(),
-                   t.turning ? ", turning at the corner" : "", t.s_mm);
+    const char* segment = cut.outline().segments()[t.segment].name.c_str();
+    if (t.turning)
+        return messageC("point %zu of pass %s (%s, turning at the corner, s = %.1f mm): %s", k,
+                        pass.name.c_str(), segment, t.s_mm, why.c_str());
+    return messageC("point %zu of pass %s (%s, s = %.1f mm): %s", k, pass.name.c_str(), segment,
+                    t.s_mm, why.c_str());
 }
 
 SteelPlan planEndCut(const SectionSteelSpec& spec) {
@@ -187,13 +191,14 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
             std::string why;
             // Torch body (cylinder behind the tip) against the section.
             if (const auto hit = torchHit(cut, cut.torchBody(), tt.p, tt.t, pass.name == "square"))
-                fail(describePoint(cut, pass, k) +
-                     formatC(": the torch body hits the section %.0f mm behind the tip at "
-                             "x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, "
-                             "torch_radius_mm = %.0f, lean %.0f deg of max_lean_deg = %.0f)",
+                fail(pointProblem(
+                    cut, pass, k,
+                    messageC("the torch body hits the section %.0f mm behind the tip at x = %.1f, "
+                             "y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = "
+                             "%.0f, lean %.0f deg of max_lean_deg = %.0f)",
                              hit->behind_mm, hit->at.x(), hit->at.y(), hit->at.z(),
                              spec.torch_length_mm, spec.torch_radius_mm, rad2deg(tt.lean_rad),
-                             spec.max_lean_deg));
+                             spec.max_lean_deg)));
             Vec3 p, t;
             if (!pass.groove_arm) {
                 PlanarPose pose;
@@ -202,14 +207,14 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 for (const auto& s : cell.path.inverse(pose))
                     sols.push_back(s.q);
                 std::array<double, 3> q{};
-                if (!pick(sols, qp, spec.path_limits, kPathJointNames, "path arm", q, &why,
-                          !first)) {
-                    fail(describePoint(cut, pass, k) + ": " + why);
+                if (!pick(sols, qp, spec.path_limits, kPathJointNames, messageC("path arm").c_str(),
+                          q, &why, !first)) {
+                    fail(pointProblem(cut, pass, k, why));
                 } else {
                     if (!first && distance(q, qp) > jump)
-                        fail(describePoint(cut, pass, k) +
-                             formatC(": path arm changes branch (joint jump %.1f deg)",
-                                     rad2deg(distance(q, qp))));
+                        fail(pointProblem(cut, pass, k,
+                                          messageC("path arm changes branch (joint jump %.1f deg)",
+                                                   rad2deg(distance(q, qp)))));
                     qp = q;
                 }
                 cell.pathTorch(qp, p, t);
@@ -224,22 +229,22 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 }
                 if (ok && !first) {
                     unwrapTo(q, qg);
-                    ok = limitViolation(q, spec.groove_limits, kGrooveJointNames, "groove arm")
-                             .empty() &&
+                    ok = limitViolation(q, spec.groove_limits, kGrooveJointNames, "").empty() &&
                          distance(q, qg) < jump;
                 }
                 if (!ok) {
                     std::vector<Q5> sols;
                     for (const auto& s : cell.groove.inverseTorch(pb, tb))
                         sols.push_back(s.q);
-                    if (!pick(sols, qg, spec.groove_limits, kGrooveJointNames, "groove arm", q,
-                              &why, !first)) {
-                        fail(describePoint(cut, pass, k) + ": " + why);
+                    if (!pick(sols, qg, spec.groove_limits, kGrooveJointNames,
+                              messageC("groove arm").c_str(), q, &why, !first)) {
+                        fail(pointProblem(cut, pass, k, why));
                         q = qg;
                     } else if (!first && distance(q, qg) > jump) {
-                        fail(describePoint(cut, pass, k) +
-                             formatC(": groove arm changes branch (joint jump %.1f deg)",
-                                     rad2deg(distance(q, qg))));
+                        fail(
+                            pointProblem(cut, pass, k,
+                                         messageC("groove arm changes branch (joint jump %.1f deg)",
+                                                  rad2deg(distance(q, qg)))));
                     }
                 }
                 qg = q;
@@ -278,7 +283,7 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
     plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2;
     if (plan.knots.size() < 2 && plan.problem.empty()) {
         plan.problem = setupTwoProblem(spec);
-        if (plan.problem.empty()) plan.problem = "the cut has no path";
+        if (plan.problem.empty()) plan.problem = messageC("the cut has no path");
     }
     if (plan.ok) {
         plan.spline = JointSpline(plan.knots, plan.dt);

@@ -283,14 +283,15 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
         // 15..60); the torch tilt is limited by the bevel head.
         c.range(k + ".angle_deg", g.g.angle_deg, 5, 60, "deg");
         if (g.g.type == GrooveType::V && g.g.root_face_mm != 0)
-            c.add(k + ".root_face_mm", k + ".root_face_mm = " + num(g.g.root_face_mm) +
-                                           " mm: a V groove has no root face (use Y)");
+            c.add(k + ".root_face_mm",
+                  messageC("%s.root_face_mm = %.6g mm: a V groove has no root face (use Y)",
+                           k.c_str(), g.g.root_face_mm));
         if (g.g.type != GrooveType::V)
             c.range(k + ".root_face_mm", g.g.root_face_mm, 0, g.thickness, "mm");
     }
     if (s.cut.setup < 1 || s.cut.setup > kLastSetup)
-        c.add("end_cut.setup", "end_cut.setup = " + std::to_string(s.cut.setup) +
-                                   " is outside [1, " + std::to_string(kLastSetup) + "]");
+        c.add("end_cut.setup",
+              messageC("end_cut.setup = %d is outside [1, %d]", s.cut.setup, kLastSetup));
     else if (const std::string why = setupTwoProblem(s); !why.empty())
         c.add("end_cut.setup", why);
     for (size_t i = 0; i < 3; ++i)
@@ -302,15 +303,14 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
             c.range(k + ".min_deg", l[i].min_deg, -360, 360, "deg");
             c.range(k + ".max_deg", l[i].max_deg, -360, 360, "deg");
             if (!(l[i].min_deg < l[i].max_deg))
-                c.add(k + ".min_deg", k + ".min_deg = " + num(l[i].min_deg) +
-                                          " deg must be below max_deg = " + num(l[i].max_deg) +
-                                          " deg");
+                c.add(k + ".min_deg", messageC("%s.min_deg = %.6g deg must be below max_deg = "
+                                               "%.6g deg",
+                                               k.c_str(), l[i].min_deg, l[i].max_deg));
             const double park = s.park_deg[axis0 + i];
             if (!(park >= l[i].min_deg && park <= l[i].max_deg))
                 c.add("park_deg[" + std::to_string(axis0 + i) + "]",
-                      "park_deg[" + std::to_string(axis0 + i) + "] = " + num(park) +
-                          " deg is outside " + k + " [" + num(l[i].min_deg) + ", " +
-                          num(l[i].max_deg) + "] deg");
+                      messageC("park_deg[%zu] = %.6g deg is outside %s [%.6g, %.6g] deg", axis0 + i,
+                               park, k.c_str(), l[i].min_deg, l[i].max_deg));
         }
     };
     limits("path_arm", s.path_limits.data(), 3, 0);
@@ -324,9 +324,9 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
         c.range(k + ".kd_nm_s_per_rad", g.kd, 0, 1e5, "N m s/rad");
         c.positive(k + ".tau_f_s", g.tau_f, 1e-5, 1, "s");
         if (g.tau_f > 0 && periodS > 0 && g.tau_f < periodS / 2)
-            c.add(k + ".tau_f_s", k + ".tau_f_s = " + num(g.tau_f) +
-                                      " s must be >= half the control period (" + num(periodS / 2) +
-                                      " s)");
+            c.add(k + ".tau_f_s", messageC("drives[%zu].tau_f_s = %.6g s must be >= half the "
+                                           "control period (%.6g s)",
+                                           i, g.tau_f, periodS / 2));
         c.positive(k + ".inertia_kg_m2", p.inertia_kg_m2, 1e-5, 1e4, "kg m^2");
         c.range(k + ".viscous_nm_s_per_rad", p.viscous_nm_s_per_rad, 0, 1e5, "N m s/rad");
         c.positive(k + ".torque_limit_nm", p.torque_limit_nm, 1e-3, 1e5, "N m");

@@ -1,5 +1,6 @@
 #include "ui/machines/flying_saw/flying_saw_figures.h"
 #include "ui/forms/issue_text.h"
+#include "ui/panels/engine_text.h"
 #include "ui/shown_number.h"
 
 #include "core/common/types.h"
@@ -62,7 +63,7 @@ bool planOf(const JobEditor& editor, cutcell::MachinePlan* out, QString* problem
     }
     *out = module->plan(job, {});
     if (!out->ok() || !out->data) {
-        *problem = QString::fromStdString(out->problem);
+        *problem = engineText(QString::fromStdString(out->problem));
         return false;
     }
     return true;
@@ -206,7 +207,8 @@ bool FlyingSawFiguresForm::simulate(QString* why) {
                             }(),
                             3));
     if (!r.completed)
-        stats += QLatin1Char(' ') + tr("Not completed: %1").arg(QString::fromStdString(r.problem));
+        stats += QLatin1Char(' ') +
+                 tr("Not completed: %1").arg(engineText(QString::fromStdString(r.problem)));
     stats_->setText(stats);
     if (!r.completed && why) *why = stats;
     return r.completed;

@@ -1,4 +1,5 @@
 #include "ui/machines/quick_return/quick_return_figures.h"
+#include "ui/panels/engine_text.h"
 #include "ui/shown_number.h"
 
 #include "core/machines/quick_return/quick_return_spec.h"
@@ -149,7 +150,8 @@ void QuickReturnFiguresForm::simulationFinished() {
                        .arg(r.samples_in_work)
                        .arg(shownNumber(r.max_torque, 2));
     if (!r.completed)
-        text += QLatin1Char(' ') + tr("Not completed: %1").arg(QString::fromStdString(r.problem));
+        text += QLatin1Char(' ') +
+                tr("Not completed: %1").arg(engineText(QString::fromStdString(r.problem)));
     summary_->setText(text);
     emit simulated(r.completed);
 }

@@ -1,4 +1,5 @@
 #include "ui/machines/section_steel/section_steel_scene.h"
+#include "ui/panels/engine_text.h"
 
 #include "core/job/job.h"
 #include "core/machines/section_steel/end_cut_path.h"
@@ -125,7 +126,7 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     if (plan && !plan->ok)
         m.title += "  -  " +
                    words(QCoreApplication::translate("SectionSteelScene", "NOT feasible:")) + " " +
-                   plan->problem;
+                   words(CutCell::ui::engineText(QString::fromStdString(plan->problem)));
     m.axisCount = section_steel::kSteelAxes;
     m.chuckAxis = -1;      // the section lies still; the arms move
     m.toolLength_mm = 550; // the follow-torch view stands 1.8 x this from the cut
