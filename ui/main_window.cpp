@@ -2,6 +2,7 @@
 #include "ui/shown_number.h"
 
 #include "core/job/default_job.h"
+#include "core/machine/machine_registry.h"
 #include "ui/device_panel.h"
 #include "ui/file_places.h"
 #include "ui/forms/job_editor.h"
@@ -69,11 +70,20 @@ MainWindow::MainWindow(EngineRigFactory factory, QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::showMachineTerms() {
+    const cutcell::MachineModule* machine = cutcell::findMachine(editor_->job().machine);
+    const cutcell::RunTerms terms = machine ? machine->runTerms() : cutcell::RunTerms{};
+    alarms_->setTerms(terms);
+    lamps_->setToolName(toolWord(terms));
+    cell_->setToolName(toolWord(terms));
+}
+
 void MainWindow::buildLayout() {
     params_ = new ParameterTabs(editor_, this);
     params_->setMinimumWidth(420);
     run_->setIssueDescriber(
         [this](const cutcell::JobIssue& i) { return params_->issueMessage(i); });
+    run_->setKeyLabeller([this](const QString& text) { return params_->withFieldLabels(text); });
     cell_ = new CellViewPanel(this);
     plots_ = new PlotsPanel(this);
     controls_ = new ControlPanel(this);
@@ -311,7 +321,9 @@ void MainWindow::connectRun() {
     connect(editor_, &JobEditor::jobReset, this, [this] { // another job: its runs are not ours
         plots_->clear();
         cell_->setStopMark(-1);
+        showMachineTerms();
     });
+    showMachineTerms();
     connect(run_, &RunController::stopPointChanged, this,
             [this](const cutcell::RunStopPoint& stop) {
                 recovery_->setStopPoint(stop);

@@ -129,6 +129,8 @@ class MainWindow : public QMainWindow {
     void fitToScreen();
     void connectRun();
     void refreshTitle();
+    // The job's machine's words (the tool lamp, the alarms' source) before its first plan.
+    void showMachineTerms();
     void refreshRecentMenu();
     void onSamples(const std::vector<cutcell::TelemetrySample>& batch);
     void onState(cutcell::EngineState s);

@@ -149,7 +149,7 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
     if (!plan_->reachable) {
         emit message(
             Severity::Error,
-            tr("Path not reachable: %1").arg(engineText(QString::fromStdString(plan_->problem))));
+            tr("Path not reachable: %1").arg(planProblem()));
         updateBlocked();
         if (autoRun_) {
             autoRun_ = false;
@@ -250,6 +250,11 @@ void RunController::onState(EngineState s) {
     if (autoRun_) stepAutoRun();
 }
 
+QString RunController::planProblem() const {
+    const QString text = engineText(QString::fromStdString(plan_->problem));
+    return labelKeys_ ? labelKeys_(text) : text;
+}
+
 void RunController::updateBlocked() {
     QString r;
     const auto s = bridge_->state();
@@ -263,7 +268,7 @@ void RunController::updateBlocked() {
     else if (!plan_)
         r = tr("no plan yet");
     else if (!plan_->reachable)
-        r = tr("path not reachable - %1").arg(engineText(QString::fromStdString(plan_->problem)));
+        r = tr("path not reachable - %1").arg(planProblem());
     else if (!programError_.isEmpty())
         r = programError_;
     else if (programPending_ && busyState(s))

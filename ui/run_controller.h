@@ -37,6 +37,10 @@ class RunController : public QObject {
     void setIssueDescriber(std::function<QString(const cutcell::JobIssue&)> describe) {
         describeIssue_ = std::move(describe);
     }
+    // How a planner's refusal names the job's keys (the forms know the labels).
+    void setKeyLabeller(std::function<QString(const QString&)> labelled) {
+        labelKeys_ = std::move(labelled);
+    }
     EngineBridge* bridge() const { return bridge_; }
     PlanWorker* planner() const { return planner_; }
     std::shared_ptr<const cutcell::CutPlan> plan() const { return plan_; }
@@ -119,6 +123,8 @@ class RunController : public QObject {
     void unconfirmedPartChanged(const QString& text);
 
   private:
+    // The plan's refusal in the GUI's language, its keys named by the fields' labels.
+    QString planProblem() const;
     void onPlanned(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
     void loadProgram();
     void onState(cutcell::EngineState state);
@@ -166,6 +172,7 @@ class RunController : public QObject {
     bool userCancelled_ = false;
     bool autoEnableSent_ = false, autoHomeSent_ = false, autoStartSent_ = false;
     std::function<QString(const cutcell::JobIssue&)> describeIssue_;
+    std::function<QString(const QString&)> labelKeys_;
 };
 
 } // namespace CutCell::ui

@@ -99,6 +99,9 @@ class MachineModule {
     // The external sensors the machine reads (engine sensor k = entry k: "line encoder"); on
     // CAN each is a CiA 406 encoder node (devices.sensor_node_ids). None by default.
     virtual std::vector<std::string> sensorNames() const { return {}; }
+    // How the machine's runs are told (its tool, what it counts) before any plan exists; a
+    // program carries the same terms, with the planned pieces where there are pieces.
+    virtual RunTerms runTerms() const { return {}; }
 
     // Plans the cut of a valid job. jobText is kept in the program for the run log.
     virtual MachinePlan plan(const Job& job, const std::string& jobText = {}) const = 0;

@@ -401,6 +401,24 @@ class TestGuiLanguage : public QObject {
                                              "= 900,5 mm/s erreicht die Linie nicht")),
             qPrintable(german));
         QVERIFY2(englishWordsKept(english, german).isEmpty(), qPrintable(german));
+
+        // The window names the key by the field's label, in the Start reason and in the log.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("slow_carriage.json");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(text.c_str());
+        out.close();
+        MainWindow w(nullptr);
+        QString error;
+        QVERIFY2(w.openJob(path, &error), qPrintable(error));
+        const QWidget* field = w.parameters()->fieldFor("carriage.max_speed_mm_s");
+        QVERIFY(field && !field->accessibleName().isEmpty());
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->startBlockedReason().contains("Linie"), 20000);
+        const QString reason = w.run()->startBlockedReason();
+        QVERIFY2(reason.contains(field->accessibleName() + QStringLiteral(" = 900,5 mm/s")),
+                 qPrintable(reason));
+        QVERIFY2(!reason.contains("max_speed_mm_s"), qPrintable(reason));
     }
 
     // Help -> About names the version, the build's commit and every machine.

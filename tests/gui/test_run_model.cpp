@@ -69,6 +69,26 @@ class TestRunModel : public QObject {
   private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
+    // The tool lamp names the new job's machine's tool at once, before its first plan
+    // (it said "Torch" on the saw until a plan came), also after another machine's job.
+    void toolLampBeforeThePlan_data() { machineRows(); }
+    void toolLampBeforeThePlan() {
+        QFETCH(QString, id);
+        MainWindow w(nullptr);
+        const std::string other = id == cutcell::kFlyingSawId ? cutcell::kQuickReturnId
+                                                              : cutcell::kFlyingSawId;
+        newJobFor(w, other);
+        newJobFor(w, id.toStdString()); // no events processed: no plan can have come
+        const cutcell::MachineModule* module = cutcell::findMachine(id.toStdString());
+        QVERIFY(module);
+        const cutcell::MachinePlan plan = module->plan(w.editor()->job());
+        QVERIFY2(plan.ok() && plan.program, plan.problem.c_str());
+        auto* lamps = w.findChild<CutCell::ui::StateLamps*>();
+        QVERIFY(lamps);
+        QCOMPARE(lamps->lamp(CutCell::ui::StateLamps::Torch)->text().toLower(),
+                 QString::fromStdString(plan.program->terms.tool));
+    }
+
     void pipesTabOnlyWithPipes_data() { machineRows(); }
     void pipesTabOnlyWithPipes() {
         QFETCH(QString, id);

@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPixmap>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QTabBar>
 #include <QTabWidget>
@@ -183,6 +184,23 @@ void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
 QString ParameterTabs::issueMessage(const cutcell::JobIssue& issue) const {
     const QWidget* field = fieldFor(issue.key);
     return issueText(issue, field ? field->accessibleName() : QString());
+}
+
+QString ParameterTabs::withFieldLabels(QString text) const {
+    // A key: dotted lower-case names, indices allowed ("other_branches[1].angle_deg"); in the
+    // file a machine's keys stand under "machine.", the forms know them without it.
+    static const QRegularExpression keyPattern(QStringLiteral(
+        R"((?<![\w.])(?:machine\.)?([a-z][a-z0-9_]*(?:\[\d+\])?(?:\.[a-z][a-z0-9_]*(?:\[\d+\])?)+))"));
+    QString out;
+    qsizetype done = 0;
+    for (auto it = keyPattern.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        const QWidget* field = fieldFor(m.captured(1).toStdString());
+        if (!field || field->accessibleName().isEmpty()) continue;
+        out += text.mid(done, m.capturedStart() - done) + field->accessibleName();
+        done = m.capturedEnd();
+    }
+    return out + text.mid(done);
 }
 
 void ParameterTabs::refreshTitles() {

@@ -30,6 +30,9 @@ class ParameterTabs : public QWidget {
     // An issue as the operator reads it: named by its field's label when a form shows the key,
     // a range issue in the GUI's language (issueText).
     QString issueMessage(const cutcell::JobIssue& issue) const;
+    // A sentence from core (a planner's refusal) with every job key a form shows
+    // ("machine.carriage.max_speed_mm_s") replaced by that field's label.
+    QString withFieldLabels(QString text) const;
     // Shows the tab holding the field and focuses it.
     void revealField(const std::string& key);
     QTabWidget* tabs() const { return tabs_; }

@@ -35,6 +35,10 @@ std::vector<AxisInfo> FlyingSawModule::axes(const Job& job) const {
             {"feed 2", AxisUnit::Linear, 0, feedMax, CommandMode::Position}};
 }
 
+RunTerms FlyingSawModule::runTerms() const {
+    return flyingSawTerms();
+}
+
 Job FlyingSawModule::defaultJob() const {
     // Only the common part (sim, engine, devices) of the built-in job: none of the pipe
     // robot's fields, which this machine's section neither reads nor writes.

@@ -35,6 +35,7 @@ class FlyingSawModule : public MachineModule {
     std::vector<JobIssue> validate(const Job& job) const override;
     bool supportsCanOpen(std::string* why) const override;
     std::vector<std::string> sensorNames() const override { return {"line encoder"}; }
+    RunTerms runTerms() const override;
     MachinePlan plan(const Job& job, const std::string& jobText) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,

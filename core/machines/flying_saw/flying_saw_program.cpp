@@ -61,17 +61,23 @@ std::shared_ptr<MotionProgram> buildFlyingSawProgram(const Job& job, const Flyin
     p->length_mm = metres;
     p->point_count = static_cast<size_t>(pieces);
     // The operator counts pieces (each with its length), not millimetres of a path.
-    p->terms.tool = "saw";
-    p->terms.process_ok = "blade at speed";
-    p->terms.process_lost = "blade speed lost";
-    p->terms.counts = WorkCount::Pieces;
-    p->terms.path_length = false;
+    p->terms = flyingSawTerms();
     for (const PieceOrder& o : spec.queue)
         for (int k = 0; k < o.count; ++k)
             p->terms.piece_lengths_mm.push_back(o.length_mm);
     p->name = job.name;
     p->source_text = jobText;
     return p;
+}
+
+RunTerms flyingSawTerms() {
+    RunTerms t;
+    t.tool = "saw";
+    t.process_ok = "blade at speed";
+    t.process_lost = "blade speed lost";
+    t.counts = WorkCount::Pieces;
+    t.path_length = false;
+    return t;
 }
 
 PidGains sawAxisGains() {

@@ -21,6 +21,8 @@ std::shared_ptr<MotionProgram> buildFlyingSawProgram(const Job& job, const Flyin
 
 // The servo model of every axis in simulation: the core's PID + first-order filter on
 // J q'' + b q' = u (bandwidth ~100 rad/s, as the other simulated linear axes).
+// The saw's words and counts: pieces (each with its length), no path length.
+RunTerms flyingSawTerms();
 PidGains sawAxisGains();
 JointPlantParams sawAxisPlant();
 

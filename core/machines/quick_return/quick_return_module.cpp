@@ -17,6 +17,17 @@ std::vector<AxisInfo> QuickReturnModule::axes(const Job&) const {
     return {{"crank", AxisUnit::Rotary, -1e9, 1e9, CommandMode::Torque}};
 }
 
+RunTerms QuickReturnModule::runTerms() const {
+    // The slider's cutter makes strokes; the run has no path length.
+    RunTerms t;
+    t.tool = "cutter";
+    t.process_ok = "cutter ready";
+    t.process_lost = "cutter lost";
+    t.counts = WorkCount::Strokes;
+    t.path_length = false;
+    return t;
+}
+
 Job QuickReturnModule::defaultJob() const {
     Job job = cutcell::defaultJob();
     job.machine = kQuickReturnId;
@@ -88,12 +99,7 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) 
     prog->sensors_used = 1u;
     prog->uses_tool = false;
     prog->point_count = static_cast<size_t>(spec.strokes);
-    // The slider's cutter makes strokes; the run has no path length.
-    prog->terms.tool = "cutter";
-    prog->terms.process_ok = "cutter ready";
-    prog->terms.process_lost = "cutter lost";
-    prog->terms.counts = WorkCount::Strokes;
-    prog->terms.path_length = false;
+    prog->terms = runTerms();
     prog->min_run_s = 0;
     prog->name = job.name;
     prog->source_text = jobText;

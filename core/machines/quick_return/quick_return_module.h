@@ -32,6 +32,7 @@ class QuickReturnModule : public MachineModule {
     std::vector<JobIssue> validate(const Job& job) const override;
     bool supportsCanOpen(std::string* why) const override;
     std::vector<std::string> sensorNames() const override { return {"slider scale"}; }
+    RunTerms runTerms() const override;
     MachinePlan plan(const Job& job, const std::string& jobText) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
