@@ -7,7 +7,10 @@ operator, as printf templates and the words that go into them:
   the motion sources' faults and phases);
 - the job's validation sentences and the planners' refusals (messageC, core/common/c_format.h,
   and fixed `.problem = "..."` texts);
-- the simulated cell's line in the status bar (the rigs' description()).
+- the simulated cell's line in the status bar (the rigs' description());
+- the CAN master's events and faults (devices/canopen: messageC templates, the EMCY and SDO
+  abort tables, the bus states), the CAN cell's list of its nodes (devices/machines/can_cells.cpp)
+  and the GUI's CAN link states (app/gui/can_link.cpp).
 core is pure C++ without Qt; the GUI translates such a text by finding the template it was
 formatted from (ui/panels/engine_text.cpp), in the "CoreMessage" context.
 tools/update_translations.sh writes the file to resources/i18n/core_messages.cpp, which the GUI
@@ -30,10 +33,17 @@ WORD_FUNCTIONS = re.compile(
 # Texts a motion source or a module hands the engine for its events: faults, the reason
 # supervision is off, the run terms' words (RunTerms::tool, ::process_ok, ::process_lost); and
 # a plan's fixed problem texts (.problem = "...").
-ASSIGNED = re.compile(r"(?:\.fault|\.problem|\.unsupervised_reason|\bk\w*Reason|terms\.tool"
-                      r"|terms\.process_(?:ok|lost)|std::string (?:tool|process_ok|process_lost))"
+ASSIGNED = re.compile(r"(?:\.fault|\.problem|\.unsupervised_reason|\bk\w*Reason|\.tool"
+                      r"|\.process_(?:ok|lost)|std::string (?:tool|process_ok|process_lost))"
                       r"\s*=\s*((?:\"(?:[^\"\\\\]|\\\\.)*\"|[^;\"])*);")
 MESSAGE = re.compile(r"\bmessageC\s*\(")
+# The CAN layer's words: its tables of EMCY and SDO abort texts, the bus error frame's words and
+# the names of the bus, NMT and CiA 402 states.
+CAN_WORDS = re.compile(r"(?:constexpr Entry kTable\[\] = \{|\bappend\(r\.text,)")
+# The machines' external sensors ("line encoder"), named in the CAN cell's line.
+SENSOR_NAMES = re.compile(r"sensorNames\(\) const override \{ return \{([^}]*)\}")
+CAN_WORD_FUNCTIONS = re.compile(
+    r"const char\* toString\((?:BusState|NmtState|NmtCommand|Cia402State)\b[^)]*\)\s*\{")
 DESCRIPTION = re.compile(r"std::string description\(\) const override\s*\{")
 ENGINE_FILES = ("engine_commands.cpp", "engine_cycle.cpp", "motion_engine.cpp")
 
@@ -87,12 +97,37 @@ def body(text, start):
     return text[start:i - 1]
 
 
-def sources(source_dir):
-    for root, _, files in sorted(os.walk(os.path.join(source_dir, "core"))):
+def sources(source_dir, layer):
+    for root, _, files in sorted(os.walk(os.path.join(source_dir, layer))):
         for name in sorted(files):
             if name.endswith((".cpp", ".h")):
                 with open(os.path.join(root, name), encoding="utf-8") as f:
                     yield os.path.relpath(os.path.join(root, name), source_dir), f.read()
+
+
+def first_argument(args):
+    """A call's first argument (up to the first comma outside parentheses and literals)."""
+    depth, i = 0, 0
+    while i < len(args):
+        c = args[i]
+        if c == '"':
+            i += 1
+            while args[i] != '"':
+                i += 2 if args[i] == "\\" else 1
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+        elif c == "," and depth == 0:
+            return args[:i]
+        i += 1
+    return args
+
+
+def message_templates(text):
+    """messageC's templates: every literal of its format argument (a?"x":"y" gives both)."""
+    for m in MESSAGE.finditer(text):
+        yield from literals(first_argument(balanced(text, m.end())))
 
 
 def messages(source_dir):
@@ -105,7 +140,7 @@ def messages(source_dir):
                          "could not be told apart; write whole sentences")
             found.append(s)
 
-    for path, text in sources(source_dir):
+    for path, text in sources(source_dir, "core"):
         if os.path.basename(path) in ENGINE_FILES and "/engine/" in path:
             for m in CALL.finditer(text):
                 for s in literals(balanced(text, m.end())):
@@ -113,14 +148,15 @@ def messages(source_dir):
         for m in WORD_FUNCTIONS.finditer(text):
             for s in literals(body(text, m.end())):
                 add(s)
+        for m in SENSOR_NAMES.finditer(text):
+            for s in literals(m.group(1)):
+                add(s)
         for m in ASSIGNED.finditer(text):
             for s in literals(m.group(1)):
                 add(s)
         # The job's validation sentences (messageC, core/common/c_format.h): the template only.
-        for m in MESSAGE.finditer(text):
-            pieces = literals(balanced(text, m.end()))
-            if pieces:
-                add(pieces[0])
+        for s in message_templates(text):
+            add(s)
     add("tool")  # toolName() without a program
     # The status bar's line on the cell (EngineRig::description): the simulated rigs' own
     # words and the GUI rigs' templates around them.
@@ -135,6 +171,21 @@ def messages(source_dir):
         with open(os.path.join(source_dir, "app", "gui", name), encoding="utf-8") as f:
             text = f.read()
         for m in DESCRIPTION.finditer(text):
+            for s in literals(body(text, m.end())):
+                add(s)
+    # The CAN master (devices/canopen) and the GUI's CAN link (app/gui/can_link.cpp).
+    can = list(sources(source_dir, os.path.join("devices", "canopen")))
+    for path in ("app/gui/can_link.cpp", "devices/machines/can_cells.cpp"):
+        with open(os.path.join(source_dir, path), encoding="utf-8") as f:
+            can.append((path, f.read()))
+    for path, text in can:
+        for s in message_templates(text):
+            add(s)
+        for m in CAN_WORDS.finditer(text):
+            args = body(text, m.end()) if text[m.end() - 1] == "{" else balanced(text, m.end())
+            for s in literals(args):
+                add(s)
+        for m in CAN_WORD_FUNCTIONS.finditer(text):
             for s in literals(body(text, m.end())):
                 add(s)
     return found

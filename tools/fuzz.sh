@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # libFuzzer on the job parser (cutcell::parseJob, harness tests/fuzz/job_parser_fuzz.cpp).
-# Builds core + the harness with clang-14 in build-fuzz (no Qt, no GUI), then fuzzes for the
-# given seconds (default 60) from the seeds in tests/fuzz/corpus (never modified; new inputs go
-# to build-fuzz/corpus).
-#   tools/fuzz.sh [seconds]
+# Builds core + the harness with clang-14 in build-fuzz (no Qt, no GUI), or takes the harness
+# of a given build configured with clang and -DCUTCELL_FUZZ=ON (tools/setup.sh test passes its
+# sanitised build-asan), then fuzzes for the given seconds (default 60) from the seeds in
+# tests/fuzz/corpus (never modified; new inputs go to <build>/corpus).
+#   tools/fuzz.sh [seconds [build-dir]]
 # Every input that crashes, throws anything but JobError, trips ASan/UBSan (float-cast-overflow
-# included), allocates over 1 GB or runs over 10 s is saved to build-fuzz/findings/ and run
+# included), allocates over 1 GB or runs over 10 s is saved to <build>/findings/ and run
 # again to get its report. Reports that match a line of tests/fuzz/known_findings.txt
 # (defects already filed, reproducers in tests/fuzz/findings/) are listed as known; any other
 # finding fails the script (exit 1). Remove a line from known_findings.txt once its defect
@@ -13,14 +14,20 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
-build=build-fuzz
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-# -O1 and line tables only: the fuzzer's reports keep files and lines; about 15 % less build time.
-CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
-  -DCUTCELL_FUZZ=ON -DCUTCELL_BUILD_GUI=OFF -DCUTCELL_BUILD_TESTS=OFF "${launcher[@]}" >/dev/null
+build="${2:-build-fuzz}"
+if [ -n "${2:-}" ]; then
+  grep -q '^CUTCELL_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null ||
+    { echo "$build is not configured with -DCUTCELL_FUZZ=ON (clang)" >&2; exit 2; }
+else
+  launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  # -O1 and line tables only: the fuzzer's reports keep files and lines; about 15 % less build
+  # time.
+  CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+    "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+    -DCUTCELL_FUZZ=ON -DCUTCELL_BUILD_GUI=OFF -DCUTCELL_BUILD_TESTS=OFF "${launcher[@]}" >/dev/null
+fi
 cmake --build "$build" -j 2 --target job_parser_fuzz
 fuzzer="$build/tests/fuzz/job_parser_fuzz"
 limits=(-timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=65536)

@@ -107,11 +107,11 @@ void DevicePanel::setSnapshot(const DevicePanelSnapshot& s) {
         bus_->setText(tr("Bus: none (simulated in-process drives)"));
         load_->clear();
     } else {
-        bus_->setText(tr("Bus: %1").arg(s.bus_state));
+        bus_->setText(tr("Bus: %1").arg(shown_(s.bus_state)));
         bus_->setStyleSheet(s.bus_error ? QStringLiteral("color: #b00020; font-weight: bold")
                                         : QString());
         load_->setText(tr("Load: %1 %").arg(CutCell::ui::shownNumber(s.load * 100, 1)));
-        load_->setToolTip(s.load_text);
+        load_->setToolTip(shown_(s.load_text));
     }
     nodes_->setRowCount(static_cast<int>(s.nodes.size()));
     for (int r = 0; r < nodes_->rowCount(); ++r) {
@@ -119,8 +119,9 @@ void DevicePanel::setSnapshot(const DevicePanelSnapshot& s) {
         const QString hb = n.heartbeat_age_ms < 0
                                ? tr("none")
                                : tr("%1 ms").arg(CutCell::ui::shownNumber(n.heartbeat_age_ms, 0));
-        const QString cells[ColCount] = {
-            QString::number(n.node), n.axis, n.nmt, n.cia402, hb, n.last_emcy, n.fault};
+        const QString cells[ColCount] = {QString::number(n.node), n.axis, shown_(n.nmt),
+                                         shown_(n.cia402),        hb,     shown_(n.last_emcy),
+                                         shown_(n.fault)};
         for (int c = 0; c < ColCount; ++c) {
             QTableWidgetItem* item = nodes_->item(r, c);
             if (!item) {

@@ -8,6 +8,7 @@
 // timer. Threading: GUI thread only; setSnapshot() never waits on anything.
 #include <QString>
 #include <QWidget>
+#include <functional>
 
 #include <vector>
 
@@ -59,6 +60,11 @@ class DevicePanel : public QWidget {
     // Hides the choice (kind, plugin, interface, bit rate) where another form edits it.
     void setChoiceVisible(bool visible);
     void setSnapshot(const DevicePanelSnapshot& s);
+    // How the master's texts (states, faults, EMCY) are shown: in the GUI's language where the
+    // window sets one (CutCell::ui::engineText); as they came by default.
+    void setTextTranslator(std::function<QString(const QString&)> shown) {
+        shown_ = std::move(shown);
+    }
 
   signals:
     void choiceEdited(const cutcell::ui::DeviceChoice& c); // the operator changed the choice
@@ -77,6 +83,7 @@ class DevicePanel : public QWidget {
     QTableWidget* nodes_;
     QPushButton* reset_;
     bool updating_ = false;
+    std::function<QString(const QString&)> shown_ = [](const QString& s) { return s; };
 };
 
 } // namespace cutcell::ui

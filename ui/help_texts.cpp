@@ -83,6 +83,16 @@ QString operatorManual(const QString& readmeMarkdown) {
 }
 
 QString builtInManual() {
+    if (shownLanguage() == QLatin1String("de")) {
+        // The translation starts with a comment naming the English text it translates.
+        QFile de(QStringLiteral(":/cutcell/manual/manual_de.md"));
+        if (de.open(QIODevice::ReadOnly)) {
+            QString text = QString::fromUtf8(de.readAll());
+            if (text.startsWith(QLatin1String("<!--")))
+                text = text.mid(text.indexOf(QLatin1String("-->")) + 3);
+            return text.trimmed();
+        }
+    }
     QFile f(QStringLiteral(":/cutcell/manual/README.md"));
     if (!f.open(QIODevice::ReadOnly)) return {};
     return operatorManual(QString::fromUtf8(f.readAll()));

@@ -15,7 +15,8 @@ QString aboutText();
 // The operator's sections of a README in Markdown: the "## The operator station" section and
 // each machine's "### In the GUI" (under its machine's heading). Empty when it has none.
 QString operatorManual(const QString& readmeMarkdown);
-// The operator sections of the README compiled into this build.
+// The operator sections of the README compiled into this build; in German their translation
+// (docs/manual_de.md).
 QString builtInManual();
 // The resource folder the manual's images are found in (its "docs/x.png" links).
 QString manualImageRoot();

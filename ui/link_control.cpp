@@ -1,4 +1,5 @@
 #include "ui/link_control.h"
+#include "ui/panels/engine_text.h"
 
 #include <QTimer>
 
@@ -64,7 +65,8 @@ void LinkControl::reconnect() {
 void LinkControl::poll() {
     if (!rig_) return;
     for (const RigLinkEvent& e : rig_->drainLinkEvents())
-        emit message(e.error ? Severity::Warning : Severity::Info, QString::fromStdString(e.text));
+        emit message(e.error ? Severity::Warning : Severity::Info,
+                     engineText(QString::fromStdString(e.text)));
     const RigLink now = rig_->link();
     if (now.changes == link_.changes && now.state == link_.state) return;
     const State from = link_.state;
@@ -77,12 +79,12 @@ void LinkControl::poll() {
         emit enableDue();
     } else if (link_.state == State::Failed || link_.state == State::Lost) {
         enablePending_ = false;
-        emit enableFailed(QString::fromStdString(link_.text));
+        emit enableFailed(engineText(QString::fromStdString(link_.text)));
     }
 }
 
 void LinkControl::logTransition(State from) {
-    const QString text = QString::fromStdString(link_.text);
+    const QString text = engineText(QString::fromStdString(link_.text));
     switch (link_.state) {
     case State::Connecting:
         emit message(Severity::Info, tr("CAN bus: %1").arg(text));

@@ -20,6 +20,7 @@
 #include "ui/panels/control_panel.h"
 #include "ui/panels/dro_panel.h"
 #include "ui/panels/elided_label.h"
+#include "ui/panels/engine_text.h"
 #include "ui/panels/event_log_panel.h"
 #include "ui/panels/monitor_views.h"
 #include "ui/panels/progress_panel.h"
@@ -93,6 +94,7 @@ void MainWindow::buildLayout() {
     devices_ = new cutcell::ui::DevicePanel(this);
     devices_->setObjectName("devicePanel");
     devices_->setChoiceVisible(false); // chosen in the "Cycle & devices" parameter tab
+    devices_->setTextTranslator(&engineText);
     dro_ = new DroPanel(this);
     alarms_ = new AlarmPanel(this);
     recovery_ = new RecoveryPanel(this);

@@ -147,9 +147,7 @@ void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
     programError_.clear();
     emit planChanged(plan_, planJob_);
     if (!plan_->reachable) {
-        emit message(
-            Severity::Error,
-            tr("Path not reachable: %1").arg(planProblem()));
+        emit message(Severity::Error, tr("Path not reachable: %1").arg(planProblem()));
         updateBlocked();
         if (autoRun_) {
             autoRun_ = false;
@@ -325,7 +323,7 @@ QString RunController::abortedReason() const {
 
 QString RunController::linkBlockedReason() const {
     const RigLink& l = link_->link();
-    const QString text = QString::fromStdString(l.text);
+    const QString text = engineText(QString::fromStdString(l.text));
     switch (l.state) {
     case RigLink::State::Down:
         return tr("drives disabled, CAN bus not connected - press Enable (it connects the bus)");

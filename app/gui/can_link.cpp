@@ -1,5 +1,7 @@
 #include "can_link.h"
 
+#include "core/common/c_format.h"
+
 #include <QThread>
 #include <QTimer>
 
@@ -36,15 +38,15 @@ std::string nodesNotUp(const CanBusSnapshot& s) {
     std::map<std::string, int> count;
     for (const CanNodeSnapshot& n : s.nodes) {
         if (nodeUp(n)) continue;
-        const std::string why = n.fault_text.empty() ? "no answer" : n.fault_text;
+        const std::string why = n.fault_text.empty() ? messageC("no answer") : n.fault_text;
         std::string& ids = byReason[why];
         ids += (ids.empty() ? "" : ", ") + std::to_string(n.node);
         ++count[why];
     }
     std::string out;
     for (const auto& [why, ids] : byReason)
-        out += (out.empty() ? "" : "; ") + std::string(count[why] > 1 ? "nodes " : "node ") + ids +
-               ": " + why;
+        out += (out.empty() ? "" : "; ") +
+               messageC(count[why] > 1 ? "nodes %s: %s" : "node %s: %s", ids.c_str(), why.c_str());
     return out;
 }
 
@@ -57,7 +59,7 @@ class CanLink::Worker {
         status_.state = State::Down;
         status_.where = where_;
         status_.nodes = master_.driveCount();
-        status_.text = "not connected (" + where_ + ")";
+        status_.text = messageC("not connected (%s)", where_.c_str());
         thread_.setObjectName(QStringLiteral("can-link"));
         context_ = new QObject;
         context_->moveToThread(&thread_);
@@ -137,28 +139,29 @@ class CanLink::Worker {
         master_.stop();
         started_ = false;
         phase_ = State::Down;
-        publish(State::Down, "disconnected from " + where_, 0);
+        publish(State::Down, messageC("disconnected from %s", where_.c_str()), 0);
     }
 
     void bringUp() {
         if (started_) master_.stop(); // after a loss: the old device goes, the port with it
         started_ = false;
         phase_ = State::Connecting;
-        publish(State::Connecting, "connecting to " + where_ + " (listening for another master)",
-                0);
+        publish(State::Connecting,
+                messageC("connecting to %s (listening for another master)", where_.c_str()), 0);
         std::string why;
         inStart_ = true;
         const bool ok = master_.start(&why, timing_.connect_timeout_ms); // stops itself on failure
         inStart_ = false;
         if (!ok) {
             phase_ = State::Failed;
-            publish(State::Failed, "CAN bus " + where_ + ": " + why, 0);
+            publish(State::Failed, messageC("CAN bus %s: %s", where_.c_str(), why.c_str()), 0);
             return;
         }
         started_ = true;
         deadlineMs_ = nowMs() + timing_.configure_timeout_ms;
         settleUntilMs_ = 0;
-        publish(State::Connecting, "connected to " + where_ + "; configuring the nodes", 0);
+        publish(State::Connecting,
+                messageC("connected to %s; configuring the nodes", where_.c_str()), 0);
     }
 
     void superviseConfiguring() {
@@ -171,7 +174,8 @@ class CanLink::Worker {
                 ++failed;
         }
         const int count = static_cast<int>(s.nodes.size());
-        if (busGone(s.bus)) return fail("the bus went away while configuring (" + s.bus_text + ")");
+        if (busGone(s.bus))
+            return fail(messageC("the bus went away while configuring (%s)", s.bus_text.c_str()));
         if (ready == count && master_.allOperational()) {
             // Operational is not yet "ready to enable": a drive still in Fault from before
             // (a bus lost while enabled) gets the fault reset the engine asked for in its first
@@ -185,26 +189,28 @@ class CanLink::Worker {
             if (!settled && settleUntilMs_ == 0) settleUntilMs_ = nowMs() + kSettleMs;
             if (!settled && nowMs() < settleUntilMs_) {
                 publish(State::Connecting,
-                        "every node operational on " + where_ + "; reading the drives' states",
+                        messageC("every node operational on %s; reading the drives' states",
+                                 where_.c_str()),
                         ready);
                 return;
             }
             phase_ = State::Up;
-            publish(State::Up,
-                    "up on " + where_ + ": " + std::to_string(count) + " nodes operational", ready);
+            publish(State::Up, messageC("up on %s: %d nodes operational", where_.c_str(), count),
+                    ready);
             return;
         }
         if (ready + failed == count || nowMs() > deadlineMs_) {
-            const std::string late =
-                ready + failed == count
-                    ? ""
-                    : " (within " + std::to_string(timing_.configure_timeout_ms) + " ms)";
-            return fail(std::to_string(count - ready) + " of " + std::to_string(count) +
-                        " nodes did not come up" + late + ": " + nodesNotUp(s));
+            const std::string notUp = nodesNotUp(s);
+            return fail(ready + failed == count
+                            ? messageC("%d of %d nodes did not come up: %s", count - ready, count,
+                                       notUp.c_str())
+                            : messageC("%d of %d nodes did not come up (within %d ms): %s",
+                                       count - ready, count, timing_.configure_timeout_ms,
+                                       notUp.c_str()));
         }
         publish(State::Connecting,
-                "configuring the nodes on " + where_ + ": " + std::to_string(ready) + " of " +
-                    std::to_string(count) + " operational",
+                messageC("configuring the nodes on %s: %d of %d operational", where_.c_str(), ready,
+                         count),
                 ready);
     }
 
@@ -215,15 +221,15 @@ class CanLink::Worker {
             ready += nodeUp(n) ? 1 : 0;
         if (busGone(s.bus)) {
             phase_ = State::Lost;
-            publish(State::Lost, "CAN bus lost on " + where_ + ": " + s.bus_text, 0);
+            publish(State::Lost,
+                    messageC("CAN bus lost on %s: %s", where_.c_str(), s.bus_text.c_str()), 0);
             return;
         }
         const int count = static_cast<int>(s.nodes.size());
         publish(State::Up,
-                ready == count
-                    ? "up on " + where_ + ": " + std::to_string(count) + " nodes operational"
-                    : "up on " + where_ + "; " + std::to_string(count - ready) +
-                          " node(s) not operational: " + nodesNotUp(s),
+                ready == count ? messageC("up on %s: %d nodes operational", where_.c_str(), count)
+                               : messageC("up on %s; %d node(s) not operational: %s",
+                                          where_.c_str(), count - ready, nodesNotUp(s).c_str()),
                 ready);
     }
 
@@ -232,7 +238,7 @@ class CanLink::Worker {
         master_.stop();
         started_ = false;
         phase_ = State::Failed;
-        publish(State::Failed, "CAN bus " + where_ + ": " + why, 0);
+        publish(State::Failed, messageC("CAN bus %s: %s", where_.c_str(), why.c_str()), 0);
     }
 
     CanOpenMaster& master_;

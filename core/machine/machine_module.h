@@ -15,8 +15,8 @@
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
 #include "core/job/job_io.h"
-#include "core/machine/job_importer.h"
 #include "core/json/json.h"
+#include "core/machine/job_importer.h"
 
 #include <memory>
 #include <string>

@@ -1,4 +1,5 @@
 #include "devices/canopen/bus_load.h"
+#include "core/common/c_format.h"
 
 #include <cmath>
 #include <cstdio>
@@ -28,21 +29,23 @@ BusLoad computeBusLoad(const BusLoadInput& in) {
     const double spare = in.bitrate_bps * in.limit - heartbeatBitsPerS;
     r.min_period_s = spare > 0 ? cyclic / spare : INFINITY;
     r.ok = r.load <= in.limit;
-    char buf[400];
-    std::snprintf(
-        buf, sizeof buf,
-        "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
-        "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
-        in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
-        heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
-        in.limit * 100);
-    r.message = buf;
-    if (!r.ok) {
-        // Round the advice up to 0.1 ms so that following it passes.
-        std::snprintf(buf, sizeof buf, "; use a period >= %.1f ms",
-                      std::ceil(r.min_period_s * 1e4 - 1e-9) / 10);
-        r.message += buf;
-    }
+    // One template each way (the GUI translates it, tools/core_messages.py); the advice is
+    // rounded up to 0.1 ms so that following it passes.
+    if (r.ok)
+        r.message = messageC(
+            "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
+            "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
+            in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
+            heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
+            in.limit * 100);
+    else
+        r.message = messageC(
+            "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
+            "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%; "
+            "use a period >= %.1f ms",
+            in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
+            heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
+            in.limit * 100, std::ceil(r.min_period_s * 1e4 - 1e-9) / 10);
     return r;
 }
 

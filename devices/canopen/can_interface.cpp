@@ -1,4 +1,5 @@
 #include "devices/canopen/can_interface.h"
+#include "core/common/c_format.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -19,8 +20,9 @@ bool checkCanInterface(const QString& plugin, const QString& interface, std::str
     const QStringList plugins = QCanBus::instance()->plugins();
     if (!plugins.contains(plugin)) {
         if (error)
-            *error = "CAN plugin \"" + plugin.toStdString() +
-                     "\" is not installed; installed: " + plugins.join(", ").toStdString();
+            *error =
+                messageC("CAN plugin \"%s\" is not installed; installed: %s",
+                         plugin.toStdString().c_str(), plugins.join(", ").toStdString().c_str());
         return false;
     }
     QString name = interface;
@@ -33,10 +35,16 @@ bool checkCanInterface(const QString& plugin, const QString& interface, std::str
         names << d.name();
     if (names.contains(name)) return true;
     if (error) {
-        *error = "CAN interface \"" + interface.toStdString() + "\" is not offered by plugin " +
-                 plugin.toStdString() + "; it offers: " +
-                 (names.isEmpty() ? std::string("none") : names.join(", ").toStdString());
-        if (!why.isEmpty()) *error += " (" + why.toStdString() + ")";
+        const std::string offers =
+            names.isEmpty() ? messageC("none") : names.join(", ").toStdString();
+        *error = why.isEmpty()
+                     ? messageC("CAN interface \"%s\" is not offered by plugin %s; it offers: %s",
+                                interface.toStdString().c_str(), plugin.toStdString().c_str(),
+                                offers.c_str())
+                     : messageC("CAN interface \"%s\" is not offered by plugin %s; it offers: %s "
+                                "(%s)",
+                                interface.toStdString().c_str(), plugin.toStdString().c_str(),
+                                offers.c_str(), why.toStdString().c_str());
     }
     return false;
 }

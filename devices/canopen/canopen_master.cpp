@@ -6,6 +6,7 @@
 // master thread (eventfd -> QSocketNotifier) adds jitter. stats() reports the jitter measured
 // at the moment each SYNC is written, which is what the drives see.
 #include "devices/canopen/canopen_master.h"
+#include "core/common/c_format.h"
 #include "devices/canopen/thread_priority.h"
 
 #include "core/job/job.h"
@@ -108,7 +109,8 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
         return false;
     };
     if (m.thread) return true;
-    if (m.wakeFd < 0 || m.syncFd < 0) return fail("cannot create eventfd for the CAN master");
+    if (m.wakeFd < 0 || m.syncFd < 0)
+        return fail(messageC("cannot create eventfd for the CAN master"));
     if (std::string why; !checkConfig(&why)) return fail(why);
     // A new connection: nothing of the previous one's nodes stands (the master thread is not
     // running, the engine only reads these atomics).
@@ -160,9 +162,9 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
     const bool ok = m.taken;
     std::string why = m.connectFailed
                           ? m.connectError
-                          : "CAN connection to " + m.cfg.plugin.toStdString() + " " +
-                                m.cfg.interface.toStdString() + " did not come up within " +
-                                std::to_string(timeout_ms) + " ms";
+                          : messageC("CAN connection to %s %s did not come up within %d ms",
+                                     m.cfg.plugin.toStdString().c_str(),
+                                     m.cfg.interface.toStdString().c_str(), timeout_ms);
     lock.unlock();
     if (!ok) {
         stop();
@@ -192,9 +194,9 @@ bool CanOpenMaster::checkConfig(std::string* error) const {
     const Impl& m = *impl_;
     std::string why;
     if (m.cfg.nodes.empty())
-        why = "no CAN nodes configured";
+        why = messageC("no CAN nodes configured");
     else if (m.load > m.cfg.bus_load_limit)
-        why = "CAN bus load too high: " + m.loadText;
+        why = messageC("CAN bus load too high: %s", m.loadText.c_str());
     else if (checkCanInterface(m.cfg.plugin, m.cfg.interface, &why))
         return true;
     if (error) *error = why;
@@ -300,7 +302,8 @@ void CanOpenMaster::recoverBus() {
     QMetaObject::invokeMethod(
         m.context,
         [&m] {
-            m.event(0, false, "recovering the bus: reconnecting and configuring the nodes again");
+            m.event(0, false,
+                    messageC("recovering the bus: reconnecting and configuring the nodes again"));
             m.closeDevice();
             m.stopping = false;
             m.openDevice();
@@ -379,7 +382,7 @@ std::string CanOpenMaster::loadText() const {
 
 void CanOpenMaster::Impl::event(int node, bool error, const std::string& text) {
     const std::string line =
-        node ? "node " + std::to_string(node) + ": " + text : "CAN bus: " + text;
+        node ? messageC("node %d: %s", node, text.c_str()) : messageC("CAN bus: %s", text.c_str());
     if (error)
         qCWarning(lcCanOpen, "%s", line.c_str());
     else

@@ -1,4 +1,5 @@
 #include "devices/canopen/emcy.h"
+#include "core/common/c_format.h"
 
 #include <cstdio>
 
@@ -87,15 +88,14 @@ constexpr Entry kTable[] = {
 } // namespace
 
 std::string emcyText(std::uint16_t code) {
-    char head[16];
-    std::snprintf(head, sizeof head, "0x%04X ", static_cast<unsigned>(code));
-    if ((code & 0xFF00) == 0xFF00) return std::string(head) + "device specific";
+    const unsigned c = code;
+    if ((code & 0xFF00) == 0xFF00) return messageC("0x%04X device specific", c);
     for (const Entry& e : kTable) {
         if ((code & e.mask) != e.code) continue;
         const bool exact = e.mask == 0xFFFF || (code & static_cast<std::uint16_t>(~e.mask)) == 0;
-        return std::string(head) + e.text + (exact ? "" : " (class)");
+        return messageC(exact ? "0x%04X %s" : "0x%04X %s (class)", c, e.text);
     }
-    return std::string(head) + "unknown error code";
+    return messageC("0x%04X unknown error code", c);
 }
 
 std::uint8_t errorRegisterFor(std::uint16_t code) {

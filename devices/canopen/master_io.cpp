@@ -1,6 +1,7 @@
 // The CANopen master's bus work, all on the master thread: device, start-up of the nodes by
 // SDO, the cycle (RPDO1s + SYNC), urgent stops (RPDO2), TPDO/heartbeat/EMCY consumers, bus
 // state. See canopen_master.h for the protocol and the threading contract.
+#include "core/common/c_format.h"
 #include "devices/canopen/bus_load.h"
 #include "devices/canopen/can_interface.h"
 #include "devices/canopen/emcy.h"
@@ -57,8 +58,8 @@ void CanOpenMaster::Impl::openDevice() {
         changed.notify_all();
     };
     if (!device) {
-        fail("cannot create CAN device " + cfg.plugin.toStdString() + " " +
-             cfg.interface.toStdString() + ": " + err.toStdString());
+        fail(messageC("cannot create CAN device %s %s: %s", cfg.plugin.toStdString().c_str(),
+                      cfg.interface.toStdString().c_str(), err.toStdString().c_str()));
         return;
     }
     if (cfg.plugin == QLatin1String("socketcan")) {
@@ -71,20 +72,20 @@ void CanOpenMaster::Impl::openDevice() {
     QObject::connect(device, &QCanBusDevice::framesReceived, context, [this] { onFrames(); });
     QObject::connect(device, &QCanBusDevice::stateChanged, context,
                      [this](QCanBusDevice::CanBusDeviceState s) { onStateChanged(s); });
-    QObject::connect(device, &QCanBusDevice::errorOccurred, context,
-                     [this, fail](QCanBusDevice::CanBusError e) {
-                         const std::string why = device->errorString().toStdString();
-                         bool wasConnected;
-                         {
-                             std::lock_guard lock(mutex);
-                             wasConnected = connected;
-                         }
-                         if (!wasConnected)
-                             fail("CAN device " + cfg.plugin.toStdString() + " " +
-                                  cfg.interface.toStdString() + ": " + why);
-                         else
-                             event(0, e != QCanBusDevice::NoError, "device error: " + why);
-                     });
+    QObject::connect(
+        device, &QCanBusDevice::errorOccurred, context, [this, fail](QCanBusDevice::CanBusError e) {
+            const std::string why = device->errorString().toStdString();
+            bool wasConnected;
+            {
+                std::lock_guard lock(mutex);
+                wasConnected = connected;
+            }
+            if (!wasConnected)
+                fail(messageC("CAN device %s %s: %s", cfg.plugin.toStdString().c_str(),
+                              cfg.interface.toStdString().c_str(), why.c_str()));
+            else
+                event(0, e != QCanBusDevice::NoError, messageC("device error: %s", why.c_str()));
+        });
     if (!wakeNotifier) {
         wakeNotifier = new QSocketNotifier(wakeFd, QSocketNotifier::Read, context);
         QObject::connect(wakeNotifier, &QSocketNotifier::activated, context, [this] { onWake(); });
@@ -148,7 +149,8 @@ void CanOpenMaster::Impl::onStateChanged(QCanBusDevice::CanBusDeviceState s) {
         if (cfg.listen_before_start_ms <= 0) endListening(now);
     } else if (s == QCanBusDevice::UnconnectedState && !stopping) {
         busTaken = listening = false;
-        onBusDown(BusState::Disconnected, master_fault::kBusLost, "connection to the bus lost");
+        onBusDown(BusState::Disconnected, master_fault::kBusLost,
+                  messageC("connection to the bus lost"));
     }
 }
 
@@ -158,11 +160,13 @@ void CanOpenMaster::Impl::onBusDown(BusState s, std::uint32_t code, const std::s
         bus = s;
         busText = why;
     }
-    event(0, true, why + ": every drive is in Fault; recover the bus, then reset the faults");
+    event(0, true,
+          messageC("%s: every drive is in Fault; recover the bus, then reset the faults",
+                   why.c_str()));
     for (size_t i = 0; i < shared.size(); ++i) {
         shared[i].configured = false;
         rt[i].phase = StartupPhase::Failed;
-        setFault(i, code, "CAN bus: " + why);
+        setFault(i, code, messageC("CAN bus: %s", why.c_str()));
     }
 }
 
@@ -179,8 +183,8 @@ void CanOpenMaster::Impl::listenFor(const CanFrame& f) {
         ++heardSync;
     } else if (decodeNmt(f, c, target)) {
         if (heardNmt++ == 0)
-            heardNmtText = std::string("NMT ") + toString(c) + " to " +
-                           (target ? "node " + std::to_string(target) : std::string("all nodes"));
+            heardNmtText = target ? messageC("NMT %s to node %d", toString(c), target)
+                                  : messageC("NMT %s to all nodes", toString(c));
     } else if (cfg.master_node_id > 0 && decodeHeartbeat(f, hbNode, hbState) &&
                hbNode == cfg.master_node_id) {
         ++heardMasterHeartbeat;
@@ -189,12 +193,13 @@ void CanOpenMaster::Impl::listenFor(const CanFrame& f) {
     }
     if (busTaken && !otherMasterReported) {
         otherMasterReported = true;
+        const std::string heard = f.id == cob::kSync ? messageC("a SYNC")
+                                  : heardNmt         ? heardNmtText
+                                                     : messageC("its heartbeat");
         event(0, true,
-              "another CANopen master is on the bus (heard " +
-                  std::string(f.id == cob::kSync ? "a SYNC"
-                              : heardNmt         ? heardNmtText
-                                                 : "its heartbeat") +
-                  "): two masters reset and command the same drives");
+              messageC("another CANopen master is on the bus (heard %s): two masters reset and "
+                       "command the same drives",
+                       heard.c_str()));
     }
 }
 
@@ -202,22 +207,19 @@ void CanOpenMaster::Impl::endListening(std::int64_t now) {
     listening = false;
     std::string heard;
     auto add = [&heard](const std::string& what) { heard += (heard.empty() ? "" : ", ") + what; };
-    if (heardSync) add(std::to_string(heardSync) + " SYNC (0x080)");
+    if (heardSync) add(messageC("%d SYNC (0x080)", heardSync));
     if (heardNmt)
-        add(std::to_string(heardNmt) + " NMT command" + (heardNmt > 1 ? "s" : "") + " (0x000, " +
-            heardNmtText + ")");
-    if (heardMasterHeartbeat) {
-        char id[8];
-        std::snprintf(id, sizeof id, "0x%03X", 0x700 + cfg.master_node_id);
-        add(std::to_string(heardMasterHeartbeat) + " master heartbeat" +
-            (heardMasterHeartbeat > 1 ? "s" : "") + " of node " +
-            std::to_string(cfg.master_node_id) + " (" + id + ")");
-    }
+        add(messageC(heardNmt > 1 ? "%d NMT commands (0x000, %s)" : "%d NMT command (0x000, %s)",
+                     heardNmt, heardNmtText.c_str()));
+    if (heardMasterHeartbeat)
+        add(messageC(heardMasterHeartbeat > 1 ? "%d master heartbeats of node %d (0x%03X)"
+                                              : "%d master heartbeat of node %d (0x%03X)",
+                     heardMasterHeartbeat, cfg.master_node_id, 0x700u + cfg.master_node_id));
     if (!heard.empty()) {
-        const std::string why = "another CANopen master is active on " + cfg.plugin.toStdString() +
-                                " " + cfg.interface.toStdString() + ": heard " + heard +
-                                " within " + std::to_string(cfg.listen_before_start_ms) +
-                                " ms; not taking the bus";
+        const std::string why = messageC(
+            "another CANopen master is active on %s %s: heard %s within %d ms; not taking the bus",
+            cfg.plugin.toStdString().c_str(), cfg.interface.toStdString().c_str(), heard.c_str(),
+            cfg.listen_before_start_ms);
         {
             std::lock_guard lock(mutex);
             connectFailed = true;
@@ -243,8 +245,8 @@ void CanOpenMaster::Impl::endListening(std::int64_t now) {
         changed.notify_all();
     }
     event(0, false,
-          "connected, no other master heard in " + std::to_string(cfg.listen_before_start_ms) +
-              " ms; " + loadText);
+          messageC("connected, no other master heard in %d ms; %s", cfg.listen_before_start_ms,
+                   loadText.c_str()));
     produceHeartbeat(now);
     for (size_t i = 0; i < rt.size(); ++i)
         startNode(i, now);
@@ -296,20 +298,23 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
     const SdoOp& op = r.ops[r.op];
     const SdoMessage m = decodeSdo(f);
     if (!(m.address == op.write.address)) return; // a late answer to an earlier try
-    const std::string what = (op.upload ? "SDO read " : "SDO write ") +
-                             hex(op.write.address.index, 4) + ":" +
-                             hex(op.write.address.sub, 2).substr(2) +
-                             (op.upload ? "" : " = " + hex(op.write.value, 2 * op.write.size));
+    const std::string index = hex(op.write.address.index, 4);
+    const std::string sub = hex(op.write.address.sub, 2).substr(2);
+    const std::string what = op.upload
+                                 ? messageC("SDO read %s:%s", index.c_str(), sub.c_str())
+                                 : messageC("SDO write %s:%s = %s", index.c_str(), sub.c_str(),
+                                            hex(op.write.value, 2 * op.write.size).c_str());
     if (m.kind == SdoKind::Abort) {
         r.phase = StartupPhase::Failed;
-        setFault(i, m.value, what + " refused: " + sdoAbortText(m.value));
+        setFault(i, m.value,
+                 messageC("%s refused: %s", what.c_str(), sdoAbortText(m.value).c_str()));
         return;
     }
     if ((op.upload && m.kind != SdoKind::UploadResponse) ||
         (!op.upload && m.kind != SdoKind::DownloadResponse)) {
         r.phase = StartupPhase::Failed;
         setFault(i, abort_code::kUnknownCommand,
-                 what + ": unexpected SDO answer (segmented transfer?)");
+                 messageC("%s: unexpected SDO answer (segmented transfer?)", what.c_str()));
         return;
     }
     const bool encoder = cfg.nodes[i].encoder;
@@ -317,16 +322,17 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
         (m.value & 0xFFFF) != (encoder ? 406u : 402u)) {
         r.phase = StartupPhase::Failed;
         setFault(i, master_fault::kWrongDevice,
-                 "device type " + hex(m.value, 8) + " is not a CiA " +
-                     (encoder ? "406 encoder" : "402 drive") + " (profile " +
-                     std::to_string(m.value & 0xFFFF) + ")");
+                 messageC(encoder ? "device type %s is not a CiA 406 encoder (profile %u)"
+                                  : "device type %s is not a CiA 402 drive (profile %u)",
+                          hex(m.value, 8).c_str(), static_cast<unsigned>(m.value & 0xFFFF)));
         return;
     }
     if (op.upload && op.write.address.index == od::kMotorRatedTorque) {
         if (m.value == 0) {
             r.phase = StartupPhase::Failed;
             setFault(i, abort_code::kValueTooLow,
-                     "motor rated torque 0x6076 = 0: no scale for the target torque (CST)");
+                     messageC("motor rated torque 0x6076 = 0: no scale for the target torque "
+                              "(CST)"));
             return;
         }
         shared[i].rated_torque.store(m.value * 1e-3, std::memory_order_release);
@@ -359,7 +365,8 @@ void CanOpenMaster::Impl::onErrorFrame(std::uint32_t errorClass, const QByteArra
         decodeErrorFrame(errorClass, reinterpret_cast<const std::uint8_t*>(payload.constData()),
                          static_cast<int>(payload.size()));
     if (info.state == BusState::BusOff) {
-        onBusDown(BusState::BusOff, master_fault::kBusOff, "bus off (" + info.text + ")");
+        onBusDown(BusState::BusOff, master_fault::kBusOff,
+                  messageC("bus off (%s)", info.text.c_str()));
         return;
     }
     {
@@ -451,7 +458,7 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 s.configured = false;
                 r.phase = StartupPhase::Failed;
                 setFault(i, master_fault::kRebooted,
-                         "node rebooted while running (unexpected boot-up)");
+                         messageC("node rebooted while running (unexpected boot-up)"));
             }
         } else if (nmt == NmtState::Operational && r.phase == StartupPhase::WaitOperational) {
             r.phase = StartupPhase::Running;
@@ -463,21 +470,25 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 faultText[i].clear();
             }
             s.configured = true;
-            const char* what = cfg.nodes[i].encoder ? "CiA 406 encoder, TPDO1 position value"
-                               : cfg.nodes[i].mode == AxisCommandMode::Torque
-                                   ? "CST, RPDO1/RPDO2/TPDO1"
-                                   : "CSP, RPDO1/RPDO2/TPDO1";
+            const bool torque = cfg.nodes[i].mode == AxisCommandMode::Torque;
             event(node, false,
-                  std::string("configured (") + what + ", heartbeat " +
-                      std::to_string(heartbeatProducerMs) + " ms) and operational");
+                  messageC(cfg.nodes[i].encoder
+                               ? "configured (CiA 406 encoder, TPDO1 position value, heartbeat "
+                                 "%d ms) and operational"
+                           : torque ? "configured (CST, RPDO1/RPDO2/TPDO1, heartbeat %d ms) and "
+                                      "operational"
+                                    : "configured (CSP, RPDO1/RPDO2/TPDO1, heartbeat %d ms) and "
+                                      "operational",
+                           heartbeatProducerMs));
         }
         return;
     }
     Emcy e;
     if (decodeEmcy(f, e)) {
         s.last_emcy.store(e.error_code, std::memory_order_release);
-        const std::string text = "EMCY " + canopen::emcyText(e.error_code) + " (error register " +
-                                 hex(e.error_register, 2) + ")";
+        const std::string text =
+            messageC("EMCY %s (error register %s)", canopen::emcyText(e.error_code).c_str(),
+                     hex(e.error_register, 2).c_str());
         {
             std::lock_guard lock(mutex);
             emcyText[i] = e.error_code ? text : std::string();
@@ -541,7 +552,8 @@ void CanOpenMaster::Impl::onWake() {
             } else if (device && device->state() == QCanBusDevice::ConnectedState &&
                        (rt[i].phase == StartupPhase::Failed ||
                         rt[i].phase == StartupPhase::Running)) {
-                event(cfg.nodes[i].node, false, "fault reset: configuring the node again");
+                event(cfg.nodes[i].node, false,
+                      messageC("fault reset: configuring the node again"));
                 startNode(i, now);
             }
         }
@@ -652,8 +664,9 @@ void CanOpenMaster::Impl::onHousekeeping() {
                 r.phase = StartupPhase::Failed;
                 setFault(
                     i, master_fault::kNoBootUp,
-                    "no boot-up within " + std::to_string(cfg.boot_timeout_ms) +
-                        " ms after NMT reset communication (is a node with this id on the bus?)");
+                    messageC("no boot-up within %d ms after NMT reset communication (is a node "
+                             "with this id on the bus?)",
+                             cfg.boot_timeout_ms));
             }
             break;
         case StartupPhase::Sdo:
@@ -665,34 +678,37 @@ void CanOpenMaster::Impl::onHousekeeping() {
                     r.phase = StartupPhase::Failed;
                     send(sdoAbort(node, a, abort_code::kTimeout, false));
                     setFault(i, abort_code::kTimeout,
-                             "SDO " + hex(a.index, 4) + ":" + hex(a.sub, 2).substr(2) +
-                                 " unanswered after " + std::to_string(cfg.sdo_retries + 1) +
-                                 " tries of " + std::to_string(cfg.sdo_timeout_ms) +
-                                 " ms: " + sdoAbortText(abort_code::kTimeout));
+                             messageC("SDO %s:%s unanswered after %d tries of %d ms: %s",
+                                      hex(a.index, 4).c_str(), hex(a.sub, 2).substr(2).c_str(),
+                                      cfg.sdo_retries + 1, cfg.sdo_timeout_ms,
+                                      sdoAbortText(abort_code::kTimeout).c_str()));
                 }
             }
             break;
         case StartupPhase::WaitOperational:
             if (now > r.deadline_ns) {
                 r.phase = StartupPhase::Failed;
-                setFault(i, master_fault::kNoBootUp, "no Operational heartbeat after NMT start");
+                setFault(i, master_fault::kNoBootUp,
+                         messageC("no Operational heartbeat after NMT start"));
             }
             break;
         case StartupPhase::Running: {
             const std::int64_t age = now - s.heartbeat_ns.load(std::memory_order_acquire);
             if (age > heartbeatTimeoutNs && s.master_fault.load() != master_fault::kHeartbeatLost) {
                 setFault(i, master_fault::kHeartbeatLost,
-                         "heartbeat lost (none for " + std::to_string(age / 1'000'000) + " ms > " +
-                             std::to_string(heartbeatTimeoutNs / 1'000'000) + " ms)");
+                         messageC("heartbeat lost (none for %lld ms > %lld ms)",
+                                  static_cast<long long>(age / 1'000'000),
+                                  static_cast<long long>(heartbeatTimeoutNs / 1'000'000)));
                 // The node may still listen: take its torque away at once.
                 if (!cfg.nodes[i].encoder) send(encodeRpdo2(node, cw::kDisableVoltage));
             }
             const std::int64_t waited = r.awaiting_since_ns ? now - r.awaiting_since_ns : 0;
             if (cfg.nodes[i].encoder && waited > pdoTimeoutNs && s.master_fault.load() == 0)
                 setFault(i, master_fault::kNoProcessData,
-                         "no position value (TPDO) for " + std::to_string(waited / 1'000'000) +
-                             " ms after a SYNC (> " + std::to_string(pdoTimeoutNs / 1'000'000) +
-                             " ms): the encoder's reading is lost");
+                         messageC("no position value (TPDO) for %lld ms after a SYNC (> %lld "
+                                  "ms): the encoder's reading is lost",
+                                  static_cast<long long>(waited / 1'000'000),
+                                  static_cast<long long>(pdoTimeoutNs / 1'000'000)));
             break;
         }
         default:
@@ -712,14 +728,14 @@ void CanOpenMaster::Impl::onHousekeeping() {
             before = bus;
         }
         if (b == BusState::BusOff && before != BusState::BusOff)
-            onBusDown(b, master_fault::kBusOff, "bus off");
+            onBusDown(b, master_fault::kBusOff, messageC("bus off"));
         else if (b != BusState::Unknown && b != before && before != BusState::BusOff) {
             {
                 std::lock_guard lock(mutex);
                 bus = b;
                 busText = toString(b);
             }
-            event(0, b != BusState::Good, std::string("bus state: ") + toString(b));
+            event(0, b != BusState::Good, messageC("bus state: %s", toString(b)));
         }
     }
 }

@@ -1,4 +1,5 @@
 #include "devices/canopen/sdo.h"
+#include "core/common/c_format.h"
 
 #include <cstdio>
 
@@ -130,11 +131,10 @@ std::string sdoAbortText(std::uint32_t code) {
          "object dictionary dynamic generation failed or no object dictionary is present"},
         {0x08000024, "no data available"},
     };
-    char head[16];
-    std::snprintf(head, sizeof head, "0x%08X", static_cast<unsigned>(code));
+    const unsigned c = code;
     for (const Entry& e : kTable)
-        if (e.code == code) return std::string(head) + ": " + e.text;
-    return std::string(head) + ": unknown abort code";
+        if (e.code == code) return messageC("0x%08X: %s", c, e.text);
+    return messageC("0x%08X: unknown abort code", c);
 }
 
 } // namespace cutcell::canopen

@@ -1,4 +1,5 @@
 #include "devices/machines/can_cells.h"
+#include "core/common/c_format.h"
 
 #include "core/machine/machine_registry.h"
 #include "devices/canopen/engine_tuning.h"
@@ -84,15 +85,15 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
                      std::to_string(c.sensor_count) + " sensors";
         return false;
     }
-    c.description = std::to_string(csp + cst) + " CiA 402 drives (" +
-                    (cst == 0   ? std::string("CSP")
-                     : csp == 0 ? std::string("CST")
-                                : std::to_string(csp) + " CSP, " + std::to_string(cst) + " CST") +
-                    ")";
+    // Templates the GUI translates (tools/core_messages.py), one more for each encoder.
+    c.description = cst == 0 ? messageC("%d CiA 402 drives (CSP)", csp)
+                    : csp == 0
+                        ? messageC("%d CiA 402 drives (CST)", cst)
+                        : messageC("%d CiA 402 drives (%d CSP, %d CST)", csp + cst, csp, cst);
     for (int k = 0; k < c.sensor_count; ++k)
-        c.description += " + CiA 406 encoder " +
-                         std::to_string(sensorNodeId(job.devices, c.axis_count, k)) + " (" +
-                         sensors[static_cast<size_t>(k)] + ")";
+        c.description = messageC("%s + CiA 406 encoder %d (%s)", c.description.c_str(),
+                                 sensorNodeId(job.devices, c.axis_count, k),
+                                 sensors[static_cast<size_t>(k)].c_str());
     *out = std::move(c);
     return true;
 }

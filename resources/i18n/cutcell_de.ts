@@ -921,7 +921,7 @@
     <message>
         <location line="+1"/>
         <source>devices.kind = &quot;canopen&quot;: %s</source>
-        <translation>devices.kind = &quot;canopen&quot;: %s</translation>
+        <translation>devices.kind = "canopen": %s</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -962,6 +962,11 @@
         <location line="+1"/>
         <source>not feasible: machine.%s</source>
         <translation>nicht ausführbar: machine.%s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line encoder</source>
+        <translation>Liniengeber</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1084,7 +1089,962 @@
         <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+21"/>
+        <source>slider scale</source>
+        <translation>Schieber-Positionssensor</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
+        <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%; use a period &gt;= %.1f ms</source>
+        <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%; eine Zykluszeit &gt;= %.1f ms wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bus off</source>
+        <translation>Bus aus (Bus-Off)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>transmitter error passive</source>
+        <translation>Sender fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>receiver error passive</source>
+        <translation>Empfänger fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error counter reached warning level</source>
+        <translation>Fehlerzähler hat die Warnschwelle erreicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>back to error active</source>
+        <translation>wieder fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>controller buffer overflow</source>
+        <translation>Pufferüberlauf im Controller</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>controller restarted</source>
+        <translation>Controller neu gestartet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>transmit timeout</source>
+        <translation>Sendezeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no acknowledge (no other node on the bus?)</source>
+        <translation>keine Quittung (kein anderer Knoten am Bus?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>protocol violation</source>
+        <translation>Protokollverletzung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bus error</source>
+        <translation>Busfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error active</source>
+        <translation>fehleraktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error warning</source>
+        <translation>Fehlerwarnung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error passive</source>
+        <translation>fehlerpassiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN plugin &quot;%s&quot; is not installed; installed: %s</source>
+        <translation>CAN-Plugin „%s“ ist nicht installiert; installiert: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN interface &quot;%s&quot; is not offered by plugin %s; it offers: %s</source>
+        <translation>CAN-Schnittstelle „%s“ wird vom Plugin %s nicht angeboten; es bietet: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN interface &quot;%s&quot; is not offered by plugin %s; it offers: %s (%s)</source>
+        <translation>CAN-Schnittstelle „%s“ wird vom Plugin %s nicht angeboten; es bietet: %s (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot create eventfd for the CAN master</source>
+        <translation>eventfd für den CAN-Master kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN connection to %s %s did not come up within %d ms</source>
+        <translation>CAN-Verbindung zu %s %s kam nicht innerhalb von %d ms zustande</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no CAN nodes configured</source>
+        <translation>keine CAN-Knoten konfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN bus load too high: %s</source>
+        <translation>CAN-Buslast zu hoch: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recovering the bus: reconnecting and configuring the nodes again</source>
+        <translation>Bus wird wiederhergestellt: neu verbinden und die Knoten neu konfigurieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node %d: %s</source>
+        <translation>Knoten %d: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN bus: %s</source>
+        <translation>CAN-Bus: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%04X device specific</source>
+        <translation>0x%04X gerätespezifisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%04X %s</source>
+        <translation>0x%04X %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%04X %s (class)</source>
+        <translation>0x%04X %s (Klasse)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%04X unknown error code</source>
+        <translation>0x%04X unbekannter Fehlercode</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error reset or no error</source>
+        <translation>Fehler zurückgesetzt oder kein Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>continuous over-current</source>
+        <translation>andauernder Überstrom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>short circuit or earth leakage</source>
+        <translation>Kurzschluss oder Erdschluss</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DC link over-voltage</source>
+        <translation>Zwischenkreis-Überspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DC link under-voltage</source>
+        <translation>Zwischenkreis-Unterspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>excess temperature, device</source>
+        <translation>Übertemperatur, Gerät</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>excess temperature, drive</source>
+        <translation>Übertemperatur, Antrieb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data storage (non-volatile memory)</source>
+        <translation>Datenspeicher (nichtflüchtiger Speicher)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motor blocked</source>
+        <translation>Motor blockiert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>incremental sensor 1 fault</source>
+        <translation>Fehler Inkrementalgeber 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN-Überlauf (Objekte verloren)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN in error passive mode</source>
+        <translation>CAN im fehlerpassiven Zustand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>life guard or heartbeat error</source>
+        <translation>Life-Guarding- oder Heartbeat-Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recovered from bus off</source>
+        <translation>vom Bus-Off erholt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID-Kollision</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO wegen Längenfehler nicht verarbeitet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDO length exceeded</source>
+        <translation>PDO-Länge überschritten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexpected SYNC data length</source>
+        <translation>unerwartete SYNC-Datenlänge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RPDO timeout</source>
+        <translation>RPDO-Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>following error</source>
+        <translation>Schleppfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reference limit</source>
+        <translation>Referenzgrenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>current, device input side</source>
+        <translation>Strom, Geräteeingang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>current inside the device</source>
+        <translation>Strom im Gerät</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>current, device output side</source>
+        <translation>Strom, Geräteausgang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mains voltage</source>
+        <translation>Netzspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>voltage inside the device</source>
+        <translation>Spannung im Gerät</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>output voltage</source>
+        <translation>Ausgangsspannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambient temperature</source>
+        <translation>Umgebungstemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device temperature</source>
+        <translation>Gerätetemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drive temperature</source>
+        <translation>Antriebstemperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>internal software</source>
+        <translation>interne Software</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>user software</source>
+        <translation>Anwendersoftware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data set</source>
+        <translation>Datensatz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>power (motor)</source>
+        <translation>Leistung (Motor)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sensor</source>
+        <translation>Sensor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>protocol error</source>
+        <translation>Protokollfehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torque control</source>
+        <translation>Momentenregelung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>velocity speed controller</source>
+        <translation>Drehzahlregler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position controller</source>
+        <translation>Lageregler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positioning controller</source>
+        <translation>Positionierregler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>generic error</source>
+        <translation>allgemeiner Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device hardware</source>
+        <translation>Gerätehardware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device software</source>
+        <translation>Gerätesoftware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>additional modules</source>
+        <translation>Zusatzmodule</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>monitoring</source>
+        <translation>Überwachung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>external error</source>
+        <translation>externer Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>additional functions</source>
+        <translation>Zusatzfunktionen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot create CAN device %s %s: %s</source>
+        <translation>CAN-Gerät %s %s kann nicht angelegt werden: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN device %s %s: %s</source>
+        <translation>CAN-Gerät %s %s: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device error: %s</source>
+        <translation>Gerätefehler: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connection to the bus lost</source>
+        <translation>Verbindung zum Bus verloren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: every drive is in Fault; recover the bus, then reset the faults</source>
+        <translation>%s: alle Antriebe sind im Fehler; den Bus wiederherstellen, dann die Fehler quittieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMT %s to node %d</source>
+        <translation>NMT %s an Knoten %d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NMT %s to all nodes</source>
+        <translation>NMT %s an alle Knoten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a SYNC</source>
+        <translation>ein SYNC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its heartbeat</source>
+        <translation>sein Heartbeat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>another CANopen master is on the bus (heard %s): two masters reset and command the same drives</source>
+        <translation>ein anderer CANopen-Master ist am Bus (gehört: %s): zwei Master setzen dieselben Antriebe zurück und steuern sie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d SYNC (0x080)</source>
+        <translation>%d SYNC (0x080)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d NMT commands (0x000, %s)</source>
+        <translation>%d NMT-Befehle (0x000, %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d NMT command (0x000, %s)</source>
+        <translation>%d NMT-Befehl (0x000, %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d master heartbeats of node %d (0x%03X)</source>
+        <translation>%d Master-Heartbeats von Knoten %d (0x%03X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d master heartbeat of node %d (0x%03X)</source>
+        <translation>%d Master-Heartbeat von Knoten %d (0x%03X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>another CANopen master is active on %s %s: heard %s within %d ms; not taking the bus</source>
+        <translation>ein anderer CANopen-Master ist auf %s %s aktiv: %s gehört innerhalb von %d ms; der Bus wird nicht übernommen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connected, no other master heard in %d ms; %s</source>
+        <translation>verbunden, kein anderer Master in %d ms gehört; %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SDO read %s:%s</source>
+        <translation>SDO-Lesen %s:%s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SDO write %s:%s = %s</source>
+        <translation>SDO-Schreiben %s:%s = %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s: unexpected SDO answer (segmented transfer?)</source>
+        <translation>%s: unerwartete SDO-Antwort (segmentierte Übertragung?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device type %s is not a CiA 406 encoder (profile %u)</source>
+        <translation>Gerätetyp %s ist kein CiA-406-Geber (Profil %u)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>device type %s is not a CiA 402 drive (profile %u)</source>
+        <translation>Gerätetyp %s ist kein CiA-402-Antrieb (Profil %u)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>motor rated torque 0x6076 = 0: no scale for the target torque (CST)</source>
+        <translation>Motornennmoment 0x6076 = 0: kein Maßstab für das Sollmoment (CST)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bus off (%s)</source>
+        <translation>Bus aus (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node rebooted while running (unexpected boot-up)</source>
+        <translation>Knoten im Betrieb neu gestartet (unerwartetes Boot-up)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configured (CiA 406 encoder, TPDO1 position value, heartbeat %d ms) and operational</source>
+        <translation>konfiguriert (CiA-406-Geber, TPDO1 Positionswert, Heartbeat %d ms) und betriebsbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configured (CST, RPDO1/RPDO2/TPDO1, heartbeat %d ms) and operational</source>
+        <translation>konfiguriert (CST, RPDO1/RPDO2/TPDO1, Heartbeat %d ms) und betriebsbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configured (CSP, RPDO1/RPDO2/TPDO1, heartbeat %d ms) and operational</source>
+        <translation>konfiguriert (CSP, RPDO1/RPDO2/TPDO1, Heartbeat %d ms) und betriebsbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EMCY %s (error register %s)</source>
+        <translation>EMCY %s (Fehlerregister %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fault reset: configuring the node again</source>
+        <translation>Fehler quittiert: der Knoten wird neu konfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no boot-up within %d ms after NMT reset communication (is a node with this id on the bus?)</source>
+        <translation>kein Boot-up innerhalb von %d ms nach NMT Reset Communication (ist ein Knoten mit dieser ID am Bus?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SDO %s:%s unanswered after %d tries of %d ms: %s</source>
+        <translation>SDO %s:%s nach %d Versuchen zu je %d ms unbeantwortet: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no Operational heartbeat after NMT start</source>
+        <translation>kein Heartbeat „Operational“ nach NMT-Start</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heartbeat lost (none for %lld ms &gt; %lld ms)</source>
+        <translation>Heartbeat verloren (keiner seit %lld ms &gt; %lld ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no position value (TPDO) for %lld ms after a SYNC (&gt; %lld ms): the encoder&apos;s reading is lost</source>
+        <translation>kein Positionswert (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): der Messwert des Gebers fehlt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bus state: %s</source>
+        <translation>Buszustand: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>enter pre-operational</source>
+        <translation>Pre-Operational einleiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reset node</source>
+        <translation>Knoten zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reset communication</source>
+        <translation>Kommunikation zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Boot-up</source>
+        <translation>Boot-up</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped</source>
+        <translation>Gestoppt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operational</source>
+        <translation>Operational</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pre-operational</source>
+        <translation>Pre-Operational</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%08X: %s</source>
+        <translation>0x%08X: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x%08X: unknown abort code</source>
+        <translation>0x%08X: unbekannter Abbruchcode</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>toggle bit not alternated</source>
+        <translation>Toggle-Bit nicht gewechselt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SDO protocol timed out</source>
+        <translation>Zeitüberschreitung im SDO-Protokoll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>client/server command specifier not valid or unknown</source>
+        <translation>Client/Server-Befehlskennung ungültig oder unbekannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid block size</source>
+        <translation>ungültige Blockgröße</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid sequence number</source>
+        <translation>ungültige Sequenznummer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CRC error</source>
+        <translation>CRC-Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>out of memory</source>
+        <translation>Speicher voll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unsupported access to an object</source>
+        <translation>nicht unterstützter Zugriff auf ein Objekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>attempt to read a write-only object</source>
+        <translation>Versuch, ein nur schreibbares Objekt zu lesen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>attempt to write a read-only object</source>
+        <translation>Versuch, ein nur lesbares Objekt zu schreiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>object does not exist in the object dictionary</source>
+        <translation>Objekt existiert nicht im Objektverzeichnis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>object cannot be mapped to the PDO</source>
+        <translation>Objekt kann nicht auf das PDO abgebildet werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation>Anzahl und Länge der abzubildenden Objekte würden die PDO-Länge überschreiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>general parameter incompatibility</source>
+        <translation>allgemeine Parameterunverträglichkeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>general internal incompatibility in the device</source>
+        <translation>allgemeine interne Unverträglichkeit im Gerät</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>access failed due to a hardware error</source>
+        <translation>Zugriff wegen eines Hardwarefehlers gescheitert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data type does not match, length of service parameter does not match</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters passt nicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data type does not match, length of service parameter too high</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters zu groß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data type does not match, length of service parameter too low</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters zu klein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sub-index does not exist</source>
+        <translation>Subindex existiert nicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid value for parameter</source>
+        <translation>ungültiger Wert für den Parameter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>value of parameter written too high</source>
+        <translation>geschriebener Parameterwert zu groß</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>value of parameter written too low</source>
+        <translation>geschriebener Parameterwert zu klein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>maximum value is less than minimum value</source>
+        <translation>Maximalwert ist kleiner als der Minimalwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>resource not available: SDO connection</source>
+        <translation>Ressource nicht verfügbar: SDO-Verbindung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>general error</source>
+        <translation>allgemeiner Fehler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data cannot be transferred or stored to the application</source>
+        <translation>Daten können nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data cannot be transferred or stored to the application because of local control</source>
+        <translation>Daten können wegen lokaler Steuerung nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>data cannot be transferred or stored to the application because of the present device state</source>
+        <translation>Daten können wegen des aktuellen Gerätezustands nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>object dictionary dynamic generation failed or no object dictionary is present</source>
+        <translation>dynamische Erzeugung des Objektverzeichnisses gescheitert oder kein Objektverzeichnis vorhanden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no data available</source>
+        <translation>keine Daten verfügbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nodes %s: %s</source>
+        <translation>Knoten %s: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>node %s: %s</source>
+        <translation>Knoten %s: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not connected (%s)</source>
+        <translation>nicht verbunden (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>disconnected from %s</source>
+        <translation>getrennt von %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connecting to %s (listening for another master)</source>
+        <translation>verbinde mit %s (horche auf einen anderen Master)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN bus %s: %s</source>
+        <translation>CAN-Bus %s: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>connected to %s; configuring the nodes</source>
+        <translation>verbunden mit %s; die Knoten werden konfiguriert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bus went away while configuring (%s)</source>
+        <translation>der Bus ging während der Konfiguration verloren (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>every node operational on %s; reading the drives&apos; states</source>
+        <translation>alle Knoten auf %s betriebsbereit; die Zustände der Antriebe werden gelesen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up on %s: %d nodes operational</source>
+        <translation>bereit auf %s: %d Knoten betriebsbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d of %d nodes did not come up: %s</source>
+        <translation>%d von %d Knoten sind nicht hochgefahren: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d of %d nodes did not come up (within %d ms): %s</source>
+        <translation>%d von %d Knoten sind nicht hochgefahren (innerhalb von %d ms): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configuring the nodes on %s: %d of %d operational</source>
+        <translation>Knoten auf %s werden konfiguriert: %d von %d betriebsbereit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CAN bus lost on %s: %s</source>
+        <translation>CAN-Bus auf %s verloren: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>up on %s; %d node(s) not operational: %s</source>
+        <translation>bereit auf %s; %d Knoten nicht betriebsbereit: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d CiA 402 drives (CSP)</source>
+        <translation>%d CiA-402-Antriebe (CSP)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d CiA 402 drives (CST)</source>
+        <translation>%d CiA-402-Antriebe (CST)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%d CiA 402 drives (%d CSP, %d CST)</source>
+        <translation>%d CiA-402-Antriebe (%d CSP, %d CST)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s + CiA 406 encoder %d (%s)</source>
+        <translation>%s + CiA-406-Geber %d (%s)</translation>
+    </message>
+    <message>
+        <location line="-268"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -1116,7 +2076,7 @@
     <message>
         <location line="+1"/>
         <source>the profile cutter&apos;s A and X steppers are driven by a pulse card, not by CANopen drives: use devices.kind = &quot;simulated&quot;</source>
-        <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = &quot;simulated&quot; verwenden</translation>
+        <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = "simulated" verwenden</translation>
     </message>
     <message>
         <location line="-5"/>
@@ -1189,7 +2149,7 @@
         <translation>Werkzeug verloren</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be positive definite</source>
         <translation>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] muss positiv definit sein</translation>
     </message>
@@ -1266,7 +2226,7 @@
     <message>
         <location line="+1"/>
         <source>end_cut.setup = 2 (the section turned over): nothing is left to cut - setup 2 cuts only the bevel on the underside of the %s (on the conveyor in setup 1) that a K groove on the flanges needs, and end_cut.flanges.groove = &quot;%s&quot;; plan setup 1 (end_cut.setup = 1)</source>
-        <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
+        <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = "%s"; Aufspannung 1 planen (end_cut.setup = 1)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1551,7 +2511,7 @@
 <context>
     <name>CutCell::ui::BusPanel</name>
     <message>
-        <location filename="../../ui/panels/bus_panel.cpp" line="+40"/>
+        <location filename="../../ui/panels/bus_panel.cpp" line="+41"/>
         <location line="+49"/>
         <source>Reconnect</source>
         <translation>Neu verbinden</translation>
@@ -1638,7 +2598,7 @@
         <translation>&gt;9999</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>node %1, axis %2</source>
         <translation>Knoten %1, Achse %2</translation>
     </message>
@@ -2638,7 +3598,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::LinkControl</name>
     <message>
-        <location filename="../../ui/link_control.cpp" line="+40"/>
+        <location filename="../../ui/link_control.cpp" line="+41"/>
         <source>Enable: bringing the CAN bus up first (%1); the drives are enabled once every node is operational.</source>
         <translation>Freigeben: zuerst wird der CAN-Bus hochgefahren (%1); die Antriebe werden freigegeben, sobald alle Knoten betriebsbereit (Operational) sind.</translation>
     </message>
@@ -2658,7 +3618,7 @@ entriegeln</translation>
         <translation>CAN-Bus wird neu verbunden (%1).</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <location line="+18"/>
         <source>CAN bus: %1</source>
         <translation>CAN-Bus: %1</translation>
@@ -2682,18 +3642,18 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+141"/>
+        <location filename="../../ui/main_window.cpp" line="+153"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+204"/>
+        <location line="+206"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location line="-203"/>
+        <location line="-205"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
@@ -2813,7 +3773,7 @@ entriegeln</translation>
         <translation>Dieser Lauf startet mit einem Geschwindigkeits-Override von %1 %.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>Alarms (%1)</source>
         <translation>Alarme (%1)</translation>
     </message>
@@ -2966,7 +3926,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ParameterTabs</name>
     <message>
-        <location filename="../../ui/forms/parameter_tabs.cpp" line="+77"/>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+78"/>
         <source>Job</source>
         <translation>Auftrag</translation>
     </message>
@@ -3768,7 +4728,7 @@ letzte %1 s</translation>
         <translation>der CAN-Bus ist nicht hochgefahren: %1</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+57"/>
         <source>Path not reachable: %1</source>
         <translation>Bahn nicht erreichbar: %1</translation>
     </message>
@@ -3808,7 +4768,7 @@ letzte %1 s</translation>
         <translation>Abbruch</translation>
     </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+20"/>
         <source>%n invalid field(s) - %1</source>
         <translation>
             <numerusform>%n ungültiges Feld - %1</numerusform>

@@ -21,6 +21,7 @@
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/virtualcan_host.h"
 #include "ui/engine_bridge.h"
+#include "ui/language.h"
 #include "ui/link_control.h"
 #include "ui/main_window.h"
 #include "ui/panels/bus_panel.h"
@@ -302,6 +303,48 @@ class TestGuiCanLink : public QObject {
         QTest::qWait(500); // the cancelled Enable stays cancelled
         QCOMPARE(w.run()->bridge()->state(), EngineState::Idle);
         QVERIFY(!cia402(w).contains("Operation enabled"));
+    }
+
+    // The CAN master's and the link's texts in German (issue 21): the failed bring-up's reason
+    // in the bus box and the Start reason, then the drives' CiA 402 states and the master's
+    // events in the log once the bus is up; numbers and node lists as they came.
+    void busTextsReadInGerman() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        CanCable cable(busPort_);
+        const cutcell::Job job = canJob(cable);
+        {
+            MainWindow w(&cutcell::app::makeRig);
+            openWindow(w, job, "german.json");
+            click(w.controls()->enableButton());
+            QTRY_COMPARE_WITH_TIMEOUT(linkState(w), RigLink::State::Failed, 10000);
+            const QString why = w.busPanel()->detailLabel()->toolTip();
+            const QString english = QString::fromStdString(w.run()->link()->link().text);
+            QVERIFY2(english.contains("nodes did not come up") && english.contains("no boot-up"),
+                     qPrintable(english));
+            QVERIFY2(why.contains("Knoten sind nicht hochgefahren") &&
+                         why.contains("kein Boot-up innerhalb von 1000 ms"),
+                     qPrintable(why));
+            QVERIFY2(!why.contains("no boot-up") && !why.contains("did not come up"),
+                     qPrintable(why));
+            QVERIFY2(w.run()->startBlockedReason().contains("kein Boot-up"),
+                     qPrintable(w.run()->startBlockedReason()));
+
+            auto sim = startSimulator(job);
+            QVERIFY(sim);
+            click(w.controls()->enableButton());
+            QTRY_VERIFY2_WITH_TIMEOUT(all(cia402(w), "Betrieb freigegeben"),
+                                      qPrintable(cia402(w).join(", ")), 10000);
+            QVERIFY2(all(column(w, 1), "Operational"), qPrintable(column(w, 1).join(", ")));
+            QString log;
+            for (int r = 0; r < w.eventLog()->rowCount(); ++r)
+                log += w.eventLog()->message(r) + QLatin1Char('\n');
+            QVERIFY2(log.contains("konfiguriert (CSP, RPDO1/RPDO2/TPDO1, Heartbeat"),
+                     qPrintable(log.right(2000)));
+            QVERIFY2(!log.contains("and operational"), qPrintable(log.right(2000)));
+            click(w.controls()->eStopButton());
+            QTRY_COMPARE_WITH_TIMEOUT(w.run()->bridge()->state(), EngineState::EmergencyStop, 2000);
+        }
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
     }
 };
 

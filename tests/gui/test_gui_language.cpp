@@ -25,6 +25,7 @@
 
 #include <QAbstractButton>
 #include <QComboBox>
+#include <QCryptographicHash>
 #include <QDialog>
 #include <QFile>
 #include <QGroupBox>
@@ -139,12 +140,13 @@ QStringList shownTexts(const MainWindow& w) {
 bool readsAsEnglish(const QString& text) {
     static const QStringList shared = {
         // units, formats, buses and names that German keeps (the seeds' angle names too)
-        "deg",     "rpm",      "JSON",      "CSV",       "PNG",        "SVG",       "PDF",
-        "G-code",  "DSTV",     "CANopen",   "SocketCAN", "virtualcan", "Override",  "Start",
-        "Reset",   "Jacobian", "Whitworth", "English",   "Deutsch",    "System",    "Experiment",
-        "CutCell", "Pitch",    "Status",    "Name",      "Info",       "Heartbeat", "Alarm",
-        "Pause",   "json",     "alpha",     "beta",      "Offset",     "Amplitude", "kbit",
-        "SYNC",    "inverse"};
+        "deg", "rpm", "JSON", "CSV", "PNG", "SVG", "PDF", "G-code", "DSTV", "CANopen", "SocketCAN",
+        "virtualcan", "Override", "Start", "Reset", "Jacobian", "Whitworth", "English", "Deutsch",
+        "System", "Experiment", "CutCell", "Pitch", "Status", "Name", "Info", "Heartbeat", "Alarm",
+        "Pause", "json", "alpha", "beta", "Offset", "Amplitude", "kbit", "SYNC", "inverse", "RPDO",
+        "TPDO", "eventfd", "EMCY",
+        // CiA 301 NMT states, named so in German manuals too
+        "Operational", "Boot"};
     // The machines' axis names are names ("chuck (theta0)", "groove θ2"), as in the papers.
     if (text.contains(QStringLiteral("theta")) || text.contains(QChar(0x03B8))) return false;
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
@@ -189,6 +191,7 @@ class TestGuiLanguage : public QObject {
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QSettings().remove("ui/language");
+        QSettings().remove("jobs/recent"); // files other runs opened are no texts of the window
         QVERIFY(dir_.isValid());
     }
     void cleanup() { QVERIFY(CutCell::ui::applyGuiLanguage("en")); }
@@ -349,9 +352,14 @@ class TestGuiLanguage : public QObject {
                  QStringLiteral("Auf der Bahn angehalten bei 2,500 s (Säge aus)"));
         QCOMPARE(CutCell::ui::engineText("Home refused: motion in progress (Paused)"),
                  QStringLiteral("Referenz abgelehnt: Bewegung läuft (Vorschub halt)"));
+        // The CAN master's: the node's prefix and its fault each; a list item by item.
+        QCOMPARE(CutCell::ui::engineText("node 3: heartbeat lost (none for 250 ms > 200 ms)"),
+                 QStringLiteral("Knoten 3: Heartbeat verloren (keiner seit 250 ms > 200 ms)"));
+        QCOMPARE(CutCell::ui::engineText("CAN bus: bus off (bus off, transmit timeout)"),
+                 QStringLiteral("CAN-Bus: Bus aus (Bus aus (Bus-Off), Sendezeitüberschreitung)"));
         // A text no template knows (a device's own message) is shown as it came.
-        QCOMPARE(CutCell::ui::engineText("node 3: heartbeat lost"),
-                 QStringLiteral("node 3: heartbeat lost"));
+        QCOMPARE(CutCell::ui::engineText("vendor code E-42 (see the drive's manual)"),
+                 QStringLiteral("vendor code E-42 (see the drive's manual)"));
     }
 
     // A cross-field check of the job's validation (no range: a sentence of core) in German,
@@ -419,6 +427,7 @@ class TestGuiLanguage : public QObject {
         QVERIFY2(reason.contains(field->accessibleName() + QStringLiteral(" = 900,5 mm/s")),
                  qPrintable(reason));
         QVERIFY2(!reason.contains("max_speed_mm_s"), qPrintable(reason));
+        w.document()->clearRecentFiles();
     }
 
     // Help -> About names the version, the build's commit and every machine.
@@ -429,6 +438,53 @@ class TestGuiLanguage : public QObject {
         QVERIFY2(about.contains(QString::fromUtf8(qVersion())), qPrintable(about));
         for (const auto* m : CutCell::ui::machineUis())
             QVERIFY2(about.contains(m->title().toHtmlEscaped()), qPrintable(m->title()));
+    }
+
+    // Help -> Manual in German is docs/manual_de.md, the translation of this build's English
+    // manual: its first line names the sha256 of the English it translates (an English change
+    // without the German fails here), it has the same headings, pictures and command lines in
+    // the same order, no English paragraph left as it was, and the German window shows it.
+    void germanManualTranslatesThisBuildsManual() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        const QString english = CutCell::ui::builtInManual();
+        const QString hash = QString::fromLatin1(
+            QCryptographicHash::hash(english.toUtf8(), QCryptographicHash::Sha256).toHex());
+        QFile file(QStringLiteral(CUTCELL_SOURCE_DIR "/docs/manual_de.md"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString german = QString::fromUtf8(file.readAll());
+        QVERIFY2(german.section('\n', 0, 0).contains("sha256 " + hash),
+                 qPrintable("docs/manual_de.md translates another English manual: translate what "
+                            "changed in the README's operator sections, then write sha256 " +
+                            hash + " into its first line"));
+        const auto lines = [](const QString& text, const QRegularExpression& kind) {
+            QStringList out;
+            for (const QString& line : text.split('\n'))
+                if (const auto m = kind.match(line); m.hasMatch()) out << m.captured(1);
+            return out;
+        };
+        const QRegularExpression heading(QStringLiteral("^(#+) "));
+        const QRegularExpression image(QStringLiteral("!\\[[^\\]]*\\]\\(([^)]+)\\)"));
+        const QRegularExpression command(QStringLiteral("^(    \\S.*)$"));
+        QCOMPARE(lines(german, heading), lines(english, heading));
+        QCOMPARE(lines(german, image), lines(english, image));
+        QCOMPARE(lines(german, command), lines(english, command));
+        for (const QString& para : english.split("\n\n")) {
+            const QString p = para.trimmed();
+            const bool code = QString(para).remove(QRegularExpression("^\\n+")).startsWith("    ");
+            if (p.size() < 60 || code || p.startsWith('|') || p.startsWith("![")) continue;
+            QVERIFY2(!german.contains(p), qPrintable("untranslated: " + p.left(80)));
+        }
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        const QString shown = CutCell::ui::builtInManual();
+        QVERIFY2(shown.startsWith("## Der Bedienplatz"), qPrintable(shown.left(80)));
+        QVERIFY(!shown.contains("<!--"));
+        MainWindow w(nullptr);
+        QDialog* window = CutCell::ui::makeManualWindow(&w);
+        auto* text = window->findChild<QTextBrowser*>("manualText");
+        QVERIFY(text);
+        QVERIFY2(text->toPlainText().contains("NOT-HALT"),
+                 qPrintable(text->toPlainText().left(200)));
+        delete window;
     }
 
     // Help -> Manual is the README's operator section of this build, offline: its pictures

@@ -29,6 +29,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 
+#include <QRegularExpression>
 #include <QtTest>
 
 using cutcell::EngineState;
@@ -223,7 +224,12 @@ class TestGuiProfile : public QObject {
         job.profile_cutter.x_travel_mm = 10; // far shorter than the cut's X range
         w.editor()->setJob(job);
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
-        QTRY_VERIFY(w.run()->startBlockedReason().contains("x_travel_mm"));
+        // The refusal names the carriage's travel by its field's label, not the file's key.
+        const QWidget* travel = w.parameters()->fieldFor("profile_cutter.x_travel_mm");
+        QVERIFY(travel && !travel->accessibleName().isEmpty());
+        QTRY_VERIFY2(w.run()->startBlockedReason().contains(travel->accessibleName()),
+                     qPrintable(w.run()->startBlockedReason()));
+        QVERIFY(!w.run()->startBlockedReason().contains("x_travel_mm"));
         QVERIFY(!w.controls()->startButton()->isEnabled());
     }
 
@@ -239,8 +245,15 @@ class TestGuiProfile : public QObject {
         QVERIFY(!cli.ok());
         QVERIFY(QString::fromStdString(cli.problem).contains("max_pulse_rate_hz"));
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
-        QTRY_VERIFY2(w.run()->startBlockedReason().contains(QString::fromStdString(cli.problem)),
-                     qPrintable(w.run()->startBlockedReason()));
+        // The same sentence, the key named by its field's label.
+        const QString problem = QString::fromStdString(cli.problem);
+        const QString before = problem.left(problem.indexOf(
+            QRegularExpression(R"((machine\.)?profile_cutter\.max_pulse_rate_hz)")));
+        const QWidget* rate = w.parameters()->fieldFor("profile_cutter.max_pulse_rate_hz");
+        QVERIFY(rate && !rate->accessibleName().isEmpty());
+        QTRY_VERIFY2(
+            w.run()->startBlockedReason().contains(before + rate->accessibleName() + " = 50 Hz"),
+            qPrintable(w.run()->startBlockedReason() + " / " + problem));
         QVERIFY(!w.controls()->startButton()->isEnabled());
     }
 };

@@ -75,8 +75,8 @@ class TestRunModel : public QObject {
     void toolLampBeforeThePlan() {
         QFETCH(QString, id);
         MainWindow w(nullptr);
-        const std::string other = id == cutcell::kFlyingSawId ? cutcell::kQuickReturnId
-                                                              : cutcell::kFlyingSawId;
+        const std::string other =
+            id == cutcell::kFlyingSawId ? cutcell::kQuickReturnId : cutcell::kFlyingSawId;
         newJobFor(w, other);
         newJobFor(w, id.toStdString()); // no events processed: no plan can have come
         const cutcell::MachineModule* module = cutcell::findMachine(id.toStdString());

@@ -1,4 +1,5 @@
 #include "ui/panels/bus_panel.h"
+#include "ui/panels/engine_text.h"
 #include "ui/shown_number.h"
 
 #include <QFont>
@@ -113,7 +114,7 @@ static QString linkStateWord(RigLink::State s) {
 void BusPanel::refreshState() {
     const QString where = QString::fromStdString(link_.where);
     QString state = tr("Bus %1").arg(linkStateWord(link_.state)).toUpper();
-    QString text = QString::fromStdString(link_.text);
+    QString text = engineText(QString::fromStdString(link_.text));
     QString color = stateColor(link_.state);
     QStringList silent;
     for (int r = 0; r < nodes_->rowCount(); ++r)
@@ -156,10 +157,11 @@ void BusPanel::refreshRows() {
         const QString hb = n.heartbeat_age_ms < 0      ? tr("none")
                            : n.heartbeat_age_ms > 9999 ? tr(">9999")
                                                        : shownNumber(n.heartbeat_age_ms, 0);
-        const QString cells[ColCount] = {QString::number(n.node), n.nmt, n.cia402, hb};
+        const QString cells[ColCount] = {QString::number(n.node), engineText(n.nmt),
+                                         engineText(n.cia402), hb};
         QString tip = tr("node %1, axis %2").arg(n.node).arg(n.axis);
-        if (!n.fault.isEmpty()) tip += QStringLiteral("\n") + n.fault;
-        if (!n.last_emcy.isEmpty()) tip += QStringLiteral("\n") + n.last_emcy;
+        if (!n.fault.isEmpty()) tip += QStringLiteral("\n") + engineText(n.fault);
+        if (!n.last_emcy.isEmpty()) tip += QStringLiteral("\n") + engineText(n.last_emcy);
         for (int c = 0; c < ColCount; ++c) {
             QTableWidgetItem* item = nodes_->item(r, c);
             if (!item) {

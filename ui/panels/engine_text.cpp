@@ -1,9 +1,12 @@
 #include "ui/panels/engine_text.h"
 #include "core/engine/engine_types.h"
+#include "ui/language.h"
 #include "ui/panels/run_words.h"
 #include "ui/shown_number.h"
 
 #include <QCoreApplication>
+#include <QHash>
+#include <QLocale>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -98,6 +101,24 @@ const std::vector<Template>& templates() {
 
 QString translated(const QString& english, int depth);
 
+// A list no template matches as a whole ("bus off, transmit timeout"; the CAN link's
+// "node 1: ...; nodes 2, 3: ..."): each item translated. Otherwise the text as it came.
+QString listTranslated(const QString& english, int depth) {
+    if (depth >= 4) return english;
+    for (const QString separator : {QStringLiteral("; "), QStringLiteral(", ")}) {
+        if (!english.contains(separator)) continue;
+        QStringList items = english.split(separator);
+        bool any = false;
+        for (QString& item : items) {
+            const QString shown = translated(item, depth + 1);
+            any = any || shown != item;
+            item = shown;
+        }
+        if (any) return items.join(separator);
+    }
+    return english;
+}
+
 QString valueText(const Spec& spec, const QString& captured, int depth) {
     const char c = spec.conversion.toLatin1();
     if (c == 's') return depth < 4 ? translated(captured, depth + 1) : captured;
@@ -145,7 +166,7 @@ QString translated(const QString& english, int depth) {
     }
     QRegularExpressionMatch m;
     const Template* t = templateOf(english, &m);
-    if (!t) return english;
+    if (!t) return listTranslated(english, depth);
     std::vector<QString> values;
     for (size_t k = 0; k < t->specs.size(); ++k)
         values.push_back(valueText(t->specs[k], m.captured(static_cast<int>(k) + 1), depth));
@@ -160,7 +181,19 @@ QString translated(const QString& english, int depth) {
 } // namespace
 
 QString engineText(const QString& english) {
-    return translated(english, 0);
+    // The device panels show the same few texts many times a second: each is matched once per
+    // language (the cache is small; it starts again when full).
+    static QHash<QString, QString> cache;
+    static QString cacheLanguage;
+    const QString language = shownLanguage() + QLatin1Char('/') + QLocale().name();
+    if (language != cacheLanguage || cache.size() > 4096) {
+        cache.clear();
+        cacheLanguage = language;
+    }
+    if (const auto it = cache.constFind(english); it != cache.constEnd()) return it.value();
+    const QString shown = translated(english, 0);
+    cache.insert(english, shown);
+    return shown;
 }
 
 const char* engineTemplateOf(const QString& english) {
