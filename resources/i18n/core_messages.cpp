@@ -201,6 +201,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "main_pipe.length_mm = %.6g mm is shorter than the cut along it (%.6g mm for a branch of radius %.6g mm at %.6g deg): the pipe must contain the cut"),
     QT_TRANSLATE_NOOP("CoreMessage", "branch_pipe.length_mm = %.6g mm is shorter than the saddle of its cut end (%.6g mm): the pipe must contain the cut"),
     QT_TRANSLATE_NOOP("CoreMessage", "not feasible: machine.%s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%d pieces at %.4g m/min; cycle %.2f s (sync-in %.3f s, sync + cut %.3f s, decel %.3f s, return %.3f s at k = %.2f); stroke %.0f of %.0f mm; shortest piece %.0f mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "line encoder"),
     QT_TRANSLATE_NOOP("CoreMessage", "carriage.max_speed_mm_s = %.6g mm/s cannot reach the line: line.speed_m_min = %.6g m/min is up to %.6g mm/s with the line's wander and steps; the carriage needs >= %.6g mm/s"),
     QT_TRANSLATE_NOOP("CoreMessage", "carriage.stroke_mm = %.6g mm is too short: sync-in %.6g mm + sync and cut %.6g mm (%.6g s at up to %.6g mm/s) + deceleration %.6g mm need %.6g mm from the wait position %.6g mm"),
@@ -491,6 +492,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 481;
+const int kCoreMessageCount = 482;
 
 } // namespace CutCell::ui

@@ -965,6 +965,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>%d pieces at %.4g m/min; cycle %.2f s (sync-in %.3f s, sync + cut %.3f s, decel %.3f s, return %.3f s at k = %.2f); stroke %.0f of %.0f mm; shortest piece %.0f mm</source>
+        <translation>%d Stücke bei %.4g m/min; Zyklus %.2f s (Einsynchronisieren %.3f s, Synchronlauf + Schnitt %.3f s, Bremsen %.3f s, Rücklauf %.3f s bei k = %.2f); Hub %.0f von %.0f mm; kürzestes Stück %.0f mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>line encoder</source>
         <translation>Liniengeber</translation>
     </message>
@@ -5359,7 +5364,7 @@ letzte %1 s</translation>
         <translation>&lt;h3&gt;CutCell Bedienstation %1&lt;/h3&gt;&lt;p&gt;Build: %2 (%3), %4, %5&lt;br&gt;Qt %6 (gebaut mit %7)&lt;br&gt;Sprache: %8&lt;/p&gt;&lt;p&gt;Maschinen in diesem Build:&lt;/p&gt;&lt;ul&gt;&lt;li&gt;%9&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Das Handbuch (Hilfe &amp;rarr; Handbuch) sind die Bedienabschnitte der README dieses Builds (auf Englisch).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+70"/>
         <source>CutCell manual: the operator station</source>
         <translation>CutCell-Handbuch: die Bedienstation</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "core/machine/machine_module.h"
 #include "core/machine/machine_registry.h"
+#include "ui/panels/engine_text.h"
 
 #include <stdexcept>
 
@@ -62,7 +63,9 @@ std::size_t ModulePlannedMachineUi::plannedPointCount(const cutcell::Job&,
 
 QString ModulePlannedMachineUi::planSummary(const cutcell::Job&,
                                             const cutcell::CutPlan& plan) const {
-    return plan.machine_plan ? QString::fromStdString(plan.machine_plan->summary) : QString();
+    // In the GUI's language where core made it from a template (messageC).
+    return plan.machine_plan ? engineText(QString::fromStdString(plan.machine_plan->summary))
+                             : QString();
 }
 
 std::vector<std::pair<std::string, QString>>

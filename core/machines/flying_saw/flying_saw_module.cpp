@@ -100,7 +100,7 @@ MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText) co
         out.summary = p.problem;
         return out;
     }
-    out.summary = formatC(
+    out.summary = messageC(
         "%d pieces at %.4g m/min; cycle %.2f s (sync-in %.3f s, sync + cut %.3f s, decel %.3f s, "
         "return %.3f s at k = %.2f); stroke %.0f of %.0f mm; shortest piece %.0f mm",
         s.pieceCount(), s.line_speed_m_min, p.cycle_time_s, p.T1, p.T2, p.T3,
