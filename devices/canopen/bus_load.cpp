@@ -29,23 +29,17 @@ BusLoad computeBusLoad(const BusLoadInput& in) {
     const double spare = in.bitrate_bps * in.limit - heartbeatBitsPerS;
     r.min_period_s = spare > 0 ? cyclic / spare : INFINITY;
     r.ok = r.load <= in.limit;
-    // One template each way (the GUI translates it, tools/core_messages.py); the advice is
-    // rounded up to 0.1 ms so that following it passes.
-    if (r.ok)
-        r.message = messageC(
-            "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
-            "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
-            in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
-            heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
-            in.limit * 100);
-    else
-        r.message = messageC(
-            "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
-            "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%; "
-            "use a period >= %.1f ms",
-            in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
-            heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
-            in.limit * 100, std::ceil(r.min_period_s * 1e4 - 1e-9) / 10);
+    // Templates the GUI translates (tools/core_messages.py); the advice is rounded up to 0.1 ms
+    // so that following it passes.
+    r.message = messageC(
+        "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) "
+        "+ heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%",
+        in.period_s * 1e3, r.frames_per_cycle, in.nodes, rpdo, in.nodes, tpdo, sync,
+        heartbeatBitsPerS * in.period_s, r.bits_per_cycle, r.load * 100, in.bitrate_bps / 1e3,
+        in.limit * 100);
+    if (!r.ok)
+        r.message = messageC("%s; use a period >= %.1f ms", r.message.c_str(),
+                             std::ceil(r.min_period_s * 1e4 - 1e-9) / 10);
     return r;
 }
 

@@ -302,7 +302,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "as fast as possible"),
     QT_TRANSLATE_NOOP("CoreMessage", "CANopen cell: %s on %s at %d kbit/s + simulated tool, %.3g ms SYNC, real time"),
     QT_TRANSLATE_NOOP("CoreMessage", "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%"),
-    QT_TRANSLATE_NOOP("CoreMessage", "cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%; use a period >= %.1f ms"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s; use a period >= %.1f ms"),
     QT_TRANSLATE_NOOP("CoreMessage", "bus off"),
     QT_TRANSLATE_NOOP("CoreMessage", "transmitter error passive"),
     QT_TRANSLATE_NOOP("CoreMessage", "receiver error passive"),

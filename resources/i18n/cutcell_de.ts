@@ -1105,8 +1105,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%; use a period &gt;= %.1f ms</source>
-        <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%; eine Zykluszeit &gt;= %.1f ms wählen</translation>
+        <source>%s; use a period &gt;= %.1f ms</source>
+        <translation>%s; eine Zykluszeit &gt;= %.1f ms wählen</translation>
     </message>
     <message>
         <location line="+1"/>
