@@ -4,7 +4,8 @@ operator, as printf templates and the words that go into them:
 - the motion engine's events: the templates of core/engine's event calls (emitf, setState,
   note, refuse, enterFault, endRun, and the snprintfC pieces they are built from) and the words
   passed into them (the commands', stop categories', drive states' names, the tools' words,
-  the motion sources' faults and phases);
+  the motion sources' faults and phases) and the items of the engine thread's real-time line
+  (core/engine/realtime_thread.cpp);
 - the job's validation sentences and the planners' refusals (messageC, core/common/c_format.h,
   and fixed `.problem = "..."` texts);
 - the simulated cell's line in the status bar (the rigs' description());
@@ -46,6 +47,8 @@ CAN_WORD_FUNCTIONS = re.compile(
     r"const char\* toString\((?:BusState|NmtState|NmtCommand|Cia402State)\b[^)]*\)\s*\{")
 DESCRIPTION = re.compile(r"std::string description\(\) const override\s*\{")
 ENGINE_FILES = ("engine_commands.cpp", "engine_cycle.cpp", "motion_engine.cpp")
+# The engine thread's real-time line (core/engine/realtime_thread.cpp): items joined by "; ".
+REALTIME_ITEM = re.compile(r"\bline\.item\s*\(")
 
 
 def balanced(text, start):
@@ -143,6 +146,10 @@ def messages(source_dir):
     for path, text in sources(source_dir, "core"):
         if os.path.basename(path) in ENGINE_FILES and "/engine/" in path:
             for m in CALL.finditer(text):
+                for s in literals(balanced(text, m.end())):
+                    add(s)
+        if path.endswith(os.path.join("engine", "realtime_thread.cpp")):
+            for m in REALTIME_ITEM.finditer(text):
                 for s in literals(balanced(text, m.end())):
                     add(s)
         for m in WORD_FUNCTIONS.finditer(text):

@@ -410,12 +410,28 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         }
         program = p;
         currentProgramSeq.store(c.seq, std::memory_order_release);
+        // In the run's own terms (whole phrases, so that the GUI translates them): a torch
+        // path's points and length, the pieces and the length they add up to, the strokes.
+        char what[96];
+        switch (p->terms.counts) {
+        case WorkCount::PathPoints:
+            if (p->terms.path_length)
+                snprintfC(what, sizeof what, "%zu points, %.1f mm", p->point_count, p->length_mm);
+            else
+                snprintfC(what, sizeof what, "%zu points", p->point_count);
+            break;
+        case WorkCount::Pieces:
+            snprintfC(what, sizeof what, "%zu pieces, %.1f mm in all", p->point_count,
+                      p->length_mm);
+            break;
+        case WorkCount::Strokes:
+            snprintfC(what, sizeof what, "%zu strokes", p->point_count);
+            break;
+        }
         if (s == EngineState::Completed)
             return setState(EngineState::Ready, EventKind::Transition,
-                            "Job loaded: %s (%zu points, %.1f mm, %.2f s)", p->name.c_str(),
-                            p->point_count, p->length_mm, p->cut_time_s);
-        return note("Job loaded: %s (%zu points, %.1f mm, %.2f s)", p->name.c_str(), p->point_count,
-                    p->length_mm, p->cut_time_s);
+                            "Job loaded: %s (%s, %.2f s)", p->name.c_str(), what, p->cut_time_s);
+        return note("Job loaded: %s (%s, %.2f s)", p->name.c_str(), what, p->cut_time_s);
     }
     case CommandType::Enable:
         if (latched(s)) return refuse(c.type, "%s", latchedReason(s));

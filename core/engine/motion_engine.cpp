@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string_view>
+#include <tuple>
 
 namespace cutcell {
 
@@ -249,10 +251,21 @@ void MotionEngine::startThread() {
         if (m.cfg.clock == ClockMode::RealTime) {
             m.realtime = applyRealtime(m.cfg.realtime, &dmaFd);
             m.realtimeKnown.store(true, std::memory_order_release);
-            char text[240];
+            char text[640];
             const bool allGranted = describeRealtime(m.cfg.realtime, m.realtime, text, sizeof text);
-            m.emitf(EventKind::Info, allGranted ? Severity::Info : Severity::Warning, m.state,
-                    m.state, "%s", text);
+            // An event holds 239 characters; every refusal with the OS's reasons is longer.
+            // The line goes out in as many events as it needs, cut between its items ("; "),
+            // so each event is whole sentences (and translates item by item).
+            const Severity severity = allGranted ? Severity::Info : Severity::Warning;
+            constexpr std::size_t kEventChars = std::tuple_size_v<decltype(EngineEvent::text)> - 1;
+            std::string_view rest(text);
+            while (!rest.empty()) {
+                const std::size_t cut = realtimeLinePiece(rest, kEventChars);
+                m.emitf(EventKind::Info, severity, m.state, m.state, "%.*s", static_cast<int>(cut),
+                        rest.data());
+                rest.remove_prefix(cut);
+                if (rest.substr(0, 2) == "; ") rest.remove_prefix(2);
+            }
         }
         const std::int64_t periodNs = static_cast<std::int64_t>(m.T * 1e9 + 0.5);
         std::int64_t next = monotonicNowNs() + periodNs;

@@ -35,17 +35,24 @@ constexpr std::size_t kStackPrefaultBytes = 256 * 1024;
 }
 #endif
 
-// Appends to a fixed buffer (truncates, never overflows).
+// Items appended to a fixed buffer, "; " between them (truncates, never overflows).
 struct Line {
     char* out;
     unsigned long size;
     unsigned long n = 0;
-    __attribute__((format(printf, 2, 3))) void put(const char* fmt, ...) {
-        if (n >= size) return;
+    __attribute__((format(printf, 2, 3))) void item(const char* fmt, ...) {
+        if (n > 0) append("; ");
         va_list ap;
         va_start(ap, fmt);
-        const int k = std::vsnprintf(out + n, size - n, fmt, ap);
+        if (n < size) {
+            const int k = std::vsnprintf(out + n, size - n, fmt, ap);
+            if (k > 0) n += static_cast<unsigned long>(k);
+        }
         va_end(ap);
+    }
+    void append(const char* text) {
+        if (n >= size) return;
+        const int k = std::snprintf(out + n, size - n, "%s", text);
         if (k > 0) n += static_cast<unsigned long>(k);
     }
 };
@@ -125,47 +132,53 @@ void releaseRealtime(int dmaFd) {
 
 bool describeRealtime(const RealtimeSettings& s, const RealtimeStatus& st, char* out,
                       unsigned long size) {
+    // Items joined by "; ", each a whole sentence (the GUI translates the line item by item:
+    // tools/core_messages.py lists the items' templates).
     bool allOk = true;
     Line line{out, size};
     if (size > 0) out[0] = '\0';
-    line.put("Real-time:");
     if (s.priority <= 0) {
-        line.put(" normal scheduler (no SCHED_FIFO asked)");
+        line.item("Real-time: normal scheduler (no SCHED_FIFO asked)");
     } else if (st.rt_priority_granted) {
-        line.put(" SCHED_FIFO %d granted", st.priority);
+        line.item("Real-time: SCHED_FIFO %d granted", st.priority);
     } else {
         allOk = false;
-        line.put(
-            " SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio limit; jitter follows "
-            "the normal scheduler)",
-            s.priority, std::strerror(st.priority_error));
+        line.item("Real-time: SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio "
+                  "limit, so jitter follows the normal scheduler)",
+                  s.priority, std::strerror(st.priority_error));
     }
     if (!s.lock_memory)
-        line.put(", memory not locked (not asked)");
+        line.item("memory not locked (not asked)");
     else if (st.memory_locked)
-        line.put(", memory locked");
+        line.item("memory locked");
     else {
         allOk = false;
-        line.put(", memory NOT locked (%s)",
-                 st.lock_error == ENOTSUP ? "sanitizer build" : std::strerror(st.lock_error));
+        line.item("memory NOT locked (%s)",
+                  st.lock_error == ENOTSUP ? "sanitizer build" : std::strerror(st.lock_error));
     }
     if (s.cpu >= 0) {
         if (st.cpu_pinned)
-            line.put(", pinned to CPU %d", s.cpu);
+            line.item("pinned to CPU %d", s.cpu);
         else {
             allOk = false;
-            line.put(", NOT pinned to CPU %d (%s)", s.cpu, std::strerror(st.cpu_error));
+            line.item("NOT pinned to CPU %d (%s)", s.cpu, std::strerror(st.cpu_error));
         }
     }
     if (s.cpu_dma_latency) {
         if (st.dma_latency_held)
-            line.put(", /dev/cpu_dma_latency held at 0 us");
+            line.item("/dev/cpu_dma_latency held at 0 us");
         else {
             allOk = false;
-            line.put(", /dev/cpu_dma_latency NOT held (%s)", std::strerror(st.dma_latency_error));
+            line.item("/dev/cpu_dma_latency NOT held (%s)", std::strerror(st.dma_latency_error));
         }
     }
     return allOk;
+}
+
+std::size_t realtimeLinePiece(std::string_view line, std::size_t maxChars) {
+    if (line.size() <= maxChars) return line.size();
+    const std::size_t sep = line.rfind("; ", maxChars);
+    return sep == std::string_view::npos || sep == 0 ? maxChars : sep;
 }
 
 } // namespace cutcell

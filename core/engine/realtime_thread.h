@@ -8,6 +8,8 @@
 //    (keeps the CPU out of deep idle states; needs write access to the device, usually root).
 // What ros2_control's realtime_tools and LinuxCNC do before their loops start.
 #include <array>
+#include <cstddef>
+#include <string_view>
 
 namespace cutcell {
 
@@ -38,9 +40,15 @@ struct RealtimeStatus {
 RealtimeStatus applyRealtime(const RealtimeSettings& s, int* dmaFd);
 void releaseRealtime(int dmaFd);
 
-// One line for the event log, e.g. "Real-time: SCHED_FIFO 80 granted, memory locked, ...".
-// Returns true when every requested step succeeded.
+// One line for the event log, e.g. "Real-time: SCHED_FIFO 80 granted; memory locked; ...":
+// items joined by "; ", each a whole sentence. Returns true when every requested step
+// succeeded. A refusal with the OS's reasons runs to about 300 characters.
 bool describeRealtime(const RealtimeSettings& s, const RealtimeStatus& st, char* out,
                       unsigned long size);
+
+// The length of the first piece of `line` that fits in maxChars, cut before a "; " between
+// items (an item longer than maxChars is cut at maxChars). The engine emits the line in events
+// of this size; the next piece starts after the "; ".
+std::size_t realtimeLinePiece(std::string_view line, std::size_t maxChars);
 
 } // namespace cutcell

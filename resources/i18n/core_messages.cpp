@@ -41,7 +41,11 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "axis %d (%s) has no drive"),
     QT_TRANSLATE_NOOP("CoreMessage", "axis %d (%s): the program commands %s, the drive is set to %s (set the mode before the run)"),
     QT_TRANSLATE_NOOP("CoreMessage", "reference of axis %d = %.4g is outside %.4g .. %.4g"),
-    QT_TRANSLATE_NOOP("CoreMessage", "Job loaded: %s (%zu points, %.1f mm, %.2f s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%zu points, %.1f mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%zu points"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%zu pieces, %.1f mm in all"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%zu strokes"),
+    QT_TRANSLATE_NOOP("CoreMessage", "Job loaded: %s (%s, %.2f s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "drives already enabled (%s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "no job loaded"),
     QT_TRANSLATE_NOOP("CoreMessage", "drives are already enabling"),
@@ -172,6 +176,17 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "slider position sensor: reading not valid"),
     QT_TRANSLATE_NOOP("CoreMessage", "open-loop torque return stroke"),
     QT_TRANSLATE_NOOP("CoreMessage", "catching the slider after the open-loop return"),
+    QT_TRANSLATE_NOOP("CoreMessage", "Real-time: normal scheduler (no SCHED_FIFO asked)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "Real-time: SCHED_FIFO %d granted"),
+    QT_TRANSLATE_NOOP("CoreMessage", "Real-time: SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio limit, so jitter follows the normal scheduler)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "memory not locked (not asked)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "memory locked"),
+    QT_TRANSLATE_NOOP("CoreMessage", "memory NOT locked (%s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "sanitizer build"),
+    QT_TRANSLATE_NOOP("CoreMessage", "pinned to CPU %d"),
+    QT_TRANSLATE_NOOP("CoreMessage", "NOT pinned to CPU %d (%s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "/dev/cpu_dma_latency held at 0 us"),
+    QT_TRANSLATE_NOOP("CoreMessage", "/dev/cpu_dma_latency NOT held (%s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "point"),
     QT_TRANSLATE_NOOP("CoreMessage", "piece"),
     QT_TRANSLATE_NOOP("CoreMessage", "stroke"),
@@ -492,6 +507,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 482;
+const int kCoreMessageCount = 497;
 
 } // namespace CutCell::ui

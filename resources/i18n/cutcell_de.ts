@@ -160,11 +160,11 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Job loaded: %s (%zu points, %.1f mm, %.2f s)</source>
-        <translation>Auftrag geladen: %s (%zu Punkte, %.1f mm, %.2f s)</translation>
+        <source>%zu points, %.1f mm</source>
+        <translation>%zu Punkte, %.1f mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>drives already enabled (%s)</source>
         <translation>Antriebe bereits freigegeben (%s)</translation>
     </message>
@@ -399,12 +399,27 @@
         <translation>Störung</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-78"/>
         <source>emergency stop</source>
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+28"/>
+        <source>%zu points</source>
+        <translation>%zu Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%zu pieces, %.1f mm in all</source>
+        <translation>%zu Stück, %.1f mm insgesamt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%zu strokes</source>
+        <translation>%zu Hübe</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>emergency stop latched (release it, then Reset)</source>
         <translation>NOT-HALT verriegelt (entriegeln, dann Reset)</translation>
     </message>
@@ -820,6 +835,61 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Real-time: normal scheduler (no SCHED_FIFO asked)</source>
+        <translation>Echtzeit: normaler Scheduler (kein SCHED_FIFO verlangt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Real-time: SCHED_FIFO %d granted</source>
+        <translation>Echtzeit: SCHED_FIFO %d gewährt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Real-time: SCHED_FIFO %d NOT granted (%s: needs CAP_SYS_NICE or an rtprio limit, so jitter follows the normal scheduler)</source>
+        <translation>Echtzeit: SCHED_FIFO %d nicht gewährt (%s: braucht CAP_SYS_NICE oder ein rtprio-Limit, daher folgt der Jitter dem normalen Scheduler)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>memory not locked (not asked)</source>
+        <translation>Speicher nicht gesperrt (nicht verlangt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>memory locked</source>
+        <translation>Speicher gesperrt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>memory NOT locked (%s)</source>
+        <translation>Speicher nicht gesperrt (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sanitizer build</source>
+        <translation>Sanitizer-Build</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pinned to CPU %d</source>
+        <translation>an CPU %d gebunden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>NOT pinned to CPU %d (%s)</source>
+        <translation>nicht an CPU %d gebunden (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>/dev/cpu_dma_latency held at 0 us</source>
+        <translation>/dev/cpu_dma_latency auf 0 µs gehalten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>/dev/cpu_dma_latency NOT held (%s)</source>
+        <translation>/dev/cpu_dma_latency nicht gehalten (%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>point</source>
         <translation>Punkt</translation>
     </message>
@@ -844,7 +914,12 @@
         <translation>Stück</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-146"/>
+        <source>Job loaded: %s (%s, %.2f s)</source>
+        <translation>Auftrag geladen: %s (%s, %.2f s)</translation>
+    </message>
+    <message>
+        <location line="+147"/>
         <source>strokes</source>
         <translation>Hübe</translation>
     </message>
@@ -921,7 +996,7 @@
     <message>
         <location line="+1"/>
         <source>devices.kind = &quot;canopen&quot;: %s</source>
-        <translation>devices.kind = "canopen": %s</translation>
+        <translation>devices.kind = &quot;canopen&quot;: %s</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2081,7 +2156,7 @@
     <message>
         <location line="+1"/>
         <source>the profile cutter&apos;s A and X steppers are driven by a pulse card, not by CANopen drives: use devices.kind = &quot;simulated&quot;</source>
-        <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = "simulated" verwenden</translation>
+        <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = &quot;simulated&quot; verwenden</translation>
     </message>
     <message>
         <location line="-5"/>
@@ -2231,7 +2306,7 @@
     <message>
         <location line="+1"/>
         <source>end_cut.setup = 2 (the section turned over): nothing is left to cut - setup 2 cuts only the bevel on the underside of the %s (on the conveyor in setup 1) that a K groove on the flanges needs, and end_cut.flanges.groove = &quot;%s&quot;; plan setup 1 (end_cut.setup = 1)</source>
-        <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = "%s"; Aufspannung 1 planen (end_cut.setup = 1)</translation>
+        <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <pthread.h>
 #include <sched.h>
 #include <string>
+#include <string_view>
 #include <thread>
+#include <tuple>
 
 using namespace cutcell;
 
@@ -95,6 +98,44 @@ TEST(Realtime, RefusedSettingIsAWarningThatNamesIt) {
     EXPECT_EQ(r.severity, Severity::Warning);
     EXPECT_NE(r.text.find("NOT pinned to CPU"), std::string::npos) << r.text;
     EXPECT_NE(r.text.find("normal scheduler"), std::string::npos) << r.text;
+}
+
+// Every step refused with the OS's reasons: a line longer than an event holds. Its pieces fit
+// an event each, are cut between items and give the whole line back.
+TEST(Realtime, ALongLineGoesOutInWholeItems) {
+    RealtimeSettings asked;
+    asked.priority = 80;
+    asked.lock_memory = true;
+    asked.cpu = 1;
+    asked.cpu_dma_latency = true;
+    RealtimeStatus refused;
+    refused.priority_error = EPERM;
+    refused.lock_error = EAGAIN;
+    refused.cpu_error = EINVAL;
+    refused.dma_latency_error = EACCES;
+    char line[640];
+    ASSERT_FALSE(describeRealtime(asked, refused, line, sizeof line));
+    const std::size_t eventChars = std::tuple_size_v<decltype(EngineEvent::text)> - 1;
+    std::string_view rest(line);
+    ASSERT_GT(rest.size(), eventChars) << line; // else this test tests nothing
+    std::string joined;
+    int pieces = 0;
+    while (!rest.empty()) {
+        const std::size_t n = realtimeLinePiece(rest, eventChars);
+        ASSERT_GT(n, 0u);
+        ASSERT_LE(n, eventChars);
+        const std::string_view piece = rest.substr(0, n);
+        EXPECT_NE(piece.back(), ';') << piece;
+        joined += (pieces++ ? "; " : "") + std::string(piece);
+        rest.remove_prefix(n);
+        if (!rest.empty()) {
+            ASSERT_EQ(rest.substr(0, 2), "; ") << rest; // cut between items only
+            rest.remove_prefix(2);
+        }
+    }
+    EXPECT_EQ(pieces, 2);
+    EXPECT_EQ(joined, line);
+    EXPECT_NE(joined.find("/dev/cpu_dma_latency NOT held"), std::string::npos) << joined;
 }
 
 TEST(Realtime, PinningToAnExistingCpuIsGranted) {

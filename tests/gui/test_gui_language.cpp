@@ -18,7 +18,10 @@
 #include "ui/panels/event_log_panel.h"
 #include "ui/window_host.h"
 
+#include <cerrno>
+
 #include "core/common/c_format.h"
+#include "core/engine/realtime_thread.h"
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
@@ -145,6 +148,8 @@ bool readsAsEnglish(const QString& text) {
         "System", "Experiment", "CutCell", "Pitch", "Status", "Name", "Info", "Heartbeat", "Alarm",
         "Pause", "json", "alpha", "beta", "Offset", "Amplitude", "kbit", "SYNC", "inverse", "RPDO",
         "TPDO", "eventfd", "EMCY",
+        // limits.conf's keyword (the real-time line's advice names it)
+        "rtprio",
         // CiA 301 NMT states, named so in German manuals too
         "Operational", "Boot"};
     // The machines' axis names are names ("chuck (theta0)", "groove θ2"), as in the papers.
@@ -360,6 +365,40 @@ class TestGuiLanguage : public QObject {
         // A text no template knows (a device's own message) is shown as it came.
         QCOMPARE(CutCell::ui::engineText("vendor code E-42 (see the drive's manual)"),
                  QStringLiteral("vendor code E-42 (see the drive's manual)"));
+    }
+
+    // The engine thread's real-time line (the first event of a paced run), as core writes it:
+    // its items joined by "; ", each translated.
+    void realtimeLineReadsInGerman() {
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        cutcell::RealtimeSettings asked;
+        asked.priority = 80;
+        asked.lock_memory = true;
+        asked.cpu = 1;
+        asked.cpu_dma_latency = true;
+        cutcell::RealtimeStatus granted;
+        granted.rt_priority_granted = true;
+        granted.priority = 80;
+        granted.memory_locked = true;
+        granted.cpu_pinned = true;
+        granted.dma_latency_held = true;
+        char line[640]; // as the engine's thread (it emits the line in 239-character events)
+        QVERIFY(cutcell::describeRealtime(asked, granted, line, sizeof line));
+        QCOMPARE(CutCell::ui::engineText(QString::fromUtf8(line)),
+                 QStringLiteral("Echtzeit: SCHED_FIFO 80 gewährt; Speicher gesperrt; an CPU 1 "
+                                "gebunden; /dev/cpu_dma_latency auf 0 µs gehalten"));
+        cutcell::RealtimeStatus refused;
+        refused.priority_error = EPERM;
+        refused.lock_error = EAGAIN;
+        refused.cpu_error = EINVAL;
+        refused.dma_latency_error = EACCES;
+        QVERIFY(!cutcell::describeRealtime(asked, refused, line, sizeof line));
+        const QString german = CutCell::ui::engineText(QString::fromUtf8(line));
+        for (const char* english : {"Real-time", "granted", "needs", "memory", "pinned", "held"})
+            QVERIFY2(!german.contains(QLatin1String(english)), qPrintable(german));
+        for (const char* word : {"SCHED_FIFO 80 nicht gewährt", "Speicher nicht gesperrt",
+                                 "nicht an CPU 1 gebunden", "/dev/cpu_dma_latency nicht gehalten"})
+            QVERIFY2(german.contains(QString::fromUtf8(word)), qPrintable(german));
     }
 
     // A cross-field check of the job's validation (no range: a sentence of core) in German,

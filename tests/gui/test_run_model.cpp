@@ -19,9 +19,11 @@
 #include "main_window_run.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
+#include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/panels/alarm_panel.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/engine_text.h"
 #include "ui/panels/progress_panel.h"
 #include "ui/panels/state_lamps.h"
 #include "ui/run_controller.h"
@@ -125,6 +127,48 @@ class TestRunModel : public QObject {
             // Usable only where the machine has an axis of that kind.
             QVERIFY2(field->isEnabled() == (f.linear ? linear : rotary), f.key);
         }
+    }
+
+    // The event log's "Job loaded" line counts what the machine's run counts (the saw's
+    // "10 points, 60000.0 mm" before): a torch path's points and millimetres, the saw's pieces,
+    // the crank's strokes.
+    void loadNoteCountsTheMachinesWork_data() { machineRows(); }
+    void loadNoteCountsTheMachinesWork() {
+        QFETCH(QString, id);
+        MainWindow w(&cutcell::app::makeRig);
+        newJobFor(w, id.toStdString());
+        auto loadLine = [&w] {
+            for (int r = w.eventLog()->rowCount() - 1; r >= 0; --r)
+                if (w.eventLog()->message(r).startsWith("Job loaded: "))
+                    return w.eventLog()->message(r);
+            return QString();
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(w.run()->program() && !loadLine().isEmpty(),
+                                  qPrintable(lastLog(w)), 60000);
+        const auto program = w.run()->program();
+        const QString line = loadLine();
+        qInfo("%s: %s", qPrintable(id), qPrintable(line));
+        const QString count = QString::number(program->point_count);
+        if (program->terms.counts == WorkCount::PathPoints) {
+            QVERIFY2(
+                line.contains(
+                    QString("(%1 points, %2 mm, ").arg(count).arg(program->length_mm, 0, 'f', 1)),
+                qPrintable(line));
+        } else {
+            const QString unit = program->terms.counts == WorkCount::Pieces ? "pieces" : "strokes";
+            QVERIFY2(line.contains(QString("(%1 %2").arg(count, unit)), qPrintable(line));
+            QVERIFY2(!line.contains("points"), qPrintable(line));
+        }
+        // Whole phrases, so German too: "Auftrag geladen: ... (10 Stück, 60.000,0 mm insgesamt".
+        QVERIFY(CutCell::ui::applyGuiLanguage("de"));
+        const QString german = CutCell::ui::engineText(line);
+        QVERIFY(CutCell::ui::applyGuiLanguage("en"));
+        const char* noun = program->terms.counts == WorkCount::PathPoints ? "Punkte"
+                           : program->terms.counts == WorkCount::Pieces   ? "Stück"
+                                                                          : "Hübe";
+        QVERIFY2(german.startsWith("Auftrag geladen: ") &&
+                     german.contains(QString("(%1 %2").arg(count, QString::fromUtf8(noun))),
+                 qPrintable(german));
     }
 
     // E-STOP in the middle of a run on the simulated cell (real time).
