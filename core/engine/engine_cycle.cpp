@@ -352,6 +352,7 @@ void MotionEngine::Impl::runSource() {
         sourceMade = srcOut.made;
         setpoint = srcOut.position;
         setpointVel = srcOut.velocity;
+        setpointAcc = JointVector::Zero(); // a source gives no acceleration
         sourceAtRest = srcOut.status == SourceStatus::AtRest || srcOut.status == SourceStatus::Done;
         // The source switches its tool; held at rest, torch_on_during_feed_hold keeps it on.
         const bool keepOn =
@@ -378,6 +379,7 @@ void MotionEngine::Impl::computeSetpoint() {
     const JointSample s = evaluate(tau);
     setpoint = s.q;
     setpointVel = s.qd * rate;
+    setpointAcc = s.qdd * (rate * rate); // rate's own change ignored (it ramps over seconds)
     runSource();
     setpointHistory[static_cast<size_t>(cycle % kSetpointHistory)] = setpoint;
 }
@@ -503,7 +505,8 @@ void MotionEngine::Impl::writeDevices() {
         AxisDrive* d = dev.axes[static_cast<size_t>(i)];
         switch (mode(i)) {
         case AxisCommandMode::Position:
-            d->write(setpoint[i] + setpointVel[i] * cfg.setpoint_lead_s);
+            d->write(setpoint[i] + (setpointVel[i] + 0.5 * setpointAcc[i] * cfg.setpoint_lead_s) *
+                                       cfg.setpoint_lead_s);
             break;
         case AxisCommandMode::Velocity:
             d->writeVelocity(moving || stopping != StopReason::None ? setpointVel[i] : 0.0);

@@ -140,6 +140,7 @@ struct MotionEngine::Impl {
     static constexpr int kSetpointHistory = 128;
     std::array<JointVector, kSetpointHistory> setpointHistory{};
     JointVector setpointVel = JointVector::Zero();
+    JointVector setpointAcc = JointVector::Zero(); // of the path or move; 0 from a source
     // run
     RunPhase phase = RunPhase::Approach;
     std::uint32_t runId = 0;
