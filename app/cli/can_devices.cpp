@@ -90,6 +90,25 @@ void CanEngineDevices::safeStop(const std::string& why) {
     safeStopCanCell(engine, master_.get(), why, "cutcell-cli", toolName_);
 }
 
+bool CanEngineDevices::awaitAnswers(std::uint64_t sentBefore, std::string* error) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+    for (;;) {
+        const std::uint64_t sent = master_->cyclesSent();
+        if (sent > sentBefore && master_->cyclesCompleted() >= sent) return true;
+        if (std::chrono::steady_clock::now() > deadline) break;
+        std::this_thread::sleep_for(std::chrono::microseconds(20));
+    }
+    const std::uint64_t sent = master_->cyclesSent();
+    *error =
+        sent > sentBefore
+            ? "no process data (TPDO) from every node within 500 ms of SYNC " + std::to_string(sent)
+            : std::string("no SYNC went out within 500 ms of the engine's cycle");
+    for (const CanNodeSnapshot& n : master_->snapshot().nodes)
+        if (!n.fault_text.empty())
+            *error += "; node " + std::to_string(n.node) + ": " + n.fault_text;
+    return false;
+}
+
 AxisDrive* CanEngineDevices::axis(int i) {
     return master_ && i < master_->driveCount() ? master_->drive(i) : nullptr;
 }

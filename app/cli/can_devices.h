@@ -43,6 +43,9 @@ class CanEngineDevices {
     // resolution (the engine's defaults suit exact simulated drives).
     void tune(EngineConfig& config, const Job& job) const; // see canopen/engine_tuning.h
     canopen::CanOpenMaster& master() { return *master_; }
+    // Lock-step: waits (500 ms at most) until the SYNC after `sentBefore` SYNCs went out and
+    // every node answered it. False with what is missing (the nodes and their faults).
+    bool awaitAnswers(std::uint64_t sentBefore, std::string* error);
     // The master's events (faults with node and decoded reason: "node 3: EMCY 0x2310
     // over-current", "node 2: heartbeat lost ...", "CAN bus: connection to the bus lost")
     // go into this engine's run log (events.log) as they happen, and errors to stderr. Null

@@ -3,7 +3,6 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
-#include "core/trajectory/cut_planner.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -111,6 +110,15 @@ int runSimulate(const SimulateOptions& o) {
             return kUsage;
         }
     }
+    const std::string& devices = o.devices.devices;
+    const bool overCan =
+        devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen);
+    if (std::string why; overCan && !module.supportsCanOpen(&why)) {
+        std::fprintf(stderr, "cutcell-cli simulate --devices canopen: %s\n", why.c_str());
+        return kInvalidJob;
+    }
+    // Over CAN a --period-ms is the engine's cycle: the plan is made for it.
+    if (overCan && o.devices.can.period_s > 0) job.sim.period_s = o.devices.can.period_s;
     const MachineModule* m = nullptr;
     MachinePlan plan;
     if (!planJob(job, {}, &m, &plan, &code)) return code;
@@ -118,17 +126,9 @@ int runSimulate(const SimulateOptions& o) {
         std::fprintf(stderr, "%s\n", plan.problem.c_str());
         return kUnreachable;
     }
-    const std::string& devices = o.devices.devices;
-    if (devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen)) {
-        std::string why;
-        if (!module.supportsCanOpen(&why)) {
-            std::fprintf(stderr, "cutcell-cli simulate --devices canopen: %s\n", why.c_str());
-            return kInvalidJob;
-        }
+    if (overCan) {
 #ifdef CUTCELL_HAVE_DEVICES
-        // The offline CAN cut follows the robot's CutPlan (the only CAN machine so far).
-        // TODO(modules): run it from plan.program like the engine path, for every machine.
-        return runSimulateCan(job, *static_cast<const CutPlan*>(plan.data.get()), o);
+        return runSimulateCan(job, module, plan, o);
 #else
         std::fprintf(stderr,
                      "cutcell-cli simulate: this build has no CAN devices (devices/ not built)\n");

@@ -7,7 +7,8 @@
 
 namespace cutcell {
 struct Job;
-struct CutPlan;
+struct MachinePlan;
+class MachineModule;
 } // namespace cutcell
 
 namespace cutcell::cli {
@@ -26,7 +27,9 @@ int runIk(const KinematicsOptions& o);     // kinematics_command.cpp
 int runImport(const ImportOptions& o);     // import_command.cpp
 int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const DriveSimOptions& o); // drivesim_command.cpp
-int runSimulateCan(const Job& job, const CutPlan& plan, const SimulateOptions& o); // can_run.cpp
+// simulate --devices canopen: the program through the engine on the machine's CAN cell.
+int runSimulateCan(const Job& job, const MachineModule& module, const MachinePlan& plan,
+                   const SimulateOptions& o); // can_run.cpp
 
 // Loads the job file; on failure prints the reason and sets *code (kInvalidJob: a bad job
 // file, kFailure: it cannot be read).

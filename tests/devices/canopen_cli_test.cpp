@@ -24,6 +24,7 @@
 #include <QtTest>
 
 #include <csignal>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <unistd.h>
@@ -541,11 +542,18 @@ class CanOpenCliTest : public QObject {
         QVERIFY(waitForExit(p, err, 60000));
         stop(sim);
         QCOMPARE(p.exitCode(), 1);
-        QVERIFY2(err.contains("node 3") && err.contains("over-current") &&
-                     err.contains("during the approach"),
+        // The master's EMCY line names the node and the reason, the engine's fault event the
+        // axis behind it (node 3 = axis 2) and the state the fault ended (the cut's approach
+        // runs in Running).
+        QVERIFY2(err.contains("node 3: EMCY 0x2310") && err.contains("over-current") &&
+                     err.contains("Running -> Fault") &&
+                     err.contains("axis 2 (theta2): drive fault 0x2310"),
                  err.constData());
-        // After node 3's EMCY the other axes get at most the set-points already on their way
-        // (one cycle's RPDO1 each), not seconds more of the approach.
+        // After node 3's EMCY every other axis is disabled (controlword 0 on its RPDO2) after
+        // at most the set-points already on their way (the RPDO1 of the cycle in progress and
+        // of the one that saw the fault), not seconds more of the approach. The RPDO1s after
+        // the disable are the master's until the process ends and carry the drive's own
+        // position (a disabled drive's target: no motion).
         size_t emcyAt = 0;
         for (size_t k = 0; k < bus.heard.size() && !emcyAt; ++k) {
             Emcy e;
@@ -553,15 +561,33 @@ class CanOpenCliTest : public QObject {
         }
         QVERIFY(emcyAt > 0);
         for (int n : {1, 2, 4, 5, 6}) {
-            const size_t after = bus.count(
-                [n](const BusListener::Heard& h) {
-                    Rpdo1 r;
-                    return cob::nodeOf(h.f.id) == n && decodeRpdo1(h.f, r);
-                },
-                emcyAt);
-            QVERIFY2(
-                after <= 2,
-                qPrintable(QString("node %1 got %2 set-points after the fault").arg(n).arg(after)));
+            size_t disableAt = 0, before = 0, after = 0;
+            long long actual = 0, farthest = 0; // counts: last TPDO1; |target - actual|
+            for (size_t k = 0; k < bus.heard.size(); ++k) {
+                const CanFrame& f = bus.heard[k].f;
+                if (cob::nodeOf(f.id) != n) continue;
+                std::uint16_t c = 0xFFFF;
+                Rpdo1 r;
+                Tpdo1 t;
+                if (decodeTpdo1(f, t)) actual = t.actual_counts;
+                if (k < emcyAt) continue;
+                if (!disableAt && decodeRpdo2(f, c) && c == 0) disableAt = k;
+                if (!decodeRpdo1(f, r)) continue;
+                ++(disableAt ? after : before);
+                if (disableAt) farthest = std::max(farthest, std::llabs(r.target_counts - actual));
+            }
+            QVERIFY2(disableAt > 0, qPrintable(QString("node %1 was not disabled").arg(n)));
+            qInfo("node %d: %zu set-points between the EMCY and its disable, %zu after, at most "
+                  "%lld counts from the drive's position",
+                  n, before, after, static_cast<long long>(farthest));
+            QVERIFY2(farthest <= 1, qPrintable(QString("node %1: a target %2 counts away after "
+                                                       "its disable")
+                                                   .arg(n)
+                                                   .arg(farthest)));
+            QVERIFY2(before <= 2, qPrintable(QString("node %1 got %2 set-points after the fault, "
+                                                     "before its disable")
+                                                 .arg(n)
+                                                 .arg(before)));
         }
     }
 
