@@ -353,8 +353,8 @@ struct TrackingPlotsWidget::Impl {
         const double centre = y.center();
         const double half =
             std::max(0.5 * y.size(), kMinHalfSpan * std::max(1.0, std::fabs(centre)));
-        const double shown = half * 1.12; // 6 % of the data's span as a margin on each side
-        p->yAxis->setRange(centre - shown, centre + shown);
+        const double halfShown = half * 1.12; // 6 % of the data's span as a margin on each side
+        p->yAxis->setRange(centre - halfShown, centre + halfShown);
     }
     void rescaleAll() {
         for (int i = 0; i < shown; ++i)

@@ -105,7 +105,7 @@ QString translated(const QString& english, int depth);
 // "node 1: ...; nodes 2, 3: ..."): each item translated. Otherwise the text as it came.
 QString listTranslated(const QString& english, int depth) {
     if (depth >= 4) return english;
-    for (const QString separator : {QStringLiteral("; "), QStringLiteral(", ")}) {
+    for (const QString& separator : {QStringLiteral("; "), QStringLiteral(", ")}) {
         if (!english.contains(separator)) continue;
         QStringList items = english.split(separator);
         bool any = false;
