@@ -481,7 +481,12 @@ class CanOpenCliTest : public QObject {
         QVERIFY2(err.contains("program ending (SIGINT)"), err.constData());
     }
 
-    void aSecondMasterRefusesTheBusNamingWhatItHeard() {
+  private:
+    // A cell under a running master; a second master (`run`) must refuse the bus and write
+    // nothing. firstEnded: the first master ended before the second had finished, so the
+    // scenario did not happen (its stderr says why: seen once in CI, where a loaded host held
+    // the bus's frames past the 100 ms the engine allows process data to be late).
+    void secondMasterAttempt(QString& firstEnded) {
         QProcess sim;
         QVERIFY(startDriveSim(sim));
         BusListener bus;
@@ -500,15 +505,38 @@ class CanOpenCliTest : public QObject {
         QCOMPARE(second.exitCode(), 1);
         QVERIFY2(err.contains("another CANopen master is active") && err.contains("SYNC (0x080)"),
                  err.constData());
+        if (first.state() != QProcess::Running) {
+            first.waitForFinished(1000);
+            firstEnded = QString("exit code %1; its stderr:\n%2")
+                             .arg(first.exitCode())
+                             .arg(QString::fromLocal8Bit(first.readAllStandardError().right(1500)));
+            stop(sim);
+            return;
+        }
         // It wrote nothing: the first master's cell is still enabled.
         QCOMPARE(bus.count([](const BusListener::Heard& h) { return h.f.id == cob::kNmt; }, from),
                  size_t(0));
-        QVERIFY(first.state() == QProcess::Running);
         QVERIFY(QTest::qWaitFor([&] { return bus.allEnabled(6); }, 1000));
+        QVERIFY2(first.state() == QProcess::Running,
+                 first.readAllStandardError().right(1500).constData());
         first.terminate();
         QByteArray ignored;
         waitForExit(first, ignored, 5000);
         stop(sim);
+    }
+
+  private slots:
+    void aSecondMasterRefusesTheBusNamingWhatItHeard() {
+        // A second attempt only when the first master ended on its own before the second was
+        // done (printed); every check holds on an attempt where the scenario happened.
+        for (int attempt = 1; attempt <= 2; ++attempt) {
+            QString firstEnded;
+            secondMasterAttempt(firstEnded);
+            if (QTest::currentTestFailed() || firstEnded.isEmpty()) return;
+            qWarning("attempt %d: the first master ended before the second was done: %s", attempt,
+                     qPrintable(firstEnded));
+        }
+        QFAIL("the first master ended on its own in both attempts (see the warnings)");
     }
 
     void anInterfaceThePluginDoesNotOfferIsRefusedListingItsOwn() {
