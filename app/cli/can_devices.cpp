@@ -62,6 +62,16 @@ bool CanEngineDevices::start(const Job& job, const CanRunOptions& o, const Motio
     if (!master_->start(error)) return false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (!master_->allOperational()) {
+        // A node that failed its bring-up (an SDO abort, the wrong device, no boot-up) ends it
+        // at once: waiting out the deadline would not change the answer.
+        std::string failed;
+        for (const CanNodeSnapshot& n : master_->snapshot().nodes)
+            if (!n.configured && !n.fault_text.empty())
+                failed += "; node " + std::to_string(n.node) + ": " + n.fault_text;
+        if (!failed.empty()) {
+            *error = "the CAN nodes' bring-up failed" + failed;
+            return false;
+        }
         if (std::chrono::steady_clock::now() > deadline) {
             *error = "not every CAN node became operational within 5 s";
             for (const CanNodeSnapshot& n : master_->snapshot().nodes)

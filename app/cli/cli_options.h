@@ -95,6 +95,7 @@ struct DriveSimOptions {
     std::optional<double> fault_after_s;     // times in s, [0, 1e6]
     std::optional<double> heartbeat_stop_after_s;
     std::optional<double> following_error_after_s;
+    std::optional<std::uint16_t> refuse_object; // SDO writes to it aborted
 };
 
 } // namespace cutcell::cli

@@ -39,6 +39,7 @@ int runDriveSim(const DriveSimOptions& o) {
     faults.heartbeat_stop_after_s =
         o.heartbeat_stop_after_s.value_or(faults.heartbeat_stop_after_s);
     faults.torque_loss_after_s = o.following_error_after_s.value_or(faults.torque_loss_after_s);
+    faults.refuse_sdo_index = o.refuse_object.value_or(0);
     const double duration = o.duration_s;
     if (o.fault_code) {
         faults.fault_code = *o.fault_code;

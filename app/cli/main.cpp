@@ -207,7 +207,8 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     addInteger(*drivesim, "--fault-node", d.fault_node, {1, 127, ""},
                "node that gets the faults (default: the first)")
         ->group(faults);
-    addEmcyCode(*drivesim, "--fault-code", d.fault_code, "raise this EMCY code (0x0001..0xFFFF)")
+    addHex16(*drivesim, "--fault-code", d.fault_code, "an EMCY code",
+             "raise this EMCY code (0x0001..0xFFFF)")
         ->group(faults);
     addNumber(*drivesim, "--fault-after", d.fault_after_s, {0, 1e6, "s"},
               "... this long after Operation Enabled")
@@ -217,6 +218,9 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
         ->group(faults);
     addNumber(*drivesim, "--following-error-after", d.following_error_after_s, {0, 1e6, "s"},
               "lose the motor torque this long after Operation Enabled")
+        ->group(faults);
+    addHex16(*drivesim, "--refuse-object", d.refuse_object, "an object index",
+             "abort every SDO write to this object (0x06090030), e.g. 0x1017")
         ->group(faults);
 #endif
     return commands;

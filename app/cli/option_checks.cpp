@@ -178,18 +178,18 @@ CLI::Option* addNodeList(CLI::App& cmd, const std::string& name, std::string& te
         ->type_name("LIST");
 }
 
-CLI::Option* addEmcyCode(CLI::App& cmd, const std::string& name,
-                         std::optional<std::uint16_t>& target, const std::string& help) {
+CLI::Option* addHex16(CLI::App& cmd, const std::string& name, std::optional<std::uint16_t>& target,
+                      const std::string& what, const std::string& help) {
     return cmd
         .add_option_function<std::string>(
             name,
-            [name, &target](const std::string& text) {
+            [name, what, &target](const std::string& text) {
                 // strtoul: integers have no locale-dependent notation.
                 char* end = nullptr;
                 const unsigned long c = std::strtoul(text.c_str(), &end, 0);
                 if (text.empty() || text[0] == '-' || *end != '\0' || c == 0 || c > 0xFFFF)
-                    throw CLI::ValidationError(name + " = " + quoted(text) +
-                                               " is not an EMCY code in 0x0001..0xFFFF");
+                    throw CLI::ValidationError(name + " = " + quoted(text) + " is not " + what +
+                                               " in 0x0001..0xFFFF");
                 target = static_cast<std::uint16_t>(c);
             },
             help)

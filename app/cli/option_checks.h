@@ -44,9 +44,10 @@ CLI::Option* addChoice(CLI::App& cmd, const std::string& name, std::string& targ
 // --nodes LIST: fills the list as given and expanded.
 CLI::Option* addNodeList(CLI::App& cmd, const std::string& name, std::string& text,
                          std::vector<int>& nodes, const std::string& help);
-// An EMCY error code 0x0001..0xFFFF (hex with 0x, or decimal).
-CLI::Option* addEmcyCode(CLI::App& cmd, const std::string& name,
-                         std::optional<std::uint16_t>& target, const std::string& help);
+// A 16-bit code or object index 0x0001..0xFFFF (hex with 0x, or decimal); `what` names it in
+// the refusal ("an EMCY code").
+CLI::Option* addHex16(CLI::App& cmd, const std::string& name, std::optional<std::uint16_t>& target,
+                      const std::string& what, const std::string& help);
 
 // "unknown option --reprot (did you mean --report?)" for the arguments `cmd` did not expect.
 std::string unexpectedArguments(const CLI::App& cmd, const std::vector<std::string>& extras);

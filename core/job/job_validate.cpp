@@ -14,7 +14,30 @@ namespace {
 // The bit rates of CiA 301 / CiA 102 (CAN FD aside).
 constexpr int kCanBitRates[] = {10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000};
 
-void checkCommon(IssueChecker& c, const Job& job, int axisCount, int sensorCount) {
+// A CiA 402 position (0x607A/0x6064) is a signed 32-bit count: an axis with a travel must not
+// leave it anywhere on its travel. Endless axes (a turning chuck) are checked against the
+// plan's own extent before a CAN run.
+constexpr double kInt32Counts = 2147483647.0;
+constexpr double kEndlessTravel = 1e8; // |limit| beyond this: the axis turns without end
+
+void checkCounts(IssueChecker& c, const Job& job, int i, const AxisInfo* axis) {
+    const std::string key = "devices.counts_per_unit[" + std::to_string(i) + "]";
+    const double cpu = job.devices.counts_per_unit[static_cast<size_t>(i)];
+    const char* unit = axis && axis->unit == AxisUnit::Linear ? "counts/mm" : "counts/deg";
+    const size_t before = c.issues.size();
+    c.positive(key, cpu, 1e-3, 1e9, unit);
+    if (!axis || c.issues.size() != before) return;
+    const double reach = std::max(std::fabs(axis->min), std::fabs(axis->max));
+    if (reach >= kEndlessTravel || reach * cpu <= kInt32Counts) return;
+    const char* u = unitSymbol(axis->unit);
+    c.add(key, messageC("%s = %.6g %s: axis %d (%s) travels to %.6g %s, %.4g counts, beyond a "
+                        "drive's 32-bit position (%.0f counts); at most %.6g %s",
+                        key.c_str(), cpu, unit, i, axis->name.c_str(), reach, u, reach * cpu,
+                        kInt32Counts, std::floor(kInt32Counts / reach * 1e3) / 1e3, unit));
+}
+
+void checkCommon(IssueChecker& c, const Job& job, const std::vector<AxisInfo>& axes, int axisCount,
+                 int sensorCount) {
     c.range("sim.period_s", job.sim.period_s, 1e-4, 0.02, "s");
     c.range("sim.duration_s", job.sim.duration_s, 0.1, 3600, "s");
     c.range("engine.feed_hold_decel_s", job.engine.feed_hold_decel_s, 0.01, 10, "s");
@@ -39,8 +62,8 @@ void checkCommon(IssueChecker& c, const Job& job, int axisCount, int sensorCount
             if (job.devices.node_ids[static_cast<size_t>(j)] == id)
                 c.add("devices.node_ids",
                       messageC("devices.node_ids[%d] = %d is used twice", i, id));
-        c.positive("devices.counts_per_unit[" + std::to_string(i) + "]",
-                   job.devices.counts_per_unit[static_cast<size_t>(i)], 1e-3, 1e9, "counts/deg");
+        checkCounts(c, job, i,
+                    i < static_cast<int>(axes.size()) ? &axes[static_cast<size_t>(i)] : nullptr);
     }
     for (int k = 0; k < sensorCount; ++k) {
         const int id = sensorNodeId(job.devices, axisCount, k);
@@ -70,10 +93,11 @@ std::vector<JobIssue> validateJob(const Job& job) {
     if (!module) {
         c.add("machine.kind", messageC("machine.kind = %s is not one of %s",
                                        json::quote(id).c_str(), machineIdList().c_str()));
-        checkCommon(c, job, kAxisCount, 0);
+        checkCommon(c, job, {}, kAxisCount, 0);
         return c.issues;
     }
-    checkCommon(c, job, static_cast<int>(module->axes(job).size()),
+    const std::vector<AxisInfo> axes = module->axes(job);
+    checkCommon(c, job, axes, static_cast<int>(axes.size()),
                 static_cast<int>(module->sensorNames().size()));
     // The machine's issues keep their key relative to the section (the forms' field ids);
     // the message names the key as it stands in the file.

@@ -184,6 +184,10 @@ void DriveNode::onNmt(NmtCommand c, double now_s, std::vector<CanFrame>& out) {
         boot(now_s, out);
         break;
     case NmtCommand::ResetCommunication:
+        // Leaves Operational too (through boot-up to pre-operational): no torque behind the
+        // master's back while nobody commands the drive.
+        if (state_ == Cia402State::OperationEnabled)
+            enterState(Cia402State::QuickStopActive, now_s);
         resetCommunication();
         boot(now_s, out);
         break;

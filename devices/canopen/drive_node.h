@@ -45,6 +45,8 @@ struct FaultInjection {
     double heartbeat_stop_after_s = -1; // stop producing heartbeats after this long Operational
     double torque_loss_after_s = -1;    // the motor loses its torque after this long in
                                         // Operation Enabled: the following error grows
+    std::uint16_t refuse_sdo_index = 0; // SDO writes to this object get abort 0x06090030
+                                        // (invalid value): a bring-up that cannot complete
 };
 
 struct DriveNodeConfig {

@@ -155,6 +155,8 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         return sizeCheck(size, bytes);
     };
     std::uint32_t abort = 0;
+    if (cfg_.faults.refuse_sdo_index != 0 && a.index == cfg_.faults.refuse_sdo_index)
+        return abort_code::kInvalidValue;
     switch (a.index) {
     case od::kDeviceType:
     case od::kErrorRegister:

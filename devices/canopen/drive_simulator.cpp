@@ -3,6 +3,7 @@
 
 #include "devices/canopen/can_interface.h"
 #include "devices/canopen/qt_can_frame.h"
+#include "devices/canopen/virtualcan_host.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -145,6 +146,8 @@ void DriveSimulator::openOnThread() {
         changed_.notify_all();
         return;
     }
+    // The first on a virtualcan bus hosts it: through CutCell's checking relay, not the plugin's.
+    hostVirtualCanBus(config_.plugin, config_.interface);
     QString err;
     device_ = QCanBus::instance()->createDevice(config_.plugin, config_.interface, &err);
     auto fail = [this](const QString& text) {

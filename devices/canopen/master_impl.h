@@ -37,6 +37,7 @@ struct NodeRuntime { // [master]
     int reset_phase = 0; // 1: send bit 7 low, 2: send bit 7 high (the rising edge)
     std::int32_t previous_actual = 0;
     bool was_enabled = false;
+    bool emcy_fault = false;      // master_fault holds an EMCY's error code
     std::uint64_t tpdo_cycle = 0; // last cycle a TPDO was counted for
     // Drives: the engine's write_seq of each SYNC sent and not answered yet, oldest first. A
     // node answers every SYNC once, in order (TPDO1 synchronous type 1), so its next TPDO
@@ -62,7 +63,7 @@ struct NodeRuntime { // [master]
         --unansweredCount;
         return seq;
     }
-    std::int64_t awaiting_since_ns = 0; // encoders: the oldest SYNC not answered yet (0: none)
+    std::int64_t awaiting_since_ns = 0; // the oldest SYNC not answered yet (0: none)
 };
 
 struct CanOpenMaster::Impl {
@@ -98,7 +99,6 @@ struct CanOpenMaster::Impl {
     std::string heardNmtText;
     bool busTaken = false;                        // [master] listening found the bus free
     std::int64_t nextMasterHeartbeatNs = 0;       // [master]
-    bool otherMasterReported = false;             // [master]
     std::function<void(const MasterEvent&)> sink; // set before start()
 
     std::atomic<std::uint64_t> cycles{0};
@@ -143,6 +143,7 @@ struct CanOpenMaster::Impl {
     void onSdoReply(size_t i, const CanFrame& f, std::int64_t now);
     void onBusDown(BusState s, std::uint32_t code, const std::string& why);
     void listenFor(const CanFrame& f);
+    void onSecondMaster(const std::string& heard);
     void endListening(std::int64_t now);
     void produceHeartbeat(std::int64_t now);
     void writeDisableAll();

@@ -38,7 +38,8 @@ std::uint64_t drain(int fd) {
 } // namespace
 
 bool CanOpenMaster::Impl::send(const CanFrame& f) {
-    if (!device || device->state() != QCanBusDevice::ConnectedState) return false;
+    // Nothing goes out while listening, after a refusal or after giving the bus up.
+    if (!busTaken || !device || device->state() != QCanBusDevice::ConnectedState) return false;
     if (!device->writeFrame(toQt(f))) return false;
     framesTx.fetch_add(1, std::memory_order_relaxed);
     return true;
@@ -191,16 +192,33 @@ void CanOpenMaster::Impl::listenFor(const CanFrame& f) {
     } else {
         return;
     }
-    if (busTaken && !otherMasterReported) {
-        otherMasterReported = true;
-        const std::string heard = f.id == cob::kSync ? messageC("a SYNC")
-                                  : heardNmt         ? heardNmtText
-                                                     : messageC("its heartbeat");
-        event(0, true,
-              messageC("another CANopen master is on the bus (heard %s): two masters reset and "
-                       "command the same drives",
-                       heard.c_str()));
+    if (busTaken) {
+        const std::string heard =
+            f.id == cob::kSync ? messageC("a SYNC (0x080)")
+            : f.id == cob::kNmt
+                ? messageC("%s (0x000)",
+                           target ? messageC("NMT %s to node %d", toString(c), target).c_str()
+                                  : messageC("NMT %s to all nodes", toString(c)).c_str())
+                : messageC("a heartbeat of the master's node %d (0x%03X)", cfg.master_node_id,
+                           0x700u + cfg.master_node_id);
+        onSecondMaster(heard);
     }
+}
+
+// A frame only a master sends, heard after this master took the bus: a second master (a CAN
+// frame names no sender, and neither virtualcan nor socketcan gives a device its own frames
+// back). Both masters hear each other within a cycle, so both stop: their drives disabled and
+// pre-operational, every node in Fault, and this master sends nothing more until the bus is
+// recovered (which listens again and refuses while the other is there).
+void CanOpenMaster::Impl::onSecondMaster(const std::string& heard) {
+    if (!busTaken) return;
+    writeDisableAll();
+    busTaken = false;
+    onBusDown(BusState::Disconnected, master_fault::kOtherMaster,
+              messageC("another CANopen master is on the bus (heard %s, not sent by this "
+                       "master): every drive disabled and pre-operational, this master gave "
+                       "up the bus",
+                       heard.c_str()));
 }
 
 void CanOpenMaster::Impl::endListening(std::int64_t now) {
@@ -237,7 +255,6 @@ void CanOpenMaster::Impl::endListening(std::int64_t now) {
         return;
     }
     busTaken = true;
-    otherMasterReported = false;
     nextMasterHeartbeatNs = now;
     {
         std::lock_guard lock(mutex);
@@ -392,6 +409,12 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
     if (i == cfg.nodes.size()) return; // not one of ours (or a frame of the master's kind)
     NodeShared& s = shared[i];
     NodeRuntime& r = rt[i];
+    const std::uint32_t function = cob::functionOf(f.id);
+    if (!cfg.nodes[i].encoder && (function == cob::kRpdo1 || function == cob::kRpdo2)) {
+        onSecondMaster(messageC("a %s to node %d (0x%03X)",
+                                function == cob::kRpdo1 ? "RPDO1" : "RPDO2", node, f.id));
+        return;
+    }
     std::int32_t encoderCounts = 0;
     if (cfg.nodes[i].encoder && decodeEncoderTpdo(f, encoderCounts)) {
         r.awaiting_since_ns = 0;
@@ -420,6 +443,8 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         s.tpdo_ns.store(now, std::memory_order_release);
         s.statusword.store(t.statusword, std::memory_order_release);
         s.tpdo_count.fetch_add(1, std::memory_order_relaxed);
+        // SYNCs still unanswered were sent before now: counting from here is on the safe side.
+        r.awaiting_since_ns = r.unansweredCount > 0 ? now : 0;
         noteCycleAnswer(i);
         return;
     }
@@ -457,6 +482,12 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
             } else if (r.phase == StartupPhase::Running) {
                 s.configured = false;
                 r.phase = StartupPhase::Failed;
+                // A real reboot leaves the drive without torque; a node that only says so (or
+                // was reset by someone else) might still listen: disable it too.
+                if (!cfg.nodes[i].encoder) {
+                    send(encodeRpdo2(node, cw::kDisableVoltage));
+                    flushDevice(device);
+                }
                 setFault(i, master_fault::kRebooted,
                          messageC("node rebooted while running (unexpected boot-up)"));
             }
@@ -494,6 +525,16 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
             emcyText[i] = e.error_code ? text : std::string();
         }
         event(node, e.error_code != 0, text);
+        // An error from a node in use faults the cell: the engine sees the drive in Fault and
+        // stops everything; this drive loses its torque now. EMCY 0x0000 (error reset) is news.
+        if (e.error_code != 0 && r.phase == StartupPhase::Running && s.master_fault.load() == 0) {
+            r.emcy_fault = true;
+            if (!cfg.nodes[i].encoder) {
+                send(encodeRpdo2(node, cw::kDisableVoltage));
+                flushDevice(device);
+            }
+            setFault(i, e.error_code, text);
+        }
         return;
     }
     if (cob::functionOf(f.id) == cob::kSdoTx) onSdoReply(i, f, now);
@@ -544,8 +585,11 @@ void CanOpenMaster::Impl::onWake() {
         const std::uint32_t fault = s.master_fault.load(std::memory_order_acquire);
         if (resets != rt[i].seen_resets && fault != 0) {
             const bool heartbeatFresh = now - s.heartbeat_ns.load() < heartbeatTimeoutNs;
-            if (fault == master_fault::kHeartbeatLost && heartbeatFresh &&
+            // An EMCY's fault: the drive's own reset (the controlword's rising edge) follows.
+            const bool emcyOnly = rt[i].emcy_fault && heartbeatFresh;
+            if (((fault == master_fault::kHeartbeatLost && heartbeatFresh) || emcyOnly) &&
                 rt[i].phase == StartupPhase::Running) {
+                rt[i].emcy_fault = false;
                 s.master_fault.store(0, std::memory_order_release);
                 std::lock_guard lock(mutex);
                 faultText[i].clear();
@@ -605,6 +649,11 @@ std::uint64_t CanOpenMaster::Impl::cycleTarget(size_t i) {
 
 void CanOpenMaster::Impl::runCycle(std::int64_t now) {
     if (!device || device->state() != QCanBusDevice::ConnectedState) return;
+    if (!busTaken) { // gave the bus up: nothing to send, nobody to wait for
+        completed.store(cycles.fetch_add(1, std::memory_order_acq_rel) + 1,
+                        std::memory_order_release);
+        return;
+    }
     for (size_t i = 0; i < shared.size(); ++i) {
         if (rt[i].phase != StartupPhase::Running) continue;
         if (cfg.nodes[i].encoder) {
@@ -613,6 +662,7 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
             continue;
         }
         NodeShared& s = shared[i];
+        if (rt[i].awaiting_since_ns == 0) rt[i].awaiting_since_ns = now;
         const std::uint16_t c = controlwordFor(i);
         const std::uint64_t tagged = cycleTarget(i);
         const bool enabled = decodeStatusword(s.statusword.load()) == Cia402State::OperationEnabled;
@@ -702,13 +752,27 @@ void CanOpenMaster::Impl::onHousekeeping() {
                 // The node may still listen: take its torque away at once.
                 if (!cfg.nodes[i].encoder) send(encodeRpdo2(node, cw::kDisableVoltage));
             }
+            // A node that stopped answering SYNCs (its process died, its cable came off) is
+            // named with its heartbeat's age: lost altogether, or only its process data.
             const std::int64_t waited = r.awaiting_since_ns ? now - r.awaiting_since_ns : 0;
-            if (cfg.nodes[i].encoder && waited > pdoTimeoutNs && s.master_fault.load() == 0)
+            if (waited > pdoTimeoutNs && s.master_fault.load() == 0) {
+                const long long heartbeatAgeMs = static_cast<long long>(age / 1'000'000);
                 setFault(i, master_fault::kNoProcessData,
-                         messageC("no position value (TPDO) for %lld ms after a SYNC (> %lld "
-                                  "ms): the encoder's reading is lost",
-                                  static_cast<long long>(waited / 1'000'000),
-                                  static_cast<long long>(pdoTimeoutNs / 1'000'000)));
+                         cfg.nodes[i].encoder
+                             ? messageC("no position value (TPDO) for %lld ms after a SYNC (> "
+                                        "%lld ms): the encoder's reading is lost; last heartbeat "
+                                        "%lld ms ago",
+                                        static_cast<long long>(waited / 1'000'000),
+                                        static_cast<long long>(pdoTimeoutNs / 1'000'000),
+                                        heartbeatAgeMs)
+                             : messageC("no process data (TPDO) for %lld ms after a SYNC (> %lld "
+                                        "ms): the drive's feedback is lost; last heartbeat %lld "
+                                        "ms ago",
+                                        static_cast<long long>(waited / 1'000'000),
+                                        static_cast<long long>(pdoTimeoutNs / 1'000'000),
+                                        heartbeatAgeMs));
+                if (!cfg.nodes[i].encoder) send(encodeRpdo2(node, cw::kDisableVoltage));
+            }
             break;
         }
         default:

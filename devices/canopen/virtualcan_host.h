@@ -9,8 +9,13 @@
 // to host from a thread that lives as long as the process; call it before connecting a device on
 // a thread that may end. A no-op for other plugins and for a bus on another host.
 //
+// The bus is hosted by CutCell's own relay (same protocol and port as the plugin's server, which
+// then finds the port taken and stays idle): it relays only well-formed lines
+// (virtualcan_wire.h) and drops and logs the rest under cutcell.canopen.relay - one malformed
+// line relayed by Qt's server crashes every Qt client on the bus.
+//
 // Threading contract: any thread; blocks the caller for the moment the host thread needs to try
-// (listen on a local port, open and drop one socket) - never for the bus.
+// (listen on a local port) - never for the bus.
 #include <QString>
 
 namespace cutcell::canopen {

@@ -200,6 +200,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g %s is outside [%.6g, %.6g] %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "cat0"),
     QT_TRANSLATE_NOOP("CoreMessage", "cat1"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g %s: axis %d (%s) travels to %.6g %s, %.4g counts, beyond a drive's 32-bit position (%.0f counts); at most %.6g %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.bitrate_bps = %d bit/s is not a CAN bit rate: one of 10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.node_ids[%d] = %d is outside [1, 127]"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.node_ids[%d] = %d is used twice"),
@@ -415,9 +416,10 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%s: every drive is in Fault; recover the bus, then reset the faults"),
     QT_TRANSLATE_NOOP("CoreMessage", "NMT %s to node %d"),
     QT_TRANSLATE_NOOP("CoreMessage", "NMT %s to all nodes"),
-    QT_TRANSLATE_NOOP("CoreMessage", "a SYNC"),
-    QT_TRANSLATE_NOOP("CoreMessage", "its heartbeat"),
-    QT_TRANSLATE_NOOP("CoreMessage", "another CANopen master is on the bus (heard %s): two masters reset and command the same drives"),
+    QT_TRANSLATE_NOOP("CoreMessage", "a SYNC (0x080)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s (0x000)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "a heartbeat of the master's node %d (0x%03X)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "another CANopen master is on the bus (heard %s, not sent by this master): every drive disabled and pre-operational, this master gave up the bus"),
     QT_TRANSLATE_NOOP("CoreMessage", "%d SYNC (0x080)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%d NMT commands (0x000, %s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%d NMT command (0x000, %s)"),
@@ -432,6 +434,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "device type %s is not a CiA 402 drive (profile %u)"),
     QT_TRANSLATE_NOOP("CoreMessage", "motor rated torque 0x6076 = 0: no scale for the target torque (CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "bus off (%s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "a %s to node %d (0x%03X)"),
     QT_TRANSLATE_NOOP("CoreMessage", "node rebooted while running (unexpected boot-up)"),
     QT_TRANSLATE_NOOP("CoreMessage", "configured (CiA 406 encoder, TPDO1 position value, heartbeat %d ms) and operational"),
     QT_TRANSLATE_NOOP("CoreMessage", "configured (CST, RPDO1/RPDO2/TPDO1, heartbeat %d ms) and operational"),
@@ -442,7 +445,8 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "SDO %s:%s unanswered after %d tries of %d ms: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "no Operational heartbeat after NMT start"),
     QT_TRANSLATE_NOOP("CoreMessage", "heartbeat lost (none for %lld ms > %lld ms)"),
-    QT_TRANSLATE_NOOP("CoreMessage", "no position value (TPDO) for %lld ms after a SYNC (> %lld ms): the encoder's reading is lost"),
+    QT_TRANSLATE_NOOP("CoreMessage", "no position value (TPDO) for %lld ms after a SYNC (> %lld ms): the encoder's reading is lost; last heartbeat %lld ms ago"),
+    QT_TRANSLATE_NOOP("CoreMessage", "no process data (TPDO) for %lld ms after a SYNC (> %lld ms): the drive's feedback is lost; last heartbeat %lld ms ago"),
     QT_TRANSLATE_NOOP("CoreMessage", "bus state: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "start"),
     QT_TRANSLATE_NOOP("CoreMessage", "stop"),
@@ -507,6 +511,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 497;
+const int kCoreMessageCount = 501;
 
 } // namespace CutCell::ui

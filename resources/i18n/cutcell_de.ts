@@ -960,6 +960,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>%s = %.6g %s: axis %d (%s) travels to %.6g %s, %.4g counts, beyond a drive&apos;s 32-bit position (%.0f counts); at most %.6g %s</source>
+        <translation>%s = %.6g %s: Achse %d (%s) fährt bis %.6g %s, %.4g Inkremente, jenseits der 32-Bit-Position eines Antriebs (%.0f Inkremente); höchstens %.6g %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>devices.bitrate_bps = %d bit/s is not a CAN bit rate: one of 10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s</source>
         <translation>devices.bitrate_bps = %d bit/s ist keine CAN-Bitrate: eine von 10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000 bit/s</translation>
     </message>
@@ -1670,21 +1675,36 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>a SYNC</source>
-        <translation>ein SYNC</translation>
+        <source>a SYNC (0x080)</source>
+        <translation>ein SYNC (0x080)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>its heartbeat</source>
-        <translation>sein Heartbeat</translation>
+        <source>%s (0x000)</source>
+        <translation>%s (0x000)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>another CANopen master is on the bus (heard %s): two masters reset and command the same drives</source>
-        <translation>ein anderer CANopen-Master ist am Bus (gehört: %s): zwei Master setzen dieselben Antriebe zurück und steuern sie</translation>
+        <source>a heartbeat of the master&apos;s node %d (0x%03X)</source>
+        <translation>ein Heartbeat des Master-Knotens %d (0x%03X)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>another CANopen master is on the bus (heard %s, not sent by this master): every drive disabled and pre-operational, this master gave up the bus</source>
+        <translation>ein anderer CANopen-Master ist auf dem Bus (%s gehört, nicht von diesem Master gesendet): jeder Antrieb abgeschaltet und pre-operational, dieser Master hat den Bus aufgegeben</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>no position value (TPDO) for %lld ms after a SYNC (&gt; %lld ms): the encoder&apos;s reading is lost; last heartbeat %lld ms ago</source>
+        <translation>kein Positionswert (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): der Messwert des Gebers ist verloren; letzter Heartbeat vor %lld ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no process data (TPDO) for %lld ms after a SYNC (&gt; %lld ms): the drive&apos;s feedback is lost; last heartbeat %lld ms ago</source>
+        <translation>keine Prozessdaten (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): die Rückmeldung des Antriebs ist verloren; letzter Heartbeat vor %lld ms</translation>
+    </message>
+    <message>
+        <location line="-26"/>
         <source>%d SYNC (0x080)</source>
         <translation>%d SYNC (0x080)</translation>
     </message>
@@ -1755,6 +1775,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>a %s to node %d (0x%03X)</source>
+        <translation>ein %s an Knoten %d (0x%03X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>node rebooted while running (unexpected boot-up)</source>
         <translation>Knoten im Betrieb neu gestartet (unerwartetes Boot-up)</translation>
     </message>
@@ -1804,12 +1829,7 @@
         <translation>Heartbeat verloren (keiner seit %lld ms &gt; %lld ms)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>no position value (TPDO) for %lld ms after a SYNC (&gt; %lld ms): the encoder&apos;s reading is lost</source>
-        <translation>kein Positionswert (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): der Messwert des Gebers fehlt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>bus state: %s</source>
         <translation>Buszustand: %s</translation>
     </message>
@@ -2124,7 +2144,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-271"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>

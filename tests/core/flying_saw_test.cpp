@@ -471,5 +471,20 @@ TEST(SawModule, PlanRefusesWithTheFiguresAndExportsTheCamTable) {
         << plan.problem;
 }
 
+// A linear axis's counts are per mm, and so is the message (it said counts/deg).
+TEST(SawModule, CountsPerUnitOfALinearAxisArePerMillimetre) {
+    Job job = sawModule().defaultJob();
+    job.devices.counts_per_unit[0] = 1e9; // the carriage: its stroke at 1e9 counts/mm
+    bool named = false;
+    for (const JobIssue& i : validateJob(job))
+        if (i.key == "devices.counts_per_unit[0]") {
+            named = true;
+            EXPECT_NE(i.message.find("counts/mm"), std::string::npos) << i.message;
+            EXPECT_EQ(i.message.find("counts/deg"), std::string::npos) << i.message;
+            EXPECT_NE(i.message.find(" mm,"), std::string::npos) << i.message;
+        }
+    EXPECT_TRUE(named);
+}
+
 } // namespace
 } // namespace cutcell::test

@@ -177,3 +177,30 @@ TEST(Job, StructuralErrorsAreNamed) {
         EXPECT_NE(std::string(e.what()).find("line 1"), std::string::npos);
     }
 }
+
+// Issue 27 (6): counts_per_unit = 3e7 was valid and θ3's counts overflowed int32 (an error of
+// 143.9° over CAN, exit 0). An axis with a travel keeps every position of it inside a drive's
+// 32-bit position; the bound follows from the travel and the refusal gives it.
+TEST(Job, CountsPerUnitKeepTheWholeTravelInsideA32BitPosition) {
+    Job job = defaultJob();
+    const DhRow& r = job.dh[3];
+    const double reach = std::max(std::fabs(r.min_deg), std::fabs(r.max_deg));
+    const double bound = 2147483647.0 / reach;
+    const auto issueOf = [](const Job& j) {
+        for (const JobIssue& i : validateJob(j))
+            if (i.key == "devices.counts_per_unit[3]") return i.message;
+        return std::string();
+    };
+    job.devices.counts_per_unit[3] = bound * 0.999;
+    EXPECT_EQ(issueOf(job), "");
+    job.devices.counts_per_unit[3] = bound * 1.001;
+    const std::string m = issueOf(job);
+    EXPECT_NE(m.find("counts/deg"), std::string::npos) << m;
+    EXPECT_NE(m.find("32-bit position (2147483647 counts)"), std::string::npos) << m;
+    EXPECT_NE(m.find("theta3"), std::string::npos) << m;
+    // The bound it names is the one that holds.
+    const size_t at = m.find("at most ");
+    ASSERT_NE(at, std::string::npos) << m;
+    job.devices.counts_per_unit[3] = std::stod(m.substr(at + 8));
+    EXPECT_EQ(issueOf(job), "") << "the bound named: " << m.substr(at);
+}

@@ -3,6 +3,7 @@
 // frames only between QTRY_* sleeps, and not at all while a master's start() blocks it. The
 // listener (on this thread) and the simulator (on its own) are clients: real peers, not mocks.
 #include "core/job/default_job.h"
+#include "devices/canopen/can_interface.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/emcy.h"
@@ -13,12 +14,16 @@
 
 #include <QCanBus>
 #include <QCanBusDevice>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QTcpSocket>
 #include <QtTest>
 
 #include <cmath>
+#include <latch>
 #include <memory>
+#include <thread>
 
 using namespace cutcell;
 using namespace cutcell::canopen;
@@ -68,6 +73,33 @@ class CanOpenBusTest : public QObject {
         for (int i = 0; i < m.driveCount(); ++i)
             m.drive(i)->activate();
         QTRY_VERIFY_WITH_TIMEOUT(allInState(m, DriveState::Enabled), 3000);
+    }
+
+    // A frame from the test's own client: to the master and the drives it is someone else.
+    void sendFromOutside(const CanFrame& f) {
+        QVERIFY(listener_->writeFrame(toQt(f)));
+        flushDevice(listener_.get());
+    }
+    // Milliseconds from `since` until no simulated drive (or only node index `only`) is in
+    // Operation Enabled (-1: not within the timeout). Polls the simulator's own state, not the
+    // master's view of it.
+    static double msUntilNoDriveEnabled(DriveSimulator& sim, const QElapsedTimer& since,
+                                        int timeout_ms, int only = -1) {
+        while (since.elapsed() < timeout_ms) {
+            bool any = false;
+            const std::vector<SimNodeSnapshot> nodes = sim.snapshot();
+            for (size_t k = 0; k < nodes.size(); ++k)
+                if (only < 0 || static_cast<int>(k) == only)
+                    any = any || nodes[k].state == Cia402State::OperationEnabled;
+            if (!any) return static_cast<double>(since.nsecsElapsed()) * 1e-6;
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        }
+        return -1;
+    }
+    static bool loggedError(CanOpenMaster& m, int node, const std::string& what) {
+        for (const MasterEvent& e : m.drainEvents())
+            if (e.node == node && e.error && e.text.find(what) != std::string::npos) return true;
+        return false;
     }
 
   private slots:
@@ -300,6 +332,203 @@ class CanOpenBusTest : public QObject {
             },
             3000));
         QVERIFY(held);
+    }
+
+    // Issue 27 (4): an EMCY with an error code from a drive that stays enabled (it only
+    // reports) faults its node at once: the master takes its torque away and the engine, seeing
+    // a drive in Fault, stops the cell. After a fault reset it runs again.
+    void emcyWithAnErrorCodeFromAnEnabledDriveFaultsItsNode() {
+        auto sim = simulator({1, 2, 3});
+        auto m = master(3);
+        enableAll(*m);
+        m->drainEvents();
+        QElapsedTimer t;
+        t.start();
+        sendFromOutside(encodeEmcy(3, 0x2310, errorRegisterFor(0x2310)));
+        const double off = msUntilNoDriveEnabled(*sim, t, 1000, 2);
+        qInfo("EMCY 0x2310: node 3 out of Operation Enabled after %.1f ms", off);
+        QVERIFY2(off >= 0 && off <= 20, qPrintable(QString::number(off)));
+        QTRY_VERIFY_WITH_TIMEOUT(m->drive(2)->read(0).state == DriveState::Fault, 1000);
+        QCOMPARE(m->drive(2)->read(0).fault_code, 0x2310u);
+        QVERIFY(m->drive(0)->read(0).state == DriveState::Enabled); // the engine stops those
+        const std::string text = m->snapshot().nodes[2].fault_text;
+        QVERIFY2(text.find("0x2310") != std::string::npos, text.c_str());
+        QVERIFY2(text.find(emcyText(0x2310)) != std::string::npos, text.c_str());
+        QVERIFY(loggedError(*m, 3, "0x2310"));
+        m->drive(2)->faultReset();
+        QTRY_VERIFY_WITH_TIMEOUT(m->drive(2)->read(0).state == DriveState::Disabled, 2000);
+        m->drive(2)->activate();
+        QTRY_VERIFY_WITH_TIMEOUT(allInState(*m, DriveState::Enabled), 2000);
+        // EMCY 0x0000 (error reset) is news, not a fault.
+        sendFromOutside(encodeEmcy(3, 0x0000, 0));
+        QTest::qWait(100);
+        QVERIFY(allInState(*m, DriveState::Enabled));
+    }
+
+    // Issue 27 (3, 1): an NMT reset communication the master did not send (a second master, a
+    // tool) is a second master: every drive disabled and pre-operational within 20 ms, every
+    // node in Fault naming what was heard, and this master sends nothing more.
+    void anNmtResetTheMasterDidNotSendStopsEveryDrive() {
+        auto sim = simulator({1, 2, 3});
+        auto m = master(3);
+        enableAll(*m);
+        QElapsedTimer t;
+        t.start();
+        sendFromOutside(encodeNmt(NmtCommand::ResetCommunication, 2));
+        const double ms = msUntilNoDriveEnabled(*sim, t, 1000);
+        qInfo("NMT reset communication to node 2 from outside: no drive enabled after %.1f ms", ms);
+        QVERIFY2(ms >= 0 && ms <= 20, qPrintable(QString::number(ms)));
+        QTRY_VERIFY_WITH_TIMEOUT(allInState(*m, DriveState::Fault), 1000);
+        for (const CanNodeSnapshot& n : m->snapshot().nodes) {
+            QCOMPARE(n.fault_code, master_fault::kOtherMaster);
+            QVERIFY2(n.fault_text.find("another CANopen master") != std::string::npos &&
+                         n.fault_text.find("NMT reset communication to node 2") !=
+                             std::string::npos,
+                     n.fault_text.c_str());
+        }
+        // Frames written before it gave the bus up may still be on their way to the listener.
+        QTest::qWait(50);
+        const qsizetype from = heard_.size();
+        QTest::qWait(150);
+        for (qsizetype k = from; k < heard_.size(); ++k) {
+            const quint32 id = heard_[k].frameId();
+            QVERIFY2(id != cob::kSync && (id & 0x780) != cob::kRpdo1 &&
+                         (id & 0x780) != cob::kRpdo2 && id != cob::kNmt,
+                     qPrintable(QString("0x%1 after giving up the bus").arg(id, 0, 16)));
+        }
+        for (const SimNodeSnapshot& n : sim->snapshot())
+            QVERIFY(n.nmt != NmtState::Operational);
+    }
+
+    // Issue 27 (3): a boot-up from a node in use (power cycled, reset by someone) is that node's
+    // fault, and the node gets its torque taken away should it still listen.
+    void aBootUpFromANodeInUseFaultsIt() {
+        auto sim = simulator({1, 2});
+        auto m = master(2);
+        enableAll(*m);
+        QElapsedTimer t;
+        t.start();
+        sendFromOutside(encodeHeartbeat(2, NmtState::BootUp)); // the drive itself runs on
+        const double off = msUntilNoDriveEnabled(*sim, t, 1000, 1);
+        QVERIFY2(off >= 0 && off <= 20, qPrintable(QString::number(off)));
+        QTRY_VERIFY_WITH_TIMEOUT(m->drive(1)->read(0).state == DriveState::Fault, 1000);
+        QCOMPARE(m->drive(1)->read(0).fault_code, master_fault::kRebooted);
+        QVERIFY2(m->snapshot().nodes[1].fault_text.find("boot-up") != std::string::npos,
+                 m->snapshot().nodes[1].fault_text.c_str());
+    }
+
+    // Issue 27 (1): two masters started 1 ms apart. Each listens 250 ms; if both hear nothing
+    // both take the bus, and then each hears the other's frames and gives it up. Never do two
+    // masters own the bus with their nodes running unfaulted.
+    void twoMastersStartedTogetherNeverBothOwnTheBus() {
+        const int tries = qEnvironmentVariableIntValue("CUTCELL_MASTER_RACE_TRIES") > 0
+                              ? qEnvironmentVariableIntValue("CUTCELL_MASTER_RACE_TRIES")
+                              : 100;
+        auto sim = simulator({1, 2});
+        int refused = 0, bothGaveUp = 0, doubleOwners = 0, oneOwner = 0;
+        for (int k = 0; k < tries; ++k) {
+            CanOpenMaster a(masterConfigFromJob(job_, 0.004, 2));
+            CanOpenMaster b(masterConfigFromJob(job_, 0.004, 2));
+            bool okA = false, okB = false;
+            std::string errA, errB;
+            std::latch go(2);
+            std::thread ta([&] {
+                go.arrive_and_wait();
+                okA = a.start(&errA);
+            });
+            std::thread tb([&] {
+                go.arrive_and_wait();
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                okB = b.start(&errB);
+            });
+            ta.join();
+            tb.join();
+            // Long enough for a bring-up (reset, SDO, start: ~50 ms here) and for each to
+            // hear the other's heartbeat (100 ms period).
+            QTest::qWait(400);
+            const auto owns = [](bool started, CanOpenMaster& m) {
+                if (!started) return false;
+                for (const CanNodeSnapshot& n : m.snapshot().nodes)
+                    if (n.fault_code == master_fault::kOtherMaster) return false;
+                return true;
+            };
+            const bool ownsA = owns(okA, a), ownsB = owns(okB, b);
+            if (ownsA && ownsB) {
+                ++doubleOwners;
+                qWarning("try %d: both masters own the bus", k);
+            } else if (!okA || !okB) {
+                ++refused;
+            } else if (!ownsA && !ownsB) {
+                ++bothGaveUp;
+            } else {
+                ++oneOwner; // the other gave up, this one not (yet): still one owner
+            }
+            a.stop();
+            b.stop();
+        }
+        qInfo("%d tries of two masters 1 ms apart: %d refused in listening, %d both gave up, %d "
+              "one gave up, %d double owners",
+              tries, refused, bothGaveUp, oneOwner, doubleOwners);
+        QCOMPARE(doubleOwners, 0);
+    }
+
+    // Issue 27 (2): a malformed line on the bus (any TCP client can write one) is dropped by the
+    // relay this process hosts; Qt's server relayed "can0:hello" as "hello", and every Qt client
+    // crashed parsing it. The run goes on; well-formed lines (also Qt's own flags) still pass.
+    void aMalformedLineIsDroppedByTheRelayAndTheRunGoesOn() {
+        auto sim = simulator({1, 2});
+        auto m = master(2);
+        enableAll(*m);
+        QTcpSocket raw;
+        raw.connectToHost(QHostAddress::LocalHost, 35468);
+        QVERIFY(raw.waitForConnected(2000));
+        raw.write("connect:can0\n");
+        raw.write("can0:hello\ncan0:1#Q#00\ncan0:99999999999999999##\ncan0:1##zz\n"
+                  "can0:1##00112233445566778899\n\n:\ncan0:::\n");
+        raw.write("can0:1893#L#05\n"); // 0x765, well formed
+        QVERIFY(raw.waitForBytesWritten(2000));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (const QCanBusFrame& f : heard_)
+                    if (f.frameId() == 0x765) return true;
+                return false;
+            }(),
+            2000);
+        // Qt's own lines with flags: extended id, remote request.
+        std::unique_ptr<QCanBusDevice> probe(
+            QCanBus::instance()->createDevice("virtualcan", "can0"));
+        QVERIFY(probe && probe->connectDevice());
+        QTRY_COMPARE(probe->state(), QCanBusDevice::ConnectedState);
+        QCanBusFrame extended(0x1ABCDEF, QByteArray::fromHex("0102"));
+        extended.setExtendedFrameFormat(true);
+        QVERIFY(probe->writeFrame(extended));
+        QCanBusFrame rtr(0x766, QByteArray());
+        rtr.setFrameType(QCanBusFrame::RemoteRequestFrame);
+        QVERIFY(probe->writeFrame(rtr));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                bool ext = false;
+                bool remote = false;
+                for (const QCanBusFrame& f : heard_) {
+                    ext = ext || (f.frameId() == 0x1ABCDEF && f.hasExtendedFrameFormat() &&
+                                  f.payload() == QByteArray::fromHex("0102"));
+                    remote = remote || (f.frameId() == 0x766 &&
+                                        f.frameType() == QCanBusFrame::RemoteRequestFrame);
+                }
+                return ext && remote;
+            }(),
+            2000);
+        // Still running: every drive enabled, following the cycle.
+        const std::uint64_t from = sim->snapshot()[0].syncs;
+        QTRY_VERIFY_WITH_TIMEOUT(sim->snapshot()[0].syncs >= from + 25, 2000);
+        QVERIFY(allInState(*m, DriveState::Enabled));
+        for (const SimNodeSnapshot& n : sim->snapshot())
+            QCOMPARE(n.state, Cia402State::OperationEnabled);
+        // A client that writes without line feeds is cut off; the bus stays up.
+        raw.write(QByteArray(4000, 'x'));
+        QVERIFY(raw.waitForBytesWritten(2000));
+        QTRY_VERIFY_WITH_TIMEOUT(raw.state() != QAbstractSocket::ConnectedState, 2000);
+        QVERIFY(allInState(*m, DriveState::Enabled));
     }
 
     void followingErrorEndsInFault() {

@@ -274,6 +274,48 @@ class CanOpenCliTest : public QObject {
                  err.constData());
     }
 
+    // Issue 27 (5): a drive that aborts an SDO write of its configuration ends the bring-up at
+    // once, naming the node, the object and the abort (it used to wait out 5 s first).
+    void anSdoAbortDuringTheBringUpEndsItAtOnce() {
+        QProcess sim;
+        QVERIFY(startDriveSim(sim, {"--fault-node", "4", "--refuse-object", "0x1017"}));
+        QByteArray out, err;
+        const int code = simulateOverCan(job_, {}, out, err);
+        stop(sim);
+        QVERIFY2(code != 0, err.constData());
+        QVERIFY2(err.contains("bring-up failed") && err.contains("node 4") &&
+                     err.contains("0x1017") && err.contains("0x06090030"),
+                 err.constData());
+        QVERIFY2(!err.contains("within 5 s"), err.constData());
+    }
+
+    // Issue 27 (5): a drive lost mid-cut (its simulator killed; the bus, hosted here, stays)
+    // is named: the node, that its process data stopped, and its last heartbeat's age, not
+    // only "axis 0: feedback not valid (stale data)".
+    void aDriveLostMidCutIsNamedWithItsHeartbeatAge() {
+        // A bus of its own: this process hosts it from now on (a host's relay stays for the
+        // process's life), so killing the simulator loses only the drives, never the bus; the
+        // other tests' bus stays the simulator's.
+        const QString shared = interface_;
+        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 5) % 20000);
+        const auto restore = qScopeGuard([&] { interface_ = shared; });
+        BusListener bus;
+        QVERIFY(bus.connectTo(interface_));
+        QProcess sim;
+        QVERIFY(startDriveSim(sim));
+        QProcess run;
+        QByteArray err;
+        QVERIFY2(startRunUntilCut(run, dir_.filePath("lost-drive"), err), err.constData());
+        sim.kill();
+        sim.waitForFinished(5000);
+        QVERIFY(waitForExit(run, err, 20000));
+        QVERIFY2(run.exitCode() != 0, err.constData());
+        const QRegularExpression named(
+            "node [1-6]: no process data \\(TPDO\\) for \\d+ ms after a SYNC .*last heartbeat "
+            "\\d+ ms ago");
+        QVERIFY2(named.match(QString::fromUtf8(err)).hasMatch(), err.constData());
+    }
+
     void heartbeatLossStopsTheRunWithNodeAndReason() {
         QProcess sim;
         QVERIFY(startDriveSim(sim, {"--fault-node", "5", "--heartbeat-stop-after", "0.5"}));

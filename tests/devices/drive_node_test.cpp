@@ -292,3 +292,31 @@ TEST(DriveNode, WithoutAMasterHeartbeatYetTheConsumerWaits) {
         b.sdo(sdoDownloadRequest(kNode, {od::kConsumerHeartbeat, 1}, (200u << 16) | 100, 4)).value,
         abort_code::kInvalidValue);
 }
+
+// NMT reset communication (from anyone: the master, a second master, a tool) takes the node
+// out of Operational: an enabled drive stops itself instead of holding torque while nobody
+// commands it (issue 27: such a node stayed enabled 20-25 s).
+TEST(DriveNode, ResetCommunicationWhileEnabledStopsTheDrive) {
+    for (const NmtCommand c : {NmtCommand::ResetCommunication, NmtCommand::EnterPreOperational,
+                               NmtCommand::Stop, NmtCommand::ResetNode}) {
+        Bench b(config());
+        b.configure();
+        ASSERT_EQ(decodeStatusword(b.enable().statusword), Cia402State::OperationEnabled);
+        const std::vector<CanFrame> out = b.send(encodeNmt(c, kNode));
+        EXPECT_NE(b.node.driveState(), Cia402State::OperationEnabled) << toString(c);
+        EXPECT_NE(b.node.nmtState(), NmtState::Operational) << toString(c);
+        if (c == NmtCommand::ResetCommunication || c == NmtCommand::ResetNode) {
+            int node = 0;
+            NmtState s;
+            ASSERT_FALSE(out.empty());
+            EXPECT_TRUE(decodeHeartbeat(out.back(), node, s) && s == NmtState::BootUp);
+        }
+        // Without SYNCs the drive's own loop finishes the stop.
+        for (int i = 0; i < 200 && b.node.driveState() == Cia402State::QuickStopActive; ++i) {
+            b.now += 0.002;
+            std::vector<CanFrame> ignored;
+            b.node.tick(b.now, ignored);
+        }
+        EXPECT_NE(b.node.driveState(), Cia402State::QuickStopActive) << toString(c);
+    }
+}
