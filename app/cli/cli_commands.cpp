@@ -141,10 +141,13 @@ int runSimulate(const SimulateOptions& o) {
         return kUsage;
     }
     const std::string& reportFile = o.report;
+    // A run that did not complete still gets its report, and says why on the way out.
+    const int incomplete = why.empty() ? kOk : kFailure;
+    if (!why.empty()) std::fprintf(stderr, "cutcell-cli simulate: %s\n", why.c_str());
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
-        return rc;
+        return rc != kOk ? rc : incomplete;
     std::printf("report written to %s\n%s", reportFile.c_str(), table.c_str());
-    return kOk;
+    return incomplete;
 }
 
 } // namespace cutcell::cli

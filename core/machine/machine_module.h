@@ -122,7 +122,9 @@ class MachineModule {
     }
 
     // The offline report of `cutcell-cli simulate` (JSON text) and a few lines for the
-    // terminal; false + *why when the machine has none (it runs in the engine only).
+    // terminal; false + *why when the machine has none (it runs in the engine only) or the work
+    // is over its bound. True with *why set: a report of a run that did not complete, *why
+    // says why (the command exits non-zero after writing it).
     virtual bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                std::string* text, std::string* why) const;
     // The machine's own figures for `cutcell-cli bench` (printed, never asserted), keys

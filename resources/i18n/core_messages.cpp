@@ -218,6 +218,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "branch_pipe.length_mm = %.6g mm is shorter than the saddle of its cut end (%.6g mm): the pipe must contain the cut"),
     QT_TRANSLATE_NOOP("CoreMessage", "not feasible: machine.%s"),
     QT_TRANSLATE_NOOP("CoreMessage", "%d pieces at %.4g m/min; cycle %.2f s (sync-in %.3f s, sync + cut %.3f s, decel %.3f s, return %.3f s at k = %.2f); stroke %.0f of %.0f mm; shortest piece %.0f mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "NOT completed: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "line encoder"),
     QT_TRANSLATE_NOOP("CoreMessage", "carriage.max_speed_mm_s = %.6g mm/s cannot reach the line: line.speed_m_min = %.6g m/min is up to %.6g mm/s with the line's wander and steps; the carriage needs >= %.6g mm/s"),
     QT_TRANSLATE_NOOP("CoreMessage", "carriage.stroke_mm = %.6g mm is too short: sync-in %.6g mm + sync and cut %.6g mm (%.6g s at up to %.6g mm/s) + deceleration %.6g mm need %.6g mm from the wait position %.6g mm"),
@@ -234,6 +235,8 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "the piece is too short for the cycle at this line speed: the next sync-in has begun before the carriage was back"),
     QT_TRANSLATE_NOOP("CoreMessage", "the wall + overcut (%.6g mm) leaves no bore in a tube of %.6g x %.6g mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "saw.table_points = %d is outside [8, %d]"),
+    QT_TRANSLATE_NOOP("CoreMessage", "stopped at the simulation's bound of %.0f s of line time with %d of %d pieces made"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the queue of %d pieces needs about %.0f s of line time (%.3g cycles at %.3g ms), over the simulation's bound of %.0f s: split it (about %d pieces of this queue's mean length fit)"),
     QT_TRANSLATE_NOOP("CoreMessage", "out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)"),
     QT_TRANSLATE_NOOP("CoreMessage", "joint %d = %.3f deg is past its limit %.3f deg by %.3f deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "singular at joint %d (its angle is undefined here)"),
@@ -264,6 +267,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "cutter"),
     QT_TRANSLATE_NOOP("CoreMessage", "cutter ready"),
     QT_TRANSLATE_NOOP("CoreMessage", "cutter lost"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the offline simulation would compute about %.3g samples (%zu controllers x (%.1f s of tracking + %d strokes of about %.2f s) / control.sample_time_s = %.3g s), over the bound of %.3g samples: use a longer sample time or fewer strokes"),
     QT_TRANSLATE_NOOP("CoreMessage", "slider scale"),
     QT_TRANSLATE_NOOP("CoreMessage", "control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be positive definite"),
     QT_TRANSLATE_NOOP("CoreMessage", "mechanism: the loop (B.1) does not close for crank angles q in %s: |Dx - O3x - (r3 + AB) cos(theta3)| > r4 = %.6g m there, so the crank cannot turn fully"),
@@ -511,6 +515,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 501;
+const int kCoreMessageCount = 505;
 
 } // namespace CutCell::ui

@@ -1050,6 +1050,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>NOT completed: %s</source>
+        <translation>NICHT abgeschlossen: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>line encoder</source>
         <translation>Liniengeber</translation>
     </message>
@@ -1130,6 +1135,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>stopped at the simulation&apos;s bound of %.0f s of line time with %d of %d pieces made</source>
+        <translation>an der Grenze der Simulation von %.0f s Linienzeit angehalten, %d von %d Stücken gefertigt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the queue of %d pieces needs about %.0f s of line time (%.3g cycles at %.3g ms), over the simulation&apos;s bound of %.0f s: split it (about %d pieces of this queue&apos;s mean length fit)</source>
+        <translation>die Warteschlange von %d Stücken braucht etwa %.0f s Linienzeit (%.3g Zyklen bei %.3g ms), über der Grenze der Simulation von %.0f s: aufteilen (etwa %d Stücke der mittleren Länge dieser Warteschlange passen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>out of reach: the wrist is %.3f mm beyond the arm&apos;s reach (joint 3)</source>
         <translation>außer Reichweite: das Handgelenk liegt %.3f mm jenseits der Reichweite des Arms (Gelenk 3)</translation>
     </message>
@@ -1175,6 +1190,11 @@
     </message>
     <message>
         <location line="+21"/>
+        <source>the offline simulation would compute about %.3g samples (%zu controllers x (%.1f s of tracking + %d strokes of about %.2f s) / control.sample_time_s = %.3g s), over the bound of %.3g samples: use a longer sample time or fewer strokes</source>
+        <translation>die Offline-Simulation würde etwa %.3g Abtastwerte rechnen (%zu Regler x (%.1f s Folgeregelung + %d Hübe von etwa %.2f s) / control.sample_time_s = %.3g s), über der Grenze von %.3g Abtastwerten: eine längere Abtastzeit oder weniger Hübe wählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>slider scale</source>
         <translation>Schieber-Positionssensor</translation>
     </message>
@@ -1691,7 +1711,7 @@
     <message>
         <location line="+1"/>
         <source>another CANopen master is on the bus (heard %s, not sent by this master): every drive disabled and pre-operational, this master gave up the bus</source>
-        <translation>ein anderer CANopen-Master ist auf dem Bus (%s gehört, nicht von diesem Master gesendet): jeder Antrieb abgeschaltet und pre-operational, dieser Master hat den Bus aufgegeben</translation>
+        <translation>ein anderer CANopen-Master ist auf dem Bus (%s gehört, nicht von diesem Master gesendet): jeder Antrieb abgeschaltet und in „Pre-Operational“, dieser Master hat den Bus aufgegeben</translation>
     </message>
     <message>
         <location line="+26"/>
@@ -2144,7 +2164,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-272"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2249,7 +2269,7 @@
         <translation>Werkzeug verloren</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be positive definite</source>
         <translation>control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] muss positiv definit sein</translation>
     </message>

@@ -486,5 +486,41 @@ TEST(SawModule, CountsPerUnitOfALinearAxisArePerMillimetre) {
     EXPECT_TRUE(named);
 }
 
+// Issue 27 (7): 17,000 pieces (allowed: up to 10^6) ran into the simulation's 100,000 s bound,
+// printed "NOT completed: " with no reason, exited 0 and reported a phantom piece (0 mm
+// ordered). The work is estimated first and refused over the bound with the figures; a run
+// that stops early says why and reports only pieces it made.
+TEST(SawModule, AQueueOverTheSimulationsBoundIsRefusedWithTheFigures) {
+    Job job = sawModule().defaultJob();
+    FlyingSawSpec& s = *job.machine_spec.as<FlyingSawSpec>();
+    s.queue = {{6000, 17000}};
+    ASSERT_TRUE(validateJob(job).empty());
+    const MachinePlan plan = sawModule().plan(job);
+    ASSERT_TRUE(plan.ok()) << plan.problem;
+    std::string json, text, why;
+    EXPECT_FALSE(sawModule().offlineReport(job, plan, &json, &text, &why));
+    EXPECT_NE(why.find("17000 pieces"), std::string::npos) << why;
+    EXPECT_NE(why.find("bound of 100000 s"), std::string::npos) << why;
+    EXPECT_TRUE(json.empty());
+}
+
+TEST(SawModule, ARunStoppedByItsBoundSaysWhyAndHasNoPhantomPiece) {
+    FlyingSawSpec s;
+    s.queue = {{6000, 10}};
+    const FlyingSawPlan p = planFlyingSaw(s);
+    ASSERT_TRUE(p.ok);
+    SawSimOptions o;
+    o.max_time_s = sawSimExpectedSeconds(s, p) / 2; // about half the queue
+    const SawSimResult r = simulateFlyingSaw(s, p, o);
+    EXPECT_FALSE(r.completed);
+    EXPECT_NE(r.problem.find("pieces made"), std::string::npos) << r.problem;
+    EXPECT_GT(r.pieces.size(), 0u);
+    EXPECT_LT(r.pieces.size(), 10u);
+    for (const PieceRecord& piece : r.pieces) {
+        EXPECT_EQ(piece.ordered_mm, 6000) << "piece " << piece.piece;
+        EXPECT_LT(std::fabs(piece.error_mm), 1.0) << "piece " << piece.piece;
+    }
+}
+
 } // namespace
 } // namespace cutcell::test

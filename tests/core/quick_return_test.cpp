@@ -379,5 +379,37 @@ TEST(QuickReturnRunFigures, RunsBeginAtStartEndAtAStopAndDifferentiateTheCrankPo
     EXPECT_EQ(f.stats().cuts, 0);
 }
 
+// Issue 27 (8): control.sample_time_s = 1e-5 planned 75.6 s and wrote 14.6 MB; cut.strokes =
+// 1000 took 23.1 s. simulate estimates its work first and refuses over its bound, naming the
+// estimate and the keys; the shipped job stays well inside (and runs).
+TEST(QuickReturnJob, SimulateRefusesWorkOverItsBoundWithTheEstimate) {
+    if (!findMachine(kQuickReturnId)) registerMachines();
+    const MachineModule& m = *findMachine(kQuickReturnId);
+    const auto refusal = [&](const Job& job) {
+        const MachinePlan plan = m.plan(job);
+        EXPECT_TRUE(plan.ok()) << plan.problem;
+        const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
+        return QuickReturnModule::offlineWorkProblem(quickReturnSpec(job), data->setup);
+    };
+    const Job shipped = m.defaultJob();
+    EXPECT_EQ(refusal(shipped), "");
+    for (const bool fineSampling : {true, false}) {
+        QuickReturnSpec s = quickReturnSpec(shipped);
+        if (fineSampling)
+            s.sample_time = 1e-5;
+        else
+            s.strokes = 1000;
+        Job huge = shipped;
+        huge.machine_spec.set(s);
+        ASSERT_TRUE(m.validate(huge).empty()) << m.validate(huge)[0].message;
+        const std::string why = refusal(huge);
+        EXPECT_NE(why.find("over the bound of 2e+06 samples"), std::string::npos) << why;
+        EXPECT_NE(why.find("control.sample_time_s"), std::string::npos) << why;
+        std::string json, text, said;
+        EXPECT_FALSE(m.offlineReport(huge, m.plan(huge), &json, &text, &said));
+        EXPECT_EQ(said, why);
+    }
+}
+
 } // namespace
 } // namespace cutcell::quick_return

@@ -123,7 +123,11 @@ std::string FlyingSawModule::exportFile(const std::string& exportId, const Job&,
     if (!data || !data->plan.ok) throw std::invalid_argument("the plan is not feasible");
     if (exportId == "cam_csv") return camTableCsv(data->plan);
     if (exportId == "cycle_csv") return cycleCsv(data->plan);
-    if (exportId == "pieces_csv") return piecesCsv(simulateFlyingSaw(data->spec, data->plan));
+    if (exportId == "pieces_csv") {
+        if (const std::string over = sawSimWorkProblem(data->spec, data->plan); !over.empty())
+            throw std::invalid_argument(over);
+        return piecesCsv(simulateFlyingSaw(data->spec, data->plan));
+    }
     throw std::invalid_argument("the flying saw has no export " + json::quote(exportId));
 }
 
@@ -136,9 +140,14 @@ bool FlyingSawModule::offlineReport(const Job& job, const MachinePlan& plan, std
     }
     SawSimOptions o;
     o.period_s = job.sim.period_s;
+    if (const std::string over = sawSimWorkProblem(data->spec, data->plan, o); !over.empty()) {
+        if (why) *why = over;
+        return false;
+    }
     const SawSimResult r = simulateFlyingSaw(data->spec, data->plan, o);
     *json = sawReportJson(data->spec, data->plan, r);
     *text = sawReportText(data->spec, data->plan, r);
+    if (!r.completed && why) *why = messageC("NOT completed: %s", r.problem.c_str());
     return true;
 }
 

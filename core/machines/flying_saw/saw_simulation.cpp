@@ -13,14 +13,31 @@
 
 namespace cutcell {
 
+double sawSimExpectedSeconds(const FlyingSawSpec& spec, const FlyingSawPlan& plan) {
+    double mm = 0;
+    for (const PieceOrder& o : spec.queue)
+        mm += (o.length_mm + spec.blade_kerf_mm) * o.count;
+    return mm / plan.line_speed_mm_s + 4 * plan.cycle_time_s + 10;
+}
+
+std::string sawSimWorkProblem(const FlyingSawSpec& spec, const FlyingSawPlan& plan,
+                              const SawSimOptions& opt) {
+    const double expected = sawSimExpectedSeconds(spec, plan);
+    if (expected <= opt.max_time_s) return "";
+    const double perPiece = (expected - 4 * plan.cycle_time_s - 10) / spec.pieceCount();
+    return messageC("the queue of %d pieces needs about %.0f s of line time (%.3g cycles at "
+                    "%.3g ms), over the simulation's bound of %.0f s: split it (about %d pieces "
+                    "of this queue's mean length fit)",
+                    spec.pieceCount(), expected, expected / opt.period_s, opt.period_s * 1e3,
+                    opt.max_time_s,
+                    static_cast<int>((opt.max_time_s - 4 * plan.cycle_time_s - 10) / perPiece));
+}
+
 SawSimResult simulateFlyingSaw(const FlyingSawSpec& spec, const FlyingSawPlan& plan,
                                const SawSimOptions& opt) {
     SawSimResult res;
     const double T = opt.period_s;
-    double metres = 0;
-    for (const PieceOrder& o : spec.queue)
-        metres += (o.length_mm + spec.blade_kerf_mm) * o.count;
-    const double expected = metres / plan.line_speed_mm_s + 4 * plan.cycle_time_s + 10;
+    const double expected = sawSimExpectedSeconds(spec, plan);
     PipeLineConfig lc;
     lc.speed_mm_s = plan.line_speed_mm_s;
     lc.resolution_mm = spec.encoderResolutionMm();
@@ -129,6 +146,12 @@ SawSimResult simulateFlyingSaw(const FlyingSawSpec& spec, const FlyingSawPlan& p
     res.pieces = meter.pieces(spec.blade_kerf_mm, [&](int p) {
         return p < static_cast<int>(ordered.size()) ? ordered[static_cast<size_t>(p)] : 0.0;
     });
+    // A piece whose closing cut never came (the run stopped first) was not made: no record.
+    std::erase_if(res.pieces, [](const PieceRecord& p) { return p.ordered_mm <= 0; });
+    if (!res.completed && res.problem.empty())
+        res.problem = messageC("stopped at the simulation's bound of %.0f s of line time with %d "
+                               "of %d pieces made",
+                               opt.max_time_s, static_cast<int>(res.pieces.size()), pieces);
     res.stats = lengthStats(res.pieces, spec.tolerance_mm);
     res.final_scale = src.scale();
     return res;

@@ -45,6 +45,13 @@ struct SawSimResult {
 SawSimResult simulateFlyingSaw(const FlyingSawSpec& spec, const FlyingSawPlan& plan,
                                const SawSimOptions& options = {});
 
+// The line time the whole queue needs (what simulateFlyingSaw runs): the pieces at the line's
+// speed and a few cycles to start and end. A queue over `options.max_time_s` is refused before
+// any work with the figures (sawSimWorkProblem, "" when it fits).
+double sawSimExpectedSeconds(const FlyingSawSpec& spec, const FlyingSawPlan& plan);
+std::string sawSimWorkProblem(const FlyingSawSpec& spec, const FlyingSawPlan& plan,
+                              const SawSimOptions& options = {});
+
 // The JSON report of `simulate` (per piece, stats, periods) and a few lines for the terminal.
 std::string sawReportJson(const FlyingSawSpec& spec, const FlyingSawPlan& plan,
                           const SawSimResult& r);

@@ -4,6 +4,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machines/quick_return/quick_return_svg.h"
+#include "core/machines/quick_return/task_controllers.h"
 #include "core/sim/tracking_stats.h"
 
 #include <cmath>
@@ -135,6 +136,28 @@ std::string QuickReturnModule::exportFile(const std::string& exportId, const Job
     return json::write(quickReturnReport(quickReturnSpec(job), data->setup, &table));
 }
 
+// simulate runs both experiments for every controller at the sample time: a 1e-5 s sample time
+// or 1000 strokes made minutes of work and a report of megabytes. Estimated first (a crank turn
+// taken as the cutting branch's time scaled by the whole turn's arc over the cut arc: the
+// return is quicker, so this errs high) and refused over the bound with the figures.
+std::string QuickReturnModule::offlineWorkProblem(const QuickReturnSpec& spec,
+                                                  const quick_return::ExperimentSetup& s) {
+    const quick_return::StrokeInfo& st = s.law.stroke;
+    const quick_return::VelocityProfile& p = s.law.profile;
+    const double turn =
+        st.cut_arc > 0 ? (p.t_c + 2 * p.t_a) * (st.cut_arc + st.return_arc) / st.cut_arc : 0;
+    const double seconds = spec.track_duration + spec.strokes * turn;
+    const double samples =
+        static_cast<double>(quick_return::kAllControllers.size()) * seconds / spec.sample_time;
+    if (samples <= kMaxOfflineSamples) return "";
+    return messageC(
+        "the offline simulation would compute about %.3g samples (%zu controllers x (%.1f s of "
+        "tracking + %d strokes of about %.2f s) / control.sample_time_s = %.3g s), "
+        "over the bound of %.3g samples: use a longer sample time or fewer strokes",
+        samples, quick_return::kAllControllers.size(), spec.track_duration, spec.strokes, turn,
+        spec.sample_time, kMaxOfflineSamples);
+}
+
 bool QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                       std::string* text, std::string* why) const {
     const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
@@ -142,7 +165,12 @@ bool QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, s
         if (why) *why = plan.problem;
         return false;
     }
-    *json = json::write(quickReturnReport(quickReturnSpec(job), data->setup, text));
+    const QuickReturnSpec& spec = quickReturnSpec(job);
+    if (const std::string over = offlineWorkProblem(spec, data->setup); !over.empty()) {
+        if (why) *why = over;
+        return false;
+    }
+    *json = json::write(quickReturnReport(spec, data->setup, text));
     return true;
 }
 

@@ -43,6 +43,13 @@ class QuickReturnModule : public MachineModule {
                           const TrackingReport& report) const override;
     // Experiment 1 MSE and experiment 2 velocity error of every controller (default job).
     void addBenchFigures(bool quick, json::Object& out) const override;
+
+    // simulate's work: at most this many samples over both experiments and all controllers
+    // (the shipped job: about 5.5e4; at a sample time of 1e-5 s 5.5e6, with 1000 strokes 5e6).
+    static constexpr double kMaxOfflineSamples = 2e6;
+    // "" when simulate's work is within the bound, else the refusal with the estimate.
+    static std::string offlineWorkProblem(const QuickReturnSpec& spec,
+                                          const quick_return::ExperimentSetup& s);
 };
 
 } // namespace cutcell
