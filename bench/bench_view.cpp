@@ -7,8 +7,10 @@
 // Options: --points N (path points, 30000), --frames N (100), --size WxH (800x600).
 #include "core/geometry/cut_path.h"
 #include "core/job/default_job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "plots/tracking_plots_widget.h"
+#include "ui/machines/pipe_robot/pipe_robot_scene.h"
 #include "ui/view3d/cell_view.h"
 #include "ui/view3d/scene_model.h"
 
@@ -93,7 +95,8 @@ int main(int argc, char** argv) {
 
     if (!screenshot.empty()) {
         Job job = defaultJob();
-        job.dh[3].max_deg = std::min(job.dh[3].max_deg, joint3MaxDeg);
+        cutcell::pipeRobotSpec(job).dh[3].max_deg =
+            std::min(cutcell::pipeRobotSpec(job).dh[3].max_deg, joint3MaxDeg);
         const CutPlan plan = planCut(job);
         view3d::CellView view;
         view.resize(width, height);

@@ -2,10 +2,10 @@
 #include "ui/shown_number.h"
 
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter/template_layout.h"
-#include "core/machines/profile_cutter/template_pdf.h"
-#include "core/machines/profile_cutter/template_svg.h"
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/pipe_joint/template_layout.h"
+#include "core/pipe_joint/template_pdf.h"
+#include "core/pipe_joint/template_svg.h"
+#include "core/pipe_joint/template_tiles.h"
 #include "ui/file_places.h"
 #include "ui/forms/job_editor.h"
 #include "ui/machine/machine_ui_registry.h"
@@ -38,7 +38,8 @@ bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QS
             const auto paper = cutcell::paperByName(paperName.toStdString());
             if (!paper)
                 return fail(QObject::tr("paper \"%1\" is not single, A4 or A3").arg(paperName));
-            const cutcell::TemplateDrawing drawing = cutcell::buildTemplate(job);
+            const cutcell::TemplateDrawing drawing =
+                cutcell::buildTemplate(job, machine->jointExtras(job));
             const bool svg = kind == ExportKind::TemplateSvg;
             what = QObject::tr("cutting template (%1, 1:1): %2 x %3 mm")
                        .arg(svg ? "SVG" : "PDF")

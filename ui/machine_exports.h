@@ -24,7 +24,7 @@ class JobEditor;
 // file and the reason (a machine without this export, an invalid job, a cut off the carriage,
 // an I/O error).
 // paper: cutting templates only, "single" (one sheet of the template's size), "A4" or "A3"
-// (1:1 tiles, core/machines/profile_cutter/template_tiles.h).
+// (1:1 tiles, core/pipe_joint/template_tiles.h).
 bool exportCut(ExportKind kind, const cutcell::Job& job, const QString& path, QString* error,
                QString* summary = nullptr, const QString& paper = QStringLiteral("single"));
 

@@ -4,7 +4,7 @@
 //
 // Threading contract: GUI thread only.
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_module.h"
 
 #include <memory>
 
@@ -14,7 +14,8 @@ class CellViewPanel;
 class PlotsPanel;
 class ProgressPanel;
 
-void adaptViewsToPlan(const std::shared_ptr<const cutcell::CutPlan>& plan, const cutcell::Job& job,
-                      CellViewPanel* cell, PlotsPanel* plots, ProgressPanel* progress);
+void adaptViewsToPlan(const std::shared_ptr<const cutcell::MachinePlan>& plan,
+                      const cutcell::Job& job, CellViewPanel* cell, PlotsPanel* plots,
+                      ProgressPanel* progress);
 
 } // namespace CutCell::ui

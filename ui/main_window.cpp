@@ -393,7 +393,7 @@ void MainWindow::connectRun() {
     connect(run_->planner(), &PlanWorker::failed, planCancel_, &QWidget::hide);
     connect(planCancel_, &QPushButton::clicked, run_, &RunController::cancelPlanning);
     connect(run_, &RunController::planChanged, this,
-            [this](std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job) {
+            [this](std::shared_ptr<const cutcell::MachinePlan> plan, const cutcell::Job& job) {
                 adaptViewsToPlan(plan, job, cell_, plots_, progress_);
             });
     auto* bridge = run_->bridge();

@@ -13,7 +13,7 @@ struct PlanWorker::Run {
     cutcell::Job job;
     std::atomic<bool> cancel{false};
     std::atomic<int> lastPermille{-1};
-    std::shared_ptr<cutcell::CutPlan> plan;
+    std::shared_ptr<cutcell::MachinePlan> plan;
     std::string error;
 };
 
@@ -80,7 +80,7 @@ void PlanWorker::launch() {
             if (!machine)
                 throw std::invalid_argument("no machine module for machine = \"" +
                                             run->job.machine + "\"");
-            run->plan = std::make_shared<cutcell::CutPlan>(machine->plan(run->job, opt));
+            run->plan = std::make_shared<cutcell::MachinePlan>(machine->plan(run->job, opt));
         } catch (const std::exception& e) {
             run->error = e.what();
         }
@@ -97,7 +97,7 @@ void PlanWorker::finished() {
     }
     if (!run->error.empty())
         emit failed(QString::fromStdString(run->error));
-    else if (run->cancel || !run->plan || run->plan->cancelled)
+    else if (run->cancel || !run->plan || run->plan->cancelled())
         emit cancelled();
     else
         emit planned(run->plan, run->job);

@@ -6,7 +6,7 @@
 // Threading contract: the public API and the signals are GUI-thread only; the job's machine plans
 // (MachineUi::plan) on a pool thread with its own copy of the job and touches nothing else.
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_module.h"
 
 #include <QFutureWatcher>
 #include <QObject>
@@ -31,7 +31,7 @@ class PlanWorker : public QObject {
   signals:
     void started();
     void progress(double fraction);
-    void planned(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
+    void planned(std::shared_ptr<const cutcell::MachinePlan> plan, const cutcell::Job& job);
     void cancelled();
     void failed(const QString& message);
 

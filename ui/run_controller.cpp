@@ -139,14 +139,14 @@ void RunController::cancelPlanning() {
     planner_->cancel();
 }
 
-void RunController::onPlanned(std::shared_ptr<const cutcell::CutPlan> plan,
+void RunController::onPlanned(std::shared_ptr<const cutcell::MachinePlan> plan,
                               const cutcell::Job& job) {
     plan_ = std::move(plan);
     planJob_ = job;
     programLoaded_ = false;
     programError_.clear();
     emit planChanged(plan_, planJob_);
-    if (!plan_->reachable) {
+    if (!plan_->ok()) {
         emit message(Severity::Error, tr("Path not reachable: %1").arg(planProblem()));
         updateBlocked();
         if (autoRun_) {
@@ -194,7 +194,7 @@ void RunController::loadProgram() {
         const MachineUi* machine = machineUiFor(planJob_);
         if (!machine) throw std::invalid_argument("no machine module for this job");
         const auto text = cutcell::json::write(cutcell::jobToJson(planJob_));
-        auto program = machine->buildProgram(planJob_, *plan_, text);
+        auto program = programForRun(*plan_, text);
         if (!rig_->engine().load(program))
             throw std::runtime_error("the engine's command queue is full");
         programLoaded_ = true;
@@ -265,7 +265,7 @@ void RunController::updateBlocked() {
         r = tr("planning the path...");
     else if (!plan_)
         r = tr("no plan yet");
-    else if (!plan_->reachable)
+    else if (!plan_->ok())
         r = tr("path not reachable - %1").arg(planProblem());
     else if (!programError_.isEmpty())
         r = programError_;

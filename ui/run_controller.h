@@ -7,7 +7,7 @@
 // Threading contract: GUI thread only; nothing here waits on the engine or the planner.
 #include "core/job/job.h"
 #include "core/job/job_io.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_module.h"
 #include "ui/engine_bridge.h"
 #include "ui/engine_rig.h"
 #include "ui/part_coverage.h"
@@ -43,7 +43,7 @@ class RunController : public QObject {
     }
     EngineBridge* bridge() const { return bridge_; }
     PlanWorker* planner() const { return planner_; }
-    std::shared_ptr<const cutcell::CutPlan> plan() const { return plan_; }
+    std::shared_ptr<const cutcell::MachinePlan> plan() const { return plan_; }
     QString startBlockedReason() const { return blocked_; }
     bool planning() const;
     EngineRig* rig() const { return rig_.get(); } // null until a plan was loaded
@@ -101,7 +101,7 @@ class RunController : public QObject {
   signals:
     void planStarted();
     void planProgress(double fraction);
-    void planChanged(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
+    void planChanged(std::shared_ptr<const cutcell::MachinePlan> plan, const cutcell::Job& job);
     void startBlockedChanged(const QString& reason);
     void message(cutcell::Severity severity, const QString& text);
     void rigChanged(const QString& description);
@@ -125,7 +125,7 @@ class RunController : public QObject {
   private:
     // The plan's refusal in the GUI's language, its keys named by the fields' labels.
     QString planProblem() const;
-    void onPlanned(std::shared_ptr<const cutcell::CutPlan> plan, const cutcell::Job& job);
+    void onPlanned(std::shared_ptr<const cutcell::MachinePlan> plan, const cutcell::Job& job);
     void loadProgram();
     void onState(cutcell::EngineState state);
     void stepAutoRun();
@@ -148,7 +148,7 @@ class RunController : public QObject {
     std::unique_ptr<EngineRig> rig_;
     QString rigDescription_;
     cutcell::Job rigJob_;
-    std::shared_ptr<const cutcell::CutPlan> plan_;
+    std::shared_ptr<const cutcell::MachinePlan> plan_;
     cutcell::Job planJob_;
     bool programPending_ = false;
     bool programLoaded_ = false;

@@ -1,11 +1,13 @@
 #include "bench_can.h"
 
 #include "core/job/default_job.h"
+#include "core/machine/machine_registry.h"
 #include "devices/canopen/bus_load.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
+#include "devices/machines/can_cells.h"
 
 #include "qt_app.h"
 #include <QCanBus>
@@ -147,12 +149,18 @@ void benchCan(json::Object& out, bool quick) {
     const QString interface =
         QStringLiteral("tcp://127.0.0.1:%1/can0").arg(40000 + static_cast<int>(getpid() % 20000));
     job.devices.can_interface = interface.toStdString();
-    // The shortest cycle the bus admits for six axes, rounded up to 0.5 ms.
+    // The shortest cycle the bus admits for the default job's drives, rounded up to 0.5 ms.
     BusLoadInput in;
-    in.nodes = kAxisCount;
+    in.nodes = static_cast<int>(machineFor(job).axes(job).size());
     in.bitrate_bps = job.devices.bitrate_bps;
     in.heartbeat_period_s = job.devices.heartbeat_timeout_ms * 1e-3 / 3;
     const double period = std::ceil(computeBusLoad(in).min_period_s * 2000) / 2000;
+
+    CanCellConfig cell; // the default job's machine on CAN: its master's and simulator's nodes
+    if (std::string why; !makeCanCell(job, period, nullptr, &cell, &why)) {
+        std::fprintf(stderr, "bench: no CAN cell: %s\n", why.c_str());
+        return;
+    }
 
     StopFrameProbe probe; // first client: hosts the private bus on its thread
     if (!probe.start(interface)) {
@@ -162,7 +170,8 @@ void benchCan(json::Object& out, bool quick) {
     }
     DriveSimulatorConfig sc;
     sc.interface = interface;
-    sc.nodes = nodesFromJob(job, {1, 2, 3, 4, 5, 6});
+    sc.nodes = cell.sim_drives;
+    sc.encoders = cell.sim_encoders;
     DriveSimulator sim(sc);
     if (!sim.start()) {
         std::fprintf(stderr, "bench: drive simulator: %s\n", qPrintable(sim.errorText()));
@@ -173,7 +182,7 @@ void benchCan(json::Object& out, bool quick) {
     std::string error;
     {
         // SYNC from the pacing thread; the jitter is measured where the SYNC is written.
-        CanOpenMaster m(masterConfigFromJob(job, period, kAxisCount));
+        CanOpenMaster m(cell.master);
         if (!bringUp(m, error)) {
             std::fprintf(stderr, "bench: CAN master: %s\n", error.c_str());
             return;
@@ -235,7 +244,7 @@ void benchCan(json::Object& out, bool quick) {
     }
     {
         // Sustained frames: lock-step cycles (write, SYNC, wait for all TPDOs) back to back.
-        CanOpenMasterConfig c = masterConfigFromJob(job, period, kAxisCount);
+        CanOpenMasterConfig c = cell.master;
         c.sync = SyncSource::External;
         CanOpenMaster m(c);
         if (!bringUp(m, error, true)) {

@@ -1,18 +1,16 @@
 // cutcell-cli bench: the motion engine's real-time figures (cycle jitter and overruns over a
-// run of the default job at 1 ms; emergency-stop latency over many trials), what its thread
-// was granted (SCHED_FIFO, memory lock), the host's own wake-up latency measured like
-// cyclictest at the same period for the same time (with the engine's p99 as a ratio to it), and
-// the work of one cycle for each motion source (joint spline, master axis, control law).
-// Printed, never asserted.
+// run of the job - the default job unless --job - at 1 ms on its machine's simulated cell;
+// emergency-stop latency over many trials), what its thread was granted (SCHED_FIFO, memory lock),
+// the host's own wake-up latency measured like cyclictest at the same period for the same time
+// (with the engine's p99 as a ratio to it), and the work of one cycle for each motion source (joint
+// spline, master axis, control law). Printed, never asserted.
 #include "bench_engine.h"
 
 #include "core/engine/host_latency.h"
 #include "core/engine/motion_engine.h"
-#include "core/machines/pipe_robot/pipe_robot_program.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_registry.h"
+#include "devices/machines/sim_rig_registry.h"
 #include "devices/sim/follower_rig.h"
-#include "devices/sim/simulated_drive.h"
-#include "devices/sim/simulated_torch.h"
 #include "devices/sim/slider_rig.h"
 
 #include <algorithm>
@@ -28,28 +26,19 @@ namespace {
 
 using namespace std::chrono_literals;
 
-struct SimCell {
-    std::vector<std::unique_ptr<SimulatedDrive>> drives;
-    SimulatedTorch torch;
-    EngineDevices devices;
+// The job's machine's simulated cell for its program (null, said on stderr, when it has none).
+std::unique_ptr<MachineSimRig> simulatedCell(const Job& job, const MotionProgram& program) {
+    std::string error;
+    auto rig = makeSimulatedRig(job, program, &error);
+    if (!rig) std::fprintf(stderr, "bench: no simulated cell: %s\n", error.c_str());
+    return rig;
+}
 
-    explicit SimCell(const Job& job) {
-        for (int i = 0; i < kAxisCount; ++i) {
-            SimulatedDriveConfig dc;
-            dc.gains = job.controller[static_cast<size_t>(i)];
-            dc.plant = job.plant[static_cast<size_t>(i)];
-            dc.period_s = job.sim.period_s;
-            drives.push_back(std::make_unique<SimulatedDrive>(dc));
-            devices.axes[static_cast<size_t>(i)] = drives.back().get();
-        }
-        devices.torch = &torch;
-    }
-};
-
-EngineConfig realTimeConfig(const Job& job, const RealtimeSettings& realtime) {
+EngineConfig realTimeConfig(const Job& job, const MachineSimRig& rig,
+                            const RealtimeSettings& realtime) {
     EngineConfig c;
+    rig.configure(c); // the machine's period, windows and gains
     c.realtime = realtime;
-    c.period_s = job.sim.period_s;
     c.clock = ClockMode::RealTime;
     c.spec = job.engine;
     c.spec.runs_dir.clear(); // no run log in the benchmark
@@ -123,18 +112,22 @@ bool startRun(MotionEngine& engine, int maxCycles) {
     return engine.state() == EngineState::Running;
 }
 
-void benchSources(const Job& job, const std::shared_ptr<const MotionProgram>& spline, bool quick,
+// The job's own program (its source's figure: the joint spline for the default job), then the
+// other two motion sources on their small rigs.
+void benchSources(const Job& job, const std::shared_ptr<const MotionProgram>& program, bool quick,
                   json::Object& out) {
     const int cycles = quick ? 5000 : 30000;
-    {
-        SimCell cell(job);
+    if (auto rig = simulatedCell(job, *program)) {
         EngineConfig c = fastConfig(job.sim.period_s);
+        rig->configure(c);
+        c.clock = ClockMode::AsFastAsPossible;
         c.spec = job.engine;
         c.spec.runs_dir.clear();
-        MotionEngine engine(cell.devices, c);
-        engine.load(spline);
-        if (startRun(engine, 20000))
-            out.emplace_back("cycle_us_p99_joint_spline", cycleWorkP99(engine, cycles));
+        MotionEngine engine(rig->devices(), c);
+        engine.load(program);
+        std::string key = std::string("cycle_us_p99_") + toString(program->source_kind);
+        std::replace(key.begin(), key.end(), ' ', '_'); // cycle_us_p99_joint_spline
+        if (startRun(engine, 20000)) out.emplace_back(key, cycleWorkP99(engine, cycles));
     }
     {
         FollowerRigOptions o;
@@ -171,9 +164,12 @@ void benchSources(const Job& job, const std::shared_ptr<const MotionProgram>& sp
 } // namespace
 
 void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, json::Object& out) {
-    const CutPlan plan = planCut(job);
-    if (!plan.reachable) return;
-    const auto program = buildPipeRobotProgram(job, plan);
+    const MachinePlan plan = machineFor(job).plan(job);
+    if (!plan.ok() || !plan.program) {
+        std::fprintf(stderr, "bench: the job does not plan: %s\n", plan.problem.c_str());
+        return;
+    }
+    const std::shared_ptr<const MotionProgram> program = plan.program;
     benchSources(job, program, quick, out);
     const double timedS = quick ? 2 : 10;
 
@@ -185,10 +181,9 @@ void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, j
     out.emplace_back("host_wakeup_latency_us_p99", host.p99_us);
     out.emplace_back("host_wakeup_latency_us_max", host.max_us);
 
-    // 1. Cycle timing: the default job cutting in real time, telemetry drained at 30 Hz.
-    {
-        SimCell cell(job);
-        MotionEngine engine(cell.devices, realTimeConfig(job, realtime));
+    // 1. Cycle timing: the job cutting in real time, telemetry drained at 30 Hz.
+    if (auto rig = simulatedCell(job, *program)) {
+        MotionEngine engine(rig->devices(), realTimeConfig(job, *rig, realtime));
         engine.load(program);
         engine.enable();
         engine.home();
@@ -226,9 +221,8 @@ void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, j
 
     // 2. Emergency-stop latency: request at a random phase of the cycle, measured by the
     //    engine from the request to "all drives read back disabled and torch off".
-    {
-        SimCell cell(job);
-        MotionEngine engine(cell.devices, realTimeConfig(job, realtime));
+    if (auto rig = simulatedCell(job, *program)) {
+        MotionEngine engine(rig->devices(), realTimeConfig(job, *rig, realtime));
         engine.load(program);
         engine.enable();
         engine.startThread();

@@ -1,11 +1,13 @@
-// cutcell-cli drivesim: CiA 402 slave nodes on a CAN bus (the simulator of
-// devices/canopen/drive_simulator.h) for tests and demos, with fault injection by flags.
+// cutcell-cli drivesim: the job's machine's CAN cell played on a bus (the simulator of
+// devices/canopen/drive_simulator.h: its CiA 402 drives and CiA 406 encoders, as
+// devices/machines/can_cells.h builds them) for tests and demos, with fault injection by flags.
 #include "cli_commands.h"
 
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/emcy.h"
+#include "devices/machines/can_cells.h"
 
 #include "qt_app.h"
 
@@ -30,10 +32,30 @@ int runDriveSim(const DriveSimOptions& o) {
     int code = kOk;
     if (!o.job.empty() && !loadJobArg(o.job, job, &code)) return code;
     const std::string& nodesText = o.nodes_text;
-    std::vector<int> ids = o.nodes;
-    // The pipe robot's six drives (node_ids has up to kMaxAxes slots).
-    if (nodesText.empty())
-        ids.assign(job.devices.node_ids.begin(), job.devices.node_ids.begin() + kAxisCount);
+    // The machine's whole cell, or the drives --nodes names.
+    CanCellConfig cell;
+    if (std::string why; !makeCanCell(job, job.sim.period_s, nullptr, &cell, &why)) {
+        std::fprintf(stderr, "cutcell-cli drivesim: the job's machine has no CAN cell: %s\n",
+                     why.c_str());
+        return kUsage;
+    }
+    std::vector<DriveNodeConfig> drives = cell.sim_drives;
+    std::vector<EncoderNodeConfig> encoders = cell.sim_encoders;
+    if (!nodesText.empty()) {
+        try {
+            drives = canCellDriveNodes(job, o.nodes);
+        } catch (const std::invalid_argument& e) {
+            std::fprintf(stderr, "cutcell-cli drivesim: --nodes = \"%s\": %s\n", nodesText.c_str(),
+                         e.what());
+            return kUsage;
+        }
+        encoders.clear();
+    }
+    std::vector<int> ids;
+    for (const DriveNodeConfig& d : drives)
+        ids.push_back(d.node);
+    for (const EncoderNodeConfig& e : encoders)
+        ids.push_back(e.node);
     FaultInjection faults;
     faults.fault_after_s = o.fault_after_s.value_or(faults.fault_after_s);
     faults.heartbeat_stop_after_s =
@@ -73,7 +95,8 @@ int runDriveSim(const DriveSimOptions& o) {
     DriveSimulatorConfig config;
     if (!o.plugin.empty()) config.plugin = QString::fromStdString(o.plugin);
     if (!o.interface.empty()) config.interface = QString::fromStdString(o.interface);
-    config.nodes = nodesFromJob(job, ids);
+    config.nodes = drives;
+    config.encoders = encoders;
     for (DriveNodeConfig& n : config.nodes)
         if (n.node == faultNode) n.faults = faults;
     DriveSimulator sim(config);
@@ -81,7 +104,10 @@ int runDriveSim(const DriveSimOptions& o) {
         std::fprintf(stderr, "cutcell-cli drivesim: %s\n", qPrintable(sim.errorText()));
         return kFailure;
     }
-    std::printf("drivesim: ready: %zu CiA 402 node(s) %s on %s %s\n", ids.size(),
+    std::printf("drivesim: ready: %zu CiA 402 node(s)%s %s on %s %s\n", drives.size(),
+                encoders.empty()
+                    ? ""
+                    : (" + " + std::to_string(encoders.size()) + " CiA 406 encoder(s)").c_str(),
                 nodesText.empty() ? "from the job" : nodesText.c_str(), qPrintable(config.plugin),
                 qPrintable(config.interface));
     std::fflush(stdout);

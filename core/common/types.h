@@ -10,10 +10,6 @@ namespace cutcell {
 // A machine has up to kMaxAxes axes; a JointVector holds one value per axis (axes past the
 // machine's axis count are zero). Fixed size: no heap in the control cycle.
 inline constexpr int kMaxAxes = 8;
-// The pipe robot's axes: axis 0 is the pipe chuck (the seed's theta0); axes 1..5 are the arm
-// joints theta1..theta5.
-inline constexpr int kAxisCount = 6;
-inline constexpr int kArmJointCount = 5;
 
 using JointVector = Eigen::Matrix<double, kMaxAxes, 1>;
 

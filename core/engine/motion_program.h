@@ -25,9 +25,9 @@ enum class MotionSourceKind : std::uint8_t {
 const char* toString(MotionSourceKind k);
 
 struct MotionProgram {
-    std::string machine;         // the id of the machine module that built it
-    std::string method;          // how the machine cuts (e.g. "rotating_pipe"), for reports
-    int axis_count = kAxisCount; // axes 0..axis_count-1 are driven (at most kMaxAxes)
+    std::string machine; // the id of the machine module that built it
+    std::string method;  // how the machine cuts (e.g. "rotating_pipe"), for reports
+    int axis_count = 0;  // axes 0..axis_count-1 are driven (1 .. kMaxAxes; set by the machine)
     std::array<std::string, kMaxAxes> axis_names{};
     std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
     // A rotary axis without end stops that turns on and on (the quick-return crank): every

@@ -11,7 +11,6 @@
 namespace cutcell {
 
 enum class CutTarget { Branch, Main };
-enum class CutMethod { StaticPipe, RotatingPipe };
 enum class StopCategory { Cat0, Cat1 };
 enum class DeviceKind { Simulated, CanOpen };
 
@@ -19,17 +18,6 @@ struct PipeSpec {
     double radius_mm = 0;
     double wall_mm = 0;
     double length_mm = 0;
-};
-
-// One standard Denavit-Hartenberg row with its operating range. Row 0 is the pipe chuck:
-// its d is the seed's d0 (distance from the robot base to the pipe's cut centre along X0).
-struct DhRow {
-    double alpha_deg = 0;
-    double a_mm = 0;
-    double d_mm = 0;
-    double theta_offset_deg = 0;
-    double min_deg = -180;
-    double max_deg = 180;
 };
 
 // PID with first-order filter (seed Eq. 69): C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1).
@@ -106,36 +94,11 @@ struct DeviceSpec {
 // The node id of the machine's sensor k (sensor_node_ids[k], or axisCount + 1 + k when 0).
 int sensorNodeId(const DeviceSpec& d, int axisCount, int k);
 
-// Another branch pipe at the same joint (seed 002: "several pipes connecting together"). The
-// cut branch (branch_pipe, angle_deg, eccentricity_mm) is cut to fit the main pipe AND these.
-// Main pipe frame (see core/geometry/pipe_intersection.h): this branch's axis passes through
-// Rz(phase) * (eccentricity, 0, position) with outward direction Rz(phase) * (0, sin a, cos a).
-struct OtherBranch {
-    double radius_mm = 0;       // outer radius
-    double angle_deg = 90;      // between its axis and the main axis, (0, 180)
-    double eccentricity_mm = 0; // |e| + radius <= main radius
-    double position_mm = 0;     // along the main axis, from the cut branch's axis crossing
-    double phase_deg = 0;       // about the main axis; 0 = on the cut branch's side
-};
-
-// The 2-axis NC pipe profile cutter of seed 002: torch on a linear X axis over the rotating
-// pipe (A axis), both driven by stepper motors through a pulse card.
-struct ProfileCutterSpec {
-    int steps_per_rev_a = 400;         // the seed's n: interpolation steps per pipe revolution
-    int pulses_per_step_a = 16;        // A-axis pulses per step (pulses/rev = n * this)
-    double mm_per_pulse_x = 0.005;     // X-axis travel per pulse
-    double max_pulse_rate_hz = 200000; // pulse card limit per axis (PCL-839+: 1 Hz .. 200 kHz)
-    double pierce_s = 1.0;             // dwell after torch on, before moving
-    double x_travel_mm = 3000;         // X carriage travel from 0 (the fixed end) to here
-    // Hole cut: X of the branch axis crossing (the seed's S); absent = middle of the main pipe.
-    bool branch_position_auto = true;
-    double branch_position_mm = 0;
-};
-
-// The common part (name, description, units note, sim, engine, devices) and, for now, the
-// fields of both machines' sections side by side; each module reads, writes and validates only
-// its own (core/machines/<name>/). machine = the id of the job's module ("" = the schema-1
-// default machine).
+// The common part (name, description, units note, sim, engine, devices), the pipe joint the
+// pipe machines cut (pipes, angle, eccentricity, cut; core/machine/pipe_joint_section.h), and
+// the machine's own section in machine_spec. Each module reads, writes and validates only its
+// own (core/machines/<name>/). machine = the id of the job's module ("" = the schema-1 default
+// machine).
 struct Job {
     int schema = 2;
     std::string machine;
@@ -147,26 +110,16 @@ struct Job {
     double angle_deg = 90;
     double eccentricity_mm = 0;
     CutSpec cut;
-    CutMethod method = CutMethod::RotatingPipe;
-    std::array<DhRow, kAxisCount> dh{};
-    std::array<PidGains, kAxisCount> controller{};
-    std::array<JointPlantParams, kAxisCount> plant{};
     SimSpec sim;
     EngineSpec engine;
     DeviceSpec devices;
-    std::vector<OtherBranch> other_branches; // profile cutter, cut = "branch" only
-    ProfileCutterSpec profile_cutter;
-    // The section of machines that keep their own struct (core/machines/<name>/): set by the
-    // module's defaultJob() and readSection(), read back with machine_spec.as<TheirSpec>().
+    // The machine's own section (core/machines/<name>/<name>_spec.h): set by the module's
+    // defaultJob() and readSection(), read back with machine_spec.as<TheirSpec>().
     MachineSpecHolder machine_spec;
 };
 
 const char* toString(CutTarget t);
-const char* toString(CutMethod m);
 const char* toString(DeviceKind k);
 const char* toString(StopCategory c);
-
-// The seed's Table 1 (row 0 = chuck with d0, rows 1..5 = the arm).
-std::array<DhRow, kAxisCount> seedDhTable();
 
 } // namespace cutcell

@@ -65,6 +65,9 @@ std::string arrayText(const json::Value& v) {
     return out + "]";
 }
 
+// Files written before the machines had their own axis counts held 6 entries per axis list.
+constexpr int kLegacyPerAxisEntries = 6;
+
 // One entry per axis of the machine; 6 entries (the fixed length of files written before the
 // machines had their own axis counts) are read as the first axes, the rest keep defaults.
 // Any other length is refused with the key, the value and the machine's axis count.
@@ -78,7 +81,7 @@ void readPerAxis(SectionReader& d, const char* key, const char* what, const std:
         throw JobError(k + " must be an array of " + std::to_string(axisCount) + " " + what +
                        ", one per axis of the " + machine);
     const size_t n = arr->asArray().size();
-    if (n != static_cast<size_t>(axisCount) && n != static_cast<size_t>(kAxisCount))
+    if (n != static_cast<size_t>(axisCount) && n != static_cast<size_t>(kLegacyPerAxisEntries))
         throw JobError(k + " = " + arrayText(*arr) + " has " + std::to_string(n) +
                        " entries: the " + machine + " has " + std::to_string(axisCount) +
                        " axes (give " + std::to_string(axisCount) + " " + what + ", one per axis)");

@@ -93,7 +93,7 @@ std::vector<JobIssue> validateJob(const Job& job) {
     if (!module) {
         c.add("machine.kind", messageC("machine.kind = %s is not one of %s",
                                        json::quote(id).c_str(), machineIdList().c_str()));
-        checkCommon(c, job, {}, kAxisCount, 0);
+        checkCommon(c, job, {}, 0, 0); // no axes without a machine
         return c.issues;
     }
     const std::vector<AxisInfo> axes = module->axes(job);

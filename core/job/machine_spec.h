@@ -4,6 +4,8 @@
 // MachineSpec, so that Job does not grow with every machine and nothing outside the module needs
 // to know the struct. A Job stays a value: copying it copies the spec (clone()).
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace cutcell {
@@ -42,5 +44,23 @@ class MachineSpecHolder {
   private:
     std::unique_ptr<MachineSpec> spec_;
 };
+
+// A machine's section of a job as T, for the machine's accessor (pipeRobotSpec(job), ...): a
+// holder with no section yet (a job being built in code) reads as T's defaults, and editSpec
+// gives it one to edit; a holder with another machine's section throws std::invalid_argument
+// (`whose`: "the pipe robot's").
+template <class T> const T& readSpec(const MachineSpecHolder& h, const char* whose) {
+    static const T defaults;
+    if (h.empty()) return defaults;
+    if (const T* s = h.as<T>()) return *s;
+    throw std::invalid_argument(std::string("the job holds another machine's section, not ") +
+                                whose);
+}
+template <class T> T& editSpec(MachineSpecHolder& h, const char* whose) {
+    if (h.empty()) h.set(T{});
+    if (T* s = h.as<T>()) return *s;
+    throw std::invalid_argument(std::string("the job holds another machine's section, not ") +
+                                whose);
+}
 
 } // namespace cutcell

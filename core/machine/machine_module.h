@@ -17,6 +17,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/job_importer.h"
+#include "core/machine/plan_options.h"
 
 #include <memory>
 #include <string>
@@ -43,6 +44,7 @@ const char* commandModeName(CommandMode m); // "position", "velocity", "torque"
 enum class PlanStatus {
     Ok,
     Infeasible, // the job is valid but the machine cannot make this cut (reach, travel, rates)
+    Cancelled,  // PlanOptions::cancel was set while planning (no program)
 };
 
 // What plan() gives: the program for the engine and the machine's own data for its exports.
@@ -53,6 +55,7 @@ struct MachinePlan {
     std::shared_ptr<const MotionProgram> program;
     std::shared_ptr<const void> data; // owned by the module that made it (its plan type)
     bool ok() const { return status == PlanStatus::Ok; }
+    bool cancelled() const { return status == PlanStatus::Cancelled; }
 };
 
 // A file the machine can write from a plan.
@@ -65,7 +68,7 @@ struct ExportInfo {
 };
 
 // How to write an export, beyond the job: the paper of a cutting template ("single", "A4",
-// "A3"; core/machines/profile_cutter/template_tiles.h). Exports that take none ignore it.
+// "A3"; core/pipe_joint/template_tiles.h). Exports that take none ignore it.
 struct ExportSettings {
     std::string paper = "single";
     // The accepted papers, for option lists (machine_registry.cpp).
@@ -103,8 +106,11 @@ class MachineModule {
     // program carries the same terms, with the planned pieces where there are pieces.
     virtual RunTerms runTerms() const { return {}; }
 
-    // Plans the cut of a valid job. jobText is kept in the program for the run log.
-    virtual MachinePlan plan(const Job& job, const std::string& jobText = {}) const = 0;
+    // Plans the cut of a valid job. jobText is kept in the program for the run log; options
+    // report progress and cancel (a machine that plans in one go may ignore them). The plan
+    // holds the machine's own data (its plan type) also when it is Infeasible, for drawing.
+    virtual MachinePlan plan(const Job& job, const std::string& jobText = {},
+                             const PlanOptions& options = {}) const = 0;
     // "variant" of the cut where the machine has one (the robot's method); false + *error when
     // the value is not one of the machine's or the machine has none.
     virtual bool setVariant(Job& job, const std::string& variant, std::string* error) const;

@@ -1,5 +1,4 @@
 #include "core/machine/machine_registry.h"
-#include "core/machines/profile_cutter/template_tiles.h"
 
 #include <mutex>
 
@@ -17,10 +16,6 @@ void ensureRegistered() {
 }
 
 } // namespace
-
-const std::vector<std::string>& ExportSettings::papers() {
-    return paperNames(); // the cutting templates' papers
-}
 
 void registerMachine(std::unique_ptr<MachineModule> module) {
     for (const auto& m : modules())

@@ -20,8 +20,7 @@ TipSample tipSample(const TipModel* model, const JointVector& commanded,
                     const JointVector& actual) {
     TipSample s;
     if (!model) return s;
-    s.commanded = model->tip(commanded);
-    s.actual = model->tip(actual);
+    model->tipPair(commanded, actual, s.commanded, s.actual);
     s.commanded_on_work = model->tipOnWork(commanded, s.commanded);
     s.actual_on_work = model->tipOnWork(actual, s.actual);
     s.valid = true;
@@ -29,15 +28,7 @@ TipSample tipSample(const TipModel* model, const JointVector& commanded,
 }
 
 TipSample TrackingStats::tips(const JointVector& commanded, const JointVector& actual) const {
-    if (!robot_) return tipSample(model_, commanded, actual);
-    TipSample s;
-    robot_->tipPair(commanded.segment<kArmJointCount>(1), actual.segment<kArmJointCount>(1),
-                    s.commanded, s.actual);
-    // Where the torch is on the pipe: both tips in the frame of their own chuck angle.
-    s.commanded_on_work = robot_->workFromBase(commanded[0], s.commanded);
-    s.actual_on_work = robot_->workFromBase(actual[0], s.actual);
-    s.valid = true;
-    return s;
+    return tipSample(model_, commanded, actual);
 }
 
 void TrackingStats::add(const JointVector& commanded, const JointVector& actual,
@@ -67,7 +58,7 @@ void TrackingStats::fill(TrackingReport& r) const {
     r.on_pipe_max_abs_mm = workMaxAbs_;
     r.max_torque_fraction = maxTorqueFraction_;
     r.steps = n_;
-    r.has_tip = robot_ != nullptr || model_ != nullptr;
+    r.has_tip = model_ != nullptr;
 }
 
 void TrackingStats::fillCruise(TrackingReport& r) const {
@@ -93,9 +84,8 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
         const bool linear = r.linear(i);
         const std::string maxKey = linear ? "max_abs_error_mm" : "max_abs_error_deg";
         const std::string rmsKey = linear ? "rms_error_mm" : "rms_error_deg";
-        const std::string name = names && !(*names)[a].empty() ? (*names)[a]
-                                 : i == 0                      ? "chuck (theta0)"
-                                                               : "theta" + std::to_string(i);
+        const std::string name =
+            names && !(*names)[a].empty() ? (*names)[a] : "axis " + std::to_string(i);
         const auto& j = r.joints[a];
         joints.emplace_back(
             json::Object{{"axis", i}, {"name", name}, {maxKey, j.max_abs}, {rmsKey, j.rms}});

@@ -4,10 +4,8 @@
 // and relative to the turning work pipe. Used by the offline simulation and by the engine,
 // so both report the same figures. add() is allocation-free.
 #include "core/common/types.h"
-#include "core/job/job.h"
 #include "core/json/json.h"
 #include "core/kinematics/tip_model.h"
-#include "core/machines/pipe_robot/pipe_robot.h"
 
 #include <array>
 #include <string>
@@ -33,7 +31,7 @@ struct TrackingReport {
     // The machine has a tool-tip model (the Cartesian figures mean something); without one the
     // report holds joint figures only.
     bool has_tip = true;
-    int axis_count = kAxisCount;              // axes in joints / cruise_joints
+    int axis_count = 0;                       // axes in joints / cruise_joints
     std::array<bool, kMaxAxes> axis_linear{}; // mm instead of rad
     std::array<AxisErrorStats, kMaxAxes> joints{};
     Vec3 cartesian_max_abs_mm = Vec3::Zero(); // tip, base frame
@@ -70,17 +68,16 @@ TipSample tipSample(const TipModel* model, const JointVector& commanded, const J
 
 class TrackingStats {
   public:
-    explicit TrackingStats(const PipeRobot& robot) : robot_(&robot) {}
-    // Any machine: the tip comes from its model (the motion engine's programs carry one).
-    // A null model gives joint figures only. The model must outlive the stats.
+    // The tip comes from the machine's model (the motion engine's programs carry one). A null
+    // model gives joint figures only. The model must outlive the stats.
     explicit TrackingStats(const TipModel* model) : model_(model) {}
     void reset();
-    // The tips of a sample with this stats' robot or model (allocation-free).
+    // The tips of a sample with this stats' model (allocation-free).
     TipSample tips(const JointVector& commanded, const JointVector& actual) const;
     void add(const JointVector& commanded, const JointVector& actual) {
         add(commanded, actual, tips(commanded, actual));
     }
-    // With tips computed once for several stats (they must come from the same robot/model).
+    // With tips computed once for several stats (they must come from the same model).
     void add(const JointVector& commanded, const JointVector& actual, const TipSample& tips);
     void addTorqueFraction(double f) {
         if (f > maxTorqueFraction_) maxTorqueFraction_ = f;
@@ -93,7 +90,6 @@ class TrackingStats {
     const Vec3& lastCartesianError() const { return lastCart_; }
 
   private:
-    const PipeRobot* robot_ = nullptr;
     const TipModel* model_ = nullptr;
     long n_ = 0;
     JointVector maxAbs_ = JointVector::Zero();
@@ -104,7 +100,7 @@ class TrackingStats {
 };
 
 // Axes 0 .. axis_count-1, each in its unit (rotary: *_deg, linear: *_mm), named by `names`
-// when given (else the pipe robot's names). The Cartesian figures only when has_tip.
+// when given (else "axis 0", "axis 1", ...). The Cartesian figures only when has_tip.
 json::Value reportToJson(const TrackingReport& r,
                          const std::array<std::string, kMaxAxes>* names = nullptr);
 

@@ -14,26 +14,6 @@
 
 namespace cutcell::canopen {
 
-std::vector<DriveNodeConfig> nodesFromJob(const Job& job, const std::vector<int>& ids) {
-    std::vector<DriveNodeConfig> out;
-    for (int id : ids) {
-        size_t axis = static_cast<size_t>((id - 1) % kAxisCount);
-        // The pipe robot's job: controller and plant hold its 6 axes; node_ids has up to
-        // kMaxAxes slots, the ones past the 6th are not this machine's.
-        for (size_t a = 0; a < job.controller.size(); ++a)
-            if (job.devices.node_ids[a] == id) axis = a;
-        DriveNodeConfig c;
-        c.node = id;
-        c.gains = job.controller[axis];
-        c.plant = job.plant[axis];
-        // The pipe robot's axes are all rotary (counts per degree).
-        c.counts_per_rad = countsPerRad(job.devices.counts_per_unit[axis], false);
-        c.max_loop_period_s = std::min(0.001, job.sim.period_s);
-        out.push_back(c);
-    }
-    return out;
-}
-
 DriveSimulator::DriveSimulator(DriveSimulatorConfig config) : config_(std::move(config)) {
     for (const DriveNodeConfig& c : config_.nodes)
         nodes_.emplace_back(c);

@@ -31,10 +31,6 @@ struct DriveSimulatorConfig {
     std::vector<EncoderNodeConfig> encoders; // CiA 406 encoders on the same bus peer
 };
 
-// Node configs for the given node ids from a job's controller, plant and scaling; the axis of
-// a node is its position in job.devices.node_ids (ids not in the job take axis (id-1) % 6).
-std::vector<DriveNodeConfig> nodesFromJob(const Job& job, const std::vector<int>& ids);
-
 struct SimNodeSnapshot {
     int node = 0;
     NmtState nmt = NmtState::Unknown;

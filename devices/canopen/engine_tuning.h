@@ -35,10 +35,4 @@ inline void tuneEngineForCan(EngineConfig& config, const CanOpenMasterConfig& mc
                   linear ? 20 * period_s * config.spec.home_speed_mm_s : 0.0});
 }
 
-// The pipe robot's six rotary CSP drives of a job.
-inline void tuneEngineForCan(EngineConfig& config, const Job& job, double period_s) {
-    tuneEngineForCan(config, masterConfigFromJob(job, period_s, kAxisCount),
-                     job.engine.home_speed_deg_s, period_s);
-}
-
 } // namespace cutcell::canopen

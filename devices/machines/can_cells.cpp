@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 namespace cutcell {
 
@@ -96,6 +97,28 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
                                  sensors[static_cast<size_t>(k)].c_str());
     *out = std::move(c);
     return true;
+}
+
+std::vector<DriveNodeConfig> canCellDriveNodes(const Job& job, const std::vector<int>& ids) {
+    CanCellConfig cell;
+    std::string error;
+    if (!makeCanCell(job, job.sim.period_s, nullptr, &cell, &error))
+        throw std::invalid_argument(error);
+    std::vector<DriveNodeConfig> out;
+    for (int id : ids) {
+        const auto it = std::find_if(cell.sim_drives.begin(), cell.sim_drives.end(),
+                                     [id](const DriveNodeConfig& d) { return d.node == id; });
+        if (it == cell.sim_drives.end()) {
+            std::string drives;
+            for (const DriveNodeConfig& d : cell.sim_drives)
+                drives += (drives.empty() ? "" : ", ") + std::to_string(d.node);
+            throw std::invalid_argument(
+                "node " + std::to_string(id) +
+                " is not a drive of the machine's CAN cell (its drives: " + drives + ")");
+        }
+        out.push_back(*it);
+    }
+    return out;
 }
 
 void tuneEngineForCanCell(EngineConfig& config, const CanCellConfig& cell, const Job& job,

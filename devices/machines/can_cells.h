@@ -47,6 +47,13 @@ void tuneEngineForCanCell(EngineConfig& config, const CanCellConfig& cell, const
 bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, CanCellConfig* out,
                  std::string* error);
 
+// The simulated drives of job.machine's CAN cell (at the job's sim.period_s) with these node ids,
+// in the order given (a drive simulator playing part of the cell: tests, `cutcell-cli drivesim
+// --nodes`). Throws std::invalid_argument naming the node and the cell's drives for an id that
+// is not one of them, or why the machine has no CAN cell.
+std::vector<canopen::DriveNodeConfig> canCellDriveNodes(const Job& job,
+                                                        const std::vector<int>& ids);
+
 // What a machine measures on its CAN cell besides the engine's figures - the flying saw: the
 // cut length of every piece, as its simulated rig reports it - from the engine's devices,
 // between which and the engine it sits. Built per run; lives as long as the engine.

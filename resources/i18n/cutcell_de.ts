@@ -1144,7 +1144,7 @@
         <translation>die Warteschlange von %d Stücken braucht etwa %.0f s Linienzeit (%.3g Zyklen bei %.3g ms), über der Grenze der Simulation von %.0f s: aufteilen (etwa %d Stücke der mittleren Länge dieser Warteschlange passen)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>out of reach: the wrist is %.3f mm beyond the arm&apos;s reach (joint 3)</source>
         <translation>außer Reichweite: das Handgelenk liegt %.3f mm jenseits der Reichweite des Arms (Gelenk 3)</translation>
     </message>
@@ -1199,7 +1199,7 @@
         <translation>Schieber-Positionssensor</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+49"/>
         <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
         <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
     </message>
@@ -2164,7 +2164,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-272"/>
+        <location line="-268"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2459,7 +2459,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-72"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2479,7 +2479,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+71"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -2888,7 +2888,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ControllerForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+39"/>
+        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+41"/>
         <source>PID with first-order filter, per joint</source>
         <translation>PID mit Filter 1. Ordnung, je Gelenk</translation>
     </message>
@@ -2921,7 +2921,7 @@ entriegeln</translation>
 [s]</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); output in N m.</source>
         <translation>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); Ausgang in N m.</translation>
     </message>
@@ -4018,7 +4018,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MethodForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="+28"/>
+        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="+30"/>
         <source>Cutting method</source>
         <translation>Schneidverfahren</translation>
     </message>
@@ -4033,7 +4033,7 @@ entriegeln</translation>
         <translation>Stehendes Rohr</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Method</source>
         <translation>Verfahren</translation>
     </message>
@@ -4151,54 +4151,19 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ProfileCutterForm</name>
     <message>
-        <location filename="../../ui/machines/profile_cutter/profile_cutter_form.cpp" line="+16"/>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_form.cpp" line="+25"/>
         <source>2-axis NC profile cutter: the pipe turns in the chuck (A), the torch rides the X carriage. Stepper axes behind a pulse card.</source>
         <translation>2-Achsen-NC-Rohrprofilschneider: Das Rohr dreht sich im Futter (A), der Brenner fährt auf dem X-Schlitten. Schrittmotorachsen, angesteuert über eine Impulskarte.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+10"/>
         <source>A axis (pipe turn)</source>
         <translation>A-Achse (Rohrdrehung)</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Steps per revolution (n)</source>
-        <translation>Schritte pro Umdrehung (n)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>steps/rev</source>
-        <translation>Schritte/U</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Pulses per step</source>
-        <translation>Impulse pro Schritt</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>pulses/step</source>
-        <translation>Imp./Schritt</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>X axis (torch carriage)</source>
         <translation>X-Achse (Brennerschlitten)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Travel per pulse</source>
-        <translation>Weg pro Impuls</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>mm/pulse</source>
-        <translation>mm/Imp.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Carriage travel</source>
-        <translation>Verfahrweg Schlitten</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -4206,34 +4171,19 @@ entriegeln</translation>
         <translation>Impulskarte und Brenner</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Max. pulse rate per axis</source>
-        <translation>Max. Impulsrate je Achse</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Pierce dwell</source>
-        <translation>Einstechzeit</translation>
-    </message>
-    <message>
         <location line="+6"/>
         <source>Hole in the main pipe</source>
         <translation>Loch im Hauptrohr</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>middle of the main pipe</source>
         <translation>Mitte des Hauptrohrs</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Branch position</source>
         <translation>Abzweigposition</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Branch axis at X (S)</source>
-        <translation>Abzweigachse bei X (S)</translation>
     </message>
 </context>
 <context>
@@ -4748,7 +4698,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::RobotDhTableForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/robot_dh_table_form.cpp" line="+16"/>
+        <location filename="../../ui/machines/pipe_robot/robot_dh_table_form.cpp" line="+18"/>
         <source>Denavit-Hartenberg table and joint limits</source>
         <translation>Denavit-Hartenberg-Tabelle und Gelenkgrenzen</translation>
     </message>
@@ -4825,7 +4775,7 @@ letzte %1 s</translation>
         <translation>5 Rollachse</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
         <source>Row 0 is the pipe chuck: its d is the distance from the robot base to the cut centre. The analytic inverse kinematics needs the seed arm&apos;s structure (alpha = 90, 0, 0, 90, 0 deg for rows 1..5).</source>
         <translation>Zeile 0 ist das Rohrfutter: Sein d ist der Abstand von der Roboterbasis zur Schnittmitte. Die analytische inverse Kinematik setzt den Aufbau des Standardarms voraus (alpha = 90, 0, 0, 90, 0 deg für Zeilen 1..5).</translation>
     </message>
@@ -5553,7 +5503,7 @@ letzte %1 s</translation>
         <translation>Maschine für den neuen Auftrag:</translation>
     </message>
     <message>
-        <location filename="../../ui/machine/machine_ui_registry.cpp" line="+71"/>
+        <location filename="../../ui/machine/machine_ui_registry.cpp" line="+108"/>
         <source>Export &amp;G-code...</source>
         <translation>&amp;G-code exportieren...</translation>
     </message>
@@ -5593,7 +5543,7 @@ letzte %1 s</translation>
         <translation>Papier &quot;%1&quot; ist weder single, A4 noch A3</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>cutting template (%1, 1:1): %2 x %3 mm</source>
         <translation>Schneidschablone (%1, 1:1): %2 x %3 mm</translation>
     </message>
@@ -5669,15 +5619,15 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+72"/>
-        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+93"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+77"/>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+99"/>
         <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="+49"/>
-        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+50"/>
+        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+47"/>
         <source>3D view not built in this configuration.</source>
         <translation>3D-Ansicht in dieser Konfiguration nicht enthalten.</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="-22"/>
+        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="-27"/>
         <source>Static pipe: the chuck holds the pipe at a fixed angle and the arm follows the whole saddle curve around it.</source>
         <translation>Stehendes Rohr: das Futter hält das Rohr unter festem Winkel, und der Arm fährt die gesamte Sattelkurve um das Rohr ab.</translation>
     </message>
@@ -5687,7 +5637,7 @@ letzte %1 s</translation>
         <translation>Drehendes Rohr: das Futter dreht das Rohr so, dass der Schnittpunkt oben bleibt; der Brenner fährt auf einer kurzen Geraden.</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-53"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-59"/>
         <source>Pipe-cutting robot: 5-DOF arm + pipe chuck (6 axes)</source>
         <translation>Rohrschneidroboter: 5-achsiger Arm + Rohrfutter (6 Achsen)</translation>
     </message>
@@ -5708,12 +5658,12 @@ letzte %1 s</translation>
         <translation>Regler</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).</source>
         <translation>%1 Punkte geplant, %2 mm in %3 s (max. Brennerneigung %4 deg).</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="-66"/>
+        <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="-72"/>
         <source>2-axis NC pipe profile cutter: chuck A + carriage X</source>
         <translation>2-Achs-NC-Rohrprofilschneidmaschine: Futter A + Wagen X</translation>
     </message>
@@ -5738,7 +5688,7 @@ letzte %1 s</translation>
         <translation>G-code (X/A): %1 Bewegungen, %2 mm abgewickelt, %3 s</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+14"/>
         <source>Profile cutter: %1 points, %2 mm in %3 s.</source>
         <translation>Profilschneider: %1 Punkte, %2 mm in %3 s.</translation>
     </message>
@@ -5768,7 +5718,7 @@ letzte %1 s</translation>
         <translation>Die Schnellrücklauf-Maschine hobelt ein flaches Werkstück entlang ihres Hubs: keine Rohre, ihr Schnitt wird auf der Seite Mechanik eingestellt.</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="-33"/>
+        <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="-30"/>
         <source>Section-steel cutter (3R path arm + 5-DOF groove arm)</source>
         <translation>Profilstahl-Schneidanlage (3R-Bahnarm + 5-achsiger Fasenarm)</translation>
     </message>
@@ -6189,6 +6139,41 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Steps per revolution (n)</source>
+        <translation>Schritte pro Umdrehung (n)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pulses per step</source>
+        <translation>Impulse pro Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Travel per pulse</source>
+        <translation>Weg pro Impuls</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max. pulse rate per axis</source>
+        <translation>Max. Impulsrate je Achse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pierce dwell</source>
+        <translation>Einstechzeit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Carriage travel</source>
+        <translation>Verfahrweg Schlitten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Branch axis at X (S)</source>
+        <translation>Abzweigachse bei X (S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Rocker pivot O3x</source>
         <translation>Schwingenlager O3x</translation>
     </message>
@@ -6597,6 +6582,21 @@ letzte %1 s</translation>
         <location line="+1"/>
         <source>pieces</source>
         <translation>Stück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps/rev</source>
+        <translation>Schritte/U</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pulses/step</source>
+        <translation>Imp./Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mm/pulse</source>
+        <translation>mm/Imp.</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -3,6 +3,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -73,7 +74,7 @@ TEST(Cli, InvalidJobExitsTwoWithTheKeyValueUnitAndLimit) {
 TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
     const fs::path dir = tempDir("unreachable");
     Job job = defaultJob();
-    job.method = CutMethod::StaticPipe;
+    cutcell::pipeRobotSpec(job).method = CutMethod::StaticPipe;
     job.cut.target = CutTarget::Branch;
     saveJobFile(job, (dir / "job.json").string());
     const Result r =

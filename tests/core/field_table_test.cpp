@@ -8,6 +8,8 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
 #include "core/machines/flying_saw/flying_saw_section.h"
+#include "core/machines/profile_cutter/profile_cutter_module.h"
+#include "core/machines/profile_cutter/profile_cutter_section.h"
 #include "core/machines/quick_return/quick_return_spec.h"
 #include "core/machines/section_steel/section_steel_module.h"
 #include "core/machines/section_steel/section_steel_section.h"
@@ -207,6 +209,55 @@ const Section<section_steel::SectionSteelSpec> kSectionSteel{
         return *j.machine_spec.as<section_steel::SectionSteelSpec>();
     },
     "section"};
+
+// The profile cutter's stepper keys: its table alone (the pipe joint's keys and its other
+// branches are read by their own code, core/machine/pipe_joint_section.h and the module).
+const Section<ProfileCutterSpec> kProfileCutter{
+    kProfileCutterId,
+    profileCutterFields,
+    [](const json::Value& v) {
+        SectionReader m(v, "machine");
+        m.get("kind");
+        ProfileCutterSpec s;
+        readFields(m, profileCutterFields(), s);
+        m.finish();
+        return s;
+    },
+    [](const ProfileCutterSpec& s) {
+        json::Object out{{"kind", kProfileCutterId}};
+        for (auto& [k, v] : writeFields(profileCutterFields(), s))
+            out.emplace_back(k, v);
+        return json::Value(out);
+    },
+    [](const ProfileCutterSpec& s) {
+        IssueChecker c;
+        checkFields(c, profileCutterFields(), s);
+        return c.issues;
+    },
+    [](const Job& j) -> const ProfileCutterSpec& { return profileCutterSpec(j); }};
+
+TEST(SectionFields, ProfileCutterWritesEveryKeyAndReadsItBack) {
+    everyKeyIsWrittenAtItsPathAndReadBack(kProfileCutter);
+}
+TEST(SectionFields, ProfileCutterRefusesAMisspeltKey) {
+    aMisspeltKeyIsRefusedWhereverItIs(kProfileCutter);
+}
+TEST(SectionFields, ProfileCutterNamesAValueBeyondItsRange) {
+    aValueBeyondItsRangeNamesKeyValueUnitAndLimit(kProfileCutter);
+}
+// The hole's position is written only when it is not automatic, and read back so.
+TEST(SectionFields, ProfileCutterWritesTheHolePositionOnlyWhenSet) {
+    ProfileCutterSpec s = kProfileCutter.defaults();
+    s.branch_position_auto = true;
+    EXPECT_EQ(at(kProfileCutter.write(s), "profile_cutter.branch_position_mm"), nullptr);
+    s.branch_position_auto = false;
+    s.branch_position_mm = 321.5;
+    const json::Value w = kProfileCutter.write(s);
+    ASSERT_NE(at(w, "profile_cutter.branch_position_mm"), nullptr);
+    const ProfileCutterSpec back = kProfileCutter.read(w);
+    EXPECT_FALSE(back.branch_position_auto);
+    EXPECT_EQ(back.branch_position_mm, 321.5);
+}
 
 TEST(SectionFields, SectionSteelWritesEveryKeyAndReadsItBack) {
     everyKeyIsWrittenAtItsPathAndReadBack(kSectionSteel);

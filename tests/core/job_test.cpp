@@ -1,11 +1,14 @@
 // Job files: defaults, round trips, and rejection messages that name key, value, unit, limit.
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
+#include <utility>
 
 using namespace cutcell;
 
@@ -50,10 +53,10 @@ TEST(Job, DefaultJobIsValidAndReproducesTheSeedSetUp) {
     EXPECT_TRUE(validateJob(job).empty());
     const auto seed = seedDhTable();
     for (size_t i = 0; i < seed.size(); ++i) {
-        EXPECT_EQ(job.dh[i].d_mm, seed[i].d_mm);
-        EXPECT_EQ(job.dh[i].a_mm, seed[i].a_mm);
-        EXPECT_EQ(job.dh[i].min_deg, seed[i].min_deg);
-        EXPECT_EQ(job.dh[i].max_deg, seed[i].max_deg);
+        EXPECT_EQ(cutcell::pipeRobotSpec(job).dh[i].d_mm, seed[i].d_mm);
+        EXPECT_EQ(cutcell::pipeRobotSpec(job).dh[i].a_mm, seed[i].a_mm);
+        EXPECT_EQ(cutcell::pipeRobotSpec(job).dh[i].min_deg, seed[i].min_deg);
+        EXPECT_EQ(cutcell::pipeRobotSpec(job).dh[i].max_deg, seed[i].max_deg);
     }
     EXPECT_EQ(job.sim.duration_s, 30);
     EXPECT_FALSE(job.description.empty());
@@ -183,7 +186,7 @@ TEST(Job, StructuralErrorsAreNamed) {
 // 32-bit position; the bound follows from the travel and the refusal gives it.
 TEST(Job, CountsPerUnitKeepTheWholeTravelInsideA32BitPosition) {
     Job job = defaultJob();
-    const DhRow& r = job.dh[3];
+    const DhRow& r = pipeRobotSpec(job).dh[3];
     const double reach = std::max(std::fabs(r.min_deg), std::fabs(r.max_deg));
     const double bound = 2147483647.0 / reach;
     const auto issueOf = [](const Job& j) {
@@ -203,4 +206,34 @@ TEST(Job, CountsPerUnitKeepTheWholeTravelInsideA32BitPosition) {
     ASSERT_NE(at, std::string::npos) << m;
     job.devices.counts_per_unit[3] = std::stod(m.substr(at + 8));
     EXPECT_EQ(issueOf(job), "") << "the bound named: " << m.substr(at);
+}
+
+// The robot's data lives in its own section (Job::machine_spec), read back by pipeRobotSpec():
+// the shipped job holds it; a job built in code reads the defaults until it is edited; another
+// machine's job is refused by name, never read as the robot's.
+TEST(Job, TheRobotsDataIsItsOwnSection) {
+    const Job shipped = defaultJob();
+    ASSERT_NE(shipped.machine_spec.as<PipeRobotSpec>(), nullptr);
+    EXPECT_EQ(pipeRobotSpec(shipped).dh[0].d_mm, seedDhTable()[0].d_mm);
+    EXPECT_GT(pipeRobotSpec(shipped).controller[1].kp, 0);
+
+    Job built;
+    EXPECT_TRUE(built.machine_spec.empty());
+    EXPECT_EQ(pipeRobotSpec(std::as_const(built)).method, CutMethod::RotatingPipe);
+    pipeRobotSpec(built).method = CutMethod::StaticPipe;
+    ASSERT_NE(built.machine_spec.as<PipeRobotSpec>(), nullptr);
+    EXPECT_EQ(pipeRobotSpec(std::as_const(built)).method, CutMethod::StaticPipe);
+
+    const Job saw = parseJob(
+        readTextFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/flying_saw_job.json"));
+    try {
+        (void)pipeRobotSpec(saw);
+        FAIL() << "a flying-saw job read as the robot's";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("not the pipe robot's"), std::string::npos)
+            << e.what();
+    }
+    // Written and read back, the section is the same.
+    const Job back = parseJob(json::write(jobToJson(shipped)));
+    EXPECT_EQ(json::write(jobToJson(back)), json::write(jobToJson(shipped)));
 }

@@ -3,6 +3,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -163,7 +164,7 @@ TEST(Machines, NumbersHavePhysicalRanges) {
     EXPECT_NE(firstIssue(j).find("cut.speed_mm_s = 1e-300 mm/s"), std::string::npos)
         << firstIssue(j);
     j = defaultJob();
-    j.controller[2].kp = 1e308;
+    cutcell::pipeRobotSpec(j).controller[2].kp = 1e308;
     EXPECT_NE(firstIssue(j).find("controller[2].kp_nm_per_rad = 1e+308 N m/rad is outside"),
               std::string::npos)
         << firstIssue(j);

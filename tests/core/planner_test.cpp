@@ -1,8 +1,9 @@
 // Cut planning: the rotating method keeps the torch on its straight line over the pipe, the
 // cut point moves at the cutting speed, and unreachable paths are reported with the point.
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@ using namespace cutcell;
 namespace {
 Job jobWith(CutMethod m, CutTarget t = CutTarget::Main) {
     Job job = defaultJob();
-    job.method = m;
+    cutcell::pipeRobotSpec(job).method = m;
     job.cut.target = t;
     return job;
 }
@@ -24,7 +25,7 @@ TEST(Planner, RotatingMethodKeepsTheTorchOnItsLine) {
         const Job job = jobWith(CutMethod::RotatingPipe, target);
         const CutPlan plan = planCut(job);
         ASSERT_TRUE(plan.reachable) << plan.problem;
-        const PipeRobot robot(job.dh);
+        const PipeRobot robot(cutcell::pipeRobotSpec(job).dh);
         const double workR =
             target == CutTarget::Main ? job.main_pipe.radius_mm : job.branch_pipe.radius_mm;
         for (const PlannedPoint& p : plan.knots) {
@@ -73,7 +74,7 @@ TEST(Planner, StaticMethodHoldsTheChuckAndTiltsTheTorchIntoThePlane) {
     const Job job = jobWith(CutMethod::StaticPipe);
     const CutPlan plan = planCut(job);
     ASSERT_TRUE(plan.reachable) << plan.problem;
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(cutcell::pipeRobotSpec(job).dh);
     for (const PlannedPoint& p : plan.knots) {
         ASSERT_EQ(p.q[0], deg2rad(job.cut.static_chuck_deg));
         const Pose tool = robot.forward(p.q.segment<kArmJointCount>(1));
@@ -100,7 +101,7 @@ TEST(Planner, UnreachablePathNamesThePointAndTheReason) {
         << plan.problem;
 
     Job far = defaultJob();
-    far.dh[0].d_mm = 900; // pipe moved out of reach
+    cutcell::pipeRobotSpec(far).dh[0].d_mm = 900; // pipe moved out of reach
     const CutPlan farPlan = planCut(far);
     ASSERT_FALSE(farPlan.reachable);
     EXPECT_EQ(farPlan.first_bad, 0);

@@ -1,9 +1,10 @@
 // Seed 000 Section 4: the 30 s cut simulated with both methods. The rotating-pipe method must
 // track better than the static one, and both within the seed's simulated figures.
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
+#include "core/machines/pipe_robot/cut_simulation.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
-#include "core/sim/cut_simulation.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,7 @@ namespace {
 
 TrackingReport run(CutMethod m) {
     Job job = defaultJob();
-    job.method = m;
+    cutcell::pipeRobotSpec(job).method = m;
     const CutPlan plan = planCut(job);
     EXPECT_TRUE(plan.reachable) << plan.problem;
     return simulateCut(job, plan);
@@ -90,14 +91,27 @@ TEST(Simulation, ReportJsonHasTheDocumentedKeys) {
     EXPECT_TRUE(v.find("reachable")->asBool());
 }
 
+// The robot's tip model seen through TipModel's own tipPair (two tip() calls).
+class OneTipAtATime : public TipModel {
+  public:
+    explicit OneTipAtATime(const TipModel& m) : m_(m) {}
+    Vec3 tip(const JointVector& q) const override { return m_.tip(q); }
+    Vec3 tipOnWork(const JointVector& q, const Vec3& tipBase) const override {
+        return m_.tipOnWork(q, tipBase);
+    }
+
+  private:
+    const TipModel& m_;
+};
+
 // The tips computed once and shared (overall, cruise, telemetry) give the same figures as
-// computing them per add(), and the engine's tip model (PipeRobotTipModel) the same as the
-// simulation's robot.
+// computing them per add(), and the robot's two-sample tipPair (the simulation's and the
+// engine's path) the same as one tip() per sample.
 TEST(Simulation, SharedTipsGiveTheSameFigures) {
     const Job job = defaultJob();
-    const PipeRobot robot(job.dh);
-    const PipeRobotTipModel model(job.dh);
-    TrackingStats perAdd(robot), shared(robot), viaModel(&model);
+    const PipeRobotTipModel model(cutcell::pipeRobotSpec(job).dh);
+    const OneTipAtATime single(model);
+    TrackingStats perAdd(&model), shared(&model), viaModel(&single);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> angle(-kPi, kPi), small(-0.01, 0.01);
     for (int k = 0; k < 2000; ++k) {
@@ -113,6 +127,7 @@ TEST(Simulation, SharedTipsGiveTheSameFigures) {
         viaModel.add(c, a);
     }
     TrackingReport r1, r2, r3;
+    r1.axis_count = r2.axis_count = r3.axis_count = kAxisCount;
     perAdd.fill(r1);
     shared.fill(r2);
     viaModel.fill(r3);

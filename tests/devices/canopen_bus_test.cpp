@@ -11,6 +11,7 @@
 #include "devices/canopen/qt_can_frame.h"
 #include "devices/canopen/sdo.h"
 #include "devices/canopen/virtualcan_host.h"
+#include "devices/machines/can_cells.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -39,7 +40,7 @@ class CanOpenBusTest : public QObject {
     simulator(const std::vector<int>& ids,
               const std::function<void(DriveNodeConfig&)>& tweak = {}) {
         DriveSimulatorConfig c;
-        c.nodes = nodesFromJob(job_, ids);
+        c.nodes = cutcell::canCellDriveNodes(job_, ids);
         if (tweak)
             for (DriveNodeConfig& n : c.nodes)
                 tweak(n);
@@ -145,7 +146,7 @@ class CanOpenBusTest : public QObject {
         QVERIFY2(error.find("can0, can1") != std::string::npos, error.c_str());
         DriveSimulatorConfig sc;
         sc.interface = "tcp://127.0.0.1:35468/can7";
-        sc.nodes = nodesFromJob(job_, {1});
+        sc.nodes = cutcell::canCellDriveNodes(job_, {1});
         DriveSimulator sim(sc);
         QVERIFY(!sim.start(1000));
         QVERIFY2(sim.errorText().contains("can0, can1"), qPrintable(sim.errorText()));

@@ -4,10 +4,12 @@
 #include "core/engine/motion_engine.h"
 #include "core/job/default_job.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "devices/canopen/canopen_master.h"
 #include "devices/canopen/drive_simulator.h"
 #include "devices/canopen/engine_tuning.h"
 #include "devices/canopen/virtualcan_host.h"
+#include "devices/machines/can_cells.h"
 #include "devices/sim/simulated_torch.h"
 
 #include <QCanBus>
@@ -64,21 +66,21 @@ class CanOpenEngineTest : public QObject {
         job_.sim.duration_s = 1;
         DriveSimulatorConfig sc;
         sc.interface = interface;
-        sc.nodes = nodesFromJob(job_, {1, 2, 3, 4, 5, 6});
+        sc.nodes = cutcell::canCellDriveNodes(job_, {1, 2, 3, 4, 5, 6});
         sim_ = std::make_unique<DriveSimulator>(sc);
         QVERIFY2(sim_->start(), qPrintable(sim_->errorText()));
-        CanOpenMasterConfig mc = masterConfigFromJob(job_, kPeriod, kAxisCount);
+        CanOpenMasterConfig mc = masterConfigFromJob(job_, kPeriod, cutcell::kAxisCount);
         mc.sync = SyncSource::LastDriveWrite;
         master_ = std::make_unique<CanOpenMaster>(mc);
         std::string error;
         QVERIFY2(master_->start(&error), error.c_str());
         QTRY_VERIFY_WITH_TIMEOUT(master_->allOperational(), 5000);
         EngineDevices devices;
-        for (int i = 0; i < kAxisCount; ++i)
+        for (int i = 0; i < cutcell::kAxisCount; ++i)
             devices.axes[static_cast<size_t>(i)] = master_->drive(i);
         devices.torch = &torch_;
         EngineConfig config;
-        tuneEngineForCan(config, job_, kPeriod);
+        tuneEngineForCan(config, mc, job_.engine.home_speed_deg_s, kPeriod);
         config.clock = ClockMode::RealTime;
         config.spec = job_.engine;
         config.spec.runs_dir.clear();
@@ -106,7 +108,7 @@ class CanOpenEngineTest : public QObject {
         QVERIFY(engine_->state() == EngineState::Completed);
         TrackingReport report;
         QVERIFY(engine_->lastRunReport(report));
-        for (int i = 0; i < kAxisCount; ++i) {
+        for (int i = 0; i < cutcell::kAxisCount; ++i) {
             qInfo("axis %d: max |e| %.4f deg over CAN", i,
                   report.joints[static_cast<size_t>(i)].max_abs);
             QVERIFY(report.joints[static_cast<size_t>(i)].max_abs <

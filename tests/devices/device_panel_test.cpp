@@ -3,6 +3,7 @@
 #include "app/gui/can_panel_feed.h"
 #include "core/job/default_job.h"
 #include "devices/canopen/drive_simulator.h"
+#include "devices/machines/can_cells.h"
 #include "ui/device_panel.h"
 
 #include <QComboBox>
@@ -35,7 +36,7 @@ class DevicePanelTest : public QObject {
             QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 7) % 20000).toStdString();
         DriveSimulatorConfig sc;
         sc.interface = QString::fromStdString(job.devices.can_interface);
-        sc.nodes = nodesFromJob(job, {1, 2, 3});
+        sc.nodes = cutcell::canCellDriveNodes(job, {1, 2, 3});
         sc.nodes[1].faults.fault_code = 0x2310;
         sc.nodes[1].faults.fault_after_s = 0.1;
         DriveSimulator sim(sc);

@@ -1,5 +1,6 @@
 // The simulated CiA 402 slave, frames in and frames out (no bus).
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "devices/canopen/drive_node.h"
 #include "devices/canopen/emcy.h"
 #include "devices/canopen/pdo.h"
@@ -19,8 +20,8 @@ DriveNodeConfig config() {
     const Job job = defaultJob();
     DriveNodeConfig c;
     c.node = kNode;
-    c.gains = job.controller[1];
-    c.plant = job.plant[1];
+    c.gains = cutcell::pipeRobotSpec(job).controller[1];
+    c.plant = cutcell::pipeRobotSpec(job).plant[1];
     c.counts_per_rad = countsPerRad(job.devices.counts_per_unit[1], false);
     return c;
 }

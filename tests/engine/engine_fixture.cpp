@@ -1,4 +1,5 @@
 #include "engine_fixture.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 namespace cutcell::test {
 
@@ -30,8 +31,8 @@ SimCell::SimCell(const CellOptions& o) : program_(o.quick ? quickProgram() : tes
     EngineDevices devices;
     for (int i = 0; i < kAxisCount; ++i) {
         SimulatedDriveConfig dc;
-        dc.gains = job.controller[static_cast<size_t>(i)];
-        dc.plant = job.plant[static_cast<size_t>(i)];
+        dc.gains = cutcell::pipeRobotSpec(job).controller[static_cast<size_t>(i)];
+        dc.plant = cutcell::pipeRobotSpec(job).plant[static_cast<size_t>(i)];
         dc.period_s = job.sim.period_s;
         dc.initial_position = i == 0 ? deg2rad(o.chuck_start_deg) : 0.0;
         drives_.push_back(std::make_unique<SimulatedDrive>(dc));

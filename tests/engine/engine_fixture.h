@@ -3,8 +3,8 @@
 // engine, with helpers that drive it into each state and collect its events.
 #include "core/engine/motion_engine.h"
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
-#include "core/trajectory/cut_planner.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
 

@@ -2,7 +2,7 @@
 // and override time-scale the path with no jump in set-point or velocity.
 #include "engine_fixture.h"
 
-#include "core/sim/cut_simulation.h"
+#include "core/machines/pipe_robot/cut_simulation.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,6 +3,8 @@
 // the drive simulator in-process as a real bus peer. Enable brings every node to Operation
 // enabled in the device panel; E-STOP takes every node out of it. A cycle too short for the
 // bus is refused with the bus-load message as the rig error.
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "devices/machines/can_cells.h"
 #include "sim_rig.h"
 
 #include "core/job/default_job.h"
@@ -88,8 +90,9 @@ class TestGuiCan : public QObject {
         const cutcell::Job job = canJob(0.004); // the controller filters need tau_f >= period / 2
         cutcell::canopen::DriveSimulatorConfig sc;
         sc.interface = interface_;
-        sc.nodes = cutcell::canopen::nodesFromJob(
-            job, {job.devices.node_ids.begin(), job.devices.node_ids.end()});
+        sc.nodes =
+            cutcell::canCellDriveNodes(job, {job.devices.node_ids.begin(),
+                                             job.devices.node_ids.begin() + cutcell::kAxisCount});
         cutcell::canopen::DriveSimulator sim(sc);
         QVERIFY2(sim.start(), qPrintable(sim.errorText()));
 

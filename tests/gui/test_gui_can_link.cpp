@@ -11,6 +11,8 @@
 //    back; a bus lost while enabled faults the engine, and Reset reconnects so Enable works;
 //  - E-STOP during the bring-up stops the machine, and the bus coming up enables nothing.
 #include "can_cable.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "devices/machines/can_cells.h"
 #include "sim_rig.h"
 
 #include "main_window_run.h"
@@ -128,8 +130,9 @@ class TestGuiCanLink : public QObject {
     std::unique_ptr<cutcell::canopen::DriveSimulator> startSimulator(const cutcell::Job& job) {
         cutcell::canopen::DriveSimulatorConfig sc;
         sc.interface = busUrl();
-        sc.nodes = cutcell::canopen::nodesFromJob(
-            job, {job.devices.node_ids.begin(), job.devices.node_ids.end()});
+        sc.nodes =
+            cutcell::canCellDriveNodes(job, {job.devices.node_ids.begin(),
+                                             job.devices.node_ids.begin() + cutcell::kAxisCount});
         auto sim = std::make_unique<cutcell::canopen::DriveSimulator>(sc);
         if (!sim->start()) return nullptr;
         return sim;

@@ -182,17 +182,17 @@ class TestGuiFlyingSaw : public QObject {
         const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(cutcell::kFlyingSawId);
         QVERIFY(ui);
         const cutcell::Job job = ui->defaultJob();
-        const cutcell::CutPlan plan = ui->plan(job, {});
-        QVERIFY2(plan.reachable, plan.problem.c_str());
+        const cutcell::MachinePlan plan = ui->plan(job, {});
+        QVERIFY2(plan.ok(), plan.problem.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
-        QCOMPARE(ui->plannedPointCount(job, plan), core.program->point_count);
+        QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
         QCOMPARE(ui->axes().size(), size_t(4));
         // A piece too short for the cycle: not reachable, with the core's sentence and figures.
         cutcell::Job bad = job;
         bad.machine_spec.as<FlyingSawSpec>()->queue = {{500, 2}};
-        const cutcell::CutPlan badPlan = ui->plan(bad, {});
-        QVERIFY(!badPlan.reachable);
+        const cutcell::MachinePlan badPlan = ui->plan(bad, {});
+        QVERIFY(!badPlan.ok());
         QCOMPARE(badPlan.problem, cutcell::machineFor(bad).plan(bad).problem);
         QVERIFY2(badPlan.problem.find("shortest possible") != std::string::npos,
                  badPlan.problem.c_str());
@@ -320,14 +320,13 @@ class TestGuiFlyingSaw : public QObject {
     void sceneFollowsTheAxesAndTheLine() {
         const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(cutcell::kFlyingSawId);
         const cutcell::Job job = ui->defaultJob();
-        const cutcell::CutPlan plan = ui->plan(job, {});
+        const cutcell::MachinePlan plan = ui->plan(job, {});
         cutcell::view3d::SceneModel model;
         QString why;
         QVERIFY2(ui->buildScene(job, plan, &model, &why), qPrintable(why));
         QVERIFY(model.linkage);
         QCOMPARE(model.masterSlot, cutcell::view3d::kFlyingSawMasterSlot);
-        const auto& data =
-            *static_cast<const cutcell::FlyingSawPlanData*>(plan.machine_plan->data.get());
+        const auto& data = *static_cast<const cutcell::FlyingSawPlanData*>(plan.data.get());
         const double retract = data.plan.saw.retract_radius;
         const double bladeR = data.spec.blade_diameter_mm / 2;
         const size_t count = model.linkage(model.homeQ).size();

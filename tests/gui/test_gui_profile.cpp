@@ -3,6 +3,7 @@
 // both plots fed on two axes (A in deg, X in mm); EMERGENCY STOP latches and turns the torch
 // off; feed hold holds the progress; a job whose cut leaves the X travel blocks Start with the
 // core's message.
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 #include "sim_rig.h"
 
 #include "core/job/default_job.h"
@@ -10,8 +11,8 @@
 #include "core/machine/machine_registry.h"
 #include "core/machines/profile_cutter/gcode_export.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
-#include "core/machines/profile_cutter/template_pdf.h"
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/pipe_joint/template_pdf.h"
+#include "core/pipe_joint/template_tiles.h"
 #include "main_window_run.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/engine_bridge.h"
@@ -156,7 +157,7 @@ class TestGuiProfile : public QObject {
         // The fields show the job's values.
         auto* steps = qobject_cast<QSpinBox*>(params->fieldFor("profile_cutter.steps_per_rev_a"));
         QVERIFY(steps);
-        QCOMPARE(steps->value(), job.profile_cutter.steps_per_rev_a);
+        QCOMPARE(steps->value(), cutcell::profileCutterSpec(job).steps_per_rev_a);
         // Live validation: an out-of-range entry is marked and named in the issues.
         auto* pierce = qobject_cast<QDoubleSpinBox*>(params->fieldFor("profile_cutter.pierce_s"));
         QVERIFY(pierce);
@@ -198,7 +199,7 @@ class TestGuiProfile : public QObject {
         const QString a4 = dir.filePath("t_a4.pdf");
         QVERIFY2(CutCell::ui::exportCut(ExportKind::TemplatePdf, job, a4, &err, &summary, "A4"),
                  qPrintable(err));
-        const auto drawing = cutcell::buildTemplate(job);
+        const auto drawing = cutcell::buildTemplate(job, cutcell::jointExtrasOf(job));
         const auto a4Paper = *cutcell::paperByName("A4");
         QFile t(a4);
         QVERIFY(t.open(QIODevice::ReadOnly));
@@ -221,7 +222,7 @@ class TestGuiProfile : public QObject {
         MainWindow w(&cutcell::app::makeRig);
         openProfileJob(w);
         auto job = w.editor()->job();
-        job.profile_cutter.x_travel_mm = 10; // far shorter than the cut's X range
+        cutcell::profileCutterSpec(job).x_travel_mm = 10; // far shorter than the cut's X range
         w.editor()->setJob(job);
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
         // The refusal names the carriage's travel by its field's label, not the file's key.
@@ -239,7 +240,8 @@ class TestGuiProfile : public QObject {
         MainWindow w(&cutcell::app::makeRig);
         openProfileJob(w);
         auto job = w.editor()->job();
-        job.profile_cutter.max_pulse_rate_hz = 50; // in range, far below what the cut needs
+        cutcell::profileCutterSpec(job).max_pulse_rate_hz =
+            50; // in range, far below what the cut needs
         w.editor()->setJob(job);
         const cutcell::MachinePlan cli = cutcell::machineFor(job).plan(job);
         QVERIFY(!cli.ok());

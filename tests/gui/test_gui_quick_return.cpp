@@ -111,21 +111,21 @@ class TestGuiQuickReturn : public QObject {
         const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(kId);
         QVERIFY(ui);
         const cutcell::Job job = ui->defaultJob();
-        const cutcell::CutPlan plan = ui->plan(job, {});
-        QVERIFY2(plan.reachable, plan.problem.c_str());
+        const cutcell::MachinePlan plan = ui->plan(job, {});
+        QVERIFY2(plan.ok(), plan.problem.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
-        QCOMPARE(ui->plannedPointCount(job, plan), core.program->point_count);
-        const auto program = ui->buildProgram(job, plan, "{\"text\": 1}");
+        QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
+        const auto program = CutCell::ui::programForRun(plan, "{\"text\": 1}");
         QVERIFY(program);
         QCOMPARE(program->source_text, std::string("{\"text\": 1}"));
         QCOMPARE(program->axis_modes[0], cutcell::AxisCommandMode::Torque);
         // An infeasible job: not reachable, with the core's sentence.
         cutcell::Job bad = job;
         bad.machine_spec.as<cutcell::QuickReturnSpec>()->velocity = 0.5; // wrong direction
-        const cutcell::CutPlan badPlan = ui->plan(bad, {});
+        const cutcell::MachinePlan badPlan = ui->plan(bad, {});
         const cutcell::MachinePlan badCore = cutcell::machineFor(bad).plan(bad);
-        QCOMPARE(badPlan.reachable, badCore.ok());
+        QCOMPARE(badPlan.ok(), badCore.ok());
         if (!badCore.ok()) QCOMPARE(badPlan.problem, badCore.problem);
     }
 

@@ -249,11 +249,11 @@ class TestGuiSectionSteel : public QObject {
     void squareEndPlansAndRunsToCompletion() {
         const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(kId);
         const cutcell::Job job = ui->defaultJob();
-        const cutcell::CutPlan plan = ui->plan(job, {});
-        QVERIFY2(plan.reachable, plan.problem.c_str());
+        const cutcell::MachinePlan plan = ui->plan(job, {});
+        QVERIFY2(plan.ok(), plan.problem.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
-        QCOMPARE(ui->plannedPointCount(job, plan), core.program->point_count);
+        QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
 
         MainWindow w(&cutcell::app::makeRig);
         w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);

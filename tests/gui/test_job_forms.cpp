@@ -1,6 +1,7 @@
 // Parameter forms: a bad value marks its field (red, tooltip naming key, value, unit and
 // limit), counts in its tab title and disables Start with the reason; fixing it clears all.
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "ui/forms/issue_text.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
@@ -29,9 +30,9 @@ class TestJobForms : public QObject {
         job.main_pipe.wall_mm = -1;
         job.branch_pipe.radius_mm = 500;
         job.cut.speed_mm_s = 900;
-        job.dh[3].min_deg = 100;
-        job.controller[2].tau_f = 0;
-        job.plant[4].inertia_kg_m2 = 0;
+        cutcell::pipeRobotSpec(job).dh[3].min_deg = 100;
+        cutcell::pipeRobotSpec(job).controller[2].tau_f = 0;
+        cutcell::pipeRobotSpec(job).plant[4].inertia_kg_m2 = 0;
         job.sim.period_s = 1;
         job.devices.node_ids[2] = 1;
         job.engine.home_speed_deg_s = 0;
@@ -132,7 +133,7 @@ class TestJobForms : public QObject {
         auto* method = qobject_cast<QComboBox*>(w.parameters()->fieldFor("method"));
         QVERIFY(method);
         method->setCurrentIndex(1);
-        QCOMPARE(w.editor()->job().method, cutcell::CutMethod::StaticPipe);
+        QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).method, cutcell::CutMethod::StaticPipe);
         auto* target = qobject_cast<QComboBox*>(w.parameters()->fieldFor("cut.target"));
         target->setCurrentIndex(1);
         QCOMPARE(w.editor()->job().cut.target, cutcell::CutTarget::Branch);
@@ -141,11 +142,12 @@ class TestJobForms : public QObject {
     void unreachablePathBlocksStartWithTheProblem() {
         MainWindow w(nullptr);
         auto job = cutcell::defaultJob();
-        job.dh[0].d_mm = 2000; // pipe far out of the arm's reach: valid values, no path
+        cutcell::pipeRobotSpec(job).dh[0].d_mm =
+            2000; // pipe far out of the arm's reach: valid values, no path
         w.editor()->setJob(job);
         QVERIFY(w.editor()->valid());
         QTRY_VERIFY_WITH_TIMEOUT(w.run()->plan() != nullptr, 60000);
-        QVERIFY(!w.run()->plan()->reachable);
+        QVERIFY(!w.run()->plan()->ok());
         QVERIFY(!w.controls()->startButton()->isEnabled());
         QVERIFY2(w.controls()->startBlockedReason().contains("not reachable"),
                  qPrintable(w.controls()->startBlockedReason()));

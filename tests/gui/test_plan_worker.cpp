@@ -8,28 +8,28 @@
 
 using CutCell::ui::PlanWorker;
 
-Q_DECLARE_METATYPE(std::shared_ptr<const cutcell::CutPlan>)
+Q_DECLARE_METATYPE(std::shared_ptr<const cutcell::MachinePlan>)
 Q_DECLARE_METATYPE(cutcell::Job)
 
 class TestPlanWorker : public QObject {
     Q_OBJECT
   private slots:
     void initTestCase() {
-        qRegisterMetaType<std::shared_ptr<const cutcell::CutPlan>>();
+        qRegisterMetaType<std::shared_ptr<const cutcell::MachinePlan>>();
         qRegisterMetaType<cutcell::Job>();
     }
 
     void plansOnAWorkerAndDeliversOnTheGuiThread() {
         PlanWorker w;
         QThread* deliveredOn = nullptr;
-        std::shared_ptr<const cutcell::CutPlan> result;
+        std::shared_ptr<const cutcell::MachinePlan> result;
         int progressCalls = 0;
         connect(&w, &PlanWorker::progress, this, [&](double f) {
             ++progressCalls;
             QVERIFY(f >= 0 && f <= 1);
         });
         connect(&w, &PlanWorker::planned, this,
-                [&](std::shared_ptr<const cutcell::CutPlan> p, const cutcell::Job&) {
+                [&](std::shared_ptr<const cutcell::MachinePlan> p, const cutcell::Job&) {
                     deliveredOn = QThread::currentThread();
                     result = std::move(p);
                 });
@@ -37,8 +37,8 @@ class TestPlanWorker : public QObject {
         QVERIFY(w.busy());
         QTRY_VERIFY_WITH_TIMEOUT(result != nullptr, 60000);
         QCOMPARE(deliveredOn, QThread::currentThread());
-        QVERIFY(result->reachable);
-        QVERIFY(!result->knots.empty());
+        QVERIFY(result->ok());
+        QVERIFY(result->program && result->program->point_count > 0);
         QVERIFY(progressCalls > 0);
         QVERIFY(!w.busy());
     }
@@ -58,8 +58,9 @@ class TestPlanWorker : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(!w.busy(), 60000);
         QCOMPARE(planned.count(), 1);
         QCOMPARE(planned.at(0).at(1).value<cutcell::Job>().name, std::string("second"));
-        const auto plan = planned.at(0).at(0).value<std::shared_ptr<const cutcell::CutPlan>>();
-        QVERIFY(plan->cut_time_s < 20); // planned at 8 mm/s, not at the default speed
+        const auto plan = planned.at(0).at(0).value<std::shared_ptr<const cutcell::MachinePlan>>();
+        QVERIFY(plan->program &&
+                plan->program->cut_time_s < 20); // planned at 8 mm/s, not at the default speed
     }
 
     void cancelIsHonoured() {

@@ -9,6 +9,7 @@
 #include "core/job/field_table.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "core/sim/tracking_stats.h"
 #include "devices/sim/simulated_drive.h"
 #include "ui/forms/job_editor.h"
@@ -102,7 +103,8 @@ class RotaryTableModule : public MachineModule {
         if (why) *why = "the test table has no CAN drive";
         return false;
     }
-    MachinePlan plan(const Job& job, const std::string& jobText) const override {
+    MachinePlan plan(const Job& job, const std::string& jobText,
+                     const PlanOptions&) const override {
         const RotaryTableSpec& s = specOf(job);
         MachinePlan out;
         // A smooth-step turn: at rest at both ends.
@@ -169,7 +171,8 @@ class RotaryTableUi : public CutCell::ui::ModulePlannedMachineUi {
     std::vector<std::pair<std::string, QString>> unusedCommonFields() const override {
         return pipeJointFields(QStringLiteral("The table turns; it cuts no pipe joint."));
     }
-    bool buildScene(const Job&, const CutPlan&, view3d::SceneModel*, QString* why) const override {
+    bool buildScene(const Job&, const MachinePlan&, view3d::SceneModel*,
+                    QString* why) const override {
         if (why) *why = QStringLiteral("no 3D scene for the test table");
         return false;
     }
@@ -202,8 +205,8 @@ class TestSixthMachine : public QObject {
 
         Job robot = cutcell::defaultJob(); // a servo's gains for the simulated drive
         SimulatedDriveConfig dc;
-        dc.gains = robot.controller[0];
-        dc.plant = robot.plant[0];
+        dc.gains = cutcell::pipeRobotSpec(robot).controller[0];
+        dc.plant = cutcell::pipeRobotSpec(robot).plant[0];
         dc.period_s = job.sim.period_s;
         SimulatedDrive drive(dc);
         EngineDevices devices;

@@ -1,6 +1,6 @@
 // Seed 002's several pipes: the set M, its minima N and the increments N'.
-#include "core/machines/profile_cutter/multi_branch.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/pipe_joint/multi_branch.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>

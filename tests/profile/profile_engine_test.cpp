@@ -3,6 +3,7 @@
 #include "core/engine/motion_engine.h"
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 #include "devices/machines/profile_cutter/profile_cutter_rig.h"
 #include "profile_test_util.h"
 
@@ -19,7 +20,7 @@ namespace {
 
 Job singleBranchJob() {
     Job job = test::exampleProfileJob();
-    job.other_branches.clear(); // a smooth saddle (no column switch)
+    cutcell::profileCutterSpec(job).other_branches.clear(); // a smooth saddle (no column switch)
     return job;
 }
 
@@ -47,7 +48,7 @@ TEST(ProfileProgram, FollowsTheCutAtTheSurfaceSpeed) {
             worst = std::max(worst, std::fabs(speed - v) / v);
             off += std::fabs(speed - v) > 0.01 * v;
         }
-        if (job.other_branches.empty()) {
+        if (cutcell::profileCutterSpec(job).other_branches.empty()) {
             EXPECT_LT(worst, 0.01) << "smooth saddle: within 1 % everywhere";
         } else {
             EXPECT_LT(off, n / 50) << "with corners: within 1 % on 98 % of the cut";
@@ -66,7 +67,7 @@ TEST(ProfileProgram, TipModelMeasuresTheMissOnThePipe) {
 
 TEST(ProfileProgram, CutOutsideTheCarriageTravelIsRefused) {
     Job job = test::exampleProfileJob();
-    job.profile_cutter.x_travel_mm = 550; // the brace is 600 mm long
+    cutcell::profileCutterSpec(job).x_travel_mm = 550; // the brace is 600 mm long
     try {
         buildProfileCutterProgram(job);
         FAIL() << "accepted a cut beyond the travel";
@@ -129,8 +130,9 @@ TEST(ProfileEngine, CompletesTheCutOnSteppers) {
     EXPECT_NEAR(run.last.progress, 1.0, 1e-9); // the Completed sample itself
     EXPECT_EQ(run.last.point_count, run.program->point_count);
     // One turn of the branch on A, X back where it started: the pulses sum to the travel.
-    const std::int64_t turn = static_cast<std::int64_t>(job.profile_cutter.steps_per_rev_a) *
-                              job.profile_cutter.pulses_per_step_a;
+    const std::int64_t turn =
+        static_cast<std::int64_t>(cutcell::profileCutterSpec(job).steps_per_rev_a) *
+        cutcell::profileCutterSpec(job).pulses_per_step_a;
     EXPECT_EQ(run.rig.a().pulsePosition() - a0, turn);
     EXPECT_EQ(run.rig.x().pulsePosition(), x0);
     EXPECT_EQ(run.rig.a().rateLimitedCycles() + run.rig.x().rateLimitedCycles(), 0u);
@@ -139,14 +141,14 @@ TEST(ProfileEngine, CompletesTheCutOnSteppers) {
     // Open-loop steppers miss by their quantisation and one cycle of motion, no more.
     const double aPulseDeg = 360.0 / static_cast<double>(turn);
     EXPECT_LT(report.joints[0].max_abs, aPulseDeg);
-    EXPECT_LT(report.joints[1].max_abs, 2 * job.profile_cutter.mm_per_pulse_x);
+    EXPECT_LT(report.joints[1].max_abs, 2 * cutcell::profileCutterSpec(job).mm_per_pulse_x);
 }
 
 // The job's pierce (profile_cutter.pierce_s, the G-code's G4 after M3): once the arc is
 // established at the first cut point the torch stays there that long before either axis moves.
 TEST(ProfileEngine, PiercesBeforeTheTorchMoves) {
     const Job job = test::exampleProfileJob();
-    ASSERT_GE(job.profile_cutter.pierce_s, 1.0);
+    ASSERT_GE(cutcell::profileCutterSpec(job).pierce_s, 1.0);
     SteppedRun run(job);
     run.toRunning();
     const double T = job.sim.period_s;
@@ -166,8 +168,8 @@ TEST(ProfileEngine, PiercesBeforeTheTorchMoves) {
     }
     ASSERT_GE(arcAt, 0) << "the arc was never established";
     ASSERT_GE(movedAt, 0) << "the path never started";
-    EXPECT_GE(movedAt - arcAt, job.profile_cutter.pierce_s - 0.5 * T);
-    EXPECT_LE(movedAt - arcAt, job.profile_cutter.pierce_s + 3 * T);
+    EXPECT_GE(movedAt - arcAt, cutcell::profileCutterSpec(job).pierce_s - 0.5 * T);
+    EXPECT_LE(movedAt - arcAt, cutcell::profileCutterSpec(job).pierce_s + 3 * T);
 }
 
 TEST(ProfileEngine, FeedHoldStopsOnThePathAndResumes) {
@@ -235,11 +237,11 @@ TEST(ProfileEngine, CliRunWritesTheReportAndRunLog) {
     const json::Value report = json::parse(readTextFile((dir / "report.json").string()));
     EXPECT_EQ(report.find("machine")->asString(), "profile_cutter_2axis");
     const Job j = test::exampleProfileJob();
-    const double turn =
-        static_cast<double>(j.profile_cutter.steps_per_rev_a) * j.profile_cutter.pulses_per_step_a;
+    const double turn = static_cast<double>(cutcell::profileCutterSpec(j).steps_per_rev_a) *
+                        cutcell::profileCutterSpec(j).pulses_per_step_a;
     EXPECT_EQ(report.find("pulses")->find("a_sent")->asNumber(), turn);
     EXPECT_LT(report.find("axes")->asArray()[1].find("max_abs_error_mm")->asNumber(),
-              2 * j.profile_cutter.mm_per_pulse_x);
+              2 * cutcell::profileCutterSpec(j).mm_per_pulse_x);
     EXPECT_FALSE(std::filesystem::is_empty(dir / "runs"));
     std::filesystem::remove_all(dir);
 }

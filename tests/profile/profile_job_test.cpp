@@ -2,6 +2,7 @@
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>
@@ -18,19 +19,21 @@ namespace {
 TEST(ProfileJob, ExampleLoadsAndRoundTrips) {
     const Job job = test::exampleProfileJob();
     EXPECT_EQ(job.machine, "profile_cutter_2axis");
-    ASSERT_EQ(job.other_branches.size(), 1u);
+    ASSERT_EQ(cutcell::profileCutterSpec(job).other_branches.size(), 1u);
     const std::string once = json::write(jobToJson(job));
     const Job again = jobFromJson(json::parse(once));
     EXPECT_EQ(json::write(jobToJson(again)), once);
-    EXPECT_EQ(again.profile_cutter.steps_per_rev_a, job.profile_cutter.steps_per_rev_a);
-    EXPECT_EQ(again.other_branches[0].position_mm, job.other_branches[0].position_mm);
+    EXPECT_EQ(cutcell::profileCutterSpec(again).steps_per_rev_a,
+              cutcell::profileCutterSpec(job).steps_per_rev_a);
+    EXPECT_EQ(cutcell::profileCutterSpec(again).other_branches[0].position_mm,
+              cutcell::profileCutterSpec(job).other_branches[0].position_mm);
     // An explicit hole position survives too.
     Job hole = job;
-    hole.profile_cutter.branch_position_auto = false;
-    hole.profile_cutter.branch_position_mm = 321.5;
+    cutcell::profileCutterSpec(hole).branch_position_auto = false;
+    cutcell::profileCutterSpec(hole).branch_position_mm = 321.5;
     const Job back = jobFromJson(jobToJson(hole));
-    EXPECT_FALSE(back.profile_cutter.branch_position_auto);
-    EXPECT_EQ(back.profile_cutter.branch_position_mm, 321.5);
+    EXPECT_FALSE(cutcell::profileCutterSpec(back).branch_position_auto);
+    EXPECT_EQ(cutcell::profileCutterSpec(back).branch_position_mm, 321.5);
 }
 
 TEST(ProfileJob, RobotJobKeepsItsShape) {
@@ -38,7 +41,7 @@ TEST(ProfileJob, RobotJobKeepsItsShape) {
     const json::Value doc = jobToJson(robot);
     EXPECT_EQ(doc.find("profile_cutter"), nullptr);
     EXPECT_EQ(doc.find("other_branches"), nullptr);
-    EXPECT_TRUE(robot.other_branches.empty());
+    EXPECT_EQ(robot.machine_spec.as<cutcell::ProfileCutterSpec>(), nullptr);
 }
 
 std::string firstMessageFor(const Job& job, const std::string& key) {
@@ -49,30 +52,31 @@ std::string firstMessageFor(const Job& job, const std::string& key) {
 
 TEST(ProfileJob, BadValuesNameKeyValueUnitAndLimit) {
     Job job = test::exampleProfileJob();
-    job.other_branches[0].radius_mm = 80;
-    job.other_branches[0].eccentricity_mm = 10;
+    cutcell::profileCutterSpec(job).other_branches[0].radius_mm = 80;
+    cutcell::profileCutterSpec(job).other_branches[0].eccentricity_mm = 10;
     EXPECT_EQ(
         firstMessageFor(job, "other_branches[0].radius_mm"),
         "machine.other_branches[0].radius_mm = 80 mm does not fit: |eccentricity_mm| + radius = 90 "
         "mm must be <= "
         "main_pipe.radius_mm = 84.15 mm");
     job = test::exampleProfileJob();
-    job.other_branches[0].angle_deg = 180;
+    cutcell::profileCutterSpec(job).other_branches[0].angle_deg = 180;
     EXPECT_EQ(
         firstMessageFor(job, "other_branches[0].angle_deg"),
         "machine.other_branches[0].angle_deg = 180 deg is outside [0.1, 179.9] deg (angle to the "
         "main axis)");
     job = test::exampleProfileJob();
-    job.other_branches[0].angle_deg = job.angle_deg; // parallel to the cut branch
+    cutcell::profileCutterSpec(job).other_branches[0].angle_deg =
+        job.angle_deg; // parallel to the cut branch
     EXPECT_NE(firstMessageFor(job, "other_branches[0].angle_deg").find("must differ by >= 1 deg"),
               std::string::npos);
     job = test::exampleProfileJob();
-    job.profile_cutter.steps_per_rev_a = 4;
+    cutcell::profileCutterSpec(job).steps_per_rev_a = 4;
     EXPECT_EQ(
         firstMessageFor(job, "profile_cutter.steps_per_rev_a"),
         "machine.profile_cutter.steps_per_rev_a = 4 steps/rev is outside [8, 100000] steps/rev");
     job = test::exampleProfileJob();
-    job.profile_cutter.mm_per_pulse_x = 0;
+    cutcell::profileCutterSpec(job).mm_per_pulse_x = 0;
     EXPECT_EQ(firstMessageFor(job, "profile_cutter.mm_per_pulse_x"),
               "machine.profile_cutter.mm_per_pulse_x = 0 mm/pulse is outside [1e-05, 1] mm/pulse");
     job = test::exampleProfileJob();
@@ -145,7 +149,7 @@ TEST(ProfileCli, ExportPlanAndValidate) {
     EXPECT_EQ(runCli("export " + job, &out), 64) << out;
     out.clear();
     ASSERT_EQ(runCli("plan " + job + " --out " + (dir / "plan").string(), &out), 0) << out;
-    const int n = test::exampleProfileJob().profile_cutter.steps_per_rev_a;
+    const int n = cutcell::profileCutterSpec(test::exampleProfileJob()).steps_per_rev_a;
     EXPECT_EQ(lineCount(dir / "plan" / "path.csv"),
               static_cast<size_t>(n) + 2); // header + n + closing row
     out.clear();

@@ -1,6 +1,7 @@
 #pragma once
 // Jobs for the profile cutter tests: the shipped example and random valid variations of it.
 #include "core/job/job_io.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 
 #include <random>
 #include <string>
@@ -15,7 +16,7 @@ inline Job exampleProfileJob() {
 inline Job randomProfileJob(std::mt19937& rng, CutTarget target) {
     std::uniform_real_distribution<double> U(0, 1);
     Job job = exampleProfileJob();
-    job.other_branches.clear();
+    cutcell::profileCutterSpec(job).other_branches.clear();
     job.cut.target = target;
     job.main_pipe.radius_mm = 40 + 160 * U(rng);
     job.main_pipe.wall_mm = 3 + 5 * U(rng);
@@ -31,8 +32,8 @@ inline Job randomProfileJob(std::mt19937& rng, CutTarget target) {
     const double saddle =
         (job.main_pipe.radius_mm + 2 * job.branch_pipe.radius_mm * std::cos(a)) / std::sin(a);
     job.branch_pipe.length_mm = std::max(job.branch_pipe.length_mm, saddle + 50);
-    job.profile_cutter.x_travel_mm =
-        std::max(job.profile_cutter.x_travel_mm, job.branch_pipe.length_mm + 100);
+    cutcell::profileCutterSpec(job).x_travel_mm =
+        std::max(cutcell::profileCutterSpec(job).x_travel_mm, job.branch_pipe.length_mm + 100);
     return job;
 }
 

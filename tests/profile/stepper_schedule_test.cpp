@@ -1,4 +1,5 @@
 // Stepper output: pulse counts per step and the constant-surface-speed pulse-rate schedule.
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 #include "core/machines/profile_cutter/stepper_schedule.h"
 #include "profile_test_util.h"
 
@@ -15,9 +16,9 @@ std::vector<Job> jobs() {
     std::uniform_real_distribution<double> U(0, 1);
     for (int k = 0; k < 30; ++k) {
         Job j = test::randomProfileJob(rng, k % 2 ? CutTarget::Main : CutTarget::Branch);
-        j.profile_cutter.steps_per_rev_a = 100 + static_cast<int>(U(rng) * 900);
-        j.profile_cutter.pulses_per_step_a = 1 + static_cast<int>(U(rng) * 32);
-        j.profile_cutter.mm_per_pulse_x = 0.001 + 0.02 * U(rng);
+        cutcell::profileCutterSpec(j).steps_per_rev_a = 100 + static_cast<int>(U(rng) * 900);
+        cutcell::profileCutterSpec(j).pulses_per_step_a = 1 + static_cast<int>(U(rng) * 32);
+        cutcell::profileCutterSpec(j).mm_per_pulse_x = 0.001 + 0.02 * U(rng);
         j.cut.speed_mm_s = 2 + 20 * U(rng);
         out.push_back(j);
     }
@@ -29,7 +30,8 @@ std::vector<Job> jobs() {
 TEST(StepperSchedule, PulseCountsSumToTheTravel) {
     for (const Job& job : jobs()) {
         const ProfileCut cut = computeProfileCut(job);
-        const PulseSchedule s = buildPulseSchedule(cut, job.profile_cutter, job.cut.speed_mm_s);
+        const PulseSchedule s =
+            buildPulseSchedule(cut, cutcell::profileCutterSpec(job), job.cut.speed_mm_s);
         ASSERT_EQ(s.steps.size(), cut.points.size());
         std::int64_t px = s.x_start_pulses, pa = s.a_start_pulses;
         for (size_t i = 0; i < s.steps.size(); ++i) {
@@ -42,14 +44,15 @@ TEST(StepperSchedule, PulseCountsSumToTheTravel) {
                       s.deg_per_pulse_a / 2 + 1e-9);
         }
         EXPECT_EQ(px, s.x_start_pulses);
-        const std::int64_t turn = static_cast<std::int64_t>(job.profile_cutter.steps_per_rev_a) *
-                                  job.profile_cutter.pulses_per_step_a;
+        const std::int64_t turn =
+            static_cast<std::int64_t>(cutcell::profileCutterSpec(job).steps_per_rev_a) *
+            cutcell::profileCutterSpec(job).pulses_per_step_a;
         EXPECT_EQ(pa - s.a_start_pulses, job.cut.target == CutTarget::Branch ? turn : 0);
         // On the branch end every step turns the pipe by exactly pulses_per_step_a (the seed's
         // grid).
         if (job.cut.target == CutTarget::Branch) {
             for (const auto& st : s.steps)
-                EXPECT_EQ(st.a_pulses, job.profile_cutter.pulses_per_step_a);
+                EXPECT_EQ(st.a_pulses, cutcell::profileCutterSpec(job).pulses_per_step_a);
         }
     }
 }
@@ -59,7 +62,8 @@ TEST(StepperSchedule, PulseCountsSumToTheTravel) {
 TEST(StepperSchedule, SurfaceSpeedIsConstant) {
     for (const Job& job : jobs()) {
         const ProfileCut cut = computeProfileCut(job);
-        const PulseSchedule s = buildPulseSchedule(cut, job.profile_cutter, job.cut.speed_mm_s);
+        const PulseSchedule s =
+            buildPulseSchedule(cut, cutcell::profileCutterSpec(job), job.cut.speed_mm_s);
         const double radPerPulse = deg2rad(s.deg_per_pulse_a);
         double total = 0;
         for (const auto& st : s.steps) {
@@ -86,15 +90,16 @@ TEST(StepperSchedule, SurfaceSpeedIsConstant) {
 
 TEST(StepperSchedule, RateAboveTheCardLimitIsReported) {
     Job job = test::exampleProfileJob();
-    job.profile_cutter.max_pulse_rate_hz = 500;
-    const PulseSchedule s =
-        buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s);
+    cutcell::profileCutterSpec(job).max_pulse_rate_hz = 500;
+    const PulseSchedule s = buildPulseSchedule(computeProfileCut(job),
+                                               cutcell::profileCutterSpec(job), job.cut.speed_mm_s);
     ASSERT_FALSE(s.problem.empty());
     EXPECT_NE(s.problem.find("profile_cutter.max_pulse_rate_hz = 500 Hz"), std::string::npos)
         << s.problem;
     EXPECT_GT(std::max(s.max_x_rate_hz, s.max_a_rate_hz), 500);
-    job.profile_cutter.max_pulse_rate_hz = 200000;
-    EXPECT_TRUE(buildPulseSchedule(computeProfileCut(job), job.profile_cutter, job.cut.speed_mm_s)
+    cutcell::profileCutterSpec(job).max_pulse_rate_hz = 200000;
+    EXPECT_TRUE(buildPulseSchedule(computeProfileCut(job), cutcell::profileCutterSpec(job),
+                                   job.cut.speed_mm_s)
                     .problem.empty());
 }
 

@@ -1,8 +1,10 @@
 // The unrolled cutting template: its geometry, the SVG and the PDF (structure, 1:1 size, render).
 #include "core/geometry/pipe_intersection.h"
 #include "core/job/job_io.h"
-#include "core/machines/profile_cutter/template_pdf.h"
-#include "core/machines/profile_cutter/template_svg.h"
+#include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
+#include "core/pipe_joint/template_pdf.h"
+#include "core/pipe_joint/template_svg.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>
@@ -55,7 +57,7 @@ double numberAfter(const std::string& text, const std::string& key, size_t* end 
 // cut's (A, X) developed at 1:1: u = R_w (A - A_low), v = top + y_per_x (X - X_top).
 TEST(Template, DevelopedCurveIsTheCutAtFullScale) {
     for (const Job& job : jobs()) {
-        const TemplateDrawing d = buildTemplate(job, 720);
+        const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 720);
         const auto pts = svgCutPoints(templateSvg(d));
         const ProfileCut cut = computeProfileCut(job, 720);
         const double C = 2 * kPi * cut.work_radius_mm;
@@ -94,7 +96,8 @@ TEST(Template, DevelopedCurveIsTheCutAtFullScale) {
 }
 
 TEST(Template, SvgIsMillimetreScaled) {
-    const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
+    const TemplateDrawing d =
+        buildTemplate(test::exampleProfileJob(), jointExtrasOf(test::exampleProfileJob()));
     const std::string svg = templateSvg(d);
     char expect[128];
     std::snprintf(expect, sizeof expect,
@@ -108,7 +111,8 @@ TEST(Template, SvgIsMillimetreScaled) {
 
 // Structure: every xref offset points at its object, startxref at the table, /Length is exact.
 TEST(Template, PdfStructureIsExact) {
-    const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
+    const TemplateDrawing d =
+        buildTemplate(test::exampleProfileJob(), jointExtrasOf(test::exampleProfileJob()));
     const std::string pdf = templatePdf(d);
     ASSERT_EQ(pdf.rfind("%PDF-1.4", 0), 0u);
     const size_t tail = pdf.rfind("startxref\n");
@@ -159,7 +163,8 @@ TEST(Template, PdfStructureIsExact) {
 }
 
 TEST(Template, TooLargeForAPdfPageIsRefused) {
-    TemplateDrawing d = buildTemplate(test::exampleProfileJob());
+    TemplateDrawing d =
+        buildTemplate(test::exampleProfileJob(), jointExtrasOf(test::exampleProfileJob()));
     d.width_mm = 6000;
     EXPECT_THROW(templatePdf(d), std::runtime_error);
 }
@@ -185,7 +190,8 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
     const auto dir =
         std::filesystem::temp_directory_path() / ("cutcell_pdf_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    const TemplateDrawing d = buildTemplate(test::exampleProfileJob());
+    const TemplateDrawing d =
+        buildTemplate(test::exampleProfileJob(), jointExtrasOf(test::exampleProfileJob()));
     const std::string file = (dir / "template.pdf").string();
     writeFileAtomically(file, templatePdf(d));
     const std::string info = run("pdfinfo " + file + " 2>&1", &status);
@@ -209,7 +215,7 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
 // every drawn point, wrapped round the pipe, is the cut point (angle and axial position).
 TEST(Template, WrappedAsPrintedTheSheetLiesOnTheCut) {
     for (const Job& job : jobs()) {
-        const TemplateDrawing d = buildTemplate(job, 720);
+        const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 720);
         const ProfileCut cut = computeProfileCut(job, 720);
         const PipeIntersection pi(profileIntersectionSpec(job));
         const bool branch = job.cut.target == CutTarget::Branch;
@@ -262,7 +268,7 @@ TEST(Template, WrappedAsPrintedTheSheetLiesOnTheCut) {
 // pipe OD and circumference, the job name, the scale bar.
 TEST(Template, SheetCarriesTabZeroMarkWrapArrowAndPipeData) {
     for (const Job& job : jobs()) {
-        const TemplateDrawing d = buildTemplate(job, 360);
+        const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 360);
         const double C = d.circumference_mm;
         std::string text;
         for (const auto& t : d.texts)

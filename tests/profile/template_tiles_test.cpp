@@ -1,8 +1,9 @@
 // The cutting template tiled on A4 / A3: cover, overlap, fewest sheets, marks on every tile,
 // 1:1 scale, printable area, multi-page PDF and the tile sheet SVG, numbers under de_DE.
-#include "core/machines/profile_cutter/template_pdf.h"
-#include "core/machines/profile_cutter/template_svg.h"
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
+#include "core/pipe_joint/template_pdf.h"
+#include "core/pipe_joint/template_svg.h"
+#include "core/pipe_joint/template_tiles.h"
 #include "profile_test_util.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,7 @@ std::vector<Job> jobs() {
     std::vector<Job> out{test::exampleProfileJob()};
     Job hole = test::exampleProfileJob();
     hole.cut.target = CutTarget::Main;
-    hole.other_branches.clear();
+    cutcell::profileCutterSpec(hole).other_branches.clear();
     out.push_back(hole);
     std::mt19937 rng(5);
     for (int k = 0; k < 6; ++k)
@@ -66,7 +67,7 @@ TEST(TemplateTiles, TilesCoverTheTemplateWithOverlapOnTheFewestSheets) {
     for (const Job& job : jobs())
         for (const Paper& paper : tiledPapers()) {
             SCOPED_TRACE(paper.name + " " + toString(job.cut.target));
-            const TemplateDrawing d = buildTemplate(job, 720);
+            const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 720);
             const TiledTemplate t = tileTemplate(d, paper, job.name);
             const double m = kTileMarginMm, o = kTileOverlapMm;
             ASSERT_EQ(t.tiles.size(), static_cast<size_t>(t.rows * t.cols));
@@ -125,7 +126,7 @@ TEST(TemplateTiles, TilesCoverTheTemplateWithOverlapOnTheFewestSheets) {
 // circumference apart once the tiles are laid together by their crosses.
 TEST(TemplateTiles, CircumferenceMeasuredAcrossTilesIsExact) {
     for (const Job& job : jobs()) {
-        const TemplateDrawing d = buildTemplate(job, 360);
+        const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 360);
         const TiledTemplate t = tileTemplate(d, *paperByName("A4"), job.name);
         std::vector<double> edges; // drawing x, from the tile pages
         for (const TemplateTile& tile : t.tiles) {
@@ -152,7 +153,7 @@ double textWidth(const TemplateDrawing::Text& t) {
 TEST(TemplateTiles, EveryTileCarriesItsMarksInsideThePrintableArea) {
     for (const Job& job : jobs())
         for (const Paper& paper : tiledPapers()) {
-            const TemplateDrawing d = buildTemplate(job, 360);
+            const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job), 360);
             const TiledTemplate t = tileTemplate(d, paper, job.name);
             const double m = kTileMarginMm;
             std::vector<std::pair<int, Eigen::Vector2d>> crossCentres; // tile index, drawing mm
@@ -216,7 +217,7 @@ TEST(TemplateTiles, EveryTileCarriesItsMarksInsideThePrintableArea) {
 // sheet SVG has one group per tile.
 TEST(TemplateTiles, PdfHasOnePagePerTileAndSvgOneGroupPerTile) {
     const Job job = test::exampleProfileJob();
-    const TemplateDrawing d = buildTemplate(job);
+    const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job));
     EXPECT_EQ(templatePdf(templatePages(d, *paperByName("single"), job.name)), templatePdf(d));
     for (const Paper& paper : tiledPapers()) {
         const TiledTemplate t = tileTemplate(d, paper, job.name);
@@ -249,7 +250,7 @@ TEST(TemplateTiles, NumbersAreLocaleIndependent) {
     std::snprintf(buf, sizeof buf, "%.2f", 1.5);
     ASSERT_STREQ(buf, "1,50") << "the locale is active";
     const Job job = test::exampleProfileJob();
-    const TemplateDrawing d = buildTemplate(job);
+    const TemplateDrawing d = buildTemplate(job, jointExtrasOf(job));
     const Paper a4 = *paperByName("A4");
     const std::string svg = templateSvg(tileTemplate(d, a4, job.name));
     const std::string pdf = templatePdf(templatePages(d, a4, job.name));

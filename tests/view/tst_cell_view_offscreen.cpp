@@ -1,8 +1,10 @@
 // CellView on Qt's offscreen platform: no OpenGL, so a placeholder replaces the 3D view while
 // the scene graph keeps working.
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "ui/machines/pipe_robot/pipe_robot_scene.h"
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
 
@@ -49,7 +51,7 @@ void TstCellViewOffscreen::sceneGraphWorksWithoutOpenGl() {
     const CutPlan plan = planCut(job);
     CellView view;
     view.setScene(buildRobotScene(job, plan));
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(cutcell::pipeRobotSpec(job).dh);
     const size_t k = plan.knots.size() / 3;
     view.setMachineState(plan.knots[k].q, double(k) / double(plan.knots.size() - 1), true);
     const Vec3 tip = robot.forward(plan.knots[k].q.segment<kArmJointCount>(1)).translation();

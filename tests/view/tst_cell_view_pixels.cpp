@@ -1,7 +1,8 @@
 // The rendered 3D view (needs OpenGL: run under xvfb-run): the pipe and the torch appear where
 // VTK's renderer projects their world positions, in their documented colours.
 #include "core/job/default_job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
+#include "ui/machines/pipe_robot/pipe_robot_scene.h"
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
 #include "ui/view3d/view_style.h"

@@ -5,6 +5,7 @@
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
 #include "ui/machines/profile_cutter/profile_scene.h"
 
 #include <QtTest>
@@ -16,7 +17,7 @@ namespace {
 Job loadProfileJob(const char* target) {
     Job job = loadJobFile(CUTCELL_SOURCE_DIR "/resources/jobs/profile_cutter_job.json");
     job.cut.target = std::string(target) == "main" ? CutTarget::Main : CutTarget::Branch;
-    if (job.cut.target == CutTarget::Main) job.other_branches.clear();
+    if (job.cut.target == CutTarget::Main) cutcell::profileCutterSpec(job).other_branches.clear();
     return job;
 }
 
@@ -40,7 +41,8 @@ class TstProfileScene : public QObject {
         QCOMPARE(m.axisCount, 2);
         QCOMPARE(m.pathWork.size(), cut.points.size() + 1); // closed curve
         const ProfileCutterTipModel tipModel(cut.work_radius_mm);
-        const double tol = 1e-9 * (1 + cut.work_radius_mm + job.profile_cutter.x_travel_mm);
+        const double tol =
+            1e-9 * (1 + cut.work_radius_mm + cutcell::profileCutterSpec(job).x_travel_mm);
         for (size_t i = 0; i < m.pathWork.size(); i += 7) {
             const ProfilePoint p = cut.closedAt(i);
             JointVector q = JointVector::Zero();
@@ -69,12 +71,13 @@ class TstProfileScene : public QObject {
         double xMax = 0;
         for (const auto& p : cut.points)
             xMax = std::max(xMax, p.x_mm);
-        job.profile_cutter.x_travel_mm = xMax * 0.99;
+        cutcell::profileCutterSpec(job).x_travel_mm = xMax * 0.99;
         QVERIFY(!travelProblem(job, cut).empty());
         const view3d::SceneModel m = view3d::buildProfileCutterScene(job);
         QVERIFY(m.unreachableCount() > 0);
         QVERIFY(m.firstUnreachable >= 0);
-        QVERIFY(m.pathWork[size_t(m.firstUnreachable)].z() > job.profile_cutter.x_travel_mm);
+        QVERIFY(m.pathWork[size_t(m.firstUnreachable)].z() >
+                cutcell::profileCutterSpec(job).x_travel_mm);
     }
 };
 

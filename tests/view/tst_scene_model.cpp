@@ -2,8 +2,10 @@
 // core's kinematics, for the default job and variants.
 #include "core/geometry/cut_path.h"
 #include "core/job/default_job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "ui/machines/pipe_robot/pipe_robot_scene.h"
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/scene_model.h"
 
@@ -25,7 +27,7 @@ ArmVector arm(const JointVector& q) {
 // Each job variant the scene must handle.
 Job variant(int which) {
     Job job = defaultJob();
-    if (which == 1) job.method = CutMethod::StaticPipe;
+    if (which == 1) cutcell::pipeRobotSpec(job).method = CutMethod::StaticPipe;
     if (which == 2) {
         job.cut.target = CutTarget::Branch;
         job.cut.start_phi_auto = true;
@@ -78,7 +80,7 @@ void TstSceneModel::toolPoseIsForwardKinematics() {
     const Job job = defaultJob();
     const CutPlan plan = planCut(job);
     const SceneModel m = buildRobotScene(job, plan);
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(cutcell::pipeRobotSpec(job).dh);
     CellScene scene;
     scene.setScene(m);
     for (size_t i = 0; i < plan.knots.size(); i += 7) {
@@ -148,7 +150,7 @@ void TstSceneModel::unreachablePointsAreFlagged() {
         hi = std::max(hi, k.q[3]);
     }
     QVERIFY(hi - lo > 1e-3);
-    job.dh[3].max_deg = rad2deg((lo + hi) / 2);
+    cutcell::pipeRobotSpec(job).dh[3].max_deg = rad2deg((lo + hi) / 2);
     plan = planCut(job);
     QVERIFY(!plan.reachable);
     const SceneModel m = buildRobotScene(job, plan);

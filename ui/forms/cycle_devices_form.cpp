@@ -132,7 +132,7 @@ CycleDevicesForm::CycleDevicesForm(JobEditor* editor, QWidget* parent) : JobForm
 void CycleDevicesForm::reloadExtra(const Job& job) {
     const MachineUi* machine = machineUiFor(job);
     const std::vector<AxisLabel> labels = machine ? machine->axes() : std::vector<AxisLabel>{};
-    const size_t shown = machine ? labels.size() : static_cast<size_t>(cutcell::kAxisCount);
+    const size_t shown = machine ? labels.size() : static_cast<size_t>(cutcell::kMaxAxes);
     for (size_t i = 0; i < axisRows_.size(); ++i) {
         for (QWidget* w : axisRows_[i])
             w->setVisible(i < shown);

@@ -12,4 +12,11 @@ template <class Spec> Spec& editedSpec(cutcell::Job& j) {
     return s ? *s : scratch;
 }
 
+// The same for reading: another machine's job reads the spec's defaults.
+template <class Spec> const Spec& editedSpec(const cutcell::Job& j) {
+    static const Spec defaults;
+    const Spec* s = j.machine_spec.as<Spec>();
+    return s ? *s : defaults;
+}
+
 } // namespace CutCell::ui

@@ -10,12 +10,16 @@
 // The simulated devices are not here: the ui never includes a device header. The composition
 // root (app/gui) keeps its own list of simulated rigs per machine (app/gui/machines/).
 //
-// Threading contract: a MachineUi is immutable after registration. plan(), buildProgram(),
+// One plan type flows from the machine's core module through the GUI to the engine: the
+// module's MachinePlan (its program, summary and problem; its own data for its scene).
+//
+// Threading contract: a MachineUi is immutable after registration. plan() and
 // plannedPointCount() are pure and callable from any thread (PlanWorker calls plan() on a pool
 // thread); everything returning or creating widgets is GUI-thread only.
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_module.h"
+#include "core/pipe_joint/pipe_joint_extras.h"
 
 #include <QString>
 #include <QStringList>
@@ -86,25 +90,33 @@ class MachineUi {
     // The text of a machine-specific export (G-code); the cutting templates are common.
     // Throws std::exception with the core's message; *what describes the file for the log.
     virtual std::string exportText(ExportKind kind, const cutcell::Job& job, QString* what) const;
+    // The pipe joint's other branches and hole position for the cutting templates (Template*
+    // exports): none by default.
+    virtual cutcell::JointExtras jointExtras(const cutcell::Job&) const { return {}; }
 
-    // Plans the job (reachable or the problem sentence), off the GUI thread.
-    virtual cutcell::CutPlan plan(const cutcell::Job& job,
-                                  const cutcell::PlanOptions& options) const = 0;
-    // The motion program of a reachable plan; throws std::invalid_argument (core's message).
-    virtual std::shared_ptr<const cutcell::MotionProgram>
-    buildProgram(const cutcell::Job& job, const cutcell::CutPlan& plan,
-                 const std::string& jobText) const = 0;
-    // Planned points for the progress panel.
-    virtual std::size_t plannedPointCount(const cutcell::Job& job,
-                                          const cutcell::CutPlan& plan) const = 0;
-    // The log line after a successful plan.
-    virtual QString planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const = 0;
+    // The core module of this machine's id (throws std::logic_error when none is registered).
+    const cutcell::MachineModule& module() const;
+
+    // Plans the job off the GUI thread: the core module's plan (Ok with its program, Infeasible
+    // with the problem sentence, Cancelled when options.cancel was set).
+    virtual cutcell::MachinePlan plan(const cutcell::Job& job,
+                                      const cutcell::PlanOptions& options) const;
+    // Planned points for the progress panel: the program's.
+    std::size_t plannedPointCount(const cutcell::MachinePlan& plan) const;
+    // The log line after a successful plan: the module's summary in the GUI's language.
+    virtual QString planSummary(const cutcell::Job& job, const cutcell::MachinePlan& plan) const;
 
     // The 3D scene of the cell for a plan; false (and *why) when there is nothing to draw or
     // this build has no 3D view. Defined only where CUTCELL_HAVE_VIEW3D is.
-    virtual bool buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+    virtual bool buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                             cutcell::view3d::SceneModel* out, QString* why) const = 0;
 };
+
+// The program of a plan for one run: the plan's program (made off the GUI thread, before the
+// job was saved) with jobText for the run log. Throws std::invalid_argument with the plan's
+// problem when it has no program.
+std::shared_ptr<const cutcell::MotionProgram> programForRun(const cutcell::MachinePlan& plan,
+                                                            const std::string& jobText);
 
 // The ExportKind's menu label and file filter (common to every machine).
 QString exportLabel(ExportKind kind);

@@ -1,6 +1,7 @@
 #include "ui/machine/machine_ui_registry.h"
 
 #include "core/machine/machine_registry.h"
+#include "ui/panels/engine_text.h"
 
 #include <QObject>
 
@@ -59,6 +60,42 @@ std::vector<AxisLabel> MachineUi::axes() const {
         out.push_back(
             {QString::fromStdString(a.name), QString::fromLatin1(cutcell::unitSymbol(a.unit))});
     return out;
+}
+
+const cutcell::MachineModule& MachineUi::module() const {
+    const cutcell::MachineModule* m = cutcell::findMachine(id());
+    if (!m) throw std::logic_error("no core machine module \"" + id() + "\" is registered");
+    return *m;
+}
+
+cutcell::MachinePlan MachineUi::plan(const cutcell::Job& job,
+                                     const cutcell::PlanOptions& options) const {
+    cutcell::MachinePlan p = module().plan(job, {}, options);
+    if (options.cancelled()) { // a plan finished as it was cancelled is dropped all the same
+        p.status = cutcell::PlanStatus::Cancelled;
+        p.program.reset();
+    } else if (p.ok() && !p.program) {
+        p.status = cutcell::PlanStatus::Infeasible;
+        p.problem = "the machine module gave no program";
+    }
+    return p;
+}
+
+std::size_t MachineUi::plannedPointCount(const cutcell::MachinePlan& plan) const {
+    return plan.program ? plan.program->point_count : 0;
+}
+
+QString MachineUi::planSummary(const cutcell::Job&, const cutcell::MachinePlan& plan) const {
+    // In the GUI's language where core made it from a template (messageC).
+    return engineText(QString::fromStdString(plan.summary));
+}
+
+std::shared_ptr<const cutcell::MotionProgram> programForRun(const cutcell::MachinePlan& plan,
+                                                            const std::string& jobText) {
+    if (!plan.ok() || !plan.program) throw std::invalid_argument(plan.problem);
+    auto program = std::make_shared<cutcell::MotionProgram>(*plan.program);
+    program->source_text = jobText;
+    return program;
 }
 
 std::string MachineUi::exportText(ExportKind, const cutcell::Job&, QString*) const {

@@ -23,6 +23,7 @@ set(CUTCELL_MACHINE_UI_SOURCES
 )
 # Scenes for the 3D view (plain data, built only with CutCell::view3d).
 set(CUTCELL_MACHINE_UI_VIEW3D_SOURCES
+  ${_m}/pipe_robot/pipe_robot_scene.cpp
   ${_m}/profile_cutter/profile_scene.cpp
   ${_m}/quick_return/quick_return_scene.cpp
   ${_m}/flying_saw/flying_saw_scene.cpp

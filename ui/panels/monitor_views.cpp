@@ -57,7 +57,7 @@ void CellViewPanel::paintFrameInto(QImage& shot, const QWidget* grabbed) {
 }
 
 void CellViewPanel::setPlan(const MachineUi& machine,
-                            const std::shared_ptr<const cutcell::CutPlan>& plan,
+                            const std::shared_ptr<const cutcell::MachinePlan>& plan,
                             const cutcell::Job& job) {
 #ifdef CUTCELL_HAVE_VIEW3D
     if (!view_ || !plan) return;

@@ -7,7 +7,7 @@
 // Threading contract: GUI thread only.
 #include "core/engine/engine_types.h"
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machine/machine_module.h"
 #include "ui/machine/machine_ui.h"
 
 #include <functional>
@@ -37,7 +37,7 @@ class CellViewPanel : public QWidget {
     explicit CellViewPanel(QWidget* parent = nullptr);
 
     // The machine's scene for the plan (nothing changes when the machine cannot draw it).
-    void setPlan(const MachineUi& machine, const std::shared_ptr<const cutcell::CutPlan>& plan,
+    void setPlan(const MachineUi& machine, const std::shared_ptr<const cutcell::MachinePlan>& plan,
                  const cutcell::Job& job);
     void setSample(const cutcell::TelemetrySample& s);
     // Where the last run stopped, marked on the path (fraction of the cut; < 0: none).

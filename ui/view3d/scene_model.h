@@ -24,8 +24,7 @@
 #include <vector>
 
 namespace cutcell {
-struct Job;
-struct CutPlan;
+struct Job; // the machines' scene builders take one
 } // namespace cutcell
 
 namespace cutcell::view3d {
@@ -56,7 +55,7 @@ struct LinkagePiece {
 
 struct SceneModel {
     std::string title; // shown in the view's corner (job name)
-    int axisCount = kAxisCount;
+    int axisCount = 0; // the machine's axes (set by its scene builder)
 
     // Work pipe (being cut), centred on its work frame's z axis from -length/2 to +length/2.
     PipeShape workPipe;
@@ -118,10 +117,5 @@ struct SceneModel {
     Vec3 pathPointWorld(size_t i, const JointVector& q) const;
     size_t unreachableCount() const;
 };
-
-// The pipe-cutting robot of seed 000: work pipe in the chuck (axis 0), 5-DOF arm (axes 1..5).
-// Path points are the plan's knots; a point is unreachable when the plan says the chuck is
-// past its range, the IK failed, or the torch had to tilt more than allowed.
-SceneModel buildRobotScene(const Job& job, const CutPlan& plan);
 
 } // namespace cutcell::view3d

@@ -86,7 +86,8 @@ bool FlyingSawModule::supportsCanOpen(std::string*) const {
     return true; // CiA 402 drives + the line's CiA 406 encoder: devices/machines/can_cells.cpp
 }
 
-MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText) const {
+MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText,
+                                  const PlanOptions& /*options: plans in one go*/) const {
     MachinePlan out;
     auto data = std::make_shared<FlyingSawPlanData>();
     data->spec = flyingSawSpec(job);

@@ -36,7 +36,8 @@ class FlyingSawModule : public MachineModule {
     bool supportsCanOpen(std::string* why) const override;
     std::vector<std::string> sensorNames() const override { return {"line encoder"}; }
     RunTerms runTerms() const override;
-    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    MachinePlan plan(const Job& job, const std::string& jobText,
+                     const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;

@@ -16,6 +16,7 @@
 #include "core/common/types.h"
 #include "core/job/job.h"
 #include "core/kinematics/dh_chain.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 #include <array>
 #include <string>

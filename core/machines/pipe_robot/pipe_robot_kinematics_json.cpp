@@ -42,7 +42,7 @@ bool PipeRobotModule::forwardKinematics(const Job& job, const std::string& arm,
                    std::to_string(q.size());
         return false;
     }
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(pipeRobotSpec(job).dh);
     const size_t first = q.size() == kAxisCount ? 1 : 0;
     ArmVector arm5;
     for (int j = 0; j < kArmJointCount; ++j)
@@ -87,7 +87,7 @@ bool PipeRobotModule::inverseKinematics(const Job& job, const std::string& arm,
     }
     t.normalize();
     const double roll = pose.size() == 7 ? deg2rad(pose[6]) : 0.0;
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(pipeRobotSpec(job).dh);
     const IkBranches all = robot.solveBranches(p, t, roll);
     json::Array branches;
     for (int b = 0; b < all.count; ++b) {

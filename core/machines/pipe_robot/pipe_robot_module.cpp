@@ -4,9 +4,9 @@
 #include "core/job/default_job.h"
 #include "core/job/issue_checker.h"
 #include "core/machine/pipe_joint_section.h"
+#include "core/machines/pipe_robot/cut_simulation.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/machines/pipe_robot/plan_csv.h"
-#include "core/sim/cut_simulation.h"
 #include "core/sim/tracking_stats.h"
 
 #include <cmath>
@@ -40,12 +40,23 @@ void readTable(SectionReader& parent, const std::string& k, std::array<T, kAxisC
 const char* const kAxisNames[kAxisCount] = {"chuck (theta0)", "theta1", "theta2",
                                             "theta3",         "theta4", "theta5"};
 
+// The axes' names in reports (as in the axes and the engine's run log).
+const std::array<std::string, kMaxAxes>& reportAxisNames() {
+    static const std::array<std::string, kMaxAxes> names = [] {
+        std::array<std::string, kMaxAxes> n;
+        for (int i = 0; i < kAxisCount; ++i)
+            n[static_cast<size_t>(i)] = kAxisNames[i];
+        return n;
+    }();
+    return names;
+}
+
 } // namespace
 
 std::vector<AxisInfo> PipeRobotModule::axes(const Job& job) const {
     std::vector<AxisInfo> out;
     for (int i = 0; i < kAxisCount; ++i) {
-        const DhRow& r = job.dh[static_cast<size_t>(i)];
+        const DhRow& r = pipeRobotSpec(job).dh[static_cast<size_t>(i)];
         out.push_back(
             {kAxisNames[i], AxisUnit::Rotary, r.min_deg, r.max_deg, CommandMode::Position});
     }
@@ -60,15 +71,15 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
     SectionReader m(section, "machine");
     m.get("kind");
     readPipeJoint(m, job, kCutKeys);
-    job.method = m.choice<CutMethod>(
+    PipeRobotSpec spec;
+    spec.method = m.choice<CutMethod>(
         "method",
         {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
         CutMethod::RotatingPipe);
-    job.dh = seedDhTable();
     if (m.has("robot")) {
         SectionReader robot = m.child("robot");
         if (robot.has("dh"))
-            readTable(robot, "dh", job.dh, [](SectionReader& row) {
+            readTable(robot, "dh", spec.dh, [](SectionReader& row) {
                 DhRow d;
                 d.alpha_deg = row.number("alpha_deg", "deg");
                 d.a_mm = row.number("a_mm", "mm");
@@ -80,7 +91,7 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
             });
         robot.finish();
     }
-    readTable(m, "controller", job.controller, [](SectionReader& row) {
+    readTable(m, "controller", spec.controller, [](SectionReader& row) {
         PidGains g;
         g.kp = row.number("kp_nm_per_rad", "N m/rad");
         g.ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
@@ -88,7 +99,7 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
         g.tau_f = row.number("tau_f_s", "s");
         return g;
     });
-    readTable(m, "plant", job.plant, [](SectionReader& row) {
+    readTable(m, "plant", spec.plant, [](SectionReader& row) {
         JointPlantParams p;
         p.inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
         p.viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
@@ -96,26 +107,28 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
         return p;
     });
     m.finish();
+    job.machine_spec.set(std::move(spec));
 }
 
 json::Value PipeRobotModule::writeSection(const Job& job) const {
+    const PipeRobotSpec& spec = pipeRobotSpec(job);
     json::Object s{{"kind", id()}};
     writePipeJoint(job, s, kCutKeys);
-    s.emplace_back("method", toString(job.method));
+    s.emplace_back("method", toString(spec.method));
     json::Array dh, ctrl, plant;
-    for (const auto& d : job.dh)
+    for (const auto& d : spec.dh)
         dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg},
                                      {"a_mm", d.a_mm},
                                      {"d_mm", d.d_mm},
                                      {"theta_offset_deg", d.theta_offset_deg},
                                      {"min_deg", d.min_deg},
                                      {"max_deg", d.max_deg}});
-    for (const auto& g : job.controller)
+    for (const auto& g : spec.controller)
         ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp},
                                        {"ki_nm_per_rad_s", g.ki},
                                        {"kd_nm_s_per_rad", g.kd},
                                        {"tau_f_s", g.tau_f}});
-    for (const auto& p : job.plant)
+    for (const auto& p : spec.plant)
         plant.emplace_back(json::Object{{"inertia_kg_m2", p.inertia_kg_m2},
                                         {"viscous_nm_s_per_rad", p.viscous_nm_s_per_rad},
                                         {"torque_limit_nm", p.torque_limit_nm}});
@@ -133,10 +146,11 @@ void PipeRobotModule::migrateSchema1(json::Object& section) const {
 }
 
 std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
+    const PipeRobotSpec& spec = pipeRobotSpec(job);
     IssueChecker c;
     checkPipeJoint(c, job, kCutKeys);
     for (int i = 0; i < kAxisCount; ++i) {
-        const auto& d = job.dh[static_cast<size_t>(i)];
+        const auto& d = spec.dh[static_cast<size_t>(i)];
         const std::string k = "robot.dh[" + std::to_string(i) + "]";
         c.range(k + ".alpha_deg", d.alpha_deg, -360, 360, "deg");
         c.range(k + ".a_mm", d.a_mm, -5000, 5000, "mm");
@@ -152,7 +166,7 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     // The analytic IK is written for the seed's arm structure (alpha = 90, 0, 0, 90, 0).
     const double structure[kAxisCount] = {90, 90, 0, 0, 90, 0};
     for (int i = 1; i < kAxisCount; ++i) {
-        const auto& d = job.dh[static_cast<size_t>(i)];
+        const auto& d = spec.dh[static_cast<size_t>(i)];
         if (std::fabs(d.alpha_deg - structure[i]) > 1e-9)
             c.add("robot.dh[" + std::to_string(i) + "].alpha_deg",
                   messageC("robot.dh[%d].alpha_deg = %.6g deg: the pipe robot's inverse "
@@ -164,11 +178,11 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
         int row;
         const char* field;
         double value;
-    } zeros[] = {{1, "a_mm", job.dh[1].a_mm},
-                 {2, "d_mm", job.dh[2].d_mm},
-                 {3, "d_mm", job.dh[3].d_mm},
-                 {4, "d_mm", job.dh[4].d_mm},
-                 {5, "a_mm", job.dh[5].a_mm}};
+    } zeros[] = {{1, "a_mm", spec.dh[1].a_mm},
+                 {2, "d_mm", spec.dh[2].d_mm},
+                 {3, "d_mm", spec.dh[3].d_mm},
+                 {4, "d_mm", spec.dh[4].d_mm},
+                 {5, "a_mm", spec.dh[5].a_mm}};
     for (const auto& z : zeros)
         if (std::fabs(z.value) > 1e-9) {
             const std::string k = "robot.dh[" + std::to_string(z.row) + "]." + z.field;
@@ -176,20 +190,20 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
                               "needs 0 mm",
                               z.row, z.field, z.value));
         }
-    if (job.dh[2].a_mm <= 0 || job.dh[3].a_mm <= 0)
+    if (spec.dh[2].a_mm <= 0 || spec.dh[3].a_mm <= 0)
         c.add("robot.dh[2].a_mm",
               messageC("robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"));
 
     // Physical ranges of the drives: far beyond any joint of a cutting robot, but finite, so
     // the discretised controller and plant stay finite numbers.
     for (int i = 0; i < kAxisCount; ++i) {
-        const auto& g = job.controller[static_cast<size_t>(i)];
+        const auto& g = spec.controller[static_cast<size_t>(i)];
         const std::string k = "controller[" + std::to_string(i) + "]";
         c.range(k + ".kp_nm_per_rad", g.kp, 0, 1e6, "N m/rad");
         c.range(k + ".ki_nm_per_rad_s", g.ki, 0, 1e8, "N m/(rad s)");
         c.range(k + ".kd_nm_s_per_rad", g.kd, 0, 1e5, "N m s/rad");
         c.positive(k + ".tau_f_s", g.tau_f, 1e-5, 1, "s");
-        const auto& p = job.plant[static_cast<size_t>(i)];
+        const auto& p = spec.plant[static_cast<size_t>(i)];
         const std::string pk = "plant[" + std::to_string(i) + "]";
         c.positive(pk + ".inertia_kg_m2", p.inertia_kg_m2, 1e-5, 1e4, "kg m^2");
         c.range(pk + ".viscous_nm_s_per_rad", p.viscous_nm_s_per_rad, 0, 1e5, "N m s/rad");
@@ -203,12 +217,17 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     return c.issues;
 }
 
-MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText) const {
+MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText,
+                                  const PlanOptions& options) const {
     MachinePlan out;
-    auto cut = std::make_shared<CutPlan>(planCut(job));
+    auto cut = std::make_shared<CutPlan>(planCut(job, options));
     out.data = cut;
+    if (cut->cancelled) {
+        out.status = PlanStatus::Cancelled;
+        return out;
+    }
     out.summary =
-        formatC("%s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)", toString(job.method),
+        formatC("%s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)", toString(cut->method),
                 toString(job.cut.target), cut->length_mm, job.cut.speed_mm_s, cut->cut_time_s);
     if (!cut->reachable) {
         out.status = PlanStatus::Infeasible;
@@ -224,9 +243,9 @@ MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText) co
 
 bool PipeRobotModule::setVariant(Job& job, const std::string& variant, std::string* error) const {
     if (variant == "static_pipe")
-        job.method = CutMethod::StaticPipe;
+        pipeRobotSpec(job).method = CutMethod::StaticPipe;
     else if (variant == "rotating_pipe")
-        job.method = CutMethod::RotatingPipe;
+        pipeRobotSpec(job).method = CutMethod::RotatingPipe;
     else {
         if (error)
             *error = "--method = " + json::quote(variant) +
@@ -259,7 +278,7 @@ bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std
         return false;
     }
     const TrackingReport report = simulateCut(job, *cut);
-    *json = json::write(reportToJson(report));
+    *json = json::write(reportToJson(report, &reportAxisNames()));
     std::string t = formatC("%s method, %.1f s simulated at %.4f s\n", report.method.c_str(),
                             report.simulated_s, job.sim.period_s);
     t += formatC("%-16s %14s %14s\n", "axis", "max |e| (deg)", "rms (deg)");
@@ -278,10 +297,10 @@ bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std
 json::Value PipeRobotModule::runReport(const Job& job, const MachinePlan& plan,
                                        const TrackingReport& report) const {
     TrackingReport r = report;
-    r.method = toString(job.method);
+    r.method = toString(pipeRobotSpec(job).method);
     if (const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get()))
         r.max_direction_deviation_deg = cut->max_deviation_deg;
-    return reportToJson(r);
+    return reportToJson(r, &reportAxisNames());
 }
 
 } // namespace cutcell

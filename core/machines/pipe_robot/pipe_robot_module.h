@@ -5,7 +5,7 @@
 // Its `machine` section: the pipe joint (main_pipe, branch_pipe, angle_deg, eccentricity_mm,
 // cut), method ("static_pipe" | "rotating_pipe"), robot.dh[6], controller[6], plant[6].
 #include "core/machine/machine_module.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 
 namespace cutcell {
 
@@ -23,7 +23,8 @@ class PipeRobotModule : public MachineModule {
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
     bool supportsCanOpen(std::string*) const override { return true; }
-    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    MachinePlan plan(const Job& job, const std::string& jobText,
+                     const PlanOptions& options) const override;
     bool setVariant(Job& job, const std::string& variant, std::string* error) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
@@ -32,6 +33,8 @@ class PipeRobotModule : public MachineModule {
                        std::string* text, std::string* why) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
+    // ik_ns_per_solve, simulate_seconds, simulated_seconds, simulate_realtime_factor.
+    void addBenchFigures(bool quick, json::Object& out) const override;
     // Arm "arm": theta1..theta5 (deg, optionally theta0 first) -> torch; a pose -> every branch.
     bool forwardKinematics(const Job& job, const std::string& arm,
                            const std::vector<double>& jointsDeg, json::Value* out,

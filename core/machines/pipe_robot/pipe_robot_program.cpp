@@ -14,6 +14,11 @@ Vec3 PipeRobotTipModel::tip(const JointVector& q) const {
     return robot_.tip(q.segment<kArmJointCount>(1));
 }
 
+void PipeRobotTipModel::tipPair(const JointVector& qa, const JointVector& qb, Vec3& a,
+                                Vec3& b) const {
+    robot_.tipPair(qa.segment<kArmJointCount>(1), qb.segment<kArmJointCount>(1), a, b);
+}
+
 Vec3 PipeRobotTipModel::tipOnWork(const JointVector& q, const Vec3& tipBase) const {
     return robot_.workFromBase(q[0], tipBase);
 }
@@ -24,7 +29,7 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
     if (plan.spline.empty()) throw std::invalid_argument("the plan has no trajectory");
     auto p = std::make_shared<MotionProgram>();
     p->machine = kPipeRobotId;
-    p->method = toString(job.method);
+    p->method = toString(pipeRobotSpec(job).method);
     p->axis_count = kAxisCount;
     p->axis_names = {"chuck (theta0)", "theta1", "theta2", "theta3", "theta4", "theta5"};
     p->axis_linear.fill(false);
@@ -34,7 +39,7 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
     p->point_count = plan.knots.size();
     p->reference = JointVector::Zero();
     for (int i = 0; i < kAxisCount; ++i) {
-        const DhRow& r = job.dh[static_cast<size_t>(i)];
+        const DhRow& r = pipeRobotSpec(job).dh[static_cast<size_t>(i)];
         p->min_position[i] = deg2rad(r.min_deg);
         p->max_position[i] = deg2rad(r.max_deg);
         if (p->reference[i] < p->min_position[i] || p->reference[i] > p->max_position[i]) {
@@ -46,7 +51,7 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
             throw std::invalid_argument(buf);
         }
     }
-    p->tip_model = std::make_shared<PipeRobotTipModel>(job.dh);
+    p->tip_model = std::make_shared<PipeRobotTipModel>(pipeRobotSpec(job).dh);
     p->min_run_s = job.sim.duration_s;
     // The same window as simulateCut(): the cosine ramps at both ends are excluded.
     const SpeedProfile profile(plan.length_mm, job.cut.speed_mm_s, job.cut.ramp_s);

@@ -9,7 +9,7 @@
 // figures as simulateCut().
 #include "core/engine/motion_program.h"
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 
 #include <memory>
 #include <stdexcept>
@@ -27,6 +27,7 @@ class PipeRobotTipModel : public TipModel {
   public:
     explicit PipeRobotTipModel(const std::array<DhRow, kAxisCount>& dh) : robot_(dh) {}
     Vec3 tip(const JointVector& q) const override;
+    void tipPair(const JointVector& qa, const JointVector& qb, Vec3& a, Vec3& b) const override;
     Vec3 tipOnWork(const JointVector& q, const Vec3& tipBase) const override;
     const PipeRobot& robot() const { return robot_; }
 

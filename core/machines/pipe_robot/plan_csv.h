@@ -2,7 +2,7 @@
 // CSV exports of a plan: path.csv (the cut point in the main pipe frame, then the torch pose
 // in the robot base frame) and joints.csv (time and all joint angles at the control period).
 #include "core/job/job.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 
 #include <string>
 

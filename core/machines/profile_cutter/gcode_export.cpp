@@ -47,8 +47,8 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
                 job.branch_pipe.radius_mm, job.branch_pipe.wall_mm, job.branch_pipe.length_mm));
     comment(fmt("angle %.3f deg, eccentricity %.3f mm", job.angle_deg, job.eccentricity_mm));
     if (job.cut.target == CutTarget::Branch)
-        for (size_t k = 0; k < job.other_branches.size(); ++k) {
-            const OtherBranch& o = job.other_branches[k];
+        for (size_t k = 0; k < profileCutterSpec(job).other_branches.size(); ++k) {
+            const OtherBranch& o = profileCutterSpec(job).other_branches[k];
             comment("other branch " + std::to_string(k + 1) +
                     fmt(": radius %.3f mm, angle %.3f deg, eccentricity %.3f mm, position %.3f mm",
                         o.radius_mm, o.angle_deg, o.eccentricity_mm, o.position_mm) +
@@ -56,14 +56,14 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
         }
     comment(fmt("cutting speed %.3f mm/s on the pipe surface, work radius %.3f mm, %.0f steps/rev, "
                 "pierce %.2f s",
-                v, cut.work_radius_mm, static_cast<double>(job.profile_cutter.steps_per_rev_a),
-                job.profile_cutter.pierce_s));
+                v, cut.work_radius_mm, static_cast<double>(profileCutterSpec(job).steps_per_rev_a),
+                profileCutterSpec(job).pierce_s));
     line("G21 G90 G17 G40 G94");
     const ProfilePoint first = cut.points.front();
     line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
     line("M3 S1 (torch on)");
-    if (job.profile_cutter.pierce_s > 0)
-        line(fmt("G4 P%.3f (pierce)", job.profile_cutter.pierce_s));
+    if (profileCutterSpec(job).pierce_s > 0)
+        line(fmt("G4 P%.3f (pierce)", profileCutterSpec(job).pierce_s));
     line("G93 (inverse time feed: F = 1 / minutes per move, constant surface speed)");
 
     GcodeStats st;

@@ -7,10 +7,11 @@
 #include "core/machines/profile_cutter/gcode_export.h"
 #include "core/machines/profile_cutter/profile_csv.h"
 #include "core/machines/profile_cutter/profile_cutter_program.h"
-#include "core/machines/profile_cutter/template_layout.h"
-#include "core/machines/profile_cutter/template_pdf.h"
-#include "core/machines/profile_cutter/template_svg.h"
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/machines/profile_cutter/profile_cutter_section.h"
+#include "core/pipe_joint/template_layout.h"
+#include "core/pipe_joint/template_pdf.h"
+#include "core/pipe_joint/template_svg.h"
+#include "core/pipe_joint/template_tiles.h"
 
 #include <cmath>
 #include <optional>
@@ -45,24 +46,11 @@ std::vector<OtherBranch> readOtherBranches(SectionReader& r) {
     return out;
 }
 
-void readSteppers(SectionReader c, ProfileCutterSpec& p) {
-    p.steps_per_rev_a = c.integer("steps_per_rev_a", "steps/rev", p.steps_per_rev_a, 8, 100000);
-    p.pulses_per_step_a =
-        c.integer("pulses_per_step_a", "pulses/step", p.pulses_per_step_a, 1, 100000);
-    p.mm_per_pulse_x = c.number("mm_per_pulse_x", "mm/pulse", p.mm_per_pulse_x);
-    p.max_pulse_rate_hz = c.number("max_pulse_rate_hz", "Hz", p.max_pulse_rate_hz);
-    p.pierce_s = c.number("pierce_s", "s", p.pierce_s);
-    p.x_travel_mm = c.number("x_travel_mm", "mm", p.x_travel_mm);
-    p.branch_position_auto = !c.has("branch_position_mm");
-    p.branch_position_mm = c.number("branch_position_mm", "mm", 0);
-    c.finish();
-}
-
 } // namespace
 
 std::vector<AxisInfo> ProfileCutterModule::axes(const Job& job) const {
     return {{"A (pipe turn)", AxisUnit::Rotary, -1e9, 1e9, CommandMode::Position},
-            {"X (torch carriage)", AxisUnit::Linear, 0, job.profile_cutter.x_travel_mm,
+            {"X (torch carriage)", AxisUnit::Linear, 0, profileCutterSpec(job).x_travel_mm,
              CommandMode::Position}};
 }
 
@@ -75,8 +63,9 @@ Job ProfileCutterModule::defaultJob() const {
     job.cut.target = CutTarget::Branch;
     job.cut.bevel_deg = 0;
     job.cut.speed_mm_s = 8;
-    job.profile_cutter = ProfileCutterSpec{};
-    job.profile_cutter.x_travel_mm = 1500;
+    ProfileCutterSpec spec;
+    spec.x_travel_mm = 1500;
+    job.machine_spec.set(std::move(spec));
     job.sim.duration_s = 120;
     return job;
 }
@@ -85,18 +74,20 @@ void ProfileCutterModule::readSection(const json::Value& section, Job& job) cons
     SectionReader m(section, "machine");
     m.get("kind");
     readPipeJoint(m, job, kCutKeys);
-    job.other_branches = readOtherBranches(m);
-    job.profile_cutter = ProfileCutterSpec{};
-    if (m.has("profile_cutter")) readSteppers(m.child("profile_cutter"), job.profile_cutter);
+    ProfileCutterSpec spec;
+    spec.other_branches = readOtherBranches(m);
+    readFields(m, profileCutterFields(), spec);
     m.finish();
+    job.machine_spec.set(std::move(spec));
 }
 
 json::Value ProfileCutterModule::writeSection(const Job& job) const {
+    const ProfileCutterSpec& pc = profileCutterSpec(job);
     json::Object s{{"kind", id()}};
     writePipeJoint(job, s, kCutKeys);
-    if (!job.other_branches.empty()) {
+    if (!pc.other_branches.empty()) {
         json::Array others;
-        for (const auto& o : job.other_branches)
+        for (const auto& o : pc.other_branches)
             others.emplace_back(json::Object{{"radius_mm", o.radius_mm},
                                              {"angle_deg", o.angle_deg},
                                              {"eccentricity_mm", o.eccentricity_mm},
@@ -104,15 +95,8 @@ json::Value ProfileCutterModule::writeSection(const Job& job) const {
                                              {"phase_deg", o.phase_deg}});
         s.emplace_back("other_branches", others);
     }
-    const ProfileCutterSpec& pc = job.profile_cutter;
-    json::Object o{{"steps_per_rev_a", pc.steps_per_rev_a},
-                   {"pulses_per_step_a", pc.pulses_per_step_a},
-                   {"mm_per_pulse_x", pc.mm_per_pulse_x},
-                   {"max_pulse_rate_hz", pc.max_pulse_rate_hz},
-                   {"pierce_s", pc.pierce_s},
-                   {"x_travel_mm", pc.x_travel_mm}};
-    if (!pc.branch_position_auto) o.emplace_back("branch_position_mm", pc.branch_position_mm);
-    s.emplace_back("profile_cutter", o);
+    for (auto& [key, value] : writeFields(profileCutterFields(), pc))
+        s.emplace_back(key, std::move(value));
     return s;
 }
 
@@ -136,8 +120,9 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
     checkPipeJoint(c, job, kCutKeys);
     const double R = job.main_pipe.radius_mm;
     const double a = deg2rad(job.angle_deg);
-    for (size_t i = 0; i < job.other_branches.size(); ++i) {
-        const OtherBranch& o = job.other_branches[i];
+    const ProfileCutterSpec& p = profileCutterSpec(job);
+    for (size_t i = 0; i < p.other_branches.size(); ++i) {
+        const OtherBranch& o = p.other_branches[i];
         const std::string k = "other_branches[" + std::to_string(i) + "]";
         c.positive(k + ".radius_mm", o.radius_mm, 1, 2000, "mm");
         if (!(o.angle_deg >= 0.1 && o.angle_deg <= 179.9))
@@ -164,13 +149,7 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
                                              "cut branch's axis; it must differ by >= 1 deg",
                                              i, between));
     }
-    const ProfileCutterSpec& p = job.profile_cutter;
-    c.range("profile_cutter.steps_per_rev_a", p.steps_per_rev_a, 8, 100000, "steps/rev");
-    c.range("profile_cutter.pulses_per_step_a", p.pulses_per_step_a, 1, 100000, "pulses/step");
-    c.range("profile_cutter.mm_per_pulse_x", p.mm_per_pulse_x, 1e-5, 1, "mm/pulse");
-    c.range("profile_cutter.max_pulse_rate_hz", p.max_pulse_rate_hz, 1, 1e7, "Hz");
-    c.range("profile_cutter.pierce_s", p.pierce_s, 0, 60, "s");
-    c.range("profile_cutter.x_travel_mm", p.x_travel_mm, 1, 100000, "mm");
+    checkFields(c, profileCutterFields(), p);
     if (!p.branch_position_auto)
         c.range("profile_cutter.branch_position_mm", p.branch_position_mm, 0,
                 job.main_pipe.length_mm, "mm");
@@ -189,11 +168,12 @@ bool ProfileCutterModule::supportsCanOpen(std::string* why) const {
     return false;
 }
 
-MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText) const {
+MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText,
+                                      const PlanOptions& /*options: plans in one go*/) const {
     MachinePlan out;
     auto data = std::make_shared<ProfileCutterPlanData>();
     data->cut = computeProfileCut(job);
-    data->schedule = buildPulseSchedule(data->cut, job.profile_cutter, job.cut.speed_mm_s);
+    data->schedule = buildPulseSchedule(data->cut, profileCutterSpec(job), job.cut.speed_mm_s);
     out.data = data;
     const PulseSchedule& sch = data->schedule;
     out.summary =
@@ -201,7 +181,7 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
                 "pulse rates X %.0f Hz, A %.0f Hz (limit %.0f Hz)",
                 toString(job.cut.target), data->cut.points.size(), sch.developed_length_mm,
                 job.cut.speed_mm_s, sch.total_time_s, sch.max_x_rate_hz, sch.max_a_rate_hz,
-                job.profile_cutter.max_pulse_rate_hz);
+                profileCutterSpec(job).max_pulse_rate_hz);
     out.status = PlanStatus::Infeasible;
     if (!sch.problem.empty()) {
         out.problem = messageC("not feasible: %s", sch.problem.c_str());
@@ -246,7 +226,7 @@ std::string ProfileCutterModule::exportFileWith(const std::string& exportId, con
             throw std::invalid_argument("paper " + json::quote(settings.paper) + " is not one of " +
                                         names);
         }
-        const TemplateDrawing drawing = buildTemplate(job);
+        const TemplateDrawing drawing = buildTemplate(job, jointExtrasOf(job));
         if (exportId == "template_pdf")
             return templatePdf(templatePages(drawing, *paper, job.name));
         if (paper->short_mm <= 0) return templateSvg(drawing);

@@ -3,7 +3,7 @@
 
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "core/trajectory/cut_planner.h"
+#include "core/trajectory/speed_profile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +47,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
                                                                const std::string& jobText) {
     // A fine grid (the NC grid refined 8 times, at least 4096 points): the spline follows the
     // curve, not the chords of the stepper grid.
-    const int fine = std::max(4096, 8 * job.profile_cutter.steps_per_rev_a);
+    const int fine = std::max(4096, 8 * profileCutterSpec(job).steps_per_rev_a);
     const ProfileCut cut = computeProfileCut(job, fine);
     const DevelopedPath path(cut);
     if (const std::string problem = travelProblem(job, cut); !problem.empty())
@@ -78,7 +78,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
     p->reference = JointVector::Zero();
     p->reference[1] = knots.front()[1]; // A at 0, the torch over the start's X
     p->min_position[1] = 0;
-    p->max_position[1] = job.profile_cutter.x_travel_mm;
+    p->max_position[1] = profileCutterSpec(job).x_travel_mm;
     p->spline = JointSpline(std::move(knots), dt);
     p->cut_time_s = cutTime;
     p->length_mm = path.length();
@@ -87,7 +87,7 @@ std::shared_ptr<const MotionProgram> buildProfileCutterProgram(const Job& job,
     const double ramp = cutTime - path.length() / job.cut.speed_mm_s;
     p->cruise_from_s = ramp;
     p->cruise_to_s = cutTime - ramp;
-    p->pierce_s = job.profile_cutter.pierce_s; // as the G-code's G4 after M3
+    p->pierce_s = profileCutterSpec(job).pierce_s; // as the G-code's G4 after M3
     p->name = job.name;
     p->source_text = jobText.empty() ? json::write(jobToJson(job)) : jobText;
     return p;

@@ -69,7 +69,8 @@ bool QuickReturnModule::supportsCanOpen(std::string*) const {
     return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
-MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText) const {
+MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
+                                    const PlanOptions& /*options: plans in one go*/) const {
     MachinePlan out;
     const QuickReturnSpec& spec = quickReturnSpec(job);
     auto data = std::make_shared<QuickReturnPlanData>();

@@ -1,7 +1,7 @@
 #include "core/machines/section_steel/end_cut_path.h"
 #include "core/common/c_format.h"
 
-#include "core/trajectory/cut_planner.h"
+#include "core/trajectory/speed_profile.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@ json::Value vec(const Vec3& v) {
 }
 
 template <size_t N>
-json::Value branch(const std::array<double, N>& q, const std::array<JointLimit, N>& lim) {
+json::Value branch(const std::array<double, N>& q, const std::array<ArmJointLimit, N>& lim) {
     json::Array joints;
     std::string status = "ok";
     for (size_t i = 0; i < N; ++i) {

@@ -81,7 +81,8 @@ bool SectionSteelModule::supportsCanOpen(std::string*) const {
     return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
-MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText) const {
+MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
+                                     const PlanOptions& /*options: plans in one go*/) const {
     MachinePlan out;
     const SectionSteelSpec& s = specOf(job);
     if (const std::string why = setupTwoProblem(s); !why.empty()) {

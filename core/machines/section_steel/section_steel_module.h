@@ -24,7 +24,8 @@ class SectionSteelModule : public MachineModule {
     void migrateSchema1(json::Object&) const override {}
     std::vector<JobIssue> validate(const Job& job) const override;
     bool supportsCanOpen(std::string* why) const override;
-    MachinePlan plan(const Job& job, const std::string& jobText) const override;
+    MachinePlan plan(const Job& job, const std::string& jobText,
+                     const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;

@@ -26,7 +26,7 @@ double distance(const std::array<double, N>& a, const std::array<double, N>& b) 
 
 // The first joint outside its limits ("" when all are inside).
 template <size_t N>
-std::string limitViolation(const std::array<double, N>& q, const std::array<JointLimit, N>& lim,
+std::string limitViolation(const std::array<double, N>& q, const std::array<ArmJointLimit, N>& lim,
                            const char* const* names, const char* arm) {
     for (size_t i = 0; i < N; ++i) {
         const double d = rad2deg(q[i]);
@@ -41,7 +41,7 @@ std::string limitViolation(const std::array<double, N>& q, const std::array<Join
 // why none fits.
 template <size_t N>
 bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& ref,
-          const std::array<JointLimit, N>& lim, const char* const* names, const char* arm,
+          const std::array<ArmJointLimit, N>& lim, const char* const* names, const char* arm,
           std::array<double, N>& out, std::string* why, bool unwrap = true) {
     if (sols.empty()) {
         *why = messageC("%s: no inverse-kinematics solution (out of reach)", arm);

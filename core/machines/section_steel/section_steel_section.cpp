@@ -25,8 +25,8 @@ int readSetup(SectionReader& c) {
 }
 
 template <size_t N>
-void readLimits(SectionReader& parent, const std::array<JointLimit, N>& fallback,
-                std::array<JointLimit, N>& out) {
+void readLimits(SectionReader& parent, const std::array<ArmJointLimit, N>& fallback,
+                std::array<ArmJointLimit, N>& out) {
     out = fallback;
     const json::Value* v = parent.get("limits_deg");
     if (!v) return;
@@ -42,7 +42,7 @@ void readLimits(SectionReader& parent, const std::array<JointLimit, N>& fallback
     }
 }
 
-template <size_t N> json::Array writeLimits(const std::array<JointLimit, N>& l) {
+template <size_t N> json::Array writeLimits(const std::array<ArmJointLimit, N>& l) {
     json::Array a;
     for (const auto& j : l)
         a.emplace_back(json::Object{{"min_deg", j.min_deg}, {"max_deg", j.max_deg}});
@@ -297,7 +297,7 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
     for (size_t i = 0; i < 3; ++i)
         c.positive("path_arm.links_mm[" + std::to_string(i) + "]", s.path_links_mm[i], 1, 5000,
                    "mm");
-    auto limits = [&](const std::string& arm, const JointLimit* l, size_t n, size_t axis0) {
+    auto limits = [&](const std::string& arm, const ArmJointLimit* l, size_t n, size_t axis0) {
         for (size_t i = 0; i < n; ++i) {
             const std::string k = arm + ".limits_deg[" + std::to_string(i) + "]";
             c.range(k + ".min_deg", l[i].min_deg, -360, 360, "deg");

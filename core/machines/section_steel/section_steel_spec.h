@@ -42,7 +42,7 @@ struct EndCutSpec {
 
 inline constexpr int kLastSetup = 2;
 
-struct JointLimit {
+struct ArmJointLimit {
     double min_deg = -180, max_deg = 180;
 };
 
@@ -64,10 +64,10 @@ struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     // Path arm: base in the cut plane, link lengths (seed: 1000, 1110, 310 mm), limits.
     double path_base_y_mm = 0, path_base_z_mm = 1800;
     std::array<double, 3> path_links_mm{1000, 1110, 310};
-    std::array<JointLimit, 3> path_limits{};
+    std::array<ArmJointLimit, 3> path_limits{};
     // Groove arm: base position (frame as above), limits.
     double groove_base_x_mm = 120, groove_base_y_mm = 0, groove_base_z_mm = 1500;
-    std::array<JointLimit, 5> groove_limits{};
+    std::array<ArmJointLimit, 5> groove_limits{};
     // Park position of every axis (deg): the reference, and where the idle arm waits.
     std::array<double, kSteelAxes> park_deg{};
     // Simulated drives: PID (on the joint error, torque out) and joint plant per axis.

@@ -1,5 +1,6 @@
 // The pipe robot's simulated cell: six simulated drives (the job's PID and joint plant) and a
 // simulated torch.
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "devices/machines/sim_rigs.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
@@ -12,10 +13,11 @@ namespace {
 class PipeRobotSimRig : public MachineSimRig {
   public:
     PipeRobotSimRig(const Job& job, const MotionProgram& program) : job_(job) {
+        const PipeRobotSpec& spec = pipeRobotSpec(job);
         for (size_t i = 0; i < drives_.size(); ++i) {
             SimulatedDriveConfig dc;
-            dc.gains = job.controller[i];
-            dc.plant = job.plant[i];
+            dc.gains = spec.controller[i];
+            dc.plant = spec.plant[i];
             dc.period_s = job.sim.period_s;
             dc.initial_position = program.reference[static_cast<int>(i)];
             drives_[i] = std::make_unique<SimulatedDrive>(dc);

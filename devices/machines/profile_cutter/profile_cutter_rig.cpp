@@ -1,5 +1,7 @@
 #include "devices/machines/profile_cutter/profile_cutter_rig.h"
 
+#include "core/machines/profile_cutter/profile_cutter_spec.h"
+
 #include <algorithm>
 
 namespace cutcell {
@@ -8,7 +10,7 @@ namespace {
 SimulatedStepperConfig stepperConfig(const Job& job, double unitsPerPulse, double initial) {
     SimulatedStepperConfig c;
     c.units_per_pulse = unitsPerPulse;
-    c.max_pulse_rate_hz = job.profile_cutter.max_pulse_rate_hz;
+    c.max_pulse_rate_hz = profileCutterSpec(job).max_pulse_rate_hz;
     c.period_s = job.sim.period_s;
     c.initial_position = initial;
     return c;
@@ -16,16 +18,16 @@ SimulatedStepperConfig stepperConfig(const Job& job, double unitsPerPulse, doubl
 
 double radPerPulseA(const Job& job) {
     return 2 * kPi /
-           (static_cast<double>(job.profile_cutter.steps_per_rev_a) *
-            job.profile_cutter.pulses_per_step_a);
+           (static_cast<double>(profileCutterSpec(job).steps_per_rev_a) *
+            profileCutterSpec(job).pulses_per_step_a);
 }
 
 } // namespace
 
 ProfileCutterRig::ProfileCutterRig(const Job& job, const MotionProgram& program)
     : aCfg_(stepperConfig(job, radPerPulseA(job), program.reference[0])),
-      xCfg_(stepperConfig(job, job.profile_cutter.mm_per_pulse_x, program.reference[1])), a_(aCfg_),
-      x_(xCfg_), period_s_(job.sim.period_s) {}
+      xCfg_(stepperConfig(job, profileCutterSpec(job).mm_per_pulse_x, program.reference[1])),
+      a_(aCfg_), x_(xCfg_), period_s_(job.sim.period_s) {}
 
 EngineDevices ProfileCutterRig::devices() {
     EngineDevices d;

@@ -1,7 +1,6 @@
 #include "ui/machines/flying_saw/flying_saw_scene.h"
 
 #include "core/machines/flying_saw/flying_saw_module.h"
-#include "core/trajectory/cut_planner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -130,12 +129,11 @@ std::vector<LinkagePiece> drawSaw(const SawGeometry& g, const JointVector& q) {
 
 } // namespace
 
-SceneModel buildFlyingSawScene(const Job& job, const CutPlan& cutPlan) {
+SceneModel buildFlyingSawScene(const Job& job, const MachinePlan& plan) {
     const FlyingSawSpec& s = flyingSawSpec(job);
     FlyingSawPlan local;
     const FlyingSawPlan* p = nullptr;
-    if (cutPlan.machine_plan && cutPlan.machine_plan->ok() && cutPlan.machine_plan->data)
-        p = &static_cast<const FlyingSawPlanData*>(cutPlan.machine_plan->data.get())->plan;
+    if (plan.ok() && plan.data) p = &static_cast<const FlyingSawPlanData*>(plan.data.get())->plan;
     if (!p) {
         local = planFlyingSaw(s);
         if (!local.ok) throw std::invalid_argument("machine." + local.problem);

@@ -8,12 +8,13 @@
 // was at S_k (the plan's sync positions), once the blades left the wall; a cut piece is shown
 // pulled away by the run-out table (a drawing aid: up to 250 mm, a quarter of the line's travel
 // since its cut). The pipe is drawn over a window around the cell. Units mm, rad; z up.
+#include "core/machine/machine_module.h"
 #include "ui/view3d/scene_model.h"
 
 namespace cutcell::view3d {
 
 // Throws std::invalid_argument with the plan's problem when the job cannot be planned.
-SceneModel buildFlyingSawScene(const Job& job, const CutPlan& plan);
+SceneModel buildFlyingSawScene(const Job& job, const MachinePlan& plan);
 
 // The slot of q that carries the master position (the line encoder, mm) in this scene.
 inline constexpr int kFlyingSawMasterSlot = kMaxAxes - 1;

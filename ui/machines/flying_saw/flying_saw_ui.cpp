@@ -41,7 +41,7 @@ std::vector<std::pair<std::string, QString>> FlyingSawUi::unusedCommonFields() c
     return pipeJointFields(why);
 }
 
-bool FlyingSawUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+bool FlyingSawUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                              cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
     return sceneOrWhy([&] { return cutcell::view3d::buildFlyingSawScene(job, plan); }, out, why);

@@ -1,4 +1,6 @@
 #include "ui/machines/pipe_robot/controller_form.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QDoubleSpinBox>
 #include <QGroupBox>
@@ -53,9 +55,11 @@ ControllerForm::ControllerForm(JobEditor* editor, QWidget* parent) : JobForm(edi
     for (int r = 0; r < cutcell::kAxisCount; ++r)
         for (int c = 0; c < 4; ++c) {
             const auto row = static_cast<size_t>(r);
-            auto* w = bindDouble(
-                "controller[" + std::to_string(r) + "]." + gains[c].key, gains[c].decimals,
-                [row, m = gains[c].member](Job& j) -> double& { return j.controller[row].*m; });
+            auto* w =
+                bindDouble("controller[" + std::to_string(r) + "]." + gains[c].key,
+                           gains[c].decimals, [row, m = gains[c].member](Job& j) -> double& {
+                               return editedSpec<cutcell::PipeRobotSpec>(j).controller[row].*m;
+                           });
             w->setFrame(false);
             pid->setCellWidget(r, c, w);
         }
@@ -81,9 +85,11 @@ ControllerForm::ControllerForm(JobEditor* editor, QWidget* parent) : JobForm(edi
     for (int r = 0; r < cutcell::kAxisCount; ++r)
         for (int c = 0; c < 3; ++c) {
             const auto row = static_cast<size_t>(r);
-            auto* w = bindDouble(
-                "plant[" + std::to_string(r) + "]." + params[c].key, params[c].decimals,
-                [row, m = params[c].member](Job& j) -> double& { return j.plant[row].*m; });
+            auto* w =
+                bindDouble("plant[" + std::to_string(r) + "]." + params[c].key, params[c].decimals,
+                           [row, m = params[c].member](Job& j) -> double& {
+                               return editedSpec<cutcell::PipeRobotSpec>(j).plant[row].*m;
+                           });
             w->setFrame(false);
             plant->setCellWidget(r, c, w);
         }

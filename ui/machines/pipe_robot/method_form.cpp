@@ -1,4 +1,6 @@
 #include "ui/machines/pipe_robot/method_form.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -29,8 +31,13 @@ MethodForm::MethodForm(JobEditor* editor, QWidget* parent) : JobForm(editor, par
     auto* f = new QFormLayout(box);
     auto* method = bindChoice(
         "method", {tr("Rotating pipe"), tr("Static pipe")},
-        [](const Job& j) { return j.method == CutMethod::RotatingPipe ? 0 : 1; },
-        [](Job& j, int i) { j.method = i == 0 ? CutMethod::RotatingPipe : CutMethod::StaticPipe; });
+        [](const Job& j) {
+            return editedSpec<cutcell::PipeRobotSpec>(j).method == CutMethod::RotatingPipe ? 0 : 1;
+        },
+        [](Job& j, int i) {
+            editedSpec<cutcell::PipeRobotSpec>(j).method =
+                i == 0 ? CutMethod::RotatingPipe : CutMethod::StaticPipe;
+        });
     addRow(f, tr("Method"), method, {});
     auto* text = new QLabel(box);
     text->setWordWrap(true);
@@ -40,8 +47,9 @@ MethodForm::MethodForm(JobEditor* editor, QWidget* parent) : JobForm(editor, par
                              [](Job& j) -> double& { return j.cut.static_chuck_deg; });
     addRow(f, tr("Chuck angle (static)"), chuck, "deg");
     const auto refresh = [text, chuck, editor] {
-        text->setText(explain(editor->job().method));
-        chuck->setEnabled(editor->job().method == CutMethod::StaticPipe);
+        text->setText(explain(editedSpec<cutcell::PipeRobotSpec>(editor->job()).method));
+        chuck->setEnabled(editedSpec<cutcell::PipeRobotSpec>(editor->job()).method ==
+                          CutMethod::StaticPipe);
     };
     connect(editor, &JobEditor::jobReset, this, refresh);
     connect(editor, &JobEditor::edited, this, refresh);

@@ -2,7 +2,6 @@
 #include "ui/shown_number.h"
 
 #include "core/job/default_job.h"
-#include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "ui/machines/pipe_robot/controller_form.h"
 #include "ui/machines/pipe_robot/method_form.h"
 #include "ui/machines/pipe_robot/robot_dh_table_form.h"
@@ -10,7 +9,7 @@
 #include <QObject>
 
 #ifdef CUTCELL_HAVE_VIEW3D
-#include "ui/view3d/scene_model.h"
+#include "ui/machines/pipe_robot/pipe_robot_scene.h"
 #endif
 
 namespace CutCell::ui {
@@ -37,35 +36,41 @@ std::vector<ExportKind> PipeRobotUi::exports() const {
     return {ExportKind::TemplateSvg, ExportKind::TemplatePdf};
 }
 
-cutcell::CutPlan PipeRobotUi::plan(const cutcell::Job& job,
-                                   const cutcell::PlanOptions& options) const {
-    return cutcell::planCut(job, options);
+namespace {
+// The robot module's own plan data (MachinePlan::data is the CutPlan, also when infeasible).
+const cutcell::CutPlan* cutPlanOf(const cutcell::MachinePlan& plan) {
+    return static_cast<const cutcell::CutPlan*>(plan.data.get());
+}
+} // namespace
+
+cutcell::MachinePlan PipeRobotUi::plan(const cutcell::Job& job,
+                                       const cutcell::PlanOptions& options) const {
+    cutcell::MachinePlan p = MachineUi::plan(job, options);
+    if (p.status == cutcell::PlanStatus::Infeasible)
+        if (const cutcell::CutPlan* cut = cutPlanOf(p); cut && !cut->problem.empty())
+            p.problem = cut->problem;
+    return p;
 }
 
-std::shared_ptr<const cutcell::MotionProgram>
-PipeRobotUi::buildProgram(const cutcell::Job& job, const cutcell::CutPlan& plan,
-                          const std::string& jobText) const {
-    return cutcell::buildPipeRobotProgram(job, plan, jobText);
-}
-
-std::size_t PipeRobotUi::plannedPointCount(const cutcell::Job&,
-                                           const cutcell::CutPlan& plan) const {
-    return plan.knots.size();
-}
-
-QString PipeRobotUi::planSummary(const cutcell::Job&, const cutcell::CutPlan& plan) const {
+QString PipeRobotUi::planSummary(const cutcell::Job& job, const cutcell::MachinePlan& plan) const {
+    const cutcell::CutPlan* cut = cutPlanOf(plan);
+    if (!cut) return MachineUi::planSummary(job, plan);
     return QObject::tr("Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).")
-        .arg(plan.knots.size())
-        .arg(shownNumber(plan.length_mm, 1))
-        .arg(shownNumber(plan.cut_time_s, 1))
-        .arg(shownNumber(plan.max_deviation_deg, 1));
+        .arg(cut->knots.size())
+        .arg(shownNumber(cut->length_mm, 1))
+        .arg(shownNumber(cut->cut_time_s, 1))
+        .arg(shownNumber(cut->max_deviation_deg, 1));
 }
 
-bool PipeRobotUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+bool PipeRobotUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                              cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
-    (void)why;
-    *out = cutcell::view3d::buildRobotScene(job, plan);
+    const cutcell::CutPlan* cut = cutPlanOf(plan);
+    if (!cut) {
+        if (why) *why = QString::fromStdString(plan.problem);
+        return false;
+    }
+    *out = cutcell::view3d::buildRobotScene(job, *cut);
     return true;
 #else
     (void)job, (void)plan, (void)out;

@@ -20,15 +20,12 @@ class PipeRobotUi : public MachineUi {
     std::vector<FormPage> formPages() const override;
     TipErrorPlot tipErrorPlot() const override { return TipErrorPlot::BaseXyz; }
     std::vector<ExportKind> exports() const override;
-    cutcell::CutPlan plan(const cutcell::Job& job,
-                          const cutcell::PlanOptions& options) const override;
-    std::shared_ptr<const cutcell::MotionProgram>
-    buildProgram(const cutcell::Job& job, const cutcell::CutPlan& plan,
-                 const std::string& jobText) const override;
-    std::size_t plannedPointCount(const cutcell::Job& job,
-                                  const cutcell::CutPlan& plan) const override;
-    QString planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const override;
-    bool buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+    // The module's plan; an unreachable path's problem is the planner's sentence (the point,
+    // the joint, the limit), which the GUI puts after its own "Path not reachable".
+    cutcell::MachinePlan plan(const cutcell::Job& job,
+                              const cutcell::PlanOptions& options) const override;
+    QString planSummary(const cutcell::Job& job, const cutcell::MachinePlan& plan) const override;
+    bool buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                     cutcell::view3d::SceneModel* out, QString* why) const override;
 };
 

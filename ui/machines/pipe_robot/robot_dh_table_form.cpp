@@ -1,4 +1,6 @@
 #include "ui/machines/pipe_robot/robot_dh_table_form.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "ui/forms/edited_spec.h"
 
 #include <QDoubleSpinBox>
 #include <QGroupBox>
@@ -41,8 +43,9 @@ RobotDhTableForm::RobotDhTableForm(JobEditor* editor, QWidget* parent) : JobForm
             const auto& col = columns[c];
             const auto row = static_cast<size_t>(r);
             const std::string key = "robot.dh[" + std::to_string(r) + "]." + col.key;
-            auto* w = bindDouble(key, col.decimals,
-                                 [row, m = col.member](Job& j) -> double& { return j.dh[row].*m; });
+            auto* w = bindDouble(key, col.decimals, [row, m = col.member](Job& j) -> double& {
+                return editedSpec<cutcell::PipeRobotSpec>(j).dh[row].*m;
+            });
             w->setFrame(false);
             table->setCellWidget(r, c, w);
         }

@@ -70,14 +70,20 @@ std::string ProfileCutterUi::exportText(ExportKind kind, const cutcell::Job& job
     return text;
 }
 
-QString ProfileCutterUi::planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const {
-    return QObject::tr("Profile cutter: %1 points, %2 mm in %3 s.")
-        .arg(plannedPointCount(job, plan))
-        .arg(shownNumber(plan.length_mm, 1))
-        .arg(shownNumber(plan.cut_time_s, 1));
+cutcell::JointExtras ProfileCutterUi::jointExtras(const cutcell::Job& job) const {
+    return cutcell::jointExtrasOf(job);
 }
 
-bool ProfileCutterUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan&,
+QString ProfileCutterUi::planSummary(const cutcell::Job& job,
+                                     const cutcell::MachinePlan& plan) const {
+    if (!plan.program) return MachineUi::planSummary(job, plan);
+    return QObject::tr("Profile cutter: %1 points, %2 mm in %3 s.")
+        .arg(plannedPointCount(plan))
+        .arg(shownNumber(plan.program->length_mm, 1))
+        .arg(shownNumber(plan.program->cut_time_s, 1));
+}
+
+bool ProfileCutterUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan&,
                                  cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
     try {

@@ -23,9 +23,11 @@ class ProfileCutterUi : public ModulePlannedMachineUi {
     TipErrorPlot tipErrorPlot() const override { return TipErrorPlot::MissOnPipe; }
     std::vector<ExportKind> exports() const override;
     std::string exportText(ExportKind kind, const cutcell::Job& job, QString* what) const override;
+    // Its section's other branches and hole position.
+    cutcell::JointExtras jointExtras(const cutcell::Job& job) const override;
     // Planned once, by the core module (ModulePlannedMachineUi: its program runs).
-    QString planSummary(const cutcell::Job& job, const cutcell::CutPlan& plan) const override;
-    bool buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+    QString planSummary(const cutcell::Job& job, const cutcell::MachinePlan& plan) const override;
+    bool buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                     cutcell::view3d::SceneModel* out, QString* why) const override;
 };
 

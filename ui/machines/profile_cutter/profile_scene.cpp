@@ -68,7 +68,7 @@ SceneModel buildProfileCutterScene(const Job& job) {
     if (!problem.empty()) {
         for (size_t i = 0; i < m.pathWork.size(); ++i) {
             const double x = m.pathWork[i].z();
-            if (x < 0 || x > job.profile_cutter.x_travel_mm) {
+            if (x < 0 || x > profileCutterSpecOrDefault(job).x_travel_mm) {
                 m.reachable[i] = 0;
                 if (m.firstUnreachable < 0) m.firstUnreachable = static_cast<int>(i);
             }

@@ -40,7 +40,7 @@ std::vector<std::pair<std::string, QString>> QuickReturnUi::unusedCommonFields()
     return pipeJointFields(why);
 }
 
-bool QuickReturnUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan&,
+bool QuickReturnUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan&,
                                cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
     return sceneOrWhy([&] { return cutcell::view3d::buildQuickReturnScene(job); }, out, why);

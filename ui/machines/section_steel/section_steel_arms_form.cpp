@@ -93,7 +93,7 @@ SectionSteelArmsForm::SectionSteelArmsForm(JobEditor* editor, QWidget* parent)
     vp->addLayout(fp);
     vp->addLayout(
         jointGrid(path, "path_arm", 3, 0,
-                  [](SectionSteelSpec& s, size_t i) -> cutcell::section_steel::JointLimit& {
+                  [](SectionSteelSpec& s, size_t i) -> cutcell::section_steel::ArmJointLimit& {
                       return s.path_limits[i];
                   }));
     mainLayout()->addWidget(path);
@@ -108,7 +108,7 @@ SectionSteelArmsForm::SectionSteelArmsForm(JobEditor* editor, QWidget* parent)
     vg->addLayout(fg);
     vg->addLayout(
         jointGrid(groove, "groove_arm", 5, 3,
-                  [](SectionSteelSpec& s, size_t i) -> cutcell::section_steel::JointLimit& {
+                  [](SectionSteelSpec& s, size_t i) -> cutcell::section_steel::ArmJointLimit& {
                       return s.groove_limits[i];
                   }));
     mainLayout()->addWidget(groove);

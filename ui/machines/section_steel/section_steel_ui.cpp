@@ -35,14 +35,11 @@ std::vector<std::pair<std::string, QString>> SectionSteelUi::unusedCommonFields(
     return pipeJointFields(why);
 }
 
-bool SectionSteelUi::buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+bool SectionSteelUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                                 cutcell::view3d::SceneModel* out, QString* why) const {
 #ifdef CUTCELL_HAVE_VIEW3D
     // The module's plan (feasible or not: an infeasible cut is drawn with its problem).
-    const auto* steel =
-        plan.machine_plan
-            ? static_cast<const cutcell::section_steel::SteelPlan*>(plan.machine_plan->data.get())
-            : nullptr;
+    const auto* steel = static_cast<const cutcell::section_steel::SteelPlan*>(plan.data.get());
     return sceneOrWhy([&] { return cutcell::view3d::buildSectionSteelScene(job, steel); }, out,
                       why);
 #else

@@ -19,7 +19,7 @@ class SectionSteelUi : public ModulePlannedMachineUi {
     QString title() const override;
     std::vector<FormPage> formPages() const override;
     std::vector<std::pair<std::string, QString>> unusedCommonFields() const override;
-    bool buildScene(const cutcell::Job& job, const cutcell::CutPlan& plan,
+    bool buildScene(const cutcell::Job& job, const cutcell::MachinePlan& plan,
                     cutcell::view3d::SceneModel* out, QString* why) const override;
 };
 

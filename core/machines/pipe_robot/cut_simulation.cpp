@@ -1,7 +1,8 @@
-#include "core/sim/cut_simulation.h"
+#include "core/machines/pipe_robot/cut_simulation.h"
 
 #include "core/control/joint_plant.h"
 #include "core/control/pid_filter.h"
+#include "core/machines/pipe_robot/pipe_robot_program.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,10 @@
 namespace cutcell {
 
 TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
+    const PipeRobotSpec& spec = pipeRobotSpec(job);
     TrackingReport report;
-    report.method = toString(job.method);
+    report.axis_count = kAxisCount;
+    report.method = toString(spec.method);
     report.reachable = plan.reachable;
     report.problem = plan.problem;
     report.length_mm = plan.length_mm;
@@ -18,9 +21,9 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     report.max_direction_deviation_deg = plan.max_deviation_deg;
 
     const double T = job.sim.period_s;
-    const PipeRobot robot(job.dh);
-    TrackingStats stats(robot);
-    TrackingStats cruise(robot);
+    const PipeRobotTipModel tipModel(spec.dh);
+    TrackingStats stats(&tipModel);
+    TrackingStats cruise(&tipModel);
     const SpeedProfile profile(plan.length_mm, job.cut.speed_mm_s, job.cut.ramp_s);
     const double ramp = (profile.duration() - plan.length_mm / job.cut.speed_mm_s);
     const double cruiseFrom = ramp, cruiseTo = plan.cut_time_s - ramp;
@@ -28,8 +31,8 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     std::array<JointPlant, kAxisCount> plant;
     const JointSample start = plan.spline.evaluate(0);
     for (int i = 0; i < kAxisCount; ++i) {
-        pid[static_cast<size_t>(i)].configure(job.controller[static_cast<size_t>(i)], T);
-        plant[static_cast<size_t>(i)].configure(job.plant[static_cast<size_t>(i)], T);
+        pid[static_cast<size_t>(i)].configure(spec.controller[static_cast<size_t>(i)], T);
+        plant[static_cast<size_t>(i)].configure(spec.plant[static_cast<size_t>(i)], T);
         plant[static_cast<size_t>(i)].setState(start.q[i], 0);
     }
     const double simulated = std::max(job.sim.duration_s, plan.cut_time_s);

@@ -1,4 +1,4 @@
-#include "core/machines/profile_cutter/template_layout.h"
+#include "core/pipe_joint/template_layout.h"
 #include "core/common/c_format.h"
 
 #include <algorithm>
@@ -27,7 +27,8 @@ std::string ascii(const std::string& s) {
     return out;
 }
 
-std::vector<std::string> captions(const Job& job, const ProfileCut& cut, double xRef) {
+std::vector<std::string> captions(const Job& job, const JointExtras& extras, const ProfileCut& cut,
+                                  double xRef) {
     std::vector<std::string> t;
     t.push_back("CutCell cutting template: " + ascii(job.name));
     t.push_back(
@@ -42,8 +43,9 @@ std::vector<std::string> captions(const Job& job, const ProfileCut& cut, double 
                     2 * job.branch_pipe.radius_mm, job.branch_pipe.wall_mm));
     t.push_back(fmt("angle between axes %.2f deg, eccentricity %.2f mm", job.angle_deg,
                     job.eccentricity_mm));
-    for (size_t k = 0; k < job.other_branches.size() && job.cut.target == CutTarget::Branch; ++k) {
-        const OtherBranch& o = job.other_branches[k];
+    for (size_t k = 0; k < extras.other_branches.size() && job.cut.target == CutTarget::Branch;
+         ++k) {
+        const OtherBranch& o = extras.other_branches[k];
         t.push_back("also fits other branch " + std::to_string(k + 1) +
                     fmt(": OD %.2f mm, angle %.2f deg, eccentricity %.2f mm, position %.2f mm",
                         2 * o.radius_mm, o.angle_deg, o.eccentricity_mm, o.position_mm) +
@@ -95,8 +97,8 @@ std::vector<std::string> zeroAndWrap(const Job& job, const TemplateDrawing& d, d
 
 } // namespace
 
-TemplateDrawing buildTemplate(const Job& job, int samples) {
-    const ProfileCut cut = computeProfileCut(job, samples);
+TemplateDrawing buildTemplate(const Job& job, const JointExtras& extras, int samples) {
+    const ProfileCut cut = computeProfileCut(job, extras, samples);
     TemplateDrawing d;
     d.circumference_mm = 2 * kPi * cut.work_radius_mm;
     d.a_low_deg = cut.target == CutTarget::Branch ? 0.0 : -180.0;
@@ -108,7 +110,7 @@ TemplateDrawing buildTemplate(const Job& job, int samples) {
     // The reference line lies 15+ mm off the cut toward the bottom of the sheet (see y_per_x).
     const bool hole = cut.target == CutTarget::Main;
     const double xRef = hole ? 5 * std::ceil((xMax + 15) / 5) : 5 * std::floor((xMin - 15) / 5);
-    const auto caption = captions(job, cut, xRef);
+    const auto caption = captions(job, extras, cut, xRef);
     const double textTop = kMargin + kTextSize;
     for (size_t i = 0; i < caption.size(); ++i)
         d.texts.push_back({{kMargin, textTop + kLineStep * static_cast<double>(i)},

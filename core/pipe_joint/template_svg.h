@@ -7,8 +7,8 @@
 // its window clipped by a clipPath, so the file shows the whole set and each tile can be cut out
 // of it by id. One file, because an export is one file (CLI option, GUI save dialog); the PDF,
 // one page per tile, is the one to print.
-#include "core/machines/profile_cutter/template_layout.h"
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/pipe_joint/template_layout.h"
+#include "core/pipe_joint/template_tiles.h"
 
 #include <string>
 

@@ -1,9 +1,10 @@
 #pragma once
-// The unrolled cutting template of the profile cutter: the cut curve developed on the outer
+// The unrolled cutting template of a pipe joint (the profile cutter's and the pipe robot's
+// export; its axes are the profile cutter's): the cut curve developed on the outer
 // surface of the pipe being cut (u = R_w * A along the circumference, v from X along the pipe),
 // to print at 1:1, wrap around the pipe and cut by hand. One drawing (mm, origin top left,
 // y down) is rendered by both back ends, template_svg and
-// core/machines/profile_cutter/template_pdf.
+// core/pipe_joint/template_pdf.
 //
 // Contents: the cut curve (one full turn for the branch end, a closed loop for the hole), the two
 // wrap edges (u = 0 and u = circumference: the template's developed length), quadrant marks at
@@ -17,7 +18,7 @@
 // X growing upward (top = the end being cut) and the hole X growing downward (top = the main
 // pipe's fixed end): the other way round the sheet would lie mirrored on the pipe.
 #include "core/job/job.h"
-#include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/pipe_joint/developed_cut.h"
 
 #include <Eigen/Core>
 #include <string>
@@ -65,6 +66,6 @@ struct TemplateDrawing {
 };
 
 // samples: points of the cut curve per turn (the drawing is smoother than the NC grid).
-TemplateDrawing buildTemplate(const Job& job, int samples = 1440);
+TemplateDrawing buildTemplate(const Job& job, const JointExtras& extras, int samples = 1440);
 
 } // namespace cutcell

@@ -1,4 +1,4 @@
-#include "core/machines/profile_cutter/multi_branch.h"
+#include "core/pipe_joint/multi_branch.h"
 
 #include <cmath>
 #include <limits>

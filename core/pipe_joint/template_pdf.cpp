@@ -1,4 +1,4 @@
-#include "core/machines/profile_cutter/template_pdf.h"
+#include "core/pipe_joint/template_pdf.h"
 #include "core/common/c_format.h"
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "core/trajectory/cut_planner.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/common/c_format.h"
 
 #include <algorithm>
@@ -6,31 +6,6 @@
 #include <cstdio>
 
 namespace cutcell {
-
-SpeedProfile::SpeedProfile(double length_mm, double speed_mm_s, double ramp_s)
-    : length_(length_mm), v_(speed_mm_s) {
-    // A ramp covers v * ramp / 2; shorten the ramps when the cut is too short for them.
-    ramp_ = std::min(ramp_s, length_mm / speed_mm_s);
-    duration_ = length_mm / speed_mm_s + ramp_;
-}
-
-double SpeedProfile::speed(double t) const {
-    if (t <= 0 || t >= duration_) return 0;
-    if (t < ramp_) return v_ * (1 - std::cos(kPi * t / ramp_)) / 2;
-    if (t > duration_ - ramp_) return speed(duration_ - t);
-    return v_;
-}
-
-double SpeedProfile::distance(double t) const {
-    if (t <= 0) return 0;
-    if (t >= duration_) return length_;
-    const auto ramp = [&](double u) {
-        return v_ / 2 * (u - ramp_ / kPi * std::sin(kPi * u / ramp_));
-    };
-    if (t < ramp_) return ramp(t);
-    if (t > duration_ - ramp_) return length_ - ramp(duration_ - t);
-    return v_ * ramp_ / 2 + v_ * (t - ramp_);
-}
 
 namespace {
 
@@ -44,10 +19,11 @@ std::string pointProblem(size_t index, const PlannedPoint& p, const std::string&
 } // namespace
 
 CutPlan planCut(const Job& job, const PlanOptions& options) {
+    const PipeRobotSpec& spec = pipeRobotSpec(job);
     CutPlan plan;
-    plan.method = job.method;
+    plan.method = spec.method;
     const CutGeometry geo(job);
-    const PipeRobot robot(job.dh);
+    const PipeRobot robot(spec.dh);
     plan.length_mm = geo.length();
     const SpeedProfile profile(geo.length(), job.cut.speed_mm_s, job.cut.ramp_s);
     plan.cut_time_s = profile.duration();
@@ -65,14 +41,14 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         p.t_s = plan.knot_dt_s * static_cast<double>(k);
         p.cut = geo.atArcLength(profile.distance(p.t_s));
         double chuck = deg2rad(job.cut.static_chuck_deg);
-        if (job.method == CutMethod::RotatingPipe) {
+        if (spec.method == CutMethod::RotatingPipe) {
             chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
             if (k > 0) chuck += 2 * kPi * std::round((previousChuck - chuck) / (2 * kPi));
         }
         previousChuck = chuck;
         p.chuck_rad = chuck;
     }
-    if (job.method == CutMethod::RotatingPipe) {
+    if (spec.method == CutMethod::RotatingPipe) {
         // Shift the whole sweep by whole turns so that it fits the chuck's range, if it can.
         double lo = 1e300, hi = -1e300;
         for (const auto& p : plan.knots) {

@@ -10,7 +10,7 @@
 //    every tile that has a neighbour there (trim there, lay it on the neighbour, match crosses).
 // Paper "single" gives the template as one page of its own size (templatePdf/templateSvg of the
 // drawing, unchanged).
-#include "core/machines/profile_cutter/template_layout.h"
+#include "core/pipe_joint/template_layout.h"
 
 #include <optional>
 #include <string>

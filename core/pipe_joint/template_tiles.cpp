@@ -1,5 +1,6 @@
-#include "core/machines/profile_cutter/template_tiles.h"
+#include "core/pipe_joint/template_tiles.h"
 #include "core/common/c_format.h"
+#include "core/machine/machine_module.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,6 +171,12 @@ std::vector<TemplateDrawing> templatePages(const TemplateDrawing& d, const Paper
     for (TemplateTile& t : tileTemplate(d, paper, jobName).tiles)
         pages.push_back(std::move(t.page));
     return pages;
+}
+
+// The papers an export can be written on are the cutting templates' (the only export that
+// takes a paper); defined here so that core/machine does not reach into a machine's folder.
+const std::vector<std::string>& ExportSettings::papers() {
+    return paperNames();
 }
 
 } // namespace cutcell

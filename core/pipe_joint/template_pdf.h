@@ -4,7 +4,7 @@
 // uncompressed content streams and an exact xref table, so any viewer or printer reads it. A
 // tile's template lines are clipped to its window (re W n). PDF 1.4 pages are at most 200 in
 // (5080 mm) a side: larger templates are refused with a message naming the size.
-#include "core/machines/profile_cutter/template_layout.h"
+#include "core/pipe_joint/template_layout.h"
 
 #include <string>
 #include <vector>

@@ -23,6 +23,7 @@
 #include "core/common/types.h"
 #include "core/geometry/pipe_intersection.h"
 #include "core/job/job.h"
+#include "core/pipe_joint/pipe_joint_extras.h"
 
 #include <optional>
 #include <utility>
@@ -38,7 +39,7 @@ struct JointPipe {
     double radius_mm = 0;
 };
 
-// The other branch of a job in the main frame (see OtherBranch in core/job/job.h).
+// The other branch of a job in the main frame (see OtherBranch in pipe_joint_extras.h).
 JointPipe jointPipeFrom(const OtherBranch& b);
 
 // Where the generatrices of the cut branch meet one other branch. Built from PipeIntersection

@@ -14,18 +14,17 @@
 #include "core/common/types.h"
 #include "core/geometry/cut_path.h"
 #include "core/job/job.h"
+#include "core/machine/plan_options.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "core/trajectory/joint_spline.h"
+#include "core/trajectory/speed_profile.h"
 
-#include <atomic>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace cutcell {
-
-struct MachinePlan; // core/machine/machine_module.h
 
 struct PlannedPoint {
     double t_s = 0;
@@ -50,27 +49,6 @@ struct CutPlan {
     std::string problem; // one sentence naming the point, the joint and the limit
     double max_deviation_deg = 0;
     bool cancelled = false;
-    // A machine planned by its MachineModule (the GUI's ModulePlannedMachineUi): the module's
-    // plan with its program; the fields above then carry only reachable, problem, cut_time_s.
-    std::shared_ptr<const MachinePlan> machine_plan;
-};
-
-// Arc length travelled at time t for the speed profile (cosine ramps, cruise in between).
-class SpeedProfile {
-  public:
-    SpeedProfile(double length_mm, double speed_mm_s, double ramp_s);
-    double duration() const { return duration_; }
-    double distance(double t) const;
-    double speed(double t) const;
-
-  private:
-    double length_, v_, ramp_, duration_;
-};
-
-struct PlanOptions {
-    // Called now and then with the fraction done; planning stops early when *cancel is set.
-    std::function<void(double)> progress;
-    const std::atomic<bool>* cancel = nullptr;
 };
 
 CutPlan planCut(const Job& job, const PlanOptions& options = {});

@@ -2,8 +2,8 @@
 // Offline fixed-step simulation of a planned cut: per axis the PID with first-order filter
 // drives the joint plant toward the spline's set-point at the control period.
 #include "core/job/job.h"
+#include "core/machines/pipe_robot/cut_planner.h"
 #include "core/sim/tracking_stats.h"
-#include "core/trajectory/cut_planner.h"
 
 namespace cutcell {
 
