@@ -131,8 +131,9 @@ int runDriveSim(const DriveSimOptions& o) {
             if (nmt == s.nmt && state == s.state) continue;
             nmt = s.nmt;
             state = s.state;
-            std::printf("node %d: %s, %s%s%s\n", s.node, toString(s.nmt), toString(s.state),
-                        s.error_code ? ", error " : "",
+            // An encoder (CiA 406) has no CiA 402 state machine: its NMT state alone.
+            std::printf("node %d: %s, %s%s%s\n", s.node, toString(s.nmt),
+                        s.encoder ? "encoder" : toString(s.state), s.error_code ? ", error " : "",
                         s.error_code ? emcyText(s.error_code).c_str() : "");
         }
         std::fflush(stdout);
