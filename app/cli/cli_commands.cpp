@@ -105,16 +105,16 @@ int runSimulate(const SimulateOptions& o) {
     // main.cpp has checked --devices against its choices; the module checks --method.
     if (!o.method.empty()) {
         std::string error;
-        if (!module.setVariant(job, o.method, &error)) {
-            std::fprintf(stderr, "cutcell-cli simulate: %s\n", error.c_str());
+        if (const Outcome variant = module.setVariant(job, o.method); !variant.ok()) {
+            std::fprintf(stderr, "cutcell-cli simulate: %s\n", variant.message.c_str());
             return kUsage;
         }
     }
     const std::string& devices = o.devices.devices;
     const bool overCan =
         devices == "canopen" || (devices.empty() && job.devices.kind == DeviceKind::CanOpen);
-    if (std::string why; overCan && !module.supportsCanOpen(&why)) {
-        std::fprintf(stderr, "cutcell-cli simulate --devices canopen: %s\n", why.c_str());
+    if (const Outcome can = module.canOpen(); overCan && !can.ok()) {
+        std::fprintf(stderr, "cutcell-cli simulate --devices canopen: %s\n", can.message.c_str());
         return kInvalidJob;
     }
     // Over CAN a --period-ms is the engine's cycle: the plan is made for it.
@@ -135,15 +135,16 @@ int runSimulate(const SimulateOptions& o) {
         return kFailure;
 #endif
     }
-    std::string text, table, why;
-    if (!module.offlineReport(job, plan, &text, &table, &why)) {
-        std::fprintf(stderr, "cutcell-cli simulate: %s\n", why.c_str());
+    std::string text, table;
+    const Outcome report = module.offlineReport(job, plan, &text, &table);
+    if (report.refused()) {
+        std::fprintf(stderr, "cutcell-cli simulate: %s\n", report.message.c_str());
         return kUsage;
     }
     const std::string& reportFile = o.report;
     // A run that did not complete still gets its report, and says why on the way out.
-    const int incomplete = why.empty() ? kOk : kFailure;
-    if (!why.empty()) std::fprintf(stderr, "cutcell-cli simulate: %s\n", why.c_str());
+    const int incomplete = report.ok() ? kOk : kFailure;
+    if (!report.ok()) std::fprintf(stderr, "cutcell-cli simulate: %s\n", report.message.c_str());
     if (const int rc = emitReport(reportFile, text, "simulate"); rc != kOk || reportFile.empty())
         return rc != kOk ? rc : incomplete;
     std::printf("report written to %s\n%s", reportFile.c_str(), table.c_str());

@@ -109,8 +109,8 @@ EngineRunResult runOnEngine(const Job& job, const MachineModule& module, const M
     EngineConfig config;
     config.period_s = job.sim.period_s;
     config.spec = job.engine; // first: the bus's tuning reads its speed limits
-    if (std::string noCan; setup.over_can && !module.supportsCanOpen(&noCan)) {
-        std::fprintf(stderr, "%s --devices canopen: %s\n", command.c_str(), noCan.c_str());
+    if (const Outcome can = module.canOpen(); setup.over_can && !can.ok()) {
+        std::fprintf(stderr, "%s --devices canopen: %s\n", command.c_str(), can.message.c_str());
         result.code = kInvalidJob;
         return result;
     }

@@ -38,11 +38,10 @@ int run(const KinematicsOptions& o, bool forward) {
     if (!parseList(o.values, forward ? "--joints" : "--pose", values)) return kUsage;
     const MachineModule& m = machineFor(job);
     json::Value out;
-    std::string why;
-    const bool ok = forward ? m.forwardKinematics(job, o.arm, values, &out, &why)
-                            : m.inverseKinematics(job, o.arm, values, &out, &why);
-    if (!ok) {
-        std::fprintf(stderr, "%s\n", why.c_str());
+    const Outcome done = forward ? m.forwardKinematics(job, o.arm, values, &out)
+                                 : m.inverseKinematics(job, o.arm, values, &out);
+    if (!done.ok()) {
+        std::fprintf(stderr, "%s\n", done.message.c_str());
         return kUsage;
     }
     std::fputs(json::write(out).c_str(), stdout);

@@ -32,10 +32,9 @@ json::Value machineJson(const MachineModule& m) {
                                        {"default_name", e.default_name},
                                        {"plan_file", e.plan_file},
                                        {"binary", e.binary}});
-    std::string why;
     return json::Object{{"id", m.id()},
                         {"title", m.title()},
-                        {"canopen", m.supportsCanOpen(&why)},
+                        {"canopen", m.canOpen().ok()},
                         {"axes", axes},
                         {"exports", exports}};
 }

@@ -28,7 +28,7 @@ class CanRig : public CutCell::ui::EngineRig {
         // The machine's cell - which node is which axis (mode, scaling) or encoder - from the
         // same table the CLI builds its cell from (devices/machines/can_cells.cpp).
         const MachineModule& module = machineFor(job);
-        if (std::string why; !module.supportsCanOpen(&why)) throw std::runtime_error(why);
+        if (const Outcome can = module.canOpen(); !can.ok()) throw std::runtime_error(can.message);
         const MachinePlan plan = module.plan(job);
         const MotionProgram* program = plan.ok() && plan.program ? plan.program.get() : nullptr;
         CanCellConfig cell;

@@ -105,9 +105,9 @@ std::vector<JobIssue> validateJob(const Job& job) {
         if (issue.message.rfind(issue.key, 0) == 0) issue.message = "machine." + issue.message;
         c.issues.push_back(issue);
     }
-    std::string why;
-    if (job.devices.kind == DeviceKind::CanOpen && !module->supportsCanOpen(&why))
-        c.add("devices.kind", messageC("devices.kind = \"canopen\": %s", why.c_str()));
+    if (job.devices.kind == DeviceKind::CanOpen)
+        if (const Outcome can = module->canOpen(); !can.ok())
+            c.add("devices.kind", messageC("devices.kind = \"canopen\": %s", can.message.c_str()));
     return c.issues;
 }
 

@@ -10,6 +10,7 @@
 // Adding a machine: a folder core/machines/<name>/ with a class derived from MachineModule,
 // one line in core/machines/register_machines.cpp, and (for `run`) one line in
 // devices/machines/rig_registry.cpp. See README, "Adding a machine".
+#include "core/common/outcome.h"
 #include "core/common/types.h"
 #include "core/devices/device_interfaces.h"
 #include "core/engine/motion_program.h"
@@ -97,8 +98,9 @@ class MachineModule {
     // Range and consistency problems of the machine's part of the job (key, value, unit, limit).
     virtual std::vector<JobIssue> validate(const Job& job) const = 0;
 
-    // Whether the machine can run on CANopen drives; if not, why (for devices.kind = canopen).
-    virtual bool supportsCanOpen(std::string* why) const = 0;
+    // Whether the machine can run on CANopen drives: Ok, or Refused with why (the key
+    // devices.kind).
+    virtual Outcome canOpen() const = 0;
     // The external sensors the machine reads (engine sensor k = entry k: "line encoder"); on
     // CAN each is a CiA 406 encoder node (devices.sensor_node_ids). None by default.
     virtual std::vector<std::string> sensorNames() const { return {}; }
@@ -111,9 +113,9 @@ class MachineModule {
     // holds the machine's own data (its plan type) also when it is Infeasible, for drawing.
     virtual MachinePlan plan(const Job& job, const std::string& jobText = {},
                              const PlanOptions& options = {}) const = 0;
-    // "variant" of the cut where the machine has one (the robot's method); false + *error when
-    // the value is not one of the machine's or the machine has none.
-    virtual bool setVariant(Job& job, const std::string& variant, std::string* error) const;
+    // "variant" of the cut where the machine has one (the robot's method); Refused when the value
+    // is not one of the machine's or the machine has none.
+    virtual Outcome setVariant(Job& job, const std::string& variant) const;
 
     virtual std::vector<ExportInfo> exports() const = 0;
     // The contents of one export of a plan (text, or the PDF's bytes). Throws
@@ -128,11 +130,11 @@ class MachineModule {
     }
 
     // The offline report of `cutcell-cli simulate` (JSON text) and a few lines for the
-    // terminal; false + *why when the machine has none (it runs in the engine only) or the work
-    // is over its bound. True with *why set: a report of a run that did not complete, *why
-    // says why (the command exits non-zero after writing it).
-    virtual bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                               std::string* text, std::string* why) const;
+    // terminal: Ok; Incomplete with the report of a run that did not complete and why (the
+    // command exits non-zero after writing it); Refused without a report when the machine has
+    // none (it runs in the engine only) or the work is over its bound.
+    virtual Outcome offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                  std::string* text) const;
     // The machine's own figures for `cutcell-cli bench` (printed, never asserted), keys
     // prefixed by the machine; none by default.
     virtual void addBenchFigures(bool quick, json::Object& out) const {
@@ -141,13 +143,11 @@ class MachineModule {
     }
     // Arm machines (`cutcell-cli fk` / `ik`): the torch of one arm for joint values (deg), and
     // every IK branch (each with its status) for a torch pose {x, y, z mm, tx, ty, tz} in the
-    // machine's frame, as JSON. The default: false + *why "... is not an arm machine".
-    virtual bool forwardKinematics(const Job& job, const std::string& arm,
-                                   const std::vector<double>& jointsDeg, json::Value* out,
-                                   std::string* why) const;
-    virtual bool inverseKinematics(const Job& job, const std::string& arm,
-                                   const std::vector<double>& pose, json::Value* out,
-                                   std::string* why) const;
+    // machine's frame, as JSON. The default: Refused, "... is not an arm machine".
+    virtual Outcome forwardKinematics(const Job& job, const std::string& arm,
+                                      const std::vector<double>& jointsDeg, json::Value* out) const;
+    virtual Outcome inverseKinematics(const Job& job, const std::string& arm,
+                                      const std::vector<double>& pose, json::Value* out) const;
     // File formats this machine turns into jobs (File -> Import..., `cutcell-cli
     // import-<name>`; core/machine/job_importer.h); none by default.
     virtual std::vector<JobImporter> importers() const { return {}; }

@@ -73,31 +73,25 @@ const char* commandModeName(CommandMode m) {
     return "position";
 }
 
-bool MachineModule::setVariant(Job&, const std::string& variant, std::string* error) const {
-    if (error)
-        *error = "machine " + json::quote(id()) + " has no cut variants (asked for " +
-                 json::quote(variant) + ")";
-    return false;
+Outcome MachineModule::setVariant(Job&, const std::string& variant) const {
+    return Outcome::refuse("machine " + json::quote(id()) + " has no cut variants (asked for " +
+                           json::quote(variant) + ")");
 }
 
-bool MachineModule::offlineReport(const Job&, const MachinePlan&, std::string*, std::string*,
-                                  std::string* why) const {
-    if (why)
-        *why = "machine " + json::quote(id()) +
-               " has no offline report; it runs in the engine: cutcell-cli run JOB";
-    return false;
+Outcome MachineModule::offlineReport(const Job&, const MachinePlan&, std::string*,
+                                     std::string*) const {
+    return Outcome::refuse("machine " + json::quote(id()) +
+                           " has no offline report; it runs in the engine: cutcell-cli run JOB");
 }
 
-bool MachineModule::forwardKinematics(const Job&, const std::string&, const std::vector<double>&,
-                                      json::Value*, std::string* why) const {
-    if (why) *why = "machine " + json::quote(id()) + " is not an arm machine (no fk)";
-    return false;
+Outcome MachineModule::forwardKinematics(const Job&, const std::string&, const std::vector<double>&,
+                                         json::Value*) const {
+    return Outcome::refuse("machine " + json::quote(id()) + " is not an arm machine (no fk)");
 }
 
-bool MachineModule::inverseKinematics(const Job&, const std::string&, const std::vector<double>&,
-                                      json::Value*, std::string* why) const {
-    if (why) *why = "machine " + json::quote(id()) + " is not an arm machine (no ik)";
-    return false;
+Outcome MachineModule::inverseKinematics(const Job&, const std::string&, const std::vector<double>&,
+                                         json::Value*) const {
+    return Outcome::refuse("machine " + json::quote(id()) + " is not an arm machine (no ik)");
 }
 
 } // namespace cutcell

@@ -47,8 +47,8 @@ void CanCellBuilder::addEncoder(int k, double countsPerUnit,
 bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, CanCellConfig* out,
                  std::string* error) {
     const MachineModule& module = machineFor(job);
-    if (std::string why; !module.supportsCanOpen(&why)) {
-        if (error) *error = why;
+    if (const Outcome can = module.canOpen(); !can.ok()) {
+        if (error) *error = can.message;
         return false;
     }
     const CanCellEntry* entry = findCanCell(module.id());

@@ -3,7 +3,7 @@
 // id: the core's MachineModule says what a machine is and plans it; the rig here is its mock
 // hardware (as ros2_control keeps a mock and a real hardware interface behind one interface).
 // CANopen drives are generic (devices/canopen) and serve every machine whose module says
-// supportsCanOpen().
+// canOpen().
 //
 // Adding a machine's simulated devices: a factory function in this folder and one line in
 // sim_rig_registry.cpp.

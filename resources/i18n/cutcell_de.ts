@@ -4176,12 +4176,12 @@ entriegeln</translation>
         <translation>Loch im Hauptrohr</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>middle of the main pipe</source>
         <translation>Mitte des Hauptrohrs</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Branch position</source>
         <translation>Abzweigposition</translation>
     </message>

@@ -497,8 +497,11 @@ TEST(SawModule, AQueueOverTheSimulationsBoundIsRefusedWithTheFigures) {
     ASSERT_TRUE(validateJob(job).empty());
     const MachinePlan plan = sawModule().plan(job);
     ASSERT_TRUE(plan.ok()) << plan.problem;
-    std::string json, text, why;
-    EXPECT_FALSE(sawModule().offlineReport(job, plan, &json, &text, &why));
+    std::string json, text;
+    const Outcome report = sawModule().offlineReport(job, plan, &json, &text);
+    EXPECT_TRUE(report.refused());
+    EXPECT_EQ(report.key, "machine.queue");
+    const std::string& why = report.message;
     EXPECT_NE(why.find("17000 pieces"), std::string::npos) << why;
     EXPECT_NE(why.find("bound of 100000 s"), std::string::npos) << why;
     EXPECT_TRUE(json.empty());

@@ -405,9 +405,10 @@ TEST(QuickReturnJob, SimulateRefusesWorkOverItsBoundWithTheEstimate) {
         const std::string why = refusal(huge);
         EXPECT_NE(why.find("over the bound of 2e+06 samples"), std::string::npos) << why;
         EXPECT_NE(why.find("control.sample_time_s"), std::string::npos) << why;
-        std::string json, text, said;
-        EXPECT_FALSE(m.offlineReport(huge, m.plan(huge), &json, &text, &said));
-        EXPECT_EQ(said, why);
+        std::string json, text;
+        const Outcome said = m.offlineReport(huge, m.plan(huge), &json, &text);
+        EXPECT_TRUE(said.refused());
+        EXPECT_EQ(said.message, why);
     }
 }
 

@@ -252,8 +252,10 @@ class TestGuiCanMachines : public QObject {
         cutcell::Job job = shippedJob(cutcell::kProfileCutterId);
         job.devices.kind = cutcell::DeviceKind::CanOpen;
         job.devices.can_interface = busUrl().toStdString();
-        std::string why;
-        QVERIFY(!cutcell::machineFor(job).supportsCanOpen(&why));
+        const cutcell::Outcome can = cutcell::machineFor(job).canOpen();
+        QVERIFY(can.refused());
+        QCOMPARE(can.key, std::string("devices.kind"));
+        const std::string& why = can.message;
         MainWindow w(&cutcell::app::makeRig);
         const QString path = dir_.filePath("profile.json");
         cutcell::saveJobFile(job, path.toStdString());

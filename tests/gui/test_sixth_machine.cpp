@@ -99,9 +99,8 @@ class RotaryTableModule : public MachineModule {
         checkFields(c, tableFields(), specOf(job));
         return c.issues;
     }
-    bool supportsCanOpen(std::string* why) const override {
-        if (why) *why = "the test table has no CAN drive";
-        return false;
+    Outcome canOpen() const override {
+        return Outcome::refuse("the test table has no CAN drive", "devices.kind");
     }
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions&) const override {

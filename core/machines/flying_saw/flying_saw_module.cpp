@@ -82,8 +82,9 @@ std::vector<JobIssue> FlyingSawModule::validate(const Job& job) const {
     return checkFlyingSawSpec(*s);
 }
 
-bool FlyingSawModule::supportsCanOpen(std::string*) const {
-    return true; // CiA 402 drives + the line's CiA 406 encoder: devices/machines/can_cells.cpp
+Outcome FlyingSawModule::canOpen() const {
+    return Outcome::done(); // CiA 402 drives + the line's CiA 406 encoder:
+                            // devices/machines/can_cells.cpp
 }
 
 MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText,
@@ -132,24 +133,19 @@ std::string FlyingSawModule::exportFile(const std::string& exportId, const Job&,
     throw std::invalid_argument("the flying saw has no export " + json::quote(exportId));
 }
 
-bool FlyingSawModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                                    std::string* text, std::string* why) const {
+Outcome FlyingSawModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                       std::string* text) const {
     const auto* data = static_cast<const FlyingSawPlanData*>(plan.data.get());
-    if (!data || !plan.ok()) {
-        if (why) *why = plan.problem;
-        return false;
-    }
+    if (!data || !plan.ok()) return Outcome::refuse(plan.problem);
     SawSimOptions o;
     o.period_s = job.sim.period_s;
-    if (const std::string over = sawSimWorkProblem(data->spec, data->plan, o); !over.empty()) {
-        if (why) *why = over;
-        return false;
-    }
+    if (const std::string over = sawSimWorkProblem(data->spec, data->plan, o); !over.empty())
+        return Outcome::refuse(over, "machine.queue");
     const SawSimResult r = simulateFlyingSaw(data->spec, data->plan, o);
     *json = sawReportJson(data->spec, data->plan, r);
     *text = sawReportText(data->spec, data->plan, r);
-    if (!r.completed && why) *why = messageC("NOT completed: %s", r.problem.c_str());
-    return true;
+    if (!r.completed) return Outcome::incomplete(messageC("NOT completed: %s", r.problem.c_str()));
+    return Outcome::done();
 }
 
 void FlyingSawModule::addBenchFigures(bool, json::Object& out) const {

@@ -33,7 +33,7 @@ class FlyingSawModule : public MachineModule {
     json::Value writeSection(const Job& job) const override;
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
-    bool supportsCanOpen(std::string* why) const override;
+    Outcome canOpen() const override;
     std::vector<std::string> sensorNames() const override { return {"line encoder"}; }
     RunTerms runTerms() const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
@@ -41,8 +41,8 @@ class FlyingSawModule : public MachineModule {
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;
-    bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                       std::string* text, std::string* why) const override;
+    Outcome offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                          std::string* text) const override;
     // 200 pieces of 6 m at 60 m/min, line +-2 % at 0.1 Hz with +-1 % steps, 0.05 mm encoder.
     void addBenchFigures(bool quick, json::Object& out) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,

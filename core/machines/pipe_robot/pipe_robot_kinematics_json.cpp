@@ -31,16 +31,17 @@ bool finite(const std::vector<double>& v, const char* option, std::string* why) 
 
 } // namespace
 
-bool PipeRobotModule::forwardKinematics(const Job& job, const std::string& arm,
-                                        const std::vector<double>& q, json::Value* out,
-                                        std::string* why) const {
-    if (badArm(arm, why) || !finite(q, "--joints", why)) return false;
+Outcome PipeRobotModule::forwardKinematics(const Job& job, const std::string& arm,
+                                           const std::vector<double>& q, json::Value* out) const {
+    std::string whyText; // the helpers below word the refusal
+    std::string* why = &whyText;
+    if (badArm(arm, why) || !finite(q, "--joints", why)) return Outcome::refuse(whyText);
     if (q.size() != kArmJointCount && q.size() != kAxisCount) {
         if (why)
             *why = "--joints needs 5 values theta1..theta5 (deg), or 6 with the chuck angle "
                    "theta0 first; found " +
                    std::to_string(q.size());
-        return false;
+        return Outcome::refuse(whyText);
     }
     const PipeRobot robot(pipeRobotSpec(job).dh);
     const size_t first = q.size() == kAxisCount ? 1 : 0;
@@ -65,25 +66,27 @@ bool PipeRobotModule::forwardKinematics(const Job& job, const std::string& arm,
         o.emplace_back("work_frame", "the work pipe at chuck angle theta0 (its axis z), mm");
     }
     *out = json::Value(std::move(o));
-    return true;
+    return Outcome::done();
 }
 
-bool PipeRobotModule::inverseKinematics(const Job& job, const std::string& arm,
-                                        const std::vector<double>& pose, json::Value* out,
-                                        std::string* why) const {
-    if (badArm(arm, why) || !finite(pose, "--pose", why)) return false;
+Outcome PipeRobotModule::inverseKinematics(const Job& job, const std::string& arm,
+                                           const std::vector<double>& pose,
+                                           json::Value* out) const {
+    std::string whyText; // the helpers below word the refusal
+    std::string* why = &whyText;
+    if (badArm(arm, why) || !finite(pose, "--pose", why)) return Outcome::refuse(whyText);
     if (pose.size() != 6 && pose.size() != 7) {
         if (why)
             *why = "--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction), and "
                    "optionally the roll theta5 (deg); found " +
                    std::to_string(pose.size());
-        return false;
+        return Outcome::refuse(whyText);
     }
     const Vec3 p(pose[0], pose[1], pose[2]);
     Vec3 t(pose[3], pose[4], pose[5]);
     if (!(t.norm() > 1e-9)) {
         if (why) *why = "--pose: the torch direction (tx, ty, tz) is zero";
-        return false;
+        return Outcome::refuse(whyText);
     }
     t.normalize();
     const double roll = pose.size() == 7 ? deg2rad(pose[6]) : 0.0;
@@ -104,7 +107,7 @@ bool PipeRobotModule::inverseKinematics(const Job& job, const std::string& arm,
                         {"tip_mm", vec(p)},
                         {"torch", vec(t)},
                         {"branches", branches}};
-    return true;
+    return Outcome::done();
 }
 
 } // namespace cutcell

@@ -241,18 +241,16 @@ MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText,
     return out;
 }
 
-bool PipeRobotModule::setVariant(Job& job, const std::string& variant, std::string* error) const {
+Outcome PipeRobotModule::setVariant(Job& job, const std::string& variant) const {
     if (variant == "static_pipe")
         pipeRobotSpec(job).method = CutMethod::StaticPipe;
     else if (variant == "rotating_pipe")
         pipeRobotSpec(job).method = CutMethod::RotatingPipe;
-    else {
-        if (error)
-            *error = "--method = " + json::quote(variant) +
-                     " is not one of \"static_pipe\", \"rotating_pipe\"";
-        return false;
-    }
-    return true;
+    else
+        return Outcome::refuse("--method = " + json::quote(variant) +
+                                   " is not one of \"static_pipe\", \"rotating_pipe\"",
+                               "machine.method");
+    return Outcome::done();
 }
 
 std::vector<ExportInfo> PipeRobotModule::exports() const {
@@ -270,13 +268,10 @@ std::string PipeRobotModule::exportFile(const std::string& exportId, const Job& 
     throw std::invalid_argument("the pipe robot has no export " + json::quote(exportId));
 }
 
-bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                                    std::string* text, std::string* why) const {
+Outcome PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                       std::string* text) const {
     const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get());
-    if (!cut || !plan.ok()) {
-        if (why) *why = plan.problem;
-        return false;
-    }
+    if (!cut || !plan.ok()) return Outcome::refuse(plan.problem);
     const TrackingReport report = simulateCut(job, *cut);
     *json = json::write(reportToJson(report, &reportAxisNames()));
     std::string t = formatC("%s method, %.1f s simulated at %.4f s\n", report.method.c_str(),
@@ -291,7 +286,7 @@ bool PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std
                  report.cartesian_max_abs_mm.x(), report.cartesian_max_abs_mm.y(),
                  report.cartesian_max_abs_mm.z());
     *text = t;
-    return true;
+    return Outcome::done();
 }
 
 json::Value PipeRobotModule::runReport(const Job& job, const MachinePlan& plan,

@@ -22,25 +22,25 @@ class PipeRobotModule : public MachineModule {
     json::Value writeSection(const Job& job) const override;
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
-    bool supportsCanOpen(std::string*) const override { return true; }
+    Outcome canOpen() const override { return Outcome::done(); }
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
-    bool setVariant(Job& job, const std::string& variant, std::string* error) const override;
+    Outcome setVariant(Job& job, const std::string& variant) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;
-    bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                       std::string* text, std::string* why) const override;
+    Outcome offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                          std::string* text) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
     // ik_ns_per_solve, simulate_seconds, simulated_seconds, simulate_realtime_factor.
     void addBenchFigures(bool quick, json::Object& out) const override;
     // Arm "arm": theta1..theta5 (deg, optionally theta0 first) -> torch; a pose -> every branch.
-    bool forwardKinematics(const Job& job, const std::string& arm,
-                           const std::vector<double>& jointsDeg, json::Value* out,
-                           std::string* why) const override;
-    bool inverseKinematics(const Job& job, const std::string& arm, const std::vector<double>& pose,
-                           json::Value* out, std::string* why) const override;
+    Outcome forwardKinematics(const Job& job, const std::string& arm,
+                              const std::vector<double>& jointsDeg,
+                              json::Value* out) const override;
+    Outcome inverseKinematics(const Job& job, const std::string& arm,
+                              const std::vector<double>& pose, json::Value* out) const override;
 };
 
 } // namespace cutcell

@@ -161,11 +161,11 @@ std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
     return c.issues;
 }
 
-bool ProfileCutterModule::supportsCanOpen(std::string* why) const {
-    if (why)
-        *why = messageC("the profile cutter's A and X steppers are driven by a pulse card, not by "
-                        "CANopen drives: use devices.kind = \"simulated\"");
-    return false;
+Outcome ProfileCutterModule::canOpen() const {
+    return Outcome::refuse(
+        messageC("the profile cutter's A and X steppers are driven by a pulse card, not by "
+                 "CANopen drives: use devices.kind = \"simulated\""),
+        "devices.kind");
 }
 
 MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText,

@@ -30,7 +30,7 @@ class ProfileCutterModule : public MachineModule {
     json::Value writeSection(const Job& job) const override;
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
-    bool supportsCanOpen(std::string* why) const override;
+    Outcome canOpen() const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;

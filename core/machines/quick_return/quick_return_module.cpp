@@ -65,8 +65,8 @@ std::vector<JobIssue> QuickReturnModule::validate(const Job& job) const {
     return validateQuickReturn(*s);
 }
 
-bool QuickReturnModule::supportsCanOpen(std::string*) const {
-    return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
+Outcome QuickReturnModule::canOpen() const {
+    return Outcome::done(); // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
 MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
@@ -159,20 +159,15 @@ std::string QuickReturnModule::offlineWorkProblem(const QuickReturnSpec& spec,
         spec.sample_time, kMaxOfflineSamples);
 }
 
-bool QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                                      std::string* text, std::string* why) const {
+Outcome QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                                         std::string* text) const {
     const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
-    if (!data || !plan.ok()) {
-        if (why) *why = plan.problem;
-        return false;
-    }
+    if (!data || !plan.ok()) return Outcome::refuse(plan.problem);
     const QuickReturnSpec& spec = quickReturnSpec(job);
-    if (const std::string over = offlineWorkProblem(spec, data->setup); !over.empty()) {
-        if (why) *why = over;
-        return false;
-    }
+    if (const std::string over = offlineWorkProblem(spec, data->setup); !over.empty())
+        return Outcome::refuse(over);
     *json = json::write(quickReturnReport(spec, data->setup, text));
-    return true;
+    return Outcome::done();
 }
 
 json::Value QuickReturnModule::runReport(const Job&, const MachinePlan& plan,

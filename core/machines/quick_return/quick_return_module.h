@@ -30,7 +30,7 @@ class QuickReturnModule : public MachineModule {
     json::Value writeSection(const Job& job) const override;
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
-    bool supportsCanOpen(std::string* why) const override;
+    Outcome canOpen() const override;
     std::vector<std::string> sensorNames() const override { return {"slider scale"}; }
     RunTerms runTerms() const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
@@ -38,8 +38,8 @@ class QuickReturnModule : public MachineModule {
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;
-    bool offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
-                       std::string* text, std::string* why) const override;
+    Outcome offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
+                          std::string* text) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
     // Experiment 1 MSE and experiment 2 velocity error of every controller (default job).

@@ -37,17 +37,19 @@ bool badArm(const std::string& arm, std::string* why) {
 
 } // namespace
 
-bool SectionSteelModule::forwardKinematics(const Job& job, const std::string& arm,
-                                           const std::vector<double>& q, json::Value* out,
-                                           std::string* why) const {
-    if (badArm(arm, why)) return false;
+Outcome SectionSteelModule::forwardKinematics(const Job& job, const std::string& arm,
+                                              const std::vector<double>& q,
+                                              json::Value* out) const {
+    std::string whyText; // the helpers below word the refusal
+    std::string* why = &whyText;
+    if (badArm(arm, why)) return Outcome::refuse(whyText);
     const SectionSteelSpec* s = job.machine_spec.as<SectionSteelSpec>();
     const size_t n = arm == "path" ? 3 : 5;
     if (!s || q.size() != n) {
         if (why)
             *why = "--joints needs " + std::to_string(n) + " values (deg) for the " + arm +
                    " arm, found " + std::to_string(q.size());
-        return false;
+        return Outcome::refuse(whyText);
     }
     const SteelCell cell(*s);
     Vec3 p, t;
@@ -60,23 +62,25 @@ bool SectionSteelModule::forwardKinematics(const Job& job, const std::string& ar
                         {"frame", "cell (x along the bar, z up), mm"},
                         {"tip_mm", vec(p)},
                         {"torch", vec(t)}};
-    return true;
+    return Outcome::done();
 }
 
-bool SectionSteelModule::inverseKinematics(const Job& job, const std::string& arm,
-                                           const std::vector<double>& pose, json::Value* out,
-                                           std::string* why) const {
-    if (badArm(arm, why)) return false;
+Outcome SectionSteelModule::inverseKinematics(const Job& job, const std::string& arm,
+                                              const std::vector<double>& pose,
+                                              json::Value* out) const {
+    std::string whyText; // the helpers below word the refusal
+    std::string* why = &whyText;
+    if (badArm(arm, why)) return Outcome::refuse(whyText);
     const SectionSteelSpec* s = job.machine_spec.as<SectionSteelSpec>();
     if (!s || pose.size() != 6) {
         if (why) *why = "--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction)";
-        return false;
+        return Outcome::refuse(whyText);
     }
     const Vec3 p(pose[0], pose[1], pose[2]);
     Vec3 t(pose[3], pose[4], pose[5]);
     if (!(t.norm() > 1e-9)) {
         if (why) *why = "--pose: the torch direction (tx, ty, tz) is zero";
-        return false;
+        return Outcome::refuse(whyText);
     }
     t.normalize();
     const SteelCell cell(*s);
@@ -87,7 +91,7 @@ bool SectionSteelModule::inverseKinematics(const Job& job, const std::string& ar
             if (why)
                 *why = "--pose: the path arm works in the cut plane (square: x = 0 and tx = 0; "
                        "mitred: the mitre plane of end_cut)";
-            return false;
+            return Outcome::refuse(whyText);
         }
         for (const auto& b : cell.path.inverse(pp))
             branches.push_back(branch(b.q, s->path_limits));
@@ -99,7 +103,7 @@ bool SectionSteelModule::inverseKinematics(const Job& job, const std::string& ar
     }
     *out =
         json::Object{{"arm", arm}, {"tip_mm", vec(p)}, {"torch", vec(t)}, {"branches", branches}};
-    return true;
+    return Outcome::done();
 }
 
 } // namespace cutcell

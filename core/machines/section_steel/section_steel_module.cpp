@@ -77,8 +77,8 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     return c.issues;
 }
 
-bool SectionSteelModule::supportsCanOpen(std::string*) const {
-    return true; // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
+Outcome SectionSteelModule::canOpen() const {
+    return Outcome::done(); // CiA 402 drives (and CiA 406 encoders): devices/machines/can_cells.cpp
 }
 
 MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,

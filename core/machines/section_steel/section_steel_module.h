@@ -23,7 +23,7 @@ class SectionSteelModule : public MachineModule {
     json::Value writeSection(const Job& job) const override;
     void migrateSchema1(json::Object&) const override {}
     std::vector<JobIssue> validate(const Job& job) const override;
-    bool supportsCanOpen(std::string* why) const override;
+    Outcome canOpen() const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;
@@ -36,11 +36,11 @@ class SectionSteelModule : public MachineModule {
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
     // Arms "path" and "groove" (section_steel_kinematics_json.cpp).
-    bool forwardKinematics(const Job& job, const std::string& arm,
-                           const std::vector<double>& jointsDeg, json::Value* out,
-                           std::string* why) const override;
-    bool inverseKinematics(const Job& job, const std::string& arm, const std::vector<double>& pose,
-                           json::Value* out, std::string* why) const override;
+    Outcome forwardKinematics(const Job& job, const std::string& arm,
+                              const std::vector<double>& jointsDeg,
+                              json::Value* out) const override;
+    Outcome inverseKinematics(const Job& job, const std::string& arm,
+                              const std::vector<double>& pose, json::Value* out) const override;
 };
 
 } // namespace cutcell
