@@ -27,9 +27,10 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
                                                            const std::string& jobText) {
     if (!plan.reachable) throw std::invalid_argument("the cut is not reachable: " + plan.problem);
     if (plan.spline.empty()) throw std::invalid_argument("the plan has no trajectory");
+    const PipeRobotSpec& spec = pipeRobotSpec(job);
     auto p = std::make_shared<MotionProgram>();
     p->machine = kPipeRobotId;
-    p->method = toString(pipeRobotSpec(job).method);
+    p->method = toString(spec.method);
     p->axis_count = kAxisCount;
     p->axis_names = {"chuck (theta0)", "theta1", "theta2", "theta3", "theta4", "theta5"};
     p->axis_linear.fill(false);
@@ -39,7 +40,7 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
     p->point_count = plan.knots.size();
     p->reference = JointVector::Zero();
     for (int i = 0; i < kAxisCount; ++i) {
-        const DhRow& r = pipeRobotSpec(job).dh[static_cast<size_t>(i)];
+        const DhRow& r = spec.dh[static_cast<size_t>(i)];
         p->min_position[i] = deg2rad(r.min_deg);
         p->max_position[i] = deg2rad(r.max_deg);
         if (p->reference[i] < p->min_position[i] || p->reference[i] > p->max_position[i]) {
@@ -51,7 +52,7 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
             throw std::invalid_argument(buf);
         }
     }
-    p->tip_model = std::make_shared<PipeRobotTipModel>(pipeRobotSpec(job).dh);
+    p->tip_model = std::make_shared<PipeRobotTipModel>(spec.dh);
     p->min_run_s = job.sim.duration_s;
     // The same window as simulateCut(): the cosine ramps at both ends are excluded.
     const SpeedProfile profile(plan.length_mm, job.cut.speed_mm_s, job.cut.ramp_s);
