@@ -181,6 +181,7 @@ void MotionEngine::Impl::stepRunning() {
                 SourceInput in;
                 in.now_s = now;
                 in.period_s = T;
+                in.actuation_delay_s = actuationDelay();
                 in.axis_count = axisCount();
                 in.axes = &fb;
                 in.sensors = &sensorFb;
@@ -334,6 +335,7 @@ void MotionEngine::Impl::runSource() {
     SourceInput in;
     in.now_s = now;
     in.period_s = T;
+    in.actuation_delay_s = actuationDelay();
     in.axis_count = axisCount();
     in.axes = &fb;
     in.sensors = &sensorFb;

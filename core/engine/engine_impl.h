@@ -11,6 +11,7 @@
 #include "core/engine/spsc_ring.h"
 #include "core/sim/tracking_stats.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdarg>
@@ -216,6 +217,9 @@ struct MotionEngine::Impl {
 
     // helpers
     int axisCount() const { return program ? program->axis_count : 0; }
+    // The drives act on a command one cycle before its effect shows in the feedback: the
+    // set-point lead less that cycle (EngineConfig::setpoint_lead_s).
+    double actuationDelay() const { return std::max(0.0, cfg.setpoint_lead_s - T); }
     bool axisPresent(int i) const { return dev.axes[static_cast<size_t>(i)] != nullptr; }
     double speedLimit(int i) const;
     // `target` with every continuous axis at its equivalent nearest to the set-point (whole

@@ -38,6 +38,10 @@ enum class SourceStatus : std::uint8_t {
 struct SourceInput {
     double now_s = 0;
     double period_s = 0.001;
+    // From this cycle's command to the drive acting on it (s): 0 for in-process drives; one
+    // cycle over a CANopen bus (a command written after SYNC k takes effect at SYNC k + 1,
+    // while the feedback is the state sampled at SYNC k). A torque law predicts that far.
+    double actuation_delay_s = 0;
     int axis_count = 0;
     const std::array<DriveFeedback, kMaxAxes>* axes = nullptr;
     const std::array<SensorReading, kMaxSensors>* sensors = nullptr;

@@ -294,6 +294,82 @@ TEST(QuickReturnControl, HoldSettlesWithTheFeedbackSeveralCyclesLate) {
         }
 }
 
+// The cutting experiment with the crank's torque acting `delay` cycles after the law wrote it
+// (a CANopen drive applies a torque at the next SYNC), the law told of that delay or not.
+struct DelayedCut {
+    int strokes = 0;
+    double max_torque = 0, rms_error_deg = 0;
+};
+DelayedCut cutWithActuationDelay(const ExperimentSetup& base, int delay, bool told) {
+    ExperimentSetup s = base;
+    QuickReturnLawConfig lc = s.law;
+    lc.experiment = Experiment::Cutting;
+    s.plant.contact = true;
+    s.plant.cut_low = std::min(lc.profile.y_a, lc.profile.y_b);
+    s.plant.cut_high = std::max(lc.profile.y_a, lc.profile.y_b);
+    CrankPlant plant(lc.dims, s.plant);
+    plant.setState(lc.stroke.q_bottom + 0.01, 0);
+    QuickReturnLaw law(lc);
+    std::array<DriveFeedback, kMaxAxes> axes{};
+    std::array<SensorReading, kMaxSensors> sensors{};
+    SourceInput in;
+    SourceOutput out;
+    const double T = s.sample_time;
+    in.period_s = T;
+    in.actuation_delay_s = told ? delay * T : 0;
+    in.axis_count = 1;
+    in.axes = &axes;
+    in.sensors = &sensors;
+    std::vector<double> written(static_cast<size_t>(delay) + 1, 0.0);
+    DelayedCut r;
+    double sum = 0;
+    int n = 0;
+    for (int i = 0; i * T < 10 && law.phase() != QrPhase::Done; ++i) {
+        in.now_s = i * T;
+        axes[0].position = plant.state().q;
+        axes[0].velocity = plant.state().dq;
+        axes[0].state = DriveState::Enabled;
+        sensors[0] = {1000 * plant.sliderPosition(), 0, true, 0};
+        if (i == 0) law.start(in);
+        law.update(in, out);
+        if (out.status == SourceStatus::Fault) break;
+        if (out.supervised[0]) {
+            const double e = (out.position[0] - plant.state().q) * 180 / kPi;
+            sum += e * e;
+            ++n;
+        }
+        written.insert(written.begin(), out.torque[0]);
+        written.pop_back();
+        const double tau = written.back(); // written `delay` cycles ago
+        r.max_torque = std::max(r.max_torque, std::fabs(tau));
+        plant.step(tau, 0, T);
+    }
+    r.strokes = law.strokesDone();
+    r.rms_error_deg = std::sqrt(sum / std::max(1, n));
+    return r;
+}
+
+TEST(QuickReturnControl, CutsThroughAnActuationDelayAsInProcessWhenTheLawPredictsIt) {
+    if (!findMachine(kQuickReturnId)) registerMachines();
+    const Job job = findMachine(kQuickReturnId)->defaultJob();
+    ExperimentSetup setup;
+    std::string problem;
+    ASSERT_TRUE(buildSetup(quickReturnSpec(job), &setup, &problem)) << problem;
+    const DelayedCut inProcess = cutWithActuationDelay(setup, 0, false);
+    ASSERT_EQ(inProcess.strokes, setup.law.strokes);
+    for (const int delay : {1, 2}) {
+        const DelayedCut told = cutWithActuationDelay(setup, delay, true);
+        EXPECT_EQ(told.strokes, setup.law.strokes) << delay;
+        // Measured: the torque's peak as in process (86.7 N m); not told, 99.3 and 120 N m
+        // (the limit: the law chattering a cycle behind its own torque).
+        EXPECT_LT(told.max_torque, 1.05 * inProcess.max_torque) << delay;
+        // Measured: rms 2.50 and 2.74 deg against 2.27 in process; not told, 2 cycles: 4.65.
+        EXPECT_LT(told.rms_error_deg, 1.25 * inProcess.rms_error_deg) << delay;
+    }
+    const DelayedCut notTold = cutWithActuationDelay(setup, 2, false);
+    EXPECT_GT(notTold.max_torque, 1.05 * inProcess.max_torque); // the test can tell
+}
+
 TEST(QuickReturnJob, RoundTripAndRefusals) {
     if (!findMachine(kQuickReturnId)) registerMachines();
     const MachineModule& m = *findMachine(kQuickReturnId);

@@ -19,6 +19,8 @@
 #include "core/machines/quick_return/velocity_profile.h"
 #include "core/machines/quick_return/whitworth.h"
 
+#include <array>
+
 namespace cutcell::quick_return {
 
 enum class Experiment { Tracking, Cutting };
@@ -88,6 +90,15 @@ class QuickReturnLaw : public MotionSource {
     bool onCutBranch(double q) const;
 
   private:
+    // The crank's angle and speed n cycles after its feedback was sampled (n up to
+    // kPredictCycles): the torques already written and not yet acting, with the load (contact
+    // force, friction, the mechanism's speed terms) that moved it over the last fresh cycles.
+    struct CrankState {
+        double q = 0, dq = 0;
+    };
+    CrankState predictCrank(double q, double dq, double T, int n) const;
+    // Nominal crank acceleration under torque tau at q: (tau - weight) / M(q).
+    double nominalAcceleration(double q, double tau) const;
     double controlTorque(double q, double y, double dy, double yd, double dyd, double ddyd,
                          double T, double tSince, double* u);
     // A feed hold's rest: braking at q, then on in `resume` at the Resume.
@@ -103,6 +114,15 @@ class QuickReturnLaw : public MotionSource {
     QrPhase resumePhase_ = QrPhase::ReturnPush;
     double heldAt_ = 0; // s into the tracking experiment when it was held
     QrSample last_;
+    // Last cycles' outputs and feedback for predictCrank: the torques written (tauHist_[0]
+    // the last cycle's), the crank at the last cycle.
+    static constexpr int kPredictCycles = 8;
+    std::array<double, kPredictCycles + 1> tauHist_{};
+    double qPrev_ = 0, dqPrev_ = 0, nowPrev_ = 0;
+    double loadAcc_ = 0; // rad/s^2, low-passed
+    int prevAge_ = 0;
+    static constexpr double kLoadFilterS = 0.005;
+    bool havePrev_ = false;
 };
 
 } // namespace cutcell::quick_return
