@@ -101,15 +101,21 @@ class CanCable {
                 ++accepted;
                 auto* up = new QTcpSocket(this);
                 down->setParent(this);
-                for (QTcpSocket* s : {down, up})
-                    s->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+                down->setSocketOption(QAbstractSocket::LowDelayOption, 1);
                 links_.push_back({down, up});
                 const auto pump = [down, up] {
                     if (up->state() == QAbstractSocket::ConnectedState && down->bytesAvailable())
                         up->write(down->readAll());
                 };
                 QObject::connect(down, &QTcpSocket::readyRead, this, pump);
-                QObject::connect(up, &QTcpSocket::connected, this, pump);
+                // No Nagle towards the bus either. Set once connected: a socket without its
+                // engine yet drops the option. Set before connectToHost (as it was), the
+                // master's frames waited for the bus's delayed ACK: every frame on the bus
+                // stopped for 40 ms every 100 ms (the crank's feedback 31 cycles late).
+                QObject::connect(up, &QTcpSocket::connected, this, [up, pump] {
+                    up->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+                    pump();
+                });
                 QObject::connect(up, &QTcpSocket::readyRead, this,
                                  [down, up] { down->write(up->readAll()); });
                 QObject::connect(down, &QTcpSocket::disconnected, up,

@@ -148,13 +148,11 @@ class TestGuiCanMachines : public QObject {
         // with both cores busy (carriage max |e| 1.13 mm, turntable 0.46 deg, feeds 3.4 mm).
         QTest::newRow("flying saw") << QString(cutcell::kFlyingSawId) << 0.004;
         // The quick-return crank in CST at 1 ms (its shipped job: the cutting experiment, 3
-        // strokes against the contact force). Not registered in CTest (tests/gui/CMakeLists.txt):
-        // in this process the crank's feedback stalls for up to 31 cycles, every 100 ms, while
-        // the SYNCs go out on time (jitter max < 1 ms, 0 deadlines missed) - a stall no control
-        // law rides out against the contact force. Measured 2026-12-06, runs in a row on a quiet
-        // host: before the law predicted its actuation delay 9 of 15 completed (rms 2.4 deg),
-        // faults at 10.6-15.5 deg; with it 24 of 30 (rms 1.6 deg, max |e| 4.9-5.1 deg), faults
-        // at 11.0-12.4 deg and one open-loop return stalled. Run it by its row name.
+        // strokes against the contact force). It faulted in 6 of 15 runs (10.6-15.5 deg of its
+        // 10 deg limit) while the test's cable held every frame for 40 ms every 100 ms (no
+        // TCP_NODELAY towards the bus: can_cable.h). Since: 12 of 12 runs, 8 of 8 with both
+        // cores busy (max |e| 4.94-5.06 deg, rms 1.57-1.68 deg; the law without its delay
+        // prediction 8 of 8 too, rms 2.5-2.6 deg).
         QTest::newRow("quick-return crank") << QString(cutcell::kQuickReturnId) << 0.001;
     }
     void everyMachineRunsOverCan() {
