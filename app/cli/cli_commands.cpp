@@ -1,5 +1,6 @@
 #include "cli_commands.h"
 
+#include "core/job/file_set.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
@@ -82,14 +83,20 @@ int runPlan(const PlanOptions& o) {
         return kUnreachable;
     }
     try {
-        std::filesystem::create_directories(out);
-        for (const ExportInfo& e : module->exports()) {
+        // The plan's files as one unit: a kill leaves the folder's old set or the new one.
+        const std::vector<ExportInfo> exports = module->exports();
+        std::vector<FileContents> files;
+        std::vector<const ExportInfo*> infos;
+        for (const ExportInfo& e : exports) {
             if (!e.plan_file) continue;
-            const std::string file = (std::filesystem::path(out) / e.default_name).string();
-            const std::string text = module->exportFile(e.id, job, plan);
-            writeFileAtomically(file, text);
-            std::printf("wrote %s (%s, %zu bytes)\n", file.c_str(), e.title.c_str(), text.size());
+            files.push_back({e.default_name, module->exportFile(e.id, job, plan)});
+            infos.push_back(&e);
         }
+        writeFolderSet(out, files);
+        for (size_t i = 0; i < files.size(); ++i)
+            std::printf("wrote %s (%s, %zu bytes)\n",
+                        (std::filesystem::path(out) / files[i].path).string().c_str(),
+                        infos[i]->title.c_str(), files[i].contents.size());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "cutcell-cli plan: %s\n", e.what());
         return kFailure;

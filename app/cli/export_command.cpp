@@ -1,6 +1,7 @@
 // cutcell-cli export: the files a machine offers (its module's exports()).
 #include "cli_commands.h"
 
+#include "core/job/file_set.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
 
@@ -57,14 +58,16 @@ int runExport(const ExportOptions& o) {
             std::fprintf(stderr, "cutcell-cli export: %s\n", plan.problem.c_str());
             return kUnreachable;
         }
-        for (const auto& [id, file] : wanted) {
-            const std::string text = module.exportFileWith(id, job, plan, {o.paper});
-            writeFileAtomically(file, text);
+        // Every file asked for as one unit: a kill leaves the old files or the new ones.
+        std::vector<FileContents> files;
+        for (const auto& [id, file] : wanted)
+            files.push_back({file, module.exportFileWith(id, job, plan, {o.paper})});
+        writeFileSet(files);
+        for (size_t i = 0; i < files.size(); ++i)
             for (const auto& e : offered)
-                if (e.id == id)
-                    std::printf("wrote %s (%s, %zu bytes)\n", file.c_str(), e.title.c_str(),
-                                text.size());
-        }
+                if (e.id == wanted[i].first)
+                    std::printf("wrote %s (%s, %zu bytes)\n", files[i].path.c_str(),
+                                e.title.c_str(), files[i].contents.size());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "cutcell-cli export: %s\n", e.what());
         return kFailure;

@@ -308,6 +308,31 @@ Job loadJobFile(const std::string& path) {
     }
 }
 
+std::string writeTemporaryFile(std::string tmpl, const std::string& forPath,
+                               const std::string& contents) {
+    const int fd = ::mkstemp(tmpl.data());
+    if (fd < 0) throw JobError("cannot write " + forPath + ": " + std::strerror(errno));
+    size_t done = 0;
+    while (done < contents.size()) {
+        const ssize_t n = ::write(fd, contents.data() + done, contents.size() - done);
+        if (n < 0) {
+            const int err = errno;
+            ::close(fd);
+            ::unlink(tmpl.c_str());
+            throw JobError("cannot write " + forPath + ": " + std::strerror(err));
+        }
+        done += static_cast<size_t>(n);
+    }
+    // The data must be on disk before a rename makes it visible under the real name.
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        const int err = errno;
+        ::unlink(tmpl.c_str());
+        throw JobError("cannot write " + forPath + ": " + std::strerror(err));
+    }
+    ::chmod(tmpl.c_str(), 0644);
+    return tmpl;
+}
+
 void writeFileAtomically(const std::string& path, const std::string& contents) {
     namespace fs = std::filesystem;
     const fs::path target(path);
@@ -331,27 +356,8 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
                 fs::remove(it->path(), e2);
         }
     }
-    std::string tmpl = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
-    const int fd = ::mkstemp(tmpl.data());
-    if (fd < 0) throw JobError("cannot write " + path + ": " + std::strerror(errno));
-    size_t done = 0;
-    while (done < contents.size()) {
-        const ssize_t n = ::write(fd, contents.data() + done, contents.size() - done);
-        if (n < 0) {
-            const int err = errno;
-            ::close(fd);
-            ::unlink(tmpl.c_str());
-            throw JobError("cannot write " + path + ": " + std::strerror(err));
-        }
-        done += static_cast<size_t>(n);
-    }
-    // The data must be on disk before the rename makes it visible under the real name.
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        const int err = errno;
-        ::unlink(tmpl.c_str());
-        throw JobError("cannot write " + path + ": " + std::strerror(err));
-    }
-    ::chmod(tmpl.c_str(), 0644);
+    const std::string tmpl = writeTemporaryFile(
+        (dir / ("." + target.filename().string() + ".XXXXXX")).string(), path, contents);
     if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
         const int err = errno;
         ::unlink(tmpl.c_str());

@@ -62,6 +62,10 @@ Job loadJobFile(const std::string& path);
 // Written atomically: a temporary file in the same folder, flushed, then renamed over.
 void saveJobFile(const Job& job, const std::string& path);
 void writeFileAtomically(const std::string& path, const std::string& contents);
+// A new file from the mkstemp template `tmpl` (its XXXXXX replaced) holding `contents`, on disk
+// and mode 0644 when it returns its name. Throws JobError naming `forPath`, leaving nothing.
+std::string writeTemporaryFile(std::string tmpl, const std::string& forPath,
+                               const std::string& contents);
 std::string readTextFile(const std::string& path);
 
 } // namespace cutcell
