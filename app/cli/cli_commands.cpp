@@ -15,6 +15,10 @@ bool loadJobArg(const std::string& file, Job& job, int* code) {
     try {
         job = loadJobFile(file);
         return true;
+    } catch (const JobFileError& e) {
+        std::fprintf(stderr, "cannot read the job: %s\n", e.what());
+        *code = kFailure;
+        return false;
     } catch (const JobError& e) {
         std::fprintf(stderr, "invalid job: %s\n", e.what());
         *code = std::filesystem::exists(file) ? kInvalidJob : kFailure;

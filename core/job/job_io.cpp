@@ -58,10 +58,14 @@ void readEngine(SectionReader e, Job& job) {
 }
 
 // "[1, 2, 3]" for a message.
+// Cut after about 80 characters: "[1, 2, 3, ... (100000 entries)]".
 std::string arrayText(const json::Value& v) {
     std::string out = "[";
-    for (const json::Value& e : v.asArray())
-        out += (out.size() > 1 ? ", " : "") + (e.isNumber() ? num(e.asNumber()) : e.typeName());
+    const auto& a = v.asArray();
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (out.size() > 80) return out + ", ... (" + std::to_string(a.size()) + " entries)]";
+        out += (i > 0 ? ", " : "") + (a[i].isNumber() ? num(a[i].asNumber()) : a[i].typeName());
+    }
     return out + "]";
 }
 
@@ -121,6 +125,11 @@ void readDevices(SectionReader d, Job& job, const MachineModule& module) {
                 job.devices.counts_per_unit, [](const json::Value& v, const std::string& k) {
                     if (!v.isNumber())
                         throw JobError(k + " must be a number (counts/deg or counts/mm)");
+                    // Every entry, also those past the axis count (a 6-entry file of a
+                    // machine with fewer axes): the axis's own range is checked later.
+                    if (!(v.asNumber() > 0))
+                        throw JobError(k + " = " + num(v.asNumber()) +
+                                       " counts per unit: a drive's resolution is > 0");
                     return v.asNumber();
                 });
     if (const json::Value* ids = d.get("sensor_node_ids")) {
@@ -189,6 +198,12 @@ json::Value upgradeJobDocument(const json::Value& doc) {
     json::Object section{{"kind", kind}};
     for (const auto& [k, v] : doc.asObject()) {
         if (k == "schema" || k == "machine") continue;
+        // A common key in the wrong case would otherwise be read as the machine's own
+        // ("machine.DEVICES (machine has no such key)").
+        for (const char* c : kCommonKeys)
+            if (k != c && lowerAscii(k) == c)
+                throw JobError("unknown key " + json::quote(k) + " (did you mean \"" +
+                               std::string(c) + "\"?)");
         if (isCommonKey(k))
             out.emplace_back(k, v);
         else
@@ -241,6 +256,7 @@ Job jobFromJson(const json::Value& input) {
     readSim(r.child("sim"), job);
     if (r.has("engine")) readEngine(r.child("engine"), job);
     if (r.has("devices")) readDevices(r.child("devices"), job, *module);
+    r.accept({"engine", "devices"}); // optional: known keys for the typo hint when absent
     r.finish();
     return job;
 }
@@ -285,8 +301,11 @@ Job parseJob(const std::string& text) {
 }
 
 std::string readTextFile(const std::string& path) {
+    std::error_code dirEc;
+    if (std::filesystem::is_directory(path, dirEc))
+        throw JobFileError("cannot read " + path + ": it is a folder, not a file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw JobError("cannot open " + path + ": " + std::strerror(errno));
+    if (!in) throw JobFileError("cannot open " + path + ": " + std::strerror(errno));
     // Refuse a huge file before reading it into memory (a job is a few kB).
     std::error_code ec;
     const auto size = std::filesystem::file_size(path, ec);
@@ -296,6 +315,7 @@ std::string readTextFile(const std::string& path) {
                        std::to_string(json::kMaxDocumentBytes) + " bytes (16 MiB)");
     std::ostringstream ss;
     ss << in.rdbuf();
+    if (in.bad()) throw JobFileError("cannot read " + path + ": " + std::strerror(errno));
     return ss.str();
 }
 

@@ -17,6 +17,11 @@ namespace cutcell {
 struct JobError : std::runtime_error {
     explicit JobError(const std::string& msg) : std::runtime_error(msg) {}
 };
+// The job file cannot be read at all (missing, a folder, no permission): an I/O error, not
+// an invalid job (the CLI's exit 1, not 2).
+struct JobFileError : JobError {
+    using JobError::JobError;
+};
 
 // One problem with a job value: the dotted key and a full sentence for the user.
 struct JobIssue {

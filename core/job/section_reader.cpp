@@ -23,6 +23,12 @@ size_t editDistance(const std::string& a, const std::string& b) {
     return prev[b.size()];
 }
 
+std::string lowerAscii(std::string s) {
+    for (char& c : s)
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    return s;
+}
+
 std::string num(double v) {
     return formatC("%.6g", v);
 }
@@ -108,7 +114,8 @@ void SectionReader::finish() const {
         std::string best;
         size_t bestDistance = 0;
         for (const std::string& known : read_) {
-            const size_t d = editDistance(k, known);
+            // Case does not count: "DEVICES" is a misspelt "devices".
+            const size_t d = editDistance(lowerAscii(k), lowerAscii(known));
             if (best.empty() || d < bestDistance || (d == bestDistance && known < best)) {
                 best = known;
                 bestDistance = d;

@@ -15,6 +15,8 @@ namespace cutcell {
 
 // Edit distance (insertions, deletions, substitutions) for the "did you mean" hint.
 size_t editDistance(const std::string& a, const std::string& b);
+// a with A-Z lowered (key names are ASCII).
+std::string lowerAscii(std::string s);
 // The number as messages write it ("%.6g", locale-independent).
 std::string num(double v);
 

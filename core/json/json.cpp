@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 #include <unordered_set>
 
 namespace cutcell::json {
@@ -105,17 +106,15 @@ class Builder : public nlohmann::json_sax<nl> {
     bool start_array(std::size_t) override { return open(Value(Array{})); }
     bool end_array() override { return close(); }
 
-    bool parse_error(std::size_t, const std::string&,
+    bool parse_error(std::size_t position, const std::string&,
                      const nlohmann::detail::exception& ex) override {
         // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..."
-        std::string what = ex.what();
-        const size_t bracket = what.find("] ");
-        if (bracket != std::string::npos) what = what.substr(bracket + 2);
-        if (what.size() > 200) what = what.substr(0, 200) + "\xE2\x80\xA6";
-        nlohmannMessage = what;
+        nlohmannMessage = ex.what();
+        nlohmannPosition = position; // bytes read: where it failed (also for a number overflow)
         return false;
     }
     std::string nlohmannMessage;
+    std::size_t nlohmannPosition = 0;
 
     // "main_pipe.radius_mm" of the value being read, or "" at the top.
     std::string currentPath() const { return joinPath(""); }
@@ -235,6 +234,20 @@ void writeValue(std::string& os, const Value& v, int indent, int level, const st
     }
 }
 
+// 1-based line and column of a byte offset.
+std::pair<int, int> lineAndColumn(std::string_view text, size_t offset) {
+    int line = 1, col = 1;
+    for (size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
+        }
+    }
+    return {line, col};
+}
+
 } // namespace
 
 Value parse(const std::string& input) {
@@ -248,6 +261,14 @@ Value parse(const std::string& input) {
     std::string_view text(input);
     if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
 
+    // A NUL byte is no part of a JSON text (nlohmann stopped reading there and accepted
+    // whatever came before it).
+    if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        const auto [line, col] = lineAndColumn(text, nul);
+        throw ParseError("JSON syntax error at line " + std::to_string(line) + ", column " +
+                             std::to_string(col) + ": a NUL byte (not a text file?)",
+                         line, col);
+    }
     Builder b;
     bool ok = false;
     try {
@@ -261,15 +282,30 @@ Value parse(const std::string& input) {
     // nlohmann's message carries line and column; repeat them in our form and add the key.
     int line = 0, col = 0;
     std::string msg = b.nlohmannMessage;
-    if (std::sscanf(msg.c_str(), "parse error at line %d, column %d", &line, &col) == 2) {
-        const size_t colon = msg.find(": ");
+    if (const size_t at = msg.find("parse error at line ");
+        at != std::string::npos &&
+        std::sscanf(msg.c_str() + at, "parse error at line %d, column %d", &line, &col) == 2) {
+        const size_t colon = msg.find(": ", at);
         msg = colon == std::string::npos ? msg : msg.substr(colon + 2);
+    } else if (const size_t close = msg.find("] "); close != std::string::npos) {
+        msg = msg.substr(close + 2); // "[json.exception.out_of_range.406] number overflow ..."
     }
+    // A message without a place (a number overflow): where the parser stopped reading.
+    if (line == 0 && b.nlohmannPosition > 0)
+        std::tie(line, col) = lineAndColumn(text, b.nlohmannPosition - 1);
+    // The text it quotes is not repeated whole (a 400-digit number).
+    const size_t q1 = msg.find('\''), q2 = msg.rfind('\'');
+    if (q1 != std::string::npos && q2 > q1 + 41)
+        msg = msg.substr(0, q1 + 38) + "...' (" + std::to_string(q2 - q1 - 1) + " characters)" +
+              msg.substr(q2 + 1);
+    if (msg.size() > 200) msg = msg.substr(0, 200) + "\xE2\x80\xA6";
     const std::string inKey = b.currentPath();
-    throw ParseError("JSON syntax error at line " + std::to_string(line) + ", column " +
-                         std::to_string(col) +
-                         (inKey.empty() ? "" : " (in " + quote(inKey, 80) + ")") + ": " + msg,
-                     line, col);
+    throw ParseError(
+        std::string("JSON syntax error") +
+            (line > 0 ? " at line " + std::to_string(line) + ", column " + std::to_string(col)
+                      : std::string()) +
+            (inKey.empty() ? "" : " (in " + quote(inKey, 80) + ")") + ": " + msg,
+        line, col);
 }
 
 std::string write(const Value& v, int indent) {

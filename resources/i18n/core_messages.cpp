@@ -226,6 +226,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "saw"),
     QT_TRANSLATE_NOOP("CoreMessage", "blade at speed"),
     QT_TRANSLATE_NOOP("CoreMessage", "blade speed lost"),
+    QT_TRANSLATE_NOOP("CoreMessage", "saw.overcut_mm = %s mm leaves no wall: the wall (machine.tube.wall_mm = %s mm) and the overcut must fit in half the tube's width (%s mm); overcut at most %s mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "cut.queue is empty: at least one length is needed"),
     QT_TRANSLATE_NOOP("CoreMessage", "decelerating"),
     QT_TRANSLATE_NOOP("CoreMessage", "recovering"),
@@ -515,6 +516,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 505;
+const int kCoreMessageCount = 506;
 
 } // namespace CutCell::ui

@@ -1090,6 +1090,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>saw.overcut_mm = %s mm leaves no wall: the wall (machine.tube.wall_mm = %s mm) and the overcut must fit in half the tube&apos;s width (%s mm); overcut at most %s mm</source>
+        <translation>saw.overcut_mm = %s mm lässt keine Wand übrig: Wand (machine.tube.wall_mm = %s mm) und Überschnitt müssen in die halbe Rohrbreite passen (%s mm); Überschnitt höchstens %s mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cut.queue is empty: at least one length is needed</source>
         <translation>cut.queue ist leer: mindestens eine Länge ist nötig</translation>
     </message>

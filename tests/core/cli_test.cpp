@@ -71,6 +71,30 @@ TEST(Cli, InvalidJobExitsTwoWithTheKeyValueUnitAndLimit) {
     EXPECT_NE(b.output.find("line 2"), std::string::npos) << b.output;
 }
 
+// Issue 27 (10): a folder given as the job is an I/O error (exit 1), not an invalid job; an
+// absurd counts_per_unit entry past the machine's axis count (a 6-entry list on the one-axis
+// crank) is refused, naming its index.
+TEST(Cli, AFolderIsAnIoErrorAndEveryCountsEntryIsChecked) {
+    const fs::path dir = tempDir("folder_counts");
+    const Result folder = runCli("validate " + dir.string());
+    EXPECT_EQ(folder.code, 1) << folder.output;
+    EXPECT_NE(folder.output.find("it is a folder"), std::string::npos) << folder.output;
+
+    std::ifstream in(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/quick_return_job.json");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    json::Value doc = json::parse(ss.str());
+    json::Array counts;
+    for (const double c : {1000.0, -1e308, 1000.0, 1000.0, 1000.0, 1000.0})
+        counts.emplace_back(c);
+    for (auto& [k, v] : doc.asObject())
+        if (k == "devices") v.set("counts_per_unit", json::Value(std::move(counts)));
+    std::ofstream(dir / "crank.json") << json::write(doc);
+    const Result r = runCli("validate " + (dir / "crank.json").string());
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("devices.counts_per_unit[1] = -1e+308"), std::string::npos) << r.output;
+}
+
 TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
     const fs::path dir = tempDir("unreachable");
     Job job = defaultJob();

@@ -442,6 +442,27 @@ TEST(SawModule, UnknownKeysAndBadValuesAreRefusedNamingTheKey) {
         << issues[0].message;
 }
 
+// Issue 27 (9): an overcut within its own range that leaves no wall on a small tube is told
+// by its own key with both figures (was "machine.tube.wall_mm = 2 mm is outside [0.1, 0.1] mm").
+TEST(SawModule, AnOvercutThatLeavesNoWallNamesTheOvercut) {
+    Job job = sawModule().defaultJob();
+    auto* spec = job.machine_spec.as<FlyingSawSpec>();
+    spec->shape = TubeShape::Round;
+    spec->diameter_mm = 30;
+    spec->wall_mm = 2;
+    spec->saw.overcut_mm = 15; // inside its own range [0, 20]
+    bool named = false;
+    for (const JobIssue& i : validateJob(job)) {
+        EXPECT_EQ(i.message.find("[0.1, 0.1]"), std::string::npos) << i.message;
+        if (i.key != "saw.overcut_mm") continue;
+        named = true;
+        EXPECT_NE(i.message.find("machine.saw.overcut_mm = 15 mm"), std::string::npos) << i.message;
+        EXPECT_NE(i.message.find("machine.tube.wall_mm = 2 mm"), std::string::npos) << i.message;
+        EXPECT_NE(i.message.find("at most 12.9 mm"), std::string::npos) << i.message;
+    }
+    EXPECT_TRUE(named);
+}
+
 TEST(SawModule, PlanRefusesWithTheFiguresAndExportsTheCamTable) {
     Job job = sawModule().defaultJob();
     MachinePlan plan = sawModule().plan(job, {});

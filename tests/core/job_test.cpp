@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
@@ -236,4 +237,60 @@ TEST(Job, TheRobotsDataIsItsOwnSection) {
     // Written and read back, the section is the same.
     const Job back = parseJob(json::write(jobToJson(shipped)));
     EXPECT_EQ(json::write(jobToJson(back)), json::write(jobToJson(shipped)));
+}
+
+// Issue 27 (9, 10): messages stay short and name the key; the typo gets its nearest key, in any
+// case; a NUL byte, a 400-digit number and an absurd entry past the axis count are refused.
+TEST(Job, MessagesAreShortAndNameTheKeyAndTheTypo) {
+    const std::string longArray = rejection([](json::Value& d) {
+        json::Array ids;
+        for (int i = 1; i <= 100000; ++i)
+            ids.emplace_back(i % 127 + 1);
+        member(d, "devices")->set("node_ids", json::Value(std::move(ids)));
+    });
+    EXPECT_NE(longArray.find("devices.node_ids = [2, 3, 4"), std::string::npos) << longArray;
+    EXPECT_NE(longArray.find("(100000 entries)"), std::string::npos) << longArray;
+    EXPECT_LT(longArray.size(), 300u) << longArray; // was 3 MB
+
+    // A common section's name in the wrong case: schema 1 (the shipped job) and schema 2.
+    const std::string upper = rejection([](json::Value& d) {
+        json::Value devices = *member(d, "devices");
+        auto& obj = d.asObject();
+        obj.erase(std::remove_if(obj.begin(), obj.end(),
+                                 [](const auto& kv) { return kv.first == "devices"; }),
+                  obj.end());
+        d.set("DEVICES", devices);
+    });
+    EXPECT_NE(upper.find("unknown key \"DEVICES\" (did you mean \"devices\"?)"), std::string::npos)
+        << upper;
+    const std::string upgraded = upgradeJobText(defaultJobText());
+    std::string renamed = upgraded;
+    renamed.replace(renamed.find("\"devices\""), 9, "\"Devices\"");
+    try {
+        parseJob(renamed);
+        ADD_FAILURE() << "schema 2 with \"Devices\" accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("did you mean \"devices\""), std::string::npos)
+            << e.what();
+    }
+
+    // A NUL byte after the document: refused with its place (was read as valid).
+    try {
+        parseJob(defaultJobText() + std::string(1, '\0'));
+        ADD_FAILURE() << "a trailing NUL byte was accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("NUL byte"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("line "), std::string::npos) << e.what();
+    }
+    // A 400-digit number: its line and key, not the number whole (was "line 0, column 0").
+    try {
+        parseJob("{\n  \"sim\": {\"period_s\": 1" + std::string(400, '0') + "}}");
+        ADD_FAILURE();
+    } catch (const JobError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("line 2"), std::string::npos) << what;
+        EXPECT_NE(what.find("sim.period_s"), std::string::npos) << what;
+        EXPECT_EQ(what.find("line 0"), std::string::npos) << what;
+        EXPECT_LT(what.size(), 250u) << what;
+    }
 }

@@ -215,8 +215,22 @@ std::vector<JobIssue> checkFlyingSawSpec(const FlyingSawSpec& s) {
                 std::min(s.width_mm, s.height_mm) / 2, "mm");
     const double smallest =
         s.shape == TubeShape::Round ? s.diameter_mm : std::min(s.width_mm, s.height_mm);
-    c.positive("tube.wall_mm", s.wall_mm, 0.1, std::max(0.1, smallest / 2 - s.saw.overcut_mm - 0.1),
-               "mm");
+    // The blade cuts the wall and the overcut past the bore; both inside half the tube.
+    const double wallRoom = smallest / 2 - s.saw.overcut_mm - 0.1;
+    double overcutHi = 0; // an overcut beyond its own range has its message already
+    for (const auto& f : flyingSawFields())
+        if (std::string(f.key) == "saw.overcut_mm") overcutHi = f.hi;
+    const bool overcutInRange = s.saw.overcut_mm <= overcutHi;
+    if (overcutInRange && wallRoom < 0.1 && s.saw.overcut_mm > 0)
+        c.add("saw.overcut_mm",
+              messageC("saw.overcut_mm = %s mm leaves no wall: the wall (machine.tube.wall_mm = %s "
+                       "mm) and the overcut must fit in half the tube's width (%s mm); overcut "
+                       "at most %s mm",
+                       num(s.saw.overcut_mm).c_str(), num(s.wall_mm).c_str(),
+                       num(smallest / 2).c_str(),
+                       num(std::max(0.0, smallest / 2 - s.wall_mm - 0.1)).c_str()));
+    else if (overcutInRange)
+        c.positive("tube.wall_mm", s.wall_mm, 0.1, std::max(0.1, wallRoom), "mm");
     if (s.queue.empty())
         c.add("cut.queue", messageC("cut.queue is empty: at least one length is needed"));
     for (size_t i = 0; i < s.queue.size(); ++i) {
