@@ -248,6 +248,8 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only tilt its torch within that plane)"),
     QT_TRANSLATE_NOOP("CoreMessage", "path not reachable (%s method): %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].min_deg = %.6g deg must be below robot.dh[%d].max_deg = %.6g deg"),
+    QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].min_deg = %.6g deg: the axis's range must hold its reference 0 deg (at most 0 deg)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].max_deg = %.6g deg: the axis's range must hold its reference 0 deg (at least 0 deg)"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].alpha_deg = %.6g deg: the pipe robot's inverse kinematics needs %.6g deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].%s = %.6g mm: the pipe robot's inverse kinematics needs 0 mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"),
@@ -281,7 +283,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "cut.stroke_length_m = %.6g m does not match the mechanism's stroke y_min - y_max = %.4f m (tolerance 0.002 m)"),
     QT_TRANSLATE_NOOP("CoreMessage", "cut.workpiece_length_m = %.6g m must be in (0, %.4f) m (the stroke L_c)"),
     QT_TRANSLATE_NOOP("CoreMessage", "cut.velocity_m_s = %.6g m/s is outside [-10, 0) m/s (the cut runs downwards)"),
-    QT_TRANSLATE_NOOP("CoreMessage", "tracking: the reference spans [%.4f, %.4f] m; it must stay inside the stroke (%.4f, %.4f) m"),
+    QT_TRANSLATE_NOOP("CoreMessage", "tracking.amplitude_m = %.6g m about tracking.offset_m = %.6g m: the reference spans [%.6g, %.6g] m; it must stay inside the stroke (%.4f, %.4f) m"),
     QT_TRANSLATE_NOOP("CoreMessage", "the mechanism has no full crank turn with two singular points"),
     QT_TRANSLATE_NOOP("CoreMessage", "Algorithm 1: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "the cutting velocity must be a finite number other than 0"),
@@ -516,6 +518,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 506;
+const int kCoreMessageCount = 508;
 
 } // namespace CutCell::ui

@@ -1175,6 +1175,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>robot.dh[%d].min_deg = %.6g deg: the axis&apos;s range must hold its reference 0 deg (at most 0 deg)</source>
+        <translation>robot.dh[%d].min_deg = %.6g deg: der Bereich der Achse muss ihre Referenz 0 deg enthalten (höchstens 0 deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>robot.dh[%d].max_deg = %.6g deg: the axis&apos;s range must hold its reference 0 deg (at least 0 deg)</source>
+        <translation>robot.dh[%d].max_deg = %.6g deg: der Bereich der Achse muss ihre Referenz 0 deg enthalten (mindestens 0 deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>robot.dh[%d].alpha_deg = %.6g deg: the pipe robot&apos;s inverse kinematics needs %.6g deg</source>
         <translation>robot.dh[%d].alpha_deg = %.6g deg: die inverse Kinematik des Rohrroboters braucht %.6g deg</translation>
     </message>
@@ -1204,7 +1214,12 @@
         <translation>Schieber-Positionssensor</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+8"/>
+        <source>tracking.amplitude_m = %.6g m about tracking.offset_m = %.6g m: the reference spans [%.6g, %.6g] m; it must stay inside the stroke (%.4f, %.4f) m</source>
+        <translation>tracking.amplitude_m = %.6g m um tracking.offset_m = %.6g m: die Führungsgröße überstreicht [%.6g, %.6g] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
         <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
     </message>
@@ -2169,12 +2184,12 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-268"/>
+        <location line="-270"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
         <translation>der Schnitt braucht X = %.3f mm (beta = %.2f deg), außerhalb des Wagenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
     </message>
@@ -2309,12 +2324,13 @@
         <translation>cut.velocity_m_s = %.6g m/s liegt außerhalb von [-10, 0) m/s (der Schnitt läuft abwärts)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>tracking: the reference spans [%.4f, %.4f] m; it must stay inside the stroke (%.4f, %.4f) m</source>
-        <translation>tracking: die Führungsgröße überstreicht [%.4f, %.4f] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
+        <location line="-1"/>
+        <source>cut.workpiece_length_m = %.6g m must be in (0, %.4f) m (the stroke L_c)</source>
+        <oldsource>tracking: the reference spans [%.4f, %.4f] m; it must stay inside the stroke (%.4f, %.4f) m</oldsource>
+        <translation type="unfinished">tracking: die Führungsgröße überstreicht [%.4f, %.4f] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the mechanism has no full crank turn with two singular points</source>
         <translation>der Mechanismus hat keine volle Kurbeldrehung mit zwei singulären Punkten</translation>
     </message>
@@ -2464,7 +2480,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-74"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2484,7 +2500,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+73"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>

@@ -162,6 +162,15 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
             c.add(k + ".min_deg", messageC("robot.dh[%d].min_deg = %.6g deg must be below "
                                            "robot.dh[%d].max_deg = %.6g deg",
                                            i, d.min_deg, i, d.max_deg));
+        // Every axis homes to 0 deg (the program's reference): its range must hold it.
+        else if (d.min_deg > 0)
+            c.add(k + ".min_deg", messageC("robot.dh[%d].min_deg = %.6g deg: the axis's range "
+                                           "must hold its reference 0 deg (at most 0 deg)",
+                                           i, d.min_deg));
+        else if (d.max_deg < 0)
+            c.add(k + ".max_deg", messageC("robot.dh[%d].max_deg = %.6g deg: the axis's range "
+                                           "must hold its reference 0 deg (at least 0 deg)",
+                                           i, d.max_deg));
     }
     // The analytic IK is written for the seed's arm structure (alpha = 90, 0, 0, 90, 0).
     const double structure[kAxisCount] = {90, 90, 0, 0, 90, 0};

@@ -237,9 +237,10 @@ std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s) {
     const double hi = s.track_offset + std::fabs(s.track_amplitude);
     if (!(lo > st.y_bottom && hi < st.y_top))
         c.add("tracking.amplitude_m",
-              messageC("tracking: the reference spans [%.4f, %.4f] m; it must stay inside the "
-                       "stroke (%.4f, %.4f) m",
-                       lo, hi, st.y_bottom, st.y_top));
+              messageC("tracking.amplitude_m = %.6g m about tracking.offset_m = %.6g m: the "
+                       "reference spans [%.6g, %.6g] m; it must stay inside the stroke (%.4f, "
+                       "%.4f) m",
+                       s.track_amplitude, s.track_offset, lo, hi, st.y_bottom, st.y_top));
     return c.issues;
 }
 
