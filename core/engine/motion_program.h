@@ -54,6 +54,10 @@ struct MotionProgram {
     // Operating range of every axis (rad or mm); jogs and the reference are checked against it.
     JointVector min_position = JointVector::Constant(-1e9);
     JointVector max_position = JointVector::Constant(1e9);
+    // A continuous axis of a source program: the farthest |position| (rad or mm) one run can
+    // take it from 0, by the plan (the saw's turntable: half a turn a piece); 0 = not known.
+    // A drive counts positions in 32 bits: core/machine/counts_reach.h checks it.
+    JointVector endless_reach = JointVector::Zero();
     // The run lasts at least this long from the first cut sample (the drives keep being
     // tracked after the path's end until then), so its figures cover the same span as the
     // offline simulation (sim.duration_s).

@@ -89,6 +89,9 @@ struct DeviceSpec {
     std::array<double, kMaxAxes> counts_per_unit{1000, 1000, 1000, 1000, 1000, 1000, 1000, 1000};
     std::array<int, kMaxDeviceSensors> sensor_node_ids{};
     double heartbeat_timeout_ms = 300;
+    // CiA 301 0x1019: the SYNC carries a counter 1..this (written to every node), which the
+    // drives check; 0 for nodes without the object (SYNC without a counter).
+    int sync_counter_overflow = 240;
 };
 
 // The node id of the machine's sensor k (sensor_node_ids[k], or axisCount + 1 + k when 0).

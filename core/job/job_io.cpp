@@ -111,6 +111,8 @@ void readDevices(SectionReader d, Job& job, const MachineModule& module) {
         d.integer("bitrate_bps", "bit/s", job.devices.bitrate_bps, 1, 1000000000);
     job.devices.heartbeat_timeout_ms =
         d.number("heartbeat_timeout_ms", "ms", job.devices.heartbeat_timeout_ms);
+    job.devices.sync_counter_overflow =
+        d.integer("sync_counter_overflow", "", job.devices.sync_counter_overflow, 0, 240);
     auto nodeId = [](const json::Value& v, const std::string& k) {
         if (!v.isNumber()) throw JobError(k + " must be a number (a node id 1..127)");
         const double id = v.asNumber();
@@ -164,6 +166,7 @@ json::Value devicesJson(const DeviceSpec& d, const MachineModule& module, const 
         sensors.emplace_back(sensorNodeId(d, axisCount, k));
     if (sensorCount > 0) out.emplace_back("sensor_node_ids", sensors);
     out.emplace_back("heartbeat_timeout_ms", d.heartbeat_timeout_ms);
+    out.emplace_back("sync_counter_overflow", d.sync_counter_overflow);
     return out;
 }
 

@@ -15,8 +15,8 @@ namespace {
 constexpr int kCanBitRates[] = {10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000};
 
 // A CiA 402 position (0x607A/0x6064) is a signed 32-bit count: an axis with a travel must not
-// leave it anywhere on its travel. Endless axes (a turning chuck) are checked against the
-// plan's own extent before a CAN run.
+// leave it anywhere on its travel. Continuous axes (the saw's turntable, the crank) are checked
+// against the run's own reach before it starts on CAN drives (core/machine/counts_reach.h).
 constexpr double kInt32Counts = 2147483647.0;
 constexpr double kEndlessTravel = 1e8; // |limit| beyond this: the axis turns without end
 
@@ -82,6 +82,10 @@ void checkCommon(IssueChecker& c, const Job& job, const std::vector<AxisInfo>& a
                       messageC("devices.sensor_node_ids[%d] = %d is used twice", k, id));
     }
     c.range("devices.heartbeat_timeout_ms", job.devices.heartbeat_timeout_ms, 10, 10000, "ms");
+    if (job.devices.sync_counter_overflow == 1)
+        c.add("devices.sync_counter_overflow",
+              messageC("devices.sync_counter_overflow = 1 is reserved (CiA 301 0x1019): 0 for "
+                       "no SYNC counter, or 2..240"));
 }
 
 } // namespace

@@ -40,6 +40,7 @@ CanOpenMasterConfig masterConfigFromJob(const Job& job, double period_s, int axi
     c.bitrate_bps = job.devices.bitrate_bps;
     c.period_s = period_s;
     c.heartbeat_timeout_s = job.devices.heartbeat_timeout_ms * 1e-3;
+    c.sync_counter_overflow = job.devices.sync_counter_overflow;
     for (int a = 0; a < axisCount && a < kMaxAxes; ++a)
         c.nodes.push_back({job.devices.node_ids[static_cast<size_t>(a)],
                            job.devices.counts_per_unit[static_cast<size_t>(a)], false});

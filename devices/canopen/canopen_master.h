@@ -89,6 +89,9 @@ struct CanOpenMasterConfig {
     // Listen this long after connecting before taking the bus: another master (SYNC, NMT or a
     // heartbeat from master_node_id heard) makes start() fail, naming what was heard.
     int listen_before_start_ms = 250;
+    // CiA 301 0x1019 (0, or 2..240): written to every node; the SYNC then carries a counter
+    // 1..overflow that the drives check (a skipped or repeated one is a communication error).
+    int sync_counter_overflow = 240;
 };
 
 // From a job's devices section (plugin, interface, bit rate, node ids, scaling, heartbeat),

@@ -32,6 +32,8 @@ DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c), mech_(c.mechanics) {
 
 void DriveNode::resetCommunication() {
     heartbeatMs_ = 0;
+    syncOverflow_ = 0;
+    lastSyncCounter_ = 0;
     consumerHeartbeat_ = 0;
     consumerLastSeen_s_ = -1;
     consumerLost_ = false;
@@ -77,8 +79,8 @@ void DriveNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>& 
         return;
     }
     if (nmt_ != NmtState::Operational) return;
-    if (in.id == cob::kSync && in.len == 0) {
-        onSync(now_s, out);
+    if (std::uint8_t counter = 0; decodeSync(in, counter)) {
+        if (syncInSequence(in, counter, now_s, out)) onSync(now_s, out);
         return;
     }
     for (int i = 0; i < 2; ++i)
@@ -93,14 +95,35 @@ void DriveNode::superviseMaster(double now_s, std::vector<CanFrame>& out) {
         now_s - consumerLastSeen_s_ <= timeout)
         return;
     consumerLost_ = true;
-    out.push_back(
-        encodeEmcy(cfg_.node, emcy_code::kHeartbeat, errorRegisterFor(emcy_code::kHeartbeat)));
+    abortConnection(emcy_code::kHeartbeat, now_s, out);
+}
+
+bool DriveNode::syncInSequence(const CanFrame& in, std::uint8_t counter, double now_s,
+                               std::vector<CanFrame>& out) {
+    // CiA 301: with 0x1019 set every SYNC carries the counter, without it none does.
+    if ((syncOverflow_ > 0) != (in.len == 1)) {
+        abortConnection(emcy_code::kSyncDataLength, now_s, out);
+        return false;
+    }
+    if (syncOverflow_ == 0) return true;
+    const bool first = lastSyncCounter_ == 0;
+    const std::uint8_t expected = nextSyncCounter(lastSyncCounter_, syncOverflow_);
+    lastSyncCounter_ = counter;
+    if (first || counter == expected) return true;
+    // Skipped or repeated: a second SYNC producer or lost frames - the cycle is not the
+    // master's any more. No actuation on it; the 0x6007 reaction.
+    abortConnection(emcy_code::kCommunication, now_s, out);
+    return false;
+}
+
+void DriveNode::abortConnection(std::uint16_t code, double now_s, std::vector<CanFrame>& out) {
+    out.push_back(encodeEmcy(cfg_.node, code, errorRegisterFor(code)));
     const bool powered = state_ == Cia402State::OperationEnabled ||
                          state_ == Cia402State::SwitchedOn ||
                          state_ == Cia402State::ReadyToSwitchOn;
     switch (abortConnectionOption_) {
     case abort_connection::kFault:
-        if (state_ != Cia402State::Fault) raiseFault(emcy_code::kHeartbeat, out);
+        if (state_ != Cia402State::Fault) raiseFault(code, out);
         break;
     case abort_connection::kDisableVoltage:
         if (powered) enterState(Cia402State::SwitchOnDisabled, now_s);
@@ -165,6 +188,7 @@ void DriveNode::onNmt(NmtCommand c, double now_s, std::vector<CanFrame>& out) {
     switch (c) {
     case NmtCommand::Start:
         if (nmt_ != NmtState::Operational) operationalSince_s_ = now_s;
+        lastSyncCounter_ = 0; // the counter's first SYNC of this session starts it
         nmt_ = NmtState::Operational;
         break;
     case NmtCommand::Stop:

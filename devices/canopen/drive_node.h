@@ -110,6 +110,12 @@ class DriveNode {
     void raiseFault(std::uint16_t code, std::vector<CanFrame>& out);
     void advance(int steps, double h, std::vector<CanFrame>& out);
     void superviseMaster(double now_s, std::vector<CanFrame>& out);
+    // A SYNC's counter against 0x1019 (false: a communication error, already reacted to).
+    bool syncInSequence(const CanFrame& in, std::uint8_t counter, double now_s,
+                        std::vector<CanFrame>& out);
+    // The master's connection is gone or broken (heartbeat, SYNC): EMCY `code`, the 0x6007
+    // reaction, and out of Operational.
+    void abortConnection(std::uint16_t code, double now_s, std::vector<CanFrame>& out);
 
     // Object dictionary access; returns 0 or an SDO abort code.
     std::uint32_t read(SdoAddress a, std::uint32_t& value, int& size) const;
@@ -143,6 +149,8 @@ class DriveNode {
     double lastTorque_ = 0; // N m applied over the last loop step
     bool torqueLost_ = false;
     std::uint32_t cyclePeriodUs_ = 0;
+    std::uint8_t syncOverflow_ = 0;    // 0x1019: 0 = SYNC without counter
+    std::uint8_t lastSyncCounter_ = 0; // 0: none since the node started
     std::uint16_t heartbeatMs_ = 0;
     std::int16_t quickStopOption_ = 2;
     std::int16_t abortConnectionOption_ = 1; // 0x6007 (CiA 402 default: Fault)

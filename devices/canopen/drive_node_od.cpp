@@ -55,6 +55,8 @@ std::uint32_t DriveNode::read(SdoAddress a, std::uint32_t& v, int& size) const {
         return one(errorRegisterFor(errorCode_), 1);
     case od::kCommCyclePeriod:
         return one(cyclePeriodUs_, 4);
+    case od::kSyncCounterOverflow:
+        return one(syncOverflow_, 1);
     case od::kProducerHeartbeat:
         return one(heartbeatMs_, 2);
     case od::kConsumerHeartbeat:
@@ -174,6 +176,12 @@ std::uint32_t DriveNode::write(SdoAddress a, std::uint32_t v, int size, double n
         if (v < 100) return abort_code::kValueTooLow;     // < 100 us: no position loop fits
         if (v > 100000) return abort_code::kValueTooHigh; // > 100 ms: not a servo cycle
         cyclePeriodUs_ = v;
+        return 0;
+    case od::kSyncCounterOverflow:
+        if ((abort = scalar(1))) return abort;
+        if (v == 1 || v > 240) return abort_code::kInvalidValue; // 0, or 2..240 (CiA 301)
+        syncOverflow_ = static_cast<std::uint8_t>(v);
+        lastSyncCounter_ = 0;
         return 0;
     case od::kProducerHeartbeat:
         if ((abort = scalar(2))) return abort;

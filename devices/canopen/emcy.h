@@ -30,6 +30,8 @@ inline constexpr std::uint16_t kDcLinkOverVoltage = 0x3210;
 inline constexpr std::uint16_t kDriveOverTemperature = 0x4310;
 inline constexpr std::uint16_t kHeartbeat = 0x8130; // life guard / heartbeat error
 inline constexpr std::uint16_t kBusOffRecovered = 0x8140;
+inline constexpr std::uint16_t kCommunication = 0x8100;  // generic: a SYNC counter skipped
+inline constexpr std::uint16_t kSyncDataLength = 0x8240; // a SYNC without (or with) a counter
 inline constexpr std::uint16_t kFollowingError = 0x8611;
 } // namespace emcy_code
 

@@ -1,5 +1,7 @@
 #include "devices/canopen/encoder_node.h"
 
+#include "devices/canopen/emcy.h"
+#include "devices/canopen/nmt.h"
 #include "devices/canopen/pdo.h"
 
 #include <algorithm>
@@ -17,6 +19,7 @@ EncoderNode::EncoderNode(EncoderNodeConfig c) : c_(std::move(c)) {
 
 void EncoderNode::resetCommunication() {
     heartbeatMs_ = 0;
+    syncOverflow_ = 0;
     // Predefined connection set: TPDO1 valid, the position value mapped (CiA 406 default).
     tpdoCobId_ = cob::kTpdo1 + static_cast<std::uint32_t>(c_.node);
     tpdoType_ = 1;
@@ -75,7 +78,15 @@ void EncoderNode::handle(const CanFrame& in, double now_s, std::vector<CanFrame>
         onSdo(in, now_s, out);
         return;
     }
-    if (nmt_ != NmtState::Operational || in.id != cob::kSync || in.len != 0) return;
+    std::uint8_t counter = 0;
+    if (nmt_ != NmtState::Operational || !decodeSync(in, counter)) return;
+    // A SYNC of the wrong length for 0x1019 (CiA 301): told, not answered. The encoder drives
+    // nothing, so the counter's sequence is the drives' to check.
+    if ((syncOverflow_ > 0) != (in.len == 1)) {
+        out.push_back(encodeEmcy(c_.node, emcy_code::kSyncDataLength,
+                                 errorRegisterFor(emcy_code::kSyncDataLength)));
+        return;
+    }
     if (firstSync_s_ < 0) firstSync_s_ = now_s;
     ++syncs_;
     counts_ = sample(now_s);
@@ -136,6 +147,8 @@ std::uint32_t EncoderNode::read(SdoAddress a, std::uint32_t& v, int& size, doubl
         return one(od::kDeviceTypeCia406, 4);
     case od::kProducerHeartbeat:
         return one(heartbeatMs_, 2);
+    case od::kSyncCounterOverflow:
+        return one(syncOverflow_, 1);
     case od::kEncoderPositionValue:
         return one(static_cast<std::uint32_t>(sample(now_s)), 4);
     case od::kIdentity:
@@ -168,6 +181,12 @@ std::uint32_t EncoderNode::write(SdoAddress a, std::uint32_t v, int size) {
     };
     std::uint32_t abort = 0;
     switch (a.index) {
+    case od::kSyncCounterOverflow:
+        if (a.sub != 0) return abort_code::kNoSubIndex;
+        if ((abort = sized(1))) return abort;
+        if (v == 1 || v > 240) return abort_code::kInvalidValue; // 0, or 2..240 (CiA 301)
+        syncOverflow_ = static_cast<std::uint8_t>(v);
+        return 0;
     case od::kProducerHeartbeat:
         if (a.sub != 0) return abort_code::kNoSubIndex;
         if ((abort = sized(2))) return abort;

@@ -63,6 +63,7 @@ class EncoderNode {
     EncoderNodeConfig c_;
     NmtState nmt_ = NmtState::BootUp;
     std::uint16_t heartbeatMs_ = 0;
+    std::uint8_t syncOverflow_ = 0; // 0x1019
     double nextHeartbeat_s_ = 0;
     double operationalSince_s_ = -1;
     bool heartbeatStopped_ = false, pdoStopped_ = false;

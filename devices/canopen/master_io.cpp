@@ -323,8 +323,13 @@ void CanOpenMaster::Impl::onSdoReply(size_t i, const CanFrame& f, std::int64_t n
                                             hex(op.write.value, 2 * op.write.size).c_str());
     if (m.kind == SdoKind::Abort) {
         r.phase = StartupPhase::Failed;
+        // A node without the SYNC counter's object: the job can do without the counter.
+        const bool counter = op.write.address.index == od::kSyncCounterOverflow && !op.upload;
         setFault(i, m.value,
-                 messageC("%s refused: %s", what.c_str(), sdoAbortText(m.value).c_str()));
+                 counter ? messageC("%s refused: %s (a node without a SYNC counter: set "
+                                    "devices.sync_counter_overflow = 0)",
+                                    what.c_str(), sdoAbortText(m.value).c_str())
+                         : messageC("%s refused: %s", what.c_str(), sdoAbortText(m.value).c_str()));
         return;
     }
     if ((op.upload && m.kind != SdoKind::UploadResponse) ||
@@ -468,10 +473,11 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
                 dc.master_heartbeat_timeout_ms = static_cast<std::uint16_t>(
                     std::clamp(cfg.heartbeat_timeout_s * 1e3, 1.0, 65535.0));
                 dc.abort_connection_option = cfg.abort_connection_option;
+                dc.sync_counter_overflow = syncOverflow();
                 const MasterNodeConfig& nc = cfg.nodes[i];
                 const bool torque = !nc.encoder && nc.mode == AxisCommandMode::Torque;
                 const std::vector<SdoWrite> writes =
-                    nc.encoder ? encoderStartupWrites(node, heartbeatProducerMs)
+                    nc.encoder ? encoderStartupWrites(node, heartbeatProducerMs, syncOverflow())
                     : torque   ? cstStartupWrites(node, dc)
                                : cspStartupWrites(node, dc);
                 for (const SdoWrite& w : writes)
@@ -685,7 +691,8 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
         for (size_t i = 0; i < shared.size(); ++i)
             if (cfg.nodes[i].encoder && rt[i].phase == StartupPhase::Running)
                 rt[i].syncSent(rt[clockNode].sync_seq);
-    send(encodeSync());
+    if (syncOverflow() > 0) syncCounter = nextSyncCounter(syncCounter, syncOverflow());
+    send(encodeSync(syncCounter));
     cycles.fetch_add(1, std::memory_order_release);
     if (lastSyncNs != 0) {
         const double jitter =

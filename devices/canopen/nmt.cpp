@@ -92,11 +92,22 @@ bool decodeHeartbeat(const CanFrame& f, int& node, NmtState& s) {
     return true;
 }
 
-CanFrame encodeSync() {
+CanFrame encodeSync(std::uint8_t counter) {
     CanFrame f;
     f.id = cob::kSync;
-    f.len = 0;
+    f.len = counter > 0 ? 1 : 0;
+    f.data[0] = counter;
     return f;
+}
+
+bool decodeSync(const CanFrame& f, std::uint8_t& counter) {
+    if (f.id != cob::kSync || f.len > 1) return false;
+    counter = f.len == 1 ? f.data[0] : 0;
+    return true;
+}
+
+std::uint8_t nextSyncCounter(std::uint8_t last, std::uint8_t overflow) {
+    return last == 0 || last >= overflow ? 1 : static_cast<std::uint8_t>(last + 1);
 }
 
 } // namespace cutcell::canopen

@@ -34,6 +34,11 @@ CanFrame encodeHeartbeat(int node, NmtState s);
 // False when f is not a heartbeat/boot-up frame; invalid state bytes decode to Unknown.
 bool decodeHeartbeat(const CanFrame& f, int& node, NmtState& s);
 
-CanFrame encodeSync();
+// A SYNC; with a counter (1..overflow, CiA 301 0x1019) it carries one byte.
+CanFrame encodeSync(std::uint8_t counter = 0);
+// A SYNC frame (id 0x080, 0 or 1 byte): its counter, 0 when it has none.
+bool decodeSync(const CanFrame& f, std::uint8_t& counter);
+// The counter after `last` (1 after overflow; 1 when there was none yet).
+std::uint8_t nextSyncCounter(std::uint8_t last, std::uint8_t overflow);
 
 } // namespace cutcell::canopen

@@ -22,6 +22,7 @@ std::vector<SdoWrite> driveStartupWrites(int node, const DriveConfig& c, bool to
     };
     add(od::kModesOfOperation, 0,
         static_cast<std::uint32_t>(torque ? kModeCyclicSyncTorque : kModeCyclicSyncPosition), 1);
+    if (c.sync_counter_overflow > 0) add(od::kSyncCounterOverflow, 0, c.sync_counter_overflow, 1);
     add(od::kCommCyclePeriod, 0, c.cycle_period_us, 4);
     if (c.following_error_window_counts > 0)
         add(od::kFollowingErrorWindow, 0, c.following_error_window_counts, 4);
@@ -53,15 +54,23 @@ std::vector<SdoWrite> cstStartupWrites(int node, const DriveConfig& c) {
     return driveStartupWrites(node, c, true);
 }
 
-std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms) {
+std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms,
+                                           std::uint8_t sync_counter_overflow) {
     const std::uint32_t cobId = cob::kTpdo1 + static_cast<std::uint32_t>(node);
-    return {{{od::kTpdoComm, 1}, kCobIdInvalid | cobId, 4},
-            {{od::kTpdoMap, 0}, 0, 1},
-            {{od::kTpdoMap, 1}, mapEntry(od::kEncoderPositionValue, 0, 32), 4},
-            {{od::kTpdoMap, 0}, 1, 1},
-            {{od::kTpdoComm, 2}, kTransmissionSync, 1},
-            {{od::kTpdoComm, 1}, cobId, 4},
-            {{od::kProducerHeartbeat, 0}, heartbeat_ms, 2}};
+    std::vector<SdoWrite> w;
+    // The encoder consumes the SYNC too: it must expect the counter's byte.
+    if (sync_counter_overflow > 0)
+        w.push_back({{od::kSyncCounterOverflow, 0}, sync_counter_overflow, 1});
+    const std::vector<SdoWrite> rest = {
+        {{od::kTpdoComm, 1}, kCobIdInvalid | cobId, 4},
+        {{od::kTpdoMap, 0}, 0, 1},
+        {{od::kTpdoMap, 1}, mapEntry(od::kEncoderPositionValue, 0, 32), 4},
+        {{od::kTpdoMap, 0}, 1, 1},
+        {{od::kTpdoComm, 2}, kTransmissionSync, 1},
+        {{od::kTpdoComm, 1}, cobId, 4},
+        {{od::kProducerHeartbeat, 0}, heartbeat_ms, 2}};
+    w.insert(w.end(), rest.begin(), rest.end());
+    return w;
 }
 
 CanFrame encodeRpdo1Torque(int node, std::uint16_t controlword, std::int16_t torque_permille) {

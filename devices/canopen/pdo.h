@@ -22,9 +22,10 @@ namespace cutcell::canopen {
 namespace od {
 inline constexpr std::uint16_t kDeviceType = 0x1000;
 inline constexpr std::uint16_t kErrorRegister = 0x1001;
-inline constexpr std::uint16_t kCommCyclePeriod = 0x1006;   // us
-inline constexpr std::uint16_t kConsumerHeartbeat = 0x1016; // sub 1: node << 16 | ms
-inline constexpr std::uint16_t kProducerHeartbeat = 0x1017; // ms
+inline constexpr std::uint16_t kCommCyclePeriod = 0x1006;     // us
+inline constexpr std::uint16_t kSyncCounterOverflow = 0x1019; // 0: SYNC without counter
+inline constexpr std::uint16_t kConsumerHeartbeat = 0x1016;   // sub 1: node << 16 | ms
+inline constexpr std::uint16_t kProducerHeartbeat = 0x1017;   // ms
 inline constexpr std::uint16_t kIdentity = 0x1018;
 inline constexpr std::uint16_t kRpdoComm = 0x1400;              // + n
 inline constexpr std::uint16_t kRpdoMap = 0x1600;               // + n
@@ -76,6 +77,10 @@ struct DriveConfig {
     int master_node = 0;
     std::uint16_t master_heartbeat_timeout_ms = 0;
     int abort_connection_option = -1;
+    // CiA 301 0x1019: the SYNC carries a counter 1..overflow (0: no counter). The drive checks
+    // that it advances by one: a skipped or repeated SYNC (a second producer, lost frames) is
+    // a communication error, answered by 0x6007 like a lost master. Written before 0x1006.
+    std::uint8_t sync_counter_overflow = 0;
 };
 
 // 0x6007 abort connection option codes (CiA 402).
@@ -92,7 +97,8 @@ std::vector<SdoWrite> cspStartupWrites(int node, const DriveConfig& c);
 // The same for a drive in CST: 0x6060 = 10, RPDO1 = controlword + target torque 0x6071.
 std::vector<SdoWrite> cstStartupWrites(int node, const DriveConfig& c);
 // A CiA 406 encoder: TPDO1 = position value 0x6004 on every SYNC, its heartbeat.
-std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms);
+std::vector<SdoWrite> encoderStartupWrites(int node, std::uint16_t heartbeat_ms,
+                                           std::uint8_t sync_counter_overflow = 0);
 
 struct Rpdo1 {
     std::uint16_t controlword = 0;

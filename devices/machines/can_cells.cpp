@@ -1,5 +1,6 @@
 #include "devices/machines/can_cells.h"
 #include "core/common/c_format.h"
+#include "core/machine/counts_reach.h"
 
 #include "core/machine/machine_registry.h"
 #include "devices/canopen/engine_tuning.h"
@@ -77,6 +78,12 @@ bool makeCanCell(const Job& job, double period_s, const MotionProgram* program, 
         (n.mode == AxisCommandMode::Torque ? cst : csp)++;
         c.master.nodes.push_back(n);
     }
+    // A continuous axis's counts grow with the run: they must stay within a drive's 32 bits.
+    if (program)
+        if (const Outcome fits = countsFitProgram(job, *program); !fits.ok()) {
+            if (error) *error = fits.message;
+            return false;
+        }
     CanCellBuilder builder(job, period_s, program, c);
     if (!entry->fill(builder, error)) return false;
     if (static_cast<int>(c.sim_encoders.size()) != c.sensor_count) {

@@ -207,8 +207,10 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "devices.sensor_node_ids[%d] = %d is outside [1, 127]"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.sensor_node_ids[%d] = %d is the node of axis %d (devices.node_ids[%d])"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.sensor_node_ids[%d] = %d is used twice"),
+    QT_TRANSLATE_NOOP("CoreMessage", "devices.sync_counter_overflow = 1 is reserved (CiA 301 0x1019): 0 for no SYNC counter, or 2..240"),
     QT_TRANSLATE_NOOP("CoreMessage", "machine.kind = %s is not one of %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "devices.kind = \"canopen\": %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g counts/%s: axis %d (%s) goes as far as %.6g %s in this run, %.4g counts, beyond a drive's 32-bit position (%.0f counts); at most %.6g counts/%s, or a shorter run"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s.wall_mm = %.6g mm must be less than %s.radius_mm = %.6g mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "angle_deg = %.6g deg is outside [0.1, 90] deg (angle between the pipe axes)"),
     QT_TRANSLATE_NOOP("CoreMessage", "branch_pipe.radius_mm = %.6g mm does not fit: |eccentricity_mm| + branch radius = %.6g mm must be <= main_pipe.radius_mm = %.6g mm"),
@@ -436,6 +438,7 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "connected, no other master heard in %d ms; %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "SDO read %s:%s"),
     QT_TRANSLATE_NOOP("CoreMessage", "SDO write %s:%s = %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s refused: %s (a node without a SYNC counter: set devices.sync_counter_overflow = 0)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s: unexpected SDO answer (segmented transfer?)"),
     QT_TRANSLATE_NOOP("CoreMessage", "device type %s is not a CiA 406 encoder (profile %u)"),
     QT_TRANSLATE_NOOP("CoreMessage", "device type %s is not a CiA 402 drive (profile %u)"),
@@ -518,6 +521,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 508;
+const int kCoreMessageCount = 511;
 
 } // namespace CutCell::ui

@@ -995,6 +995,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>devices.sync_counter_overflow = 1 is reserved (CiA 301 0x1019): 0 for no SYNC counter, or 2..240</source>
+        <translation>devices.sync_counter_overflow = 1 ist reserviert (CiA 301 0x1019): 0 für SYNC ohne Zähler, oder 2..240</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>machine.kind = %s is not one of %s</source>
         <translation>machine.kind = %s ist keine von %s</translation>
     </message>
@@ -1002,6 +1007,11 @@
         <location line="+1"/>
         <source>devices.kind = &quot;canopen&quot;: %s</source>
         <translation>devices.kind = &quot;canopen&quot;: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s = %.6g counts/%s: axis %d (%s) goes as far as %.6g %s in this run, %.4g counts, beyond a drive&apos;s 32-bit position (%.0f counts); at most %.6g counts/%s, or a shorter run</source>
+        <translation>%s = %.6g Imp./%s: Achse %d (%s) kommt in diesem Lauf bis %.6g %s, %.4g Impulse, über die 32-Bit-Position eines Antriebs hinaus (%.0f Impulse); höchstens %.6g Imp./%s, oder ein kürzerer Lauf</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1734,7 +1744,12 @@
         <translation>ein anderer CANopen-Master ist auf dem Bus (%s gehört, nicht von diesem Master gesendet): jeder Antrieb abgeschaltet und in „Pre-Operational“, dieser Master hat den Bus aufgegeben</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+10"/>
+        <source>%s refused: %s (a node without a SYNC counter: set devices.sync_counter_overflow = 0)</source>
+        <translation>%s abgelehnt: %s (ein Knoten ohne SYNC-Zähler: devices.sync_counter_overflow = 0 setzen)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>no position value (TPDO) for %lld ms after a SYNC (&gt; %lld ms): the encoder&apos;s reading is lost; last heartbeat %lld ms ago</source>
         <translation>kein Positionswert (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): der Messwert des Gebers ist verloren; letzter Heartbeat vor %lld ms</translation>
     </message>
@@ -1744,7 +1759,7 @@
         <translation>keine Prozessdaten (TPDO) seit %lld ms nach einem SYNC (&gt; %lld ms): die Rückmeldung des Antriebs ist verloren; letzter Heartbeat vor %lld ms</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-27"/>
         <source>%d SYNC (0x080)</source>
         <translation>%d SYNC (0x080)</translation>
     </message>
@@ -1789,7 +1804,7 @@
         <translation>SDO-Schreiben %s:%s = %s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%s: unexpected SDO answer (segmented transfer?)</source>
         <translation>%s: unerwartete SDO-Antwort (segmentierte Übertragung?)</translation>
     </message>
@@ -2184,7 +2199,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-270"/>
+        <location line="-271"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2324,13 +2339,7 @@
         <translation>cut.velocity_m_s = %.6g m/s liegt außerhalb von [-10, 0) m/s (der Schnitt läuft abwärts)</translation>
     </message>
     <message>
-        <location line="-1"/>
-        <source>cut.workpiece_length_m = %.6g m must be in (0, %.4f) m (the stroke L_c)</source>
-        <oldsource>tracking: the reference spans [%.4f, %.4f] m; it must stay inside the stroke (%.4f, %.4f) m</oldsource>
-        <translation type="unfinished">tracking: die Führungsgröße überstreicht [%.4f, %.4f] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>the mechanism has no full crank turn with two singular points</source>
         <translation>der Mechanismus hat keine volle Kurbeldrehung mit zwei singulären Punkten</translation>
     </message>

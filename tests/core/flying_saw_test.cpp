@@ -5,6 +5,7 @@
 // queue, slip correction by the length gauge, the cut-length figures).
 #include "core/common/types.h"
 #include "core/job/job_io.h"
+#include "core/machine/counts_reach.h"
 #include "core/machine/machine_registry.h"
 #include "core/machines/flying_saw/flying_saw_module.h"
 #include "core/machines/flying_saw/flying_saw_plan.h"
@@ -14,6 +15,8 @@
 #include "core/machines/flying_saw/tube_outline.h"
 
 #include <gtest/gtest.h>
+
+#include <numbers>
 
 #include <algorithm>
 #include <cmath>
@@ -544,6 +547,34 @@ TEST(SawModule, ARunStoppedByItsBoundSaysWhyAndHasNoPhantomPiece) {
         EXPECT_EQ(piece.ordered_mm, 6000) << "piece " << piece.piece;
         EXPECT_LT(std::fabs(piece.error_mm), 1.0) << "piece " << piece.piece;
     }
+}
+
+// Issue 27: the turntable turns on, half a turn a piece: its counts grow with the run and must
+// stay inside a drive's 32-bit position. A run whose turntable would leave it is refused
+// before it starts on CAN drives (countsFitProgram), naming the key with the largest
+// counts_per_unit that fits; just below that bound the same run is accepted.
+TEST(SawModule, TheTurntablesCountsOfAWholeRunFitA32BitPosition) {
+    Job job = sawModule().defaultJob();
+    FlyingSawSpec& s = *job.machine_spec.as<FlyingSawSpec>();
+    s.queue = {{6000, 1000000}};
+    const MachinePlan plan = sawModule().plan(job);
+    ASSERT_TRUE(plan.ok()) << plan.problem;
+    const MotionProgram& program = *plan.program;
+    // Half a turn a piece (the source's own cycle), from wherever the last run left it.
+    const double reachDeg = programReach(program, 1) * 180 / std::numbers::pi;
+    EXPECT_GE(reachDeg, 180.0 * 1000000);
+    const double fits = 2147483647.0 / reachDeg;
+    job.devices.counts_per_unit[1] = fits * 1.01;
+    const Outcome over = countsFitProgram(job, program);
+    ASSERT_TRUE(over.refused());
+    EXPECT_EQ(over.key, "devices.counts_per_unit[1]");
+    EXPECT_NE(over.message.find("turntable"), std::string::npos) << over.message;
+    EXPECT_NE(over.message.find("32-bit"), std::string::npos) << over.message;
+    job.devices.counts_per_unit[1] = fits * 0.99;
+    EXPECT_TRUE(countsFitProgram(job, program).ok());
+    // The shipped queue (10 pieces) at the shipped resolution: fine.
+    const Job shipped = sawModule().defaultJob();
+    EXPECT_TRUE(countsFitProgram(shipped, *sawModule().plan(shipped).program).ok());
 }
 
 } // namespace

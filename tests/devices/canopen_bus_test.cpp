@@ -595,6 +595,7 @@ class CanOpenBusTest : public QObject {
         // Its dump lists the frames by COB-ID: the heartbeats of both nodes and the SYNC.
         QVERIFY2(hasIds(), qPrintable(dump.left(400)));
         QVERIFY(heard_.size() > 50);
+        std::uint8_t lastSync = 0;
         for (const QCanBusFrame& q : heard_) {
             CanFrame f;
             QVERIFY(fromQt(q, f));
@@ -605,7 +606,7 @@ class CanOpenBusTest : public QObject {
             if (f.id == cob::kNmt)
                 expected = 2;
             else if (f.id == cob::kSync)
-                expected = 0;
+                expected = 1; // the counter (0x1019, the master's default 240)
             else if (fn == cob::kEmcy)
                 expected = 8;
             else if (fn == cob::kSdoRx || fn == cob::kSdoTx)
@@ -621,6 +622,13 @@ class CanOpenBusTest : public QObject {
             QVERIFY2(expected >= 0, qPrintable(QString("unexpected COB-ID 0x%1").arg(f.id, 0, 16)));
             QVERIFY2(f.len == expected,
                      qPrintable(QString("COB-ID 0x%1 has %2 bytes").arg(f.id, 0, 16).arg(f.len)));
+            // The master's SYNC counter advances by one, 240 wrapping to 1.
+            if (std::uint8_t c = 0; decodeSync(f, c)) {
+                if (lastSync > 0)
+                    QVERIFY2(c == nextSyncCounter(lastSync, 240),
+                             qPrintable(QString("SYNC counter %1 after %2").arg(c).arg(lastSync)));
+                lastSync = c;
+            }
             const bool mastersHeartbeat = f.id == cob::kHeartbeat + 127;
             if (f.id != cob::kNmt && f.id != cob::kSync && !mastersHeartbeat)
                 QVERIFY(node >= 1 && node <= 2);

@@ -415,11 +415,18 @@ class CanOpenCliTest : public QObject {
         const size_t from = bus.heard.size();
         // Keep the SYNC going and ask every node for its statusword by SDO (a node stops its
         // PDOs when it leaves Operational): the drives' own SYNC watchdog stays quiet, so only
-        // their consumer of the master's heartbeat can take them out of Operation Enabled.
+        // their consumer of the master's heartbeat can take them out of Operation Enabled. The
+        // SYNC goes on with the master's counter (0x1019), in sequence from its last one.
+        const std::uint8_t overflow = 240; // the job's devices.sync_counter_overflow (default)
+        std::uint8_t counter = 0;
+        for (size_t k = 0; k < from; ++k)
+            if (std::uint8_t c = 0; decodeSync(bus.heard[k].f, c) && c > 0) counter = c;
+        QVERIFY2(counter > 0, "the master's SYNC carried no counter");
         QTimer pacer;
         int tick = 0;
         connect(&pacer, &QTimer::timeout, this, [&] {
-            bus.send(encodeSync());
+            counter = nextSyncCounter(counter, overflow);
+            bus.send(encodeSync(counter));
             if (tick++ % 2 == 0)
                 for (int n = 1; n <= 6; ++n)
                     bus.send(sdoUploadRequest(n, {od::kStatusword, 0}));

@@ -30,6 +30,7 @@ struct Bench {
     DriveNode node;
     double now = 0;
     std::vector<CanFrame> out;
+    std::uint8_t syncOverflow = 0, syncCounter = 0; // 0x1019 as configured, the last counter
 
     explicit Bench(const DriveNodeConfig& c) : node(c) { node.boot(0, out); }
 
@@ -43,9 +44,11 @@ struct Bench {
         EXPECT_EQ(replies.size(), 1u);
         return replies.empty() ? SdoMessage{} : decodeSdo(replies.front());
     }
-    void configure(std::uint32_t cycleUs = 2000) {
+    void configure(std::uint32_t cycleUs = 2000, std::uint8_t overflow = 0) {
         DriveConfig dc;
         dc.cycle_period_us = cycleUs;
+        dc.sync_counter_overflow = overflow;
+        syncOverflow = overflow;
         for (const SdoWrite& w : cspStartupWrites(kNode, dc)) {
             const SdoMessage m = sdo(sdoDownloadRequest(kNode, w.address, w.value, w.size));
             ASSERT_EQ(m.kind, SdoKind::DownloadResponse)
@@ -59,7 +62,8 @@ struct Bench {
         send(encodeRpdo1(kNode, {cw, target}));
         now += 0.002;
         Tpdo1 t;
-        for (const CanFrame& f : send(encodeSync()))
+        if (syncOverflow > 0) syncCounter = nextSyncCounter(syncCounter, syncOverflow);
+        for (const CanFrame& f : send(encodeSync(syncCounter)))
             if (decodeTpdo1(f, t)) return t;
         ADD_FAILURE() << "no TPDO after SYNC";
         return t;
@@ -320,4 +324,45 @@ TEST(DriveNode, ResetCommunicationWhileEnabledStopsTheDrive) {
         }
         EXPECT_NE(b.node.driveState(), Cia402State::QuickStopActive) << toString(c);
     }
+}
+
+// Issue 27: with 0x1019 set the SYNC carries a counter 1..overflow and the drive checks that it
+// advances by one: the wrap from the overflow to 1 is in sequence; a skipped counter (a second
+// SYNC producer, a lost SYNC) is a communication error - EMCY 0x8100, the 0x6007 reaction (quick
+// stop), out of Operational - and that SYNC moves nothing. A SYNC without the counter's byte is
+// EMCY 0x8240.
+TEST(DriveNode, ASkippedSyncCounterStopsTheDrive) {
+    Bench b(config());
+    b.configure(2000, 5);
+    EXPECT_EQ(b.sdo(sdoUploadRequest(kNode, {od::kSyncCounterOverflow, 0})).value, 5u);
+    EXPECT_EQ(b.sdo(sdoDownloadRequest(kNode, {od::kSyncCounterOverflow, 0}, 1, 1)).kind,
+              SdoKind::Abort); // 1 is reserved
+    ASSERT_EQ(decodeStatusword(b.enable().statusword), Cia402State::OperationEnabled);
+    for (int i = 0; i < 12; ++i) // through two wraps 5 -> 1
+        ASSERT_EQ(decodeStatusword(b.cycle(cw::kEnableOperation, 0).statusword),
+                  Cia402State::OperationEnabled)
+            << "counter " << int(b.syncCounter);
+    const std::uint64_t syncs = b.node.syncCount();
+    b.now += 0.002;
+    const std::uint8_t skipped = nextSyncCounter(nextSyncCounter(b.syncCounter, 5), 5);
+    bool communication = false;
+    for (const CanFrame& f : b.send(encodeSync(skipped))) {
+        Emcy e;
+        communication = communication || (decodeEmcy(f, e) && e.error_code == 0x8100);
+    }
+    EXPECT_TRUE(communication);
+    EXPECT_NE(b.node.driveState(), Cia402State::OperationEnabled);
+    EXPECT_NE(b.node.nmtState(), NmtState::Operational);
+    EXPECT_EQ(b.node.syncCount(), syncs); // the skipped SYNC moved nothing
+
+    Bench c(config());
+    c.configure(2000, 5);
+    ASSERT_EQ(decodeStatusword(c.enable().statusword), Cia402State::OperationEnabled);
+    bool length = false;
+    for (const CanFrame& f : c.send(encodeSync())) {
+        Emcy e;
+        length = length || (decodeEmcy(f, e) && e.error_code == 0x8240);
+    }
+    EXPECT_TRUE(length);
+    EXPECT_NE(c.node.driveState(), Cia402State::OperationEnabled);
 }

@@ -52,6 +52,9 @@ function variable(index, name, dataType, value) {
 }
 variable(0x1000, 'Device type', DataType.UNSIGNED32, 0x00020192); // CiA 402 servo drive
 variable(0x1006, 'Communication cycle period', DataType.UNSIGNED32, 0);
+// The SYNC counter's overflow (CiA 301): the master writes it to every node it uses.
+if (!eds.getEntry(0x1019))
+    variable(0x1019, 'Synchronous counter overflow value', DataType.UNSIGNED8, 0);
 variable(0x1017, 'Producer heartbeat time', DataType.UNSIGNED16, 0);
 if (!eds.getEntry(0x1016))
     eds.addEntry(0x1016, { parameterName: 'Consumer heartbeat time', objectType: ObjectType.ARRAY });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace cutcell {
 
@@ -50,6 +51,9 @@ std::shared_ptr<MotionProgram> buildFlyingSawProgram(const Job& job, const Flyin
     p->max_position[0] = spec.stroke_mm;
     p->min_position[2] = p->min_position[3] = 0;
     p->max_position[2] = p->max_position[3] = plan.saw.retract_radius;
+    // Half a turn of the turntable a piece, on from wherever the last run left it (Home takes
+    // it back within half a turn of its reference).
+    p->endless_reach[1] = std::numbers::pi * (static_cast<double>(spec.pieceCount()) + 2);
     p->sensors_used = 1u;
     p->uses_tool = true;
     // The run's length: every piece at the nominal line speed, plus the first sync-in.

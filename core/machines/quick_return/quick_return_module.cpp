@@ -8,6 +8,7 @@
 #include "core/sim/tracking_stats.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace cutcell {
 
@@ -98,6 +99,9 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
                           : st.q_bottom + 0.01;
     prog->reference[0] = q0;
     prog->start_position[0] = q0;
+    // A turn of the crank a stroke (and one to come round to the first cut), from q0.
+    const double turns = spec.experiment == Experiment::Tracking ? 1.0 : spec.strokes + 1.0;
+    prog->endless_reach[0] = std::fabs(q0) + 2 * std::numbers::pi * turns;
     prog->sensors_used = 1u;
     prog->uses_tool = false;
     prog->point_count = static_cast<size_t>(spec.strokes);
