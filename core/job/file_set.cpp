@@ -123,14 +123,21 @@ std::string stage(const fs::path& target, const std::string& contents) {
 }
 
 // Renames every stage a journal lists over its target; true when the journal was complete.
-bool completeJournal(const fs::path& journal) {
+// Only what its writer staged: a stage of that process beside its target, named for it (a
+// journal someone else wrote renames nothing else).
+bool completeJournal(const fs::path& journal, long pid) {
     std::ifstream in(journal);
     std::string line;
     if (!std::getline(in, line) || line != kJournalHeader) return false;
     while (std::getline(in, line)) {
         const size_t tab = line.find('\t');
         if (tab == std::string::npos) continue;
-        const std::string from = line.substr(0, tab), to = line.substr(tab + 1);
+        const fs::path from = line.substr(0, tab), to = line.substr(tab + 1);
+        const std::string stageName = from.filename().string();
+        const std::string ownName = "." + to.filename().string() + kStageTag;
+        if (from.parent_path() != to.parent_path() || leftoverPid(stageName) != pid ||
+            stageName.compare(0, ownName.size(), ownName) != 0)
+            continue;
         std::error_code ec;
         if (fs::exists(from, ec)) fs::rename(from, to, ec); // absent: renamed before the kill
     }
@@ -156,7 +163,7 @@ FileSetRecovery recoverFileSets(const std::string& dirName) {
         }
     }
     for (const fs::path& j : journals) {
-        completeJournal(j);
+        completeJournal(j, journalPid(j.filename().string()));
         std::error_code e2;
         fs::remove(j, e2);
         ++r.journals_completed;

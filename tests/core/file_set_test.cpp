@@ -138,6 +138,9 @@ TEST(FileSet, AJournalOfAKilledWriterIsFinishedAndItsStagesRemoved) {
         journal << stage.string() << '\t' << target.string() << '\n';
         if (i == 0) fs::rename(stage, target);
     }
+    // A line that names no stage of that writer (an edited or foreign journal) renames nothing.
+    std::ofstream(d.path / "notes.txt") << "the operator's";
+    journal << (d.path / "notes.txt").string() << '\t' << (d.path / "part5.csv").string() << '\n';
     std::ofstream(d.path / (".cutcell-set-" + std::to_string(dead) + ".journal")) << journal.str();
     // ... and one killed before its journal: its stage is a leftover.
     std::ofstream(d.path / (".part3.csv.cutcell-set-" + std::to_string(dead - 1) + "-Zz99Yy"))
@@ -147,6 +150,7 @@ TEST(FileSet, AJournalOfAKilledWriterIsFinishedAndItsStagesRemoved) {
     EXPECT_EQ(r.journals_completed, 1);
     EXPECT_EQ(r.stages_removed, 1);
     EXPECT_EQ(generationOf(d.path, 100), 2);
+    EXPECT_TRUE(fs::exists(d.path / "notes.txt"));
     EXPECT_EQ(leftovers(d.path), 0);
 }
 
