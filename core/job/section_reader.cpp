@@ -59,9 +59,27 @@ double SectionReader::asNumber(const json::Value& m, const std::string& k, const
     return m.asNumber();
 }
 
+std::string SectionReader::misspelling(const std::string& k) const {
+    // A member nobody read whose name is close to k: most likely k, misspelt.
+    std::string best;
+    size_t bestDistance = 0;
+    for (const auto& [member, unused] : v_.asObject()) {
+        (void)unused;
+        if (read_.count(member)) continue;
+        const size_t d = editDistance(lowerAscii(member), lowerAscii(k));
+        if (d <= std::max<size_t>(3, k.size() / 3) && (best.empty() || d < bestDistance)) {
+            best = member;
+            bestDistance = d;
+        }
+    }
+    return best.empty() ? std::string() : "; found " + json::quote(key(best)) + " (misspelt?)";
+}
+
 double SectionReader::number(const std::string& k, const char* unit) {
     const json::Value* m = get(k);
-    if (!m) throw JobError("missing required key " + key(k) + " (a number in " + unit + ")");
+    if (!m)
+        throw JobError("missing required key " + key(k) + " (a number in " + unit + ")" +
+                       misspelling(k));
     return asNumber(*m, k, unit);
 }
 
@@ -97,7 +115,7 @@ bool SectionReader::boolean(const std::string& k, bool fallback) {
 
 SectionReader SectionReader::child(const std::string& k) {
     const json::Value* m = get(k);
-    if (!m) throw JobError("missing required section " + key(k));
+    if (!m) throw JobError("missing required section " + key(k) + misspelling(k));
     return SectionReader(*m, key(k));
 }
 

@@ -49,6 +49,8 @@ class SectionReader {
 
   private:
     double asNumber(const json::Value& m, const std::string& k, const char* unit) const;
+    // "; found \"sim.period_S\" (misspelt?)" for a missing key k with an unread look-alike.
+    std::string misspelling(const std::string& k) const;
     const json::Value& v_;
     std::string path_;
     std::unordered_set<std::string> read_;

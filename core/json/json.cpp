@@ -260,6 +260,9 @@ Value parse(const std::string& input) {
     const std::string_view bom = "\xEF\xBB\xBF";
     std::string_view text(input);
     if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
+    if (text.substr(0, bom.size()) == bom) // nlohmann skipped a second one too
+        throw ParseError("JSON syntax error at line 1, column 1: a second UTF-8 byte order mark", 1,
+                         1);
 
     // A NUL byte is no part of a JSON text (nlohmann stopped reading there and accepted
     // whatever came before it).

@@ -3792,7 +3792,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+153"/>
+        <location filename="../../ui/main_window.cpp" line="+155"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>

@@ -95,6 +95,35 @@ TEST(Cli, AFolderIsAnIoErrorAndEveryCountsEntryIsChecked) {
     EXPECT_NE(r.output.find("devices.counts_per_unit[1] = -1e+308"), std::string::npos) << r.output;
 }
 
+// Issue 27 (10): a blade of no thickness, and a root face of -1e308 mm on a face without a
+// groove (unused there, but a value of the file), were accepted.
+TEST(Cli, AbsurdValuesAreRefusedAlsoWhereTheyAreUnused) {
+    const fs::path dir = tempDir("absurd");
+    auto variant = [&](const std::string& job, const std::string& from, const std::string& to) {
+        std::ifstream in(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/" + job);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        std::string text = ss.str();
+        const size_t at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) text.replace(at, from.size(), to);
+        const fs::path file = dir / job;
+        std::ofstream(file) << text;
+        return runCli("validate " + file.string());
+    };
+    const Result kerf = variant("flying_saw_job.json", "\"kerf_mm\": 3", "\"kerf_mm\": 0");
+    EXPECT_EQ(kerf.code, 2) << kerf.output;
+    EXPECT_NE(kerf.output.find("machine.blade.kerf_mm = 0 mm is outside [0.1, 20] mm"),
+              std::string::npos)
+        << kerf.output;
+    const Result root =
+        variant("section_steel_job.json", "\"root_face_mm\": 0", "\"root_face_mm\": -1e308");
+    EXPECT_EQ(root.code, 2) << root.output;
+    EXPECT_NE(root.output.find("machine.end_cut.flanges.root_face_mm = -1e+308 mm"),
+              std::string::npos)
+        << root.output;
+}
+
 TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
     const fs::path dir = tempDir("unreachable");
     Job job = defaultJob();

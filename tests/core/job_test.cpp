@@ -274,6 +274,24 @@ TEST(Job, MessagesAreShortAndNameTheKeyAndTheTypo) {
             << e.what();
     }
 
+    // A required key misspelt: the missing key and the look-alike that is there.
+    const std::string misspelt = rejection([](json::Value& d) {
+        json::Value* sim = member(d, "sim");
+        const json::Value period = *member(*sim, "period_s");
+        auto& o = sim->asObject();
+        std::erase_if(o, [](const auto& kv) { return kv.first == "period_s"; });
+        sim->set("period_S", period);
+    });
+    EXPECT_NE(misspelt.find("missing required key sim.period_s"), std::string::npos) << misspelt;
+    EXPECT_NE(misspelt.find("found \"sim.period_S\""), std::string::npos) << misspelt;
+    // Two byte order marks: one is accepted, a second is not text of a JSON document.
+    try {
+        parseJob("\xEF\xBB\xBF\xEF\xBB\xBF" + defaultJobText());
+        ADD_FAILURE() << "two byte order marks accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("byte order mark"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(parseJob("\xEF\xBB\xBF" + defaultJobText()));
     // A NUL byte after the document: refused with its place (was read as valid).
     try {
         parseJob(defaultJobText() + std::string(1, '\0'));

@@ -144,7 +144,7 @@ const Field kFields[] = {
     {.key = "blade.diameter_mm", .unit = "mm", .label = "Diameter", .lo = 50, .hi = 2000,
      .check = kPositive, .decimals = 1,
      .number = [](S& s) -> double& { return s.blade_diameter_mm; }},
-    {.key = "blade.kerf_mm", .unit = "mm", .label = "Kerf", .lo = 0, .hi = 20, .check = kRange,
+    {.key = "blade.kerf_mm", .unit = "mm", .label = "Kerf", .lo = 0.1, .hi = 20, .check = kPositive,
      .decimals = 2, .number = [](S& s) -> double& { return s.blade_kerf_mm; }},
     {.key = "blade.rpm", .unit = "1/min", .label = "Speed", .lo = 1, .hi = 20000,
      .check = kPositive, .decimals = 0, .number = [](S& s) -> double& { return s.blade_rpm; }},

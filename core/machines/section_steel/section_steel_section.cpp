@@ -277,8 +277,13 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
     } grooves[] = {{"end_cut.flanges", s.cut.flanges, s.section.tf_mm},
                    {"end_cut.web", s.cut.web, s.section.tw_mm}};
     for (const auto& g : grooves) {
-        if (g.g.type == GrooveType::None) continue;
         const std::string k = g.key;
+        if (g.g.type == GrooveType::None) {
+            // Unused without a groove, but still a value of the file: within its physics.
+            c.range(k + ".angle_deg", g.g.angle_deg, 0, 90, "deg");
+            c.range(k + ".root_face_mm", g.g.root_face_mm, 0, std::max(0.0, g.thickness), "mm");
+            continue;
+        }
         // ISO 9692-1: bevel angles of V, Y and K preparations lie about 30..60 deg (per side
         // 15..60); the torch tilt is limited by the bevel head.
         c.range(k + ".angle_deg", g.g.angle_deg, 5, 60, "deg");
