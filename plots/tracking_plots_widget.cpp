@@ -263,7 +263,11 @@ struct TrackingPlotsWidget::Impl {
         const int width = std::max(100, self->width() - 24);
         int used = 0, fit = 0;
         for (int i = 0; i < p->legend->itemCount(); ++i) {
-            used += p->legend->item(i)->minimumOuterSizeHint().width() + p->legend->columnSpacing();
+            // The legend's grid keeps empty cells after its graphs are rebuilt (until it is laid
+            // out again): item() is null there.
+            const QCPAbstractLegendItem* item = p->legend->item(i);
+            if (!item) continue;
+            used += item->minimumOuterSizeHint().width() + p->legend->columnSpacing();
             if (used > width) break;
             ++fit;
         }
@@ -292,7 +296,12 @@ struct TrackingPlotsWidget::Impl {
         for (int i = 0; i < static_cast<int>(plots.size()); ++i) {
             QCustomPlot* p = plots[size_t(i)];
             showTitle(i, !tabbed);
-            p->legend->setWrap(legendWrap(p));
+            // setWrap alone leaves the entries in their cells: refill them (the wrap computed
+            // before the first show, at 100 px, kept a saw's three entries one per row).
+            if (const int wrap = legendWrap(p); wrap != p->legend->wrap()) {
+                p->legend->setWrap(wrap);
+                p->legend->setFillOrder(p->legend->fillOrder(), true);
+            }
             p->setVisible(i < shown && (!tabbed || i == tabs->currentIndex()));
         }
         viewChanged = true;

@@ -77,6 +77,8 @@ void MainWindow::showMachineTerms() {
     alarms_->setTerms(terms);
     lamps_->setToolName(toolWord(terms));
     cell_->setToolName(toolWord(terms));
+    // The plots name the job's axes before any plan (an invalid job showed the robot's).
+    if (const MachineUi* ui = machineUiFor(editor_->job())) plots_->setMachine(*ui);
 }
 
 void MainWindow::buildLayout() {

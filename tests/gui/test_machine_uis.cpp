@@ -2,6 +2,7 @@
 // creates that machine's default job with its own form pages, Export menu and plot channels;
 // the robot offers no G-code; the profile cutter plots A in deg and X in mm, each on a plot of
 // its unit, and no Cartesian x/y/z (its tip frame turns with the pipe).
+#include "core/machines/flying_saw/flying_saw_module.h"
 #include "plots/tracking_plots_widget.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
@@ -154,6 +155,31 @@ class TestMachineUis : public QObject {
         QVERIFY2(degPlot >= 0 && mmPlot >= 0, qPrintable(titles.join(" | ")));
         QCOMPARE(plots->plotTraceNames(degPlot), QStringList({plots->axisNames().at(0)}));
         QCOMPARE(plots->plotTraceNames(mmPlot), QStringList({plots->axisNames().at(1)}));
+    }
+
+    // A job whose plan cannot be made (an invalid value) still names its own axes in the plots:
+    // the saw's carriage and feeds, not the robot's A0..J5 (seen in a screenshot, issue 20).
+    void anInvalidJobsPlotsNameItsOwnAxes() {
+        MainWindow w(nullptr);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("saw.json");
+        QFile in(QStringLiteral(CUTCELL_SOURCE_DIR "/resources/jobs/flying_saw_job.json"));
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QByteArray text = in.readAll();
+        text.replace("\"overcut_mm\": 1", "\"overcut_mm\": 15");
+        text.replace("\"wall_mm\": 2", "\"wall_mm\": 29");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(text);
+        out.close();
+        QString why;
+        w.openJob(path, &why);
+        QCOMPARE(w.editor()->job().machine, std::string(cutcell::kFlyingSawId));
+        QVERIFY(w.run()->startBlockedReason().contains("invalid"));
+        const QStringList names = w.plots()->plots()->axisNames();
+        QVERIFY2(names.size() == 4 && names.at(0).contains("carriage"),
+                 qPrintable(names.join(",")));
+        QCOMPARE(w.plots()->plots()->axisUnits(), QStringList({"mm", "deg", "mm", "mm"}));
     }
 
     void robotPlotsSixJointsInDegAndCartesianXyz() {
