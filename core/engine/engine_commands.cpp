@@ -138,9 +138,7 @@ JointVector MotionEngine::Impl::actualPositions() const {
 void MotionEngine::Impl::holdAt(const JointVector& q) {
     traj = TrajectoryKind::Hold;
     hold = q;
-    rate = 0;
-    tau = anchorTau = 0;
-    anchorCycles = 0;
+    moveClock.restart(0, 0);
 }
 
 // ---- transitions -----------------------------------------------------------------------
@@ -151,23 +149,21 @@ void MotionEngine::Impl::disableAll() {
         if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->deactivate();
     enabling = false;
     homed = false;
-    stopping = StopReason::None;
-    holding = false;
+    halt = Halt::None;
     holdAt(actualPositions());
 }
 
-void MotionEngine::Impl::stopDevices(StopCategory category, StopReason reason) {
+void MotionEngine::Impl::stopDevices(StopCategory category, Halt reason) {
     torchCommand = false;
     if (dev.torch) dev.torch->setOn(false); // at once, not at the cycle's write
     torchWritten = false;
-    const bool moving =
-        traj == TrajectoryKind::Source ? !sourceAtRest : traj != TrajectoryKind::Hold && rate > 0;
-    if (category == StopCategory::Cat0 || !moving) {
+    const bool moving = traj == TrajectoryKind::Source
+                            ? !sourceAtRest
+                            : traj == TrajectoryKind::Move && moveClock.rate() > 0;
+    if (category == StopCategory::Cat0 || !moving)
         disableAll();
-    } else {
-        stopping = reason; // decelerate along the path, then disable (advance())
-        holding = true;
-    }
+    else
+        halt = reason; // decelerate along the path, then disable (advance())
 }
 
 void MotionEngine::Impl::endRun(const char* outcome) {
@@ -215,26 +211,15 @@ RunStopPoint MotionEngine::Impl::currentPoint() const {
     if (!program) return p;
     p.valid = true;
     p.elapsed_s = (runActive ? now : runEndTime) - runStartTime;
-    if (isSourceProgram()) {
-        // The source keeps its own count (pieces, strokes); it has no path time to resume from.
-        p.progress = sourceProgress;
-        p.length_mm = program->terms.path_length ? sourceProgress * program->length_mm : 0;
-        p.point_index = sourcePoint;
-        p.point_count =
-            sourcePoints ? sourcePoints : static_cast<std::uint32_t>(program->point_count);
-        p.made = sourceMade;
-        return p;
-    }
-    const bool onPath =
-        traj == TrajectoryKind::Path || phase == RunPhase::Finish || phase == RunPhase::Close;
-    const double t = onPath ? std::min(tau, program->cut_time_s) : startTau;
-    p.path_time_s = t;
-    p.progress = program->cut_time_s > 0 ? t / program->cut_time_s : 0;
-    p.length_mm = p.progress * program->length_mm;
-    p.point_count = static_cast<std::uint32_t>(program->point_count);
-    p.point_index = static_cast<std::uint32_t>(
-        std::min<double>(t / program->spline.dt(), static_cast<double>(program->point_count)));
-    p.made = piercesMade();
+    // A source in time has a path time to resume from; the others keep their own count
+    // (pieces, strokes).
+    p.path_time_s = runProgress.time_s;
+    p.progress = runProgress.progress;
+    p.length_mm = program->terms.path_length ? runProgress.progress * program->length_mm : 0;
+    p.point_index = runProgress.point;
+    p.point_count =
+        runProgress.points ? runProgress.points : static_cast<std::uint32_t>(program->point_count);
+    p.made = runProgress.made;
     return p;
 }
 
@@ -250,8 +235,8 @@ void MotionEngine::Impl::enterEmergencyStop() {
     estopRequestSeen = estopRequestNs.load(std::memory_order_relaxed);
     estopLatencyPending = true;
     const EngineState from = state;
-    stopDevices(cfg.spec.estop_category, StopReason::EmergencyCat1);
-    const bool cat0 = stopping == StopReason::None;
+    stopDevices(cfg.spec.estop_category, Halt::EmergencyCat1);
+    const bool cat0 = !stopping();
     setState(EngineState::EmergencyStop, EventKind::Transition,
              "Emergency stop (%s, from %s): %s off, drives %s", toString(cfg.spec.estop_category),
              toString(from), toolName(),
@@ -267,7 +252,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
     va_end(ap);
     if (latched(state)) {
         // A second fault during a controlled stop: no more waiting, torque off now.
-        const bool wasStopping = stopping != StopReason::None;
+        const bool wasStopping = stopping();
         disableAll();
         if (wasStopping)
             emitf(EventKind::Fault, Severity::Error, state, state,
@@ -279,7 +264,7 @@ void MotionEngine::Impl::enterFault(const char* fmt, ...) {
     captureStop();
     const StopCategory category = faultCat0 ? StopCategory::Cat0 : cfg.spec.estop_category;
     faultCat0 = false;
-    stopDevices(category, StopReason::FaultCat1);
+    stopDevices(category, Halt::FaultCat1);
     char outcome[120];
     snprintfC(outcome, sizeof outcome, "fault: %.110s", reason);
     setState(EngineState::Fault, EventKind::Fault, "Fault: %s; %s off, %s stop", reason, toolName(),
@@ -293,11 +278,8 @@ void MotionEngine::Impl::beginMove(const JointVector& target, EngineState moveSt
         limit[i] = speedLimit(i);
     move = JointMove::make(setpoint, target, limit);
     traj = TrajectoryKind::Move;
-    tau = anchorTau = 0;
-    anchorCycles = 0;
-    rate = 1;
-    holding = false;
-    stopping = StopReason::None;
+    moveClock.restart(0, 1);
+    halt = Halt::None;
     if (moveState == state) return;
     // The speed limits in the units of the axes the program has (deg/s rotary, mm/s linear).
     bool rotary = false, linear = false;
@@ -327,8 +309,6 @@ void MotionEngine::Impl::beginCut() {
                         std::memory_order_release);
     samples = 0;
     supervisionNotes.fill(0);
-    pathDone = false;
-    pathStarted = false;
     stats = TrackingStats(program->tip_model.get());
     cruise = TrackingStats(program->tip_model.get());
     // A recovered cut covers the rest of the path: its minimum span shrinks by what it skips.
@@ -347,9 +327,13 @@ void MotionEngine::Impl::beginCut() {
               program->length_mm, program->cut_time_s);
     sourceStarted = false;
     sourceAtRest = false;
-    sourceProgress = 0;
-    sourcePoint = sourceMade = 0;
-    sourcePoints = static_cast<std::uint32_t>(program->point_count);
+    // Before its source runs, the run is where it will start.
+    splineSource.setStartTime(startTau);
+    runProgress = RunProgress{};
+    if (program->source)
+        runProgress.points = static_cast<std::uint32_t>(program->point_count);
+    else
+        runProgress.take(splineSource.progressAtStart(overrideTarget));
     if (program->source_kind == MotionSourceKind::ControlLaw) {
         // A control law starts from where its axes are: no approach.
         setState(EngineState::Running, EventKind::Transition, "Start: control law");
@@ -409,6 +393,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
                               p->min_position[i], p->max_position[i]);
         }
         program = p;
+        splineSource.bind(p->source ? nullptr : p, cfg.spec.feed_hold_decel_s);
         currentProgramSeq.store(c.seq, std::memory_order_release);
         // In the run's own terms (whole phrases, so that the GUI translates them): a torch
         // path's points and length, the pieces and the length they add up to, the strokes.
@@ -486,7 +471,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         if (inMotion(s)) return refuse(c.type, "motion in progress (%s)", toString(s));
         if (!homed) return refuse(c.type, "not homed (Home first)");
         if (c.value != 0) {
-            if (isSourceProgram())
+            if (!source()->resumesInTime())
                 return refuse(c.type,
                               "cut recovery needs a path in time; this machine's motion "
                               "follows a %s source",
@@ -500,10 +485,10 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         return beginCut();
     case CommandType::FeedHold:
         if (s != EngineState::Running) return refuse(c.type, "not running (state %s)", toString(s));
-        if (stopping != StopReason::None) return refuse(c.type, "a stop is in progress");
-        if (holding) return refuse(c.type, "already holding");
-        holding = true;
-        if (isSourceProgram())
+        if (stopping()) return refuse(c.type, "a stop is in progress");
+        if (halt == Halt::FeedHold) return refuse(c.type, "already holding");
+        halt = Halt::FeedHold;
+        if (program->source)
             return note("Feed hold: %s (%s)",
                         program->source_kind == MotionSourceKind::MasterAxis
                             ? "finishing the cut, returning, then no more waiting for the line"
@@ -514,17 +499,18 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
                     torchCommand ? "stays on" : "off");
     case CommandType::Resume:
         if (s == EngineState::Paused) {
-            holding = false;
+            if (stopping()) return refuse(c.type, "a stop is in progress");
+            halt = Halt::None;
             // The torch went out on hold: it is lit again before the path moves (RunPhase::Ignite).
             if (phase == RunPhase::Cut && !torchCommand) {
                 phase = RunPhase::Ignite;
                 phaseSince = now;
             }
             return setState(EngineState::Running, EventKind::Transition,
-                            "Resume at path time %.3f s", tau);
+                            "Resume at path time %.3f s", runProgress.time_s);
         }
-        if (s == EngineState::Running && holding && stopping == StopReason::None) {
-            holding = false;
+        if (s == EngineState::Running && halt == Halt::FeedHold) {
+            halt = Halt::None;
             // A torch that went out on hold is lit again (and its arc awaited) before speed-up.
             if (phase == RunPhase::Cut && !torchCommand) {
                 phase = RunPhase::Ignite;
@@ -541,9 +527,8 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
     case CommandType::Abort:
         if (latched(s)) return refuse(c.type, "%s", latchedReason(s));
         if (!inMotion(s)) return refuse(c.type, "nothing to abort (state %s)", toString(s));
-        if (stopping == StopReason::Abort) return refuse(c.type, "already aborting");
-        stopping = StopReason::Abort;
-        holding = true;
+        if (halt == Halt::Abort) return refuse(c.type, "already aborting");
+        halt = Halt::Abort;
         torchCommand = false;
         return note("Abort: %s off, stopping along the path", toolName());
     case CommandType::EmergencyStop:
@@ -560,8 +545,7 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         if (!latched(s)) return refuse(c.type, "nothing to reset (state %s)", toString(s));
         if (estopPressed.load(std::memory_order_acquire))
             return refuse(c.type, "the emergency stop is still pressed (release it first)");
-        if (stopping != StopReason::None)
-            return refuse(c.type, "the controlled stop is still in progress");
+        if (stopping()) return refuse(c.type, "the controlled stop is still in progress");
         for (int i = 0; i < kMaxAxes; ++i)
             if (axisPresent(i)) dev.axes[static_cast<size_t>(i)]->faultReset();
         estopLatched = false;

@@ -4,8 +4,10 @@
 // writes them; cross-thread members are atomics or lock-free rings.
 #include "core/engine/cycle_clock.h"
 #include "core/engine/joint_move.h"
+#include "core/engine/joint_spline_source.h"
 #include "core/engine/motion_engine.h"
 #include "core/engine/mpsc_queue.h"
+#include "core/engine/path_clock.h"
 #include "core/engine/realtime_thread.h"
 #include "core/engine/run_log.h"
 #include "core/engine/spsc_ring.h"
@@ -29,13 +31,32 @@ struct EngineCommand {
     std::uint64_t seq = 0;                  // Load: the program's hand-over number
 };
 
-// What the engine is moving along (Hold, Move and Path are time-scaled by the path rate; Source
-// is the program's motion source, which keeps its own time).
-enum class TrajectoryKind : std::uint8_t { Hold, Move, Path, Source };
+// What the set-point follows: a hold, the engine's own move (home, jog, approach; time-scaled
+// by the move clock's rate) or the program's motion source (which keeps its own time).
+enum class TrajectoryKind : std::uint8_t { Hold, Move, Source };
 // Steps of a Running job.
 enum class RunPhase : std::uint8_t { Approach, Settle, Ignite, Pierce, Cut, Finish, Close };
-// Why the path rate is being brought to zero.
-enum class StopReason : std::uint8_t { None, Abort, EmergencyCat1, FaultCat1 };
+// Why the motion is being brought to rest: a feed hold (Paused once at rest), an abort (Ready)
+// or a category-1 stop (drives disabled). One state, so no hold can be cleared while a stop
+// goes on.
+enum class Halt : std::uint8_t { None, FeedHold, Abort, EmergencyCat1, FaultCat1 };
+
+// Where the run is, as its motion source last said (or, before the source runs, where it
+// will start): the stop point, the telemetry's progress and the messages use it.
+struct RunProgress {
+    double time_s = 0;      // path time (sources in time only)
+    double progress = 0;    // 0..1
+    double remaining_s = 0; // at the current rate; 0 if not known
+    std::uint32_t point = 0, points = 0, made = 0;
+    void take(const SourceOutput& o) {
+        time_s = o.program_time_s;
+        progress = o.progress;
+        remaining_s = o.remaining_s;
+        point = o.point_index;
+        points = o.point_count;
+        made = o.made;
+    }
+};
 
 // The figures of the last finished run, published by the cycle (double buffer + generation).
 struct RunResult {
@@ -118,20 +139,19 @@ struct MotionEngine::Impl {
     bool homed = false;
     bool torchCommand = false;
     double overrideTarget = 1;
-    bool holding = false;
-    StopReason stopping = StopReason::None;
+    Halt halt = Halt::None;
+    // A controlled stop (abort, category 1) is bringing the motion to rest.
+    bool stopping() const { return halt >= Halt::Abort; }
     bool estopLatched = false; // the request was taken (until Reset)
     bool estopLatencyPending = false;
     std::int64_t estopRequestSeen = 0;
     // trajectory
     TrajectoryKind traj = TrajectoryKind::Hold;
     JointMove move;
+    PathClock moveClock; // the move's time (feed hold and abort ramp its rate too)
     JointVector hold = JointVector::Zero();
-    double tau = 0, rate = 0, anchorTau = 0;
-    double startTau = 0;      // path time the current run starts at (cut recovery: > 0)
-    bool pathStarted = false; // the path moved in this run (pierce only before that)
-    std::uint64_t anchorCycles = 0;
-    bool rateChanged = false;
+    double startTau = 0;            // path time the current run starts at (cut recovery: > 0)
+    JointSplineSource splineSource; // the source of JointSpline programs (bound at Load)
     JointVector setpoint = JointVector::Zero();
     // The set-points of the last kSetpointHistory cycles (index cycle % size): a feedback that
     // came age_cycles late is compared with the set-point of its own cycle. 128 cycles cover
@@ -141,14 +161,13 @@ struct MotionEngine::Impl {
     static constexpr int kSetpointHistory = 128;
     std::array<JointVector, kSetpointHistory> setpointHistory{};
     JointVector setpointVel = JointVector::Zero();
-    JointVector setpointAcc = JointVector::Zero(); // of the path or move; 0 from a source
+    JointVector setpointAcc = JointVector::Zero(); // of the move or the source
     // run
     RunPhase phase = RunPhase::Approach;
     std::uint32_t runId = 0;
     double phaseSince = 0, cutStartTime = 0, runStartTime = 0, runEndTime = 0;
     int settleCount = 0;
     long samples = 0, minRunSteps = 0;
-    bool pathDone = false;
     bool runActive = false;
     bool torchWritten = false;
     TrackingStats stats{static_cast<const TipModel*>(nullptr)};
@@ -158,15 +177,13 @@ struct MotionEngine::Impl {
     std::uint64_t tipsCycle = ~std::uint64_t{0};
     const TipModel* tipsModel = nullptr;
     const TipSample& tipsThisCycle(const TipModel* model);
-    // motion source (MasterAxis / ControlLaw programs)
+    // the program's motion source
     SourceOutput srcOut{};
     bool sourceRan = false;     // update() ran this cycle (srcOut is this cycle's)
     bool sourceStarted = false; // start() ran for the current run
     bool sourceAtRest = false;
-    // The source's progress of the last cycle it ran (srcOut is cleared every cycle): the
-    // stop point of a source program.
-    double sourceProgress = 0;
-    std::uint32_t sourcePoint = 0, sourcePoints = 0, sourceMade = 0;
+    // The run's progress as the source last gave it (srcOut is cleared every cycle).
+    RunProgress runProgress;
     bool faultCat0 = false; // the next fault removes torque at once (control laws)
     // supervision
     std::array<double, kMaxAxes> lastSensed{}, travelSinceChange{};
@@ -177,38 +194,40 @@ struct MotionEngine::Impl {
     std::array<std::uint8_t, kMaxAxes> supervisionNotes{};
     bool arcWasOk = false;
 
-    // cycle.cpp
+    // engine_cycle.cpp: the cycle's order, the devices, the set-point and the source
     void runCycle();
     void readDevices();
-    void checkEmergencyStop();
-    void checkEstopComplete();
-    void superviseDevices();
+    void computeSetpoint();
+    void runSource();
+    SourceInput sourceInput() const;
+    SourceRequest sourceRequest() const;
+    void writeDevices();
+    void stepMoveTime();
+    // engine_sequencing.cpp: the state machine's step
     void advance();
     void stepRunning();
-    void updateRate();
-    void computeSetpoint();
+    void startSource(bool pierced); // the program's motion begins (or resumes) in RunPhase::Cut
+    bool restReached() const;       // the move's rate or the source is at rest
+    // engine_supervision.cpp
+    void checkEmergencyStop();
+    void checkEstopComplete();
     void superviseEnabling();
+    void superviseDevices();
+    // engine_telemetry.cpp
     void track();
-    void writeDevices();
     void publishTelemetry();
-    void stepPathTime();
-    void runSource();
-    SourceRequest sourceRequest() const;
-    bool restReached() const; // the rate (spline, moves) or the source is at rest
 
-    // commands.cpp
+    // engine_commands.cpp: commands and transitions
     void processCommands();
     void handle(const EngineCommand& c);
     void refuse(CommandType c, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
     void enterEmergencyStop();
     void enterFault(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-    void stopDevices(StopCategory category, StopReason reason);
+    void stopDevices(StopCategory category, Halt reason);
     void disableAll();
     void endRun(const char* outcome);
     // Notes where the current run is on its path, before a stop resets the trajectory.
     void captureStop();
-    // A path program pierces once, where its path starts (or resumes, for a recovery).
-    std::uint32_t piercesMade() const { return pathStarted ? 1 : 0; }
     // Where the current run is now (path time or the source's count) and what it has made.
     RunStopPoint currentPoint() const;
     RunStopPoint stopPoint;
@@ -242,17 +261,21 @@ struct MotionEngine::Impl {
     void emitf(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt, ...)
         __attribute__((format(printf, 6, 7)));
     void note(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-    JointSample evaluate(double t) const;
+    JointSample evaluate() const;
     JointVector startPosition() const; // where the approach goes
-    void startPath();                  // the path starts moving at startTau
     AxisCommandMode mode(int i) const {
         return program && i < program->axis_count ? program->axis_modes[static_cast<size_t>(i)]
                                                   : AxisCommandMode::Position;
     }
-    bool isSourceProgram() const {
-        return program && program->source_kind != MotionSourceKind::JointSpline;
+    // The program's motion source: its own (MasterAxis, ControlLaw) or the spline's.
+    MotionSource* source() {
+        return program && program->source ? program->source.get() : &splineSource;
     }
-    double trajectoryDuration() const;
+    const MotionSource* source() const {
+        return program && program->source ? program->source.get() : &splineSource;
+    }
+    // The run's motion has come to its end (the source said Done).
+    bool finished() const { return phase == RunPhase::Finish || phase == RunPhase::Close; }
     void holdAt(const JointVector& q);
     JointVector actualPositions() const;
     // Axis i's set-point of the cycle its feedback was sampled in (this cycle's when the

@@ -31,11 +31,13 @@
 //    category 1 stops along the path first, then disables. Both latch; Reset clears a fault,
 //    and an emergency stop only after releaseEmergencyStop(). Drives are "not homed" again.
 //
-// Motion sources (MotionProgram::source_kind). Axes have a unit (rotary rad / linear mm) and a
+// Motion sources (MotionProgram::source_kind): every program runs through one, the same way
+// through the cycle (runSource). Axes have a unit (rotary rad / linear mm) and a
 // command mode (CSP / CSV / CST) fixed before Load; Load refuses drives in another mode. Every
 // cycle writes each present axis in its mode; axes not driven get position = hold, velocity 0,
 // torque 0. Home, jog and the approach are set-point moves (above) for every source.
-//  (1) JointSpline: everything above, unchanged.
+//  (1) JointSpline (JointSplineSource, the engine's own source of such programs): everything
+//      above; the only source a run can start part-way on (cut recovery from a path time).
 //  (2) MasterAxis (MasterFollower: gear / cam to a line encoder, MC_GearInPos / MC_CamIn):
 //      Start = approach to start_position, settle, tool on and process OK (saw at speed), then
 //      the source runs each cycle until its cuts are done (Completed).

@@ -1,7 +1,8 @@
 #pragma once
 // A motion source: what a machine's program runs in the engine cycle instead of the joint
 // spline in time. One update(input, output) per cycle (Ruckig style), called on the engine
-// thread only; it must not allocate, lock or block. Two kinds besides the spline:
+// thread only; it must not allocate, lock or block. Three kinds:
+//   - JointSplineSource (core/engine/joint_spline_source.h): the joint spline in path time.
 //   - MasterFollower (core/engine/master_follower.h): axes geared or cammed to a master axis
 //     that the engine does not drive (a line encoder); PLCopen MC_GearInPos / MC_CamIn.
 //   - ControlLawSource (core/engine/control_law.h): a machine's control law that reads the
@@ -51,6 +52,8 @@ struct SourceInput {
     SourceRequest request = SourceRequest::Run;
     double override_fraction = 1;
     bool tool_ok = false; // the process tool reports "process OK"
+    // The job keeps the tool on while a feed hold holds the axes (EngineSpec).
+    bool tool_on_during_feed_hold = false;
 };
 
 struct SourceOutput {
@@ -59,6 +62,9 @@ struct SourceOutput {
     JointVector position = JointVector::Zero();
     JointVector velocity = JointVector::Zero();
     JointVector torque = JointVector::Zero(); // CST command (N m or N)
+    // The set-point's acceleration where the source knows it (the spline: the position command
+    // leads by it); 0 otherwise.
+    JointVector acceleration = JointVector::Zero();
     // Following-error supervision of each axis this cycle; a source turns it off only where
     // no position reference exists (open-loop torque), and says why.
     std::array<bool, kMaxAxes> supervised{true, true, true, true, true, true, true, true};
@@ -67,6 +73,8 @@ struct SourceOutput {
     SourceStatus status = SourceStatus::Working;
     const char* fault = "";     // static text when status == Fault
     double progress = 0;        // 0..1 of the program
+    double program_time_s = 0;  // a source in time (resumesInTime()): the path time of the sample
+    double remaining_s = 0;     // ... and the time left at the current rate (0: not known)
     double master_position = 0; // MasterAxis: the filtered master (telemetry)
     std::uint32_t point_index = 0, point_count = 0;
     // Units of work finished so far (pieces cut, strokes made; MotionProgram::terms).
@@ -82,6 +90,8 @@ class MotionSource {
     virtual void update(const SourceInput& in, SourceOutput& out) = 0;
     // A short name of the source's inner state for events and telemetry ("in sync").
     virtual const char* stateName() const = 0;
+    // Whether a run can start part-way, at a path time (cut recovery): the spline only.
+    virtual bool resumesInTime() const { return false; }
 };
 
 } // namespace cutcell
