@@ -2,6 +2,7 @@
 
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
+#include "core/job/drive_fields.h"
 #include "core/job/issue_checker.h"
 #include "core/machine/pipe_joint_section.h"
 #include "core/machines/pipe_robot/cut_simulation.h"
@@ -16,25 +17,14 @@ namespace {
 
 const CutKeys kCutKeys{};
 
-template <typename T, typename F>
-void readTable(SectionReader& parent, const std::string& k, std::array<T, kAxisCount>& out,
-               F readRow) {
-    const json::Value* m = parent.get(k);
-    if (!m)
-        throw JobError("missing required key " + parent.key(k) + " (" + std::to_string(kAxisCount) +
-                       " rows: axis 0 = chuck, 1..5 = arm)");
-    if (!m->isArray())
-        throw JobError(parent.key(k) + " must be an array of " + std::to_string(kAxisCount) +
-                       " rows (axis 0 = chuck, 1..5 = arm), found " + m->typeName());
-    const auto& arr = m->asArray();
-    if (arr.size() != kAxisCount)
-        throw JobError(parent.key(k) + " has " + std::to_string(arr.size()) + " rows; it needs " +
-                       std::to_string(kAxisCount) + " (axis 0 = chuck, 1..5 = arm)");
-    for (size_t i = 0; i < arr.size(); ++i) {
-        SectionReader row(arr[i], parent.key(k) + "[" + std::to_string(i) + "]");
-        out[i] = readRow(row);
-        row.finish();
-    }
+// The robot's arrays have a row per axis.
+constexpr const char* kRowsAre = "axis 0 = chuck, 1..5 = arm";
+
+template <class Row>
+void readAxisRows(SectionReader& parent, const std::string& leaf,
+                  std::span<const RowField<Row>> table, std::array<Row, kAxisCount>& out) {
+    readRows(requiredRows(parent, leaf, kAxisCount, kRowsAre), parent.key(leaf), table,
+             std::span<Row>(out));
 }
 
 const char* const kAxisNames[kAxisCount] = {"chuck (theta0)", "theta1", "theta2",
@@ -78,34 +68,11 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
         CutMethod::RotatingPipe);
     if (m.has("robot")) {
         SectionReader robot = m.child("robot");
-        if (robot.has("dh"))
-            readTable(robot, "dh", spec.dh, [](SectionReader& row) {
-                DhRow d;
-                d.alpha_deg = row.number("alpha_deg", "deg");
-                d.a_mm = row.number("a_mm", "mm");
-                d.d_mm = row.number("d_mm", "mm");
-                d.theta_offset_deg = row.number("theta_offset_deg", "deg", 0);
-                d.min_deg = row.number("min_deg", "deg");
-                d.max_deg = row.number("max_deg", "deg");
-                return d;
-            });
+        if (robot.has("dh")) readAxisRows(robot, "dh", dhRowFields(), spec.dh);
         robot.finish();
     }
-    readTable(m, "controller", spec.controller, [](SectionReader& row) {
-        PidGains g;
-        g.kp = row.number("kp_nm_per_rad", "N m/rad");
-        g.ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
-        g.kd = row.number("kd_nm_s_per_rad", "N m s/rad");
-        g.tau_f = row.number("tau_f_s", "s");
-        return g;
-    });
-    readTable(m, "plant", spec.plant, [](SectionReader& row) {
-        JointPlantParams p;
-        p.inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
-        p.viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
-        p.torque_limit_nm = row.number("torque_limit_nm", "N m");
-        return p;
-    });
+    readAxisRows(m, "controller", pidGainFields(), spec.controller);
+    readAxisRows(m, "plant", jointPlantFields(), spec.plant);
     m.finish();
     job.machine_spec.set(std::move(spec));
 }
@@ -115,26 +82,9 @@ json::Value PipeRobotModule::writeSection(const Job& job) const {
     json::Object s{{"kind", id()}};
     writePipeJoint(job, s, kCutKeys);
     s.emplace_back("method", toString(spec.method));
-    json::Array dh, ctrl, plant;
-    for (const auto& d : spec.dh)
-        dh.emplace_back(json::Object{{"alpha_deg", d.alpha_deg},
-                                     {"a_mm", d.a_mm},
-                                     {"d_mm", d.d_mm},
-                                     {"theta_offset_deg", d.theta_offset_deg},
-                                     {"min_deg", d.min_deg},
-                                     {"max_deg", d.max_deg}});
-    for (const auto& g : spec.controller)
-        ctrl.emplace_back(json::Object{{"kp_nm_per_rad", g.kp},
-                                       {"ki_nm_per_rad_s", g.ki},
-                                       {"kd_nm_s_per_rad", g.kd},
-                                       {"tau_f_s", g.tau_f}});
-    for (const auto& p : spec.plant)
-        plant.emplace_back(json::Object{{"inertia_kg_m2", p.inertia_kg_m2},
-                                        {"viscous_nm_s_per_rad", p.viscous_nm_s_per_rad},
-                                        {"torque_limit_nm", p.torque_limit_nm}});
-    s.emplace_back("robot", json::Object{{"dh", dh}});
-    s.emplace_back("controller", ctrl);
-    s.emplace_back("plant", plant);
+    s.emplace_back("robot", json::Object{{"dh", writeRows<DhRow>(dhRowFields(), spec.dh)}});
+    s.emplace_back("controller", writeRows<PidGains>(pidGainFields(), spec.controller));
+    s.emplace_back("plant", writeRows<JointPlantParams>(jointPlantFields(), spec.plant));
     return s;
 }
 
@@ -151,13 +101,8 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     checkPipeJoint(c, job, kCutKeys);
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& d = spec.dh[static_cast<size_t>(i)];
-        const std::string k = "robot.dh[" + std::to_string(i) + "]";
-        c.range(k + ".alpha_deg", d.alpha_deg, -360, 360, "deg");
-        c.range(k + ".a_mm", d.a_mm, -5000, 5000, "mm");
-        c.range(k + ".d_mm", d.d_mm, -5000, 5000, "mm");
-        c.range(k + ".theta_offset_deg", d.theta_offset_deg, -360, 360, "deg");
-        c.range(k + ".min_deg", d.min_deg, -360, 360, "deg");
-        c.range(k + ".max_deg", d.max_deg, -360, 360, "deg");
+        const std::string k = rowKey("robot.dh", static_cast<size_t>(i));
+        checkRow(c, dhRowFields(), k, d);
         if (d.min_deg >= d.max_deg)
             c.add(k + ".min_deg", messageC("robot.dh[%d].min_deg = %.6g deg must be below "
                                            "robot.dh[%d].max_deg = %.6g deg",
@@ -203,20 +148,13 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
         c.add("robot.dh[2].a_mm",
               messageC("robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"));
 
-    // Physical ranges of the drives: far beyond any joint of a cutting robot, but finite, so
-    // the discretised controller and plant stay finite numbers.
+    // The drives' physical ranges (core/job/drive_fields.h), axis by axis.
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& g = spec.controller[static_cast<size_t>(i)];
-        const std::string k = "controller[" + std::to_string(i) + "]";
-        c.range(k + ".kp_nm_per_rad", g.kp, 0, 1e6, "N m/rad");
-        c.range(k + ".ki_nm_per_rad_s", g.ki, 0, 1e8, "N m/(rad s)");
-        c.range(k + ".kd_nm_s_per_rad", g.kd, 0, 1e5, "N m s/rad");
-        c.positive(k + ".tau_f_s", g.tau_f, 1e-5, 1, "s");
-        const auto& p = spec.plant[static_cast<size_t>(i)];
-        const std::string pk = "plant[" + std::to_string(i) + "]";
-        c.positive(pk + ".inertia_kg_m2", p.inertia_kg_m2, 1e-5, 1e4, "kg m^2");
-        c.range(pk + ".viscous_nm_s_per_rad", p.viscous_nm_s_per_rad, 0, 1e5, "N m s/rad");
-        c.positive(pk + ".torque_limit_nm", p.torque_limit_nm, 1e-3, 1e5, "N m");
+        const std::string k = rowKey("controller", static_cast<size_t>(i));
+        checkRow(c, pidGainFields(), k, g);
+        checkRow(c, jointPlantFields(), rowKey("plant", static_cast<size_t>(i)),
+                 spec.plant[static_cast<size_t>(i)]);
         // The filter time constant must be resolvable at the control period.
         if (g.tau_f > 0 && job.sim.period_s > 0 && g.tau_f < job.sim.period_s / 2)
             c.add(k + ".tau_f_s", messageC("controller[%d].tau_f_s = %.6g s must be >= half the "

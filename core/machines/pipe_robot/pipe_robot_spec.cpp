@@ -1,6 +1,29 @@
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 
 namespace cutcell {
+namespace {
+
+constexpr FieldCheck kRange = FieldCheck::Range;
+
+// clang-format off
+const RowField<DhRow> kDhFields[] = {
+    {.key = "alpha_deg", .unit = "deg", .label = "alpha", .lo = -360, .hi = 360, .check = kRange,
+     .decimals = 1, .number = [](DhRow& r) -> double& { return r.alpha_deg; }},
+    {.key = "a_mm", .unit = "mm", .label = "a", .lo = -5000, .hi = 5000, .check = kRange,
+     .decimals = 1, .number = [](DhRow& r) -> double& { return r.a_mm; }},
+    {.key = "d_mm", .unit = "mm", .label = "d", .lo = -5000, .hi = 5000, .check = kRange,
+     .decimals = 1, .number = [](DhRow& r) -> double& { return r.d_mm; }},
+    {.key = "theta_offset_deg", .unit = "deg", .label = "offset", .lo = -360, .hi = 360,
+     .check = kRange, .decimals = 1,
+     .number = [](DhRow& r) -> double& { return r.theta_offset_deg; }, .absent = 0},
+    {.key = "min_deg", .unit = "deg", .label = "min", .lo = -360, .hi = 360, .check = kRange,
+     .decimals = 1, .number = [](DhRow& r) -> double& { return r.min_deg; }},
+    {.key = "max_deg", .unit = "deg", .label = "max", .lo = -360, .hi = 360, .check = kRange,
+     .decimals = 1, .number = [](DhRow& r) -> double& { return r.max_deg; }},
+};
+// clang-format on
+
+} // namespace
 
 const char* toString(CutMethod m) {
     return m == CutMethod::StaticPipe ? "static_pipe" : "rotating_pipe";
@@ -14,6 +37,10 @@ std::array<DhRow, kAxisCount> seedDhTable() {
              {0, 120, 0, 0, -90, 90},
              {90, 50, 0, 0, -145, 90},
              {0, 0, 210, 0, -180, 180}}};
+}
+
+std::span<const RowField<DhRow>> dhRowFields() {
+    return kDhFields;
 }
 
 const PipeRobotSpec& pipeRobotSpec(const Job& job) {

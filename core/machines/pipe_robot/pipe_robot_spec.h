@@ -6,8 +6,10 @@
 // core/machine/pipe_joint_section.h.
 #include "core/job/job.h"
 #include "core/job/machine_spec.h"
+#include "core/job/row_table.h"
 
 #include <array>
+#include <span>
 
 namespace cutcell {
 
@@ -32,6 +34,9 @@ struct DhRow {
 
 // The seed's Table 1 (row 0 = chuck with d0, rows 1..5 = the arm).
 std::array<DhRow, kAxisCount> seedDhTable();
+// The keys of a robot.dh[] row, in the file's order (the physical ranges; min below max, the
+// reference 0 deg and the arm's structure are checked by the module's validate()).
+std::span<const RowField<DhRow>> dhRowFields();
 
 struct PipeRobotSpec : MachineSpecOf<PipeRobotSpec> {
     CutMethod method = CutMethod::RotatingPipe;

@@ -1,5 +1,6 @@
 #include "core/machines/section_steel/section_steel_section.h"
 
+#include "core/job/drive_fields.h"
 #include "core/job/field_table.h"
 
 #include "core/machines/section_steel/end_cut_path.h"
@@ -24,6 +25,18 @@ int readSetup(SectionReader& c) {
     return static_cast<int>(x);
 }
 
+// The keys of a limits_deg[] row (min below max and the park position within: checkSteelSpec()).
+// clang-format off
+const RowField<ArmJointLimit> kLimitFields[] = {
+    {.key = "min_deg", .unit = "deg", .label = "min", .lo = -360, .hi = 360,
+     .check = FieldCheck::Range, .decimals = 1,
+     .number = [](ArmJointLimit& l) -> double& { return l.min_deg; }},
+    {.key = "max_deg", .unit = "deg", .label = "max", .lo = -360, .hi = 360,
+     .check = FieldCheck::Range, .decimals = 1,
+     .number = [](ArmJointLimit& l) -> double& { return l.max_deg; }},
+};
+// clang-format on
+
 template <size_t N>
 void readLimits(SectionReader& parent, const std::array<ArmJointLimit, N>& fallback,
                 std::array<ArmJointLimit, N>& out) {
@@ -34,19 +47,11 @@ void readLimits(SectionReader& parent, const std::array<ArmJointLimit, N>& fallb
     if (!v->isArray() || v->asArray().size() != N)
         throw JobError(k + " must be an array of " + std::to_string(N) +
                        " objects {min_deg, max_deg}, one per joint");
-    for (size_t i = 0; i < N; ++i) {
-        SectionReader row(v->asArray()[i], k + "[" + std::to_string(i) + "]");
-        out[i].min_deg = row.number("min_deg", "deg");
-        out[i].max_deg = row.number("max_deg", "deg");
-        row.finish();
-    }
+    readRows<ArmJointLimit>(v->asArray(), k, kLimitFields, out);
 }
 
 template <size_t N> json::Array writeLimits(const std::array<ArmJointLimit, N>& l) {
-    json::Array a;
-    for (const auto& j : l)
-        a.emplace_back(json::Object{{"min_deg", j.min_deg}, {"max_deg", j.max_deg}});
-    return a;
+    return writeRows<ArmJointLimit>(kLimitFields, l);
 }
 
 template <size_t N>
@@ -80,28 +85,22 @@ void readDrives(SectionReader& m, const std::string& leaf, SectionSteelSpec& s) 
     if (!v->isArray() || v->asArray().size() != kSteelAxes)
         throw JobError(k + " must be an array of 8 rows (axes 0..2 path arm, 3..7 groove arm)");
     for (size_t i = 0; i < kSteelAxes; ++i) {
-        SectionReader row(v->asArray()[i], k + "[" + std::to_string(i) + "]");
-        s.controller[i].kp = row.number("kp_nm_per_rad", "N m/rad");
-        s.controller[i].ki = row.number("ki_nm_per_rad_s", "N m/(rad s)");
-        s.controller[i].kd = row.number("kd_nm_s_per_rad", "N m s/rad");
-        s.controller[i].tau_f = row.number("tau_f_s", "s");
-        s.plant[i].inertia_kg_m2 = row.number("inertia_kg_m2", "kg m^2");
-        s.plant[i].viscous_nm_s_per_rad = row.number("viscous_nm_s_per_rad", "N m s/rad");
-        s.plant[i].torque_limit_nm = row.number("torque_limit_nm", "N m");
+        SectionReader row(v->asArray()[i], rowKey(k, i));
+        readRowFields(row, pidGainFields(), s.controller[i]);
+        readRowFields(row, jointPlantFields(), s.plant[i]);
         row.finish();
     }
 }
 
+// A drive's row holds its PID's keys, then its plant's.
 json::Value writeDrives(const SectionSteelSpec& s) {
     json::Array drives;
-    for (size_t i = 0; i < kSteelAxes; ++i)
-        drives.emplace_back(json::Object{{"kp_nm_per_rad", s.controller[i].kp},
-                                         {"ki_nm_per_rad_s", s.controller[i].ki},
-                                         {"kd_nm_s_per_rad", s.controller[i].kd},
-                                         {"tau_f_s", s.controller[i].tau_f},
-                                         {"inertia_kg_m2", s.plant[i].inertia_kg_m2},
-                                         {"viscous_nm_s_per_rad", s.plant[i].viscous_nm_s_per_rad},
-                                         {"torque_limit_nm", s.plant[i].torque_limit_nm}});
+    for (size_t i = 0; i < kSteelAxes; ++i) {
+        json::Object row;
+        writeRowFields(pidGainFields(), s.controller[i], row);
+        writeRowFields(jointPlantFields(), s.plant[i], row);
+        drives.emplace_back(std::move(row));
+    }
     return drives;
 }
 
@@ -304,9 +303,8 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
                    "mm");
     auto limits = [&](const std::string& arm, const ArmJointLimit* l, size_t n, size_t axis0) {
         for (size_t i = 0; i < n; ++i) {
-            const std::string k = arm + ".limits_deg[" + std::to_string(i) + "]";
-            c.range(k + ".min_deg", l[i].min_deg, -360, 360, "deg");
-            c.range(k + ".max_deg", l[i].max_deg, -360, 360, "deg");
+            const std::string k = rowKey(arm + ".limits_deg", i);
+            checkRow<ArmJointLimit>(c, kLimitFields, k, l[i]);
             if (!(l[i].min_deg < l[i].max_deg))
                 c.add(k + ".min_deg", messageC("%s.min_deg = %.6g deg must be below max_deg = "
                                                "%.6g deg",
@@ -321,20 +319,14 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
     limits("path_arm", s.path_limits.data(), 3, 0);
     limits("groove_arm", s.groove_limits.data(), 5, 3);
     for (size_t i = 0; i < kSteelAxes; ++i) {
-        const std::string k = "drives[" + std::to_string(i) + "]";
+        const std::string k = rowKey("drives", i);
         const auto& g = s.controller[i];
-        const auto& p = s.plant[i];
-        c.range(k + ".kp_nm_per_rad", g.kp, 0, 1e6, "N m/rad");
-        c.range(k + ".ki_nm_per_rad_s", g.ki, 0, 1e8, "N m/(rad s)");
-        c.range(k + ".kd_nm_s_per_rad", g.kd, 0, 1e5, "N m s/rad");
-        c.positive(k + ".tau_f_s", g.tau_f, 1e-5, 1, "s");
+        checkRow(c, pidGainFields(), k, g);
         if (g.tau_f > 0 && periodS > 0 && g.tau_f < periodS / 2)
             c.add(k + ".tau_f_s", messageC("drives[%zu].tau_f_s = %.6g s must be >= half the "
                                            "control period (%.6g s)",
                                            i, g.tau_f, periodS / 2));
-        c.positive(k + ".inertia_kg_m2", p.inertia_kg_m2, 1e-5, 1e4, "kg m^2");
-        c.range(k + ".viscous_nm_s_per_rad", p.viscous_nm_s_per_rad, 0, 1e5, "N m s/rad");
-        c.positive(k + ".torque_limit_nm", p.torque_limit_nm, 1e-3, 1e5, "N m");
+        checkRow(c, jointPlantFields(), k, s.plant[i]);
     }
 }
 
