@@ -2918,40 +2918,12 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ControllerForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+41"/>
+        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+40"/>
         <source>PID with first-order filter, per joint</source>
         <translation>PID mit Filter 1. Ordnung, je Gelenk</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Kp
-[N m/rad]</source>
-        <translation>Kp
-[N m/rad]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Ki
-[N m/(rad s)]</source>
-        <translation>Ki
-[N m/(rad s)]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Kd
-[N m s/rad]</source>
-        <translation>Kd
-[N m s/rad]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>tau_f
-[s]</source>
-        <translation>tau_f
-[s]</translation>
-    </message>
-    <message>
-        <location line="+23"/>
+        <location line="+10"/>
         <source>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); output in N m.</source>
         <translation>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); Ausgang in N m.</translation>
     </message>
@@ -2959,27 +2931,6 @@ entriegeln</translation>
         <location line="+5"/>
         <source>Joint plant (simulated drives)</source>
         <translation>Regelstrecke Gelenk (simulierte Antriebe)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Inertia
-[kg m^2]</source>
-        <translation>Trägheit
-[kg m^2]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Viscous
-[N m s/rad]</source>
-        <translation>Dämpfung
-[N m s/rad]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Torque limit
-[N m]</source>
-        <translation>Momentgrenze
-[N m]</translation>
     </message>
 </context>
 <context>
@@ -3725,6 +3676,14 @@ entriegeln</translation>
         <location line="+10"/>
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::JobForm</name>
+    <message>
+        <location filename="../../ui/forms/job_form.cpp" line="+211"/>
+        <source>Range %1 to %2 %3</source>
+        <translation>Bereich %1 bis %2 %3</translation>
     </message>
 </context>
 <context>
@@ -4728,54 +4687,12 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::RobotDhTableForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/robot_dh_table_form.cpp" line="+18"/>
+        <location filename="../../ui/machines/pipe_robot/robot_dh_table_form.cpp" line="+17"/>
         <source>Denavit-Hartenberg table and joint limits</source>
         <translation>Denavit-Hartenberg-Tabelle und Gelenkgrenzen</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>alpha
-[deg]</source>
-        <translation>alpha
-[deg]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>a
-[mm]</source>
-        <translation>a
-[mm]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>d
-[mm]</source>
-        <translation>d
-[mm]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>offset
-[deg]</source>
-        <translation>Offset
-[deg]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>min
-[deg]</source>
-        <translation>min
-[deg]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>max
-[deg]</source>
-        <translation>max
-[deg]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>0 chuck</source>
         <translation>0 Futter</translation>
     </message>
@@ -4805,7 +4722,7 @@ letzte %1 s</translation>
         <translation>5 Rollachse</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+16"/>
         <source>Row 0 is the pipe chuck: its d is the distance from the robot base to the cut centre. The analytic inverse kinematics needs the seed arm&apos;s structure (alpha = 90, 0, 0, 90, 0 deg for rows 1..5).</source>
         <translation>Zeile 0 ist das Rohrfutter: Sein d ist der Abstand von der Roboterbasis zur Schnittmitte. Die analytische inverse Kinematik setzt den Aufbau des Standardarms voraus (alpha = 90, 0, 0, 90, 0 deg für Zeilen 1..5).</translation>
     </message>
@@ -5953,7 +5870,7 @@ letzte %1 s</translation>
 <context>
     <name>SectionField</name>
     <message>
-        <location filename="core_labels.cpp" line="+6"/>
+        <location filename="core_labels.cpp" line="+13"/>
         <source>Tube</source>
         <translation>Rohr</translation>
     </message>
@@ -6168,7 +6085,7 @@ letzte %1 s</translation>
         <translation>Zufallsstartwert</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>Steps per revolution (n)</source>
         <translation>Schritte pro Umdrehung (n)</translation>
     </message>
@@ -6268,12 +6185,72 @@ letzte %1 s</translation>
         <translation>Coulomb-Reibung</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-69"/>
         <source>Torque limit</source>
         <translation>Momentgrenze</translation>
     </message>
     <message>
+        <location line="-6"/>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tau_f</source>
+        <translation>tau_f</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inertia</source>
+        <translation>Trägheit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Viscous</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>alpha</source>
+        <translation>alpha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>d</source>
+        <translation>d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Workpiece length L_d</source>
         <translation>Werkstücklänge L_d</translation>
     </message>
@@ -6642,7 +6619,7 @@ letzte %1 s</translation>
         <translation>Schleppfehler (%1)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+161"/>
         <source>%1 samples, %2 dropped</source>
         <translation>%1 Messwerte, %2 verworfen</translation>
     </message>

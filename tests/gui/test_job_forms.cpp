@@ -1,6 +1,7 @@
 // Parameter forms: a bad value marks its field (red, tooltip naming key, value, unit and
 // limit), counts in its tab title and disables Start with the reason; fixing it clears all.
 #include "core/job/default_job.h"
+#include "core/job/drive_fields.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "ui/forms/issue_text.h"
 #include "ui/forms/job_editor.h"
@@ -14,6 +15,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QtTest>
 
 using CutCell::ui::MainWindow;
@@ -117,6 +119,69 @@ class TestJobForms : public QObject {
         // [0.1, 500] mm/s").
         QVERIFY2(field->toolTip().contains("750 mm/s") && field->toolTip().contains("500] mm/s"),
                  qPrintable(field->toolTip()));
+    }
+
+    // The robot's tables are drawn from their row tables (core/job/row_table.h): a column per
+    // key with "label [unit]" as its header and its range as the header's tip, a field per cell
+    // under the key with its row and the table's decimals.
+    void robotTablesFollowTheirRowTables() {
+        MainWindow w(nullptr);
+        const struct {
+            const char* table;
+            const char* array;
+            std::vector<std::pair<std::string, int>> keys; // key, decimals
+            std::vector<QString> headers;
+        } tables[] = {
+            {"dhTable",
+             "robot.dh",
+             {{"alpha_deg", 1},
+              {"a_mm", 1},
+              {"d_mm", 1},
+              {"theta_offset_deg", 1},
+              {"min_deg", 1},
+              {"max_deg", 1}},
+             {"alpha\n[deg]", "a\n[mm]", "d\n[mm]", "offset\n[deg]", "min\n[deg]", "max\n[deg]"}},
+            {"pidTable",
+             "controller",
+             {{"kp_nm_per_rad", 2}, {"ki_nm_per_rad_s", 1}, {"kd_nm_s_per_rad", 3}, {"tau_f_s", 4}},
+             {"Kp\n[N m/rad]", "Ki\n[N m/(rad s)]", "Kd\n[N m s/rad]", "tau_f\n[s]"}},
+            {"plantTable",
+             "plant",
+             {{"inertia_kg_m2", 4}, {"viscous_nm_s_per_rad", 3}, {"torque_limit_nm", 2}},
+             {QString::fromUtf8("Inertia\n[kg m²]"), "Viscous\n[N m s/rad]",
+              "Torque limit\n[N m]"}},
+        };
+        for (const auto& t : tables) {
+            auto* table = w.findChild<QTableWidget*>(t.table);
+            QVERIFY2(table, t.table);
+            QCOMPARE(table->columnCount(), static_cast<int>(t.keys.size()));
+            QCOMPARE(table->rowCount(), cutcell::kAxisCount);
+            for (int c = 0; c < table->columnCount(); ++c) {
+                QCOMPARE(table->horizontalHeaderItem(c)->text(), t.headers[static_cast<size_t>(c)]);
+                QVERIFY2(table->horizontalHeaderItem(c)->toolTip().startsWith("Range "),
+                         qPrintable(table->horizontalHeaderItem(c)->toolTip()));
+                for (int r = 0; r < table->rowCount(); ++r) {
+                    const auto& [key, decimals] = t.keys[static_cast<size_t>(c)];
+                    const std::string k =
+                        std::string(t.array) + "[" + std::to_string(r) + "]." + key;
+                    auto* cell = qobject_cast<QDoubleSpinBox*>(table->cellWidget(r, c));
+                    QVERIFY2(cell, k.c_str());
+                    QCOMPARE(w.parameters()->fieldFor(k), cell);
+                    QCOMPARE(cell->decimals(), decimals);
+                }
+            }
+        }
+        auto* dh = w.findChild<QTableWidget*>("dhTable");
+        QCOMPARE(dh->horizontalHeaderItem(1)->toolTip(), QString("Range -5000 to 5000 mm"));
+        auto* pid = w.findChild<QTableWidget*>("pidTable");
+        QCOMPARE(pid->horizontalHeaderItem(3)->toolTip(), QString("Range 1e-05 to 1 s"));
+        // The key of each cell edits that row of the job.
+        qobject_cast<QDoubleSpinBox*>(w.parameters()->fieldFor("plant[5].viscous_nm_s_per_rad"))
+            ->setValue(0.125);
+        QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).plant[5].viscous_nm_s_per_rad, 0.125);
+        qobject_cast<QDoubleSpinBox*>(w.parameters()->fieldFor("robot.dh[4].theta_offset_deg"))
+            ->setValue(7.5);
+        QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).dh[4].theta_offset_deg, 7.5);
     }
 
     void duplicateNodeIdMarksTheIdFields() {

@@ -3,6 +3,7 @@
 #include "ui/forms/issue_text.h"
 
 #include "ui/forms/number_fields.h"
+#include "ui/shown_number.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -17,6 +18,7 @@
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QStyle>
+#include <QTableWidget>
 #include <QTimer>
 #include <QToolTip>
 #include <QVBoxLayout>
@@ -189,6 +191,30 @@ QString JobForm::displayUnit(const char* unit) {
     u.replace(QLatin1String("^2"), QStringLiteral("²"));
     u.replace(QLatin1String("^3"), QStringLiteral("³"));
     return u;
+}
+
+void JobForm::setColumnCount(QTableWidget* table, int n) {
+    table->setColumnCount(n);
+}
+
+int JobForm::rowCount(const QTableWidget* table) {
+    return table->rowCount();
+}
+
+void JobForm::setColumnHeader(QTableWidget* table, int column, const char* label, const char* unit,
+                              double lo, double hi, bool checked) {
+    const QString u = displayUnit(unit);
+    auto* item =
+        new QTableWidgetItem(fieldLabel(label) + QStringLiteral("\n[") + u + QStringLiteral("]"));
+    if (checked)
+        item->setToolTip(
+            tr("Range %1 to %2 %3").arg(shownSignificant(lo, 6), shownSignificant(hi, 6), u));
+    table->setHorizontalHeaderItem(column, item);
+}
+
+void JobForm::setCell(QTableWidget* table, int row, int column, QDoubleSpinBox* w) {
+    w->setFrame(false);
+    table->setCellWidget(row, column, w);
 }
 
 void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, const QString& unit) {

@@ -6,6 +6,7 @@
 //
 // Threading contract: GUI thread only.
 #include "core/job/field_table.h"
+#include "core/job/row_table.h"
 #include "ui/forms/job_editor.h"
 
 #include <QWidget>
@@ -25,6 +26,7 @@ class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
 class QSpinBox;
+class QTableWidget;
 class QVBoxLayout;
 
 namespace CutCell::ui {
@@ -89,6 +91,29 @@ class JobForm : public QWidget {
         if (const auto* f = cutcell::findField(table, key)) return *f;
         throw std::logic_error(std::string("no field ") + key + " in the section's table");
     }
+    // The columns of a row table (core/job/row_table.h) in `table`, one row per table row: a
+    // header "label [unit]" per key (its range as the header's tooltip) and a field per cell
+    // with the table's decimals, bound to "<array>[r].<key>". row: the job's row r. As
+    // bindDouble's, the fields take any value: one beyond the range is marked, not clamped.
+    template <class Row>
+    void bindRowTable(QTableWidget* table, std::span<const cutcell::RowField<Row>> fields,
+                      const std::string& array, Row& (*row)(cutcell::Job&, size_t)) {
+        setColumnCount(table, static_cast<int>(fields.size()));
+        for (size_t c = 0; c < fields.size(); ++c) {
+            const cutcell::RowField<Row>& f = fields[c];
+            setColumnHeader(table, static_cast<int>(c), f.label, f.unit, f.lo, f.hi,
+                            f.check != cutcell::FieldCheck::None);
+            for (int r = 0; r < rowCount(table); ++r) {
+                const auto i = static_cast<size_t>(r);
+                QDoubleSpinBox* w =
+                    bindDouble(cutcell::rowKey(array, i) + "." + f.key, f.decimals,
+                               [number = f.number, row, i](cutcell::Job& j) -> double& {
+                                   return number(row(j, i));
+                               });
+                setCell(table, r, static_cast<int>(c), w);
+            }
+        }
+    }
     // A table's label and unit on screen ("kg m^2" as "kg m²", "1" as nothing).
     static QString fieldLabel(const char* label);
     static QString displayUnit(const char* unit);
@@ -100,6 +125,13 @@ class JobForm : public QWidget {
     virtual void reloadExtra(const cutcell::Job&) {}
 
   private:
+    // bindRowTable's Qt calls (the header keeps QTableWidget declared only).
+    static void setColumnCount(QTableWidget* table, int n);
+    static int rowCount(const QTableWidget* table);
+    static void setColumnHeader(QTableWidget* table, int column, const char* label,
+                                const char* unit, double lo, double hi, bool checked);
+    static void setCell(QTableWidget* table, int row, int column, QDoubleSpinBox* w);
+
     struct Binding {
         QWidget* widget = nullptr;
         std::function<void(const cutcell::Job&)> load;
