@@ -46,7 +46,8 @@ SENSOR_NAMES = re.compile(r"sensorNames\(\) const override \{ return \{([^}]*)\}
 CAN_WORD_FUNCTIONS = re.compile(
     r"const char\* toString\((?:BusState|NmtState|NmtCommand|Cia402State)\b[^)]*\)\s*\{")
 DESCRIPTION = re.compile(r"std::string description\(\) const override\s*\{")
-ENGINE_FILES = ("engine_commands.cpp", "engine_cycle.cpp", "motion_engine.cpp")
+ENGINE_FILES = ("engine_commands.cpp", "engine_cycle.cpp", "engine_sequencing.cpp",
+                "engine_supervision.cpp", "engine_telemetry.cpp", "motion_engine.cpp")
 # The engine thread's real-time line (core/engine/realtime_thread.cpp): items joined by "; ".
 REALTIME_ITEM = re.compile(r"\bline\.item\s*\(")
 

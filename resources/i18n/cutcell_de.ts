@@ -434,7 +434,7 @@
         <translation>Laufprotokoll: %s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+24"/>
         <source>Emergency stop complete: drives disabled, %s off, %.0f us after the request</source>
         <translation>NOT-HALT ausgeführt: Antriebe abgeschaltet, %s aus, %.0f µs nach der Anforderung</translation>
     </message>
@@ -459,7 +459,7 @@
         <translation>Antriebe freigegeben (nicht referenziert: Referenz vor Start)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-27"/>
         <source>Aborted: stopped on the path at %.3f s</source>
         <translation>Abgebrochen: auf der Bahn angehalten bei %.3f s</translation>
     </message>
@@ -499,7 +499,7 @@
         <translation>Start fehlgeschlagen: die Achsen kamen nicht innerhalb %.4g um den ersten Schnittpunkt zur Ruhe in %.1f s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>%s: %s program running</source>
         <translation>%s: Programm (%s) läuft</translation>
     </message>
@@ -519,12 +519,12 @@
         <translation>Start</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-13"/>
         <source>Arc established: piercing for %.3f s</source>
         <translation>Lichtbogen steht: Einstechen für %.3f s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>Arc established: cutting</source>
         <translation>Lichtbogen steht: Schneiden</translation>
     </message>
@@ -534,27 +534,27 @@
         <translation>Lichtbogen steht: Schnitt wird fortgesetzt</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-10"/>
         <source>%s: %s not reported within %.1f s</source>
         <translation>%s: %s nicht gemeldet innerhalb %.1f s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>Pierced: cutting</source>
         <translation>Eingestochen: Schneiden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
         <source>Program finished (%s, %u of %u %s): %s off</source>
         <translation>Programm beendet (%s, %u von %u %s): %s aus</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>Cut finished at path time %.3f s: %s off</source>
         <translation>Schnitt beendet bei Bahnzeit %.3f s: %s aus</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Completed: %.1f of %.1f mm in %.2f s (cut recovery from point %u of %u: the %.1f mm before it were not cut by this run)</source>
         <translation>Beendet: %.1f von %.1f mm in %.2f s (Wiederaufnahme ab Punkt %u von %u: die %.1f mm davor hat dieser Lauf nicht geschnitten)</translation>
     </message>
@@ -574,7 +574,7 @@
         <translation>beendet</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+13"/>
         <source>%s source (%s): %s</source>
         <translation>Quelle %s (%s): %s</translation>
     </message>
@@ -627,11 +627,6 @@
         <location line="+1"/>
         <source>%s: %s at point %u of %zu (path time %.3f s)</source>
         <translation>%s: %s bei Punkt %u von %zu (Bahnzeit %.3f s)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>process lost</source>
-        <translation>Prozess verloren</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -914,12 +909,12 @@
         <translation>Stück</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-145"/>
         <source>Job loaded: %s (%s, %.2f s)</source>
         <translation>Auftrag geladen: %s (%s, %.2f s)</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+146"/>
         <source>strokes</source>
         <translation>Hübe</translation>
     </message>
