@@ -15,6 +15,13 @@ class IssueChecker {
     std::vector<JobIssue> issues;
 
     void add(const std::string& key, const std::string& msg) { issues.push_back({key, msg}); }
+    // Whether a message for `key` was given (a check relative to other values is then left out:
+    // one message per key).
+    bool has(const std::string& key) const {
+        for (const JobIssue& i : issues)
+            if (i.key == key) return true;
+        return false;
+    }
     void append(const std::vector<JobIssue>& more) {
         issues.insert(issues.end(), more.begin(), more.end());
     }

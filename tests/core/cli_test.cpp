@@ -122,6 +122,30 @@ TEST(Cli, AbsurdValuesAreRefusedAlsoWhereTheyAreUnused) {
     EXPECT_NE(root.output.find("machine.end_cut.flanges.root_face_mm = -1e+308 mm"),
               std::string::npos)
         << root.output;
+    // OSMC's weights while another controller runs: q11 q22 overflowed to infinity and passed
+    // "positive definite".
+    const Result q11 = variant("quick_return_job.json", "\"q11\": 900", "\"q11\": 1e300");
+    EXPECT_EQ(q11.code, 2) << q11.output;
+    EXPECT_NE(q11.output.find("machine.control.osmc.q11 = 1e+300 1 is outside [1e-12, 1e+12] 1"),
+              std::string::npos)
+        << q11.output;
+    const Result q12 = variant("quick_return_job.json", "\"q12\": 0", "\"q12\": 1e150");
+    EXPECT_EQ(q12.code, 2) << q12.output;
+    EXPECT_NE(q12.output.find("machine.control.osmc.q12 = 1e+150"), std::string::npos)
+        << q12.output;
+    // The velocity has a range of its own (it was checked only once the mechanism closed).
+    const Result v =
+        variant("quick_return_job.json", "\"velocity_m_s\": -0.762", "\"velocity_m_s\": 1e300");
+    EXPECT_EQ(v.code, 2) << v.output;
+    EXPECT_NE(v.output.find("machine.cut.velocity_m_s = 1e+300 m/s is outside [-10, -0.0001] m/s"),
+              std::string::npos)
+        << v.output;
+    // The saw's wall with an overcut past its own range: the wall still has its message.
+    const Result wall = variant("flying_saw_job.json", "\"wall_mm\": 2", "\"wall_mm\": -5");
+    EXPECT_EQ(wall.code, 2) << wall.output;
+    EXPECT_NE(wall.output.find("machine.tube.wall_mm = -5 mm is outside [0.1, 500] mm"),
+              std::string::npos)
+        << wall.output;
 }
 
 TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {

@@ -70,8 +70,10 @@ const Field kFields[] = {
      .when = rectangular},
     {.key = "tube.corner_radius_mm", .unit = "mm", .label = "Corner radius r", .decimals = 2,
      .number = [](S& s) -> double& { return s.corner_radius_mm; }, .when = rectangular},
-    {.key = "tube.wall_mm", .unit = "mm", .label = "Wall", .decimals = 2,
-     .number = [](S& s) -> double& { return s.wall_mm; }},
+    // Within half the tube with the overcut too (checkFlyingSawSpec()); at most half the largest
+    // tube whatever the overcut.
+    {.key = "tube.wall_mm", .unit = "mm", .label = "Wall", .lo = 0.1, .hi = 500,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.wall_mm; }},
     {.key = "line.speed_m_min", .unit = "m/min", .label = "Line speed", .lo = 0.1, .hi = 300,
      .check = kPositive, .decimals = 3,
      .number = [](S& s) -> double& { return s.line_speed_m_min; }},
@@ -229,7 +231,7 @@ std::vector<JobIssue> checkFlyingSawSpec(const FlyingSawSpec& s) {
                        num(s.saw.overcut_mm).c_str(), num(s.wall_mm).c_str(),
                        num(smallest / 2).c_str(),
                        num(std::max(0.0, smallest / 2 - s.wall_mm - 0.1)).c_str()));
-    else if (overcutInRange)
+    else if (overcutInRange && !c.has("tube.wall_mm"))
         c.positive("tube.wall_mm", s.wall_mm, 0.1, std::max(0.1, wallRoom), "mm");
     if (s.queue.empty())
         c.add("cut.queue", messageC("cut.queue is empty: at least one length is needed"));
@@ -239,7 +241,8 @@ std::vector<JobIssue> checkFlyingSawSpec(const FlyingSawSpec& s) {
         c.range(k + ".count", s.queue[i].count, 1, 1000000, "pieces");
     }
     if (!std::isnan(s.first_sync_master_mm))
-        c.range("cut.first_sync_master_mm", s.first_sync_master_mm, -1e9, 1e9, "mm");
+        // 10 km of line: a coil's length; a 32-bit line count at 0.05 mm/pulse ends at 107 km.
+        c.range("cut.first_sync_master_mm", s.first_sync_master_mm, -1e7, 1e7, "mm");
     c.range("carriage.wait_position_mm", s.wait_position_mm, 0, s.stroke_mm, "mm");
     return c.issues;
 }

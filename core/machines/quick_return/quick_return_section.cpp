@@ -65,25 +65,31 @@ const Field kFields[] = {
     {.key = "crank_motor.torque_limit_nm", .unit = "N m", .label = "Torque limit", .lo = 1e-3,
      .hi = 10000, .check = kPositive, .decimals = 2,
      .number = [](S& s) -> double& { return s.plant.torque_limit; }},
-    // The stroke's figures are checked against the mechanism in validateQuickReturn().
-    {.key = "cut.workpiece_length_m", .unit = "m", .label = "Workpiece length L_d",
-     .decimals = 4, .number = [](S& s) -> double& { return s.workpiece_length; }},
-    {.key = "cut.stroke_length_m", .unit = "m", .label = "Stroke L_c", .decimals = 4,
-     .number = [](S& s) -> double& { return s.stroke_length; }},
-    {.key = "cut.velocity_m_s", .unit = "m/s", .label = "Cutting velocity v", .decimals = 4,
+    // The stroke's figures are checked against the mechanism in validateQuickReturn() too;
+    // these ranges hold whatever the mechanism (the mechanism's links are at most 10 m).
+    {.key = "cut.workpiece_length_m", .unit = "m", .label = "Workpiece length L_d", .lo = 1e-3,
+     .hi = 20, .check = kPositive, .decimals = 4,
+     .number = [](S& s) -> double& { return s.workpiece_length; }},
+    {.key = "cut.stroke_length_m", .unit = "m", .label = "Stroke L_c", .lo = 1e-3, .hi = 20,
+     .check = kPositive, .decimals = 4, .number = [](S& s) -> double& { return s.stroke_length; }},
+    // The cut runs downwards: negative, at least 0.1 mm/s.
+    {.key = "cut.velocity_m_s", .unit = "m/s", .label = "Cutting velocity v", .lo = -10,
+     .hi = -1e-4, .check = kRange, .decimals = 4,
      .number = [](S& s) -> double& { return s.velocity; }},
     {.key = "cut.contact_force_n", .unit = "N", .label = "Contact force", .lo = 0, .hi = 1e5,
      .check = kRange, .decimals = 1,
      .number = [](S& s) -> double& { return s.plant.contact_force; }},
     {.key = "cut.strokes", .unit = "strokes", .label = "Strokes", .lo = 1, .hi = 1000,
-     .integer = [](S& s) -> int& { return s.strokes; }},
+     .check = kRange, .integer = [](S& s) -> int& { return s.strokes; }},
     {.key = "cut.return_torque_1_nm", .unit = "N m", .label = "Return torque, first half",
      .decimals = 2, .number = [](S& s) -> double& { return s.return_torque_1; }},
     {.key = "cut.return_torque_2_nm", .unit = "N m", .label = "Return torque, second half",
      .decimals = 2, .number = [](S& s) -> double& { return s.return_torque_2; }},
-    {.key = "tracking.offset_m", .unit = "m", .label = "Offset", .decimals = 4,
-     .number = [](S& s) -> double& { return s.track_offset; }},
-    {.key = "tracking.amplitude_m", .unit = "m", .label = "Amplitude", .decimals = 4,
+    // Inside the stroke (validateQuickReturn()); within the mechanism's reach whatever it is.
+    {.key = "tracking.offset_m", .unit = "m", .label = "Offset", .lo = -20, .hi = 20,
+     .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.track_offset; }},
+    {.key = "tracking.amplitude_m", .unit = "m", .label = "Amplitude", .lo = -10, .hi = 10,
+     .check = kRange, .decimals = 4,
      .number = [](S& s) -> double& { return s.track_amplitude; }},
     {.key = "tracking.omega_rad_s", .unit = "rad/s", .label = "ω", .lo = 0, .hi = 100,
      .check = kRange, .decimals = 4, .number = [](S& s) -> double& { return s.track_omega; }},
@@ -138,11 +144,12 @@ const Field kFields[] = {
     {.key = "control.smc.phi", .unit = "m/s", .label = "φ", .lo = 1e-9,
      .hi = 1e3, .check = kPositive, .decimals = 4,
      .number = [](S& s) -> double& { return s.gains.smc_phi; }},
-    // Q must be positive definite: checked as a whole in validateQuickReturn().
-    {.key = "control.osmc.q11", .unit = "1", .label = "q11", .decimals = 2,
-     .number = [](S& s) -> double& { return s.gains.osmc_q11; }},
-    {.key = "control.osmc.q12", .unit = "1", .label = "q12", .decimals = 2,
-     .number = [](S& s) -> double& { return s.gains.osmc_q12; }},
+    // Q must be positive definite: checked as a whole in validateQuickReturn(). Its entries on
+    // q22's scale, so that q11 q22 - q12^2 stays finite (1e300 passed as infinity > 0).
+    {.key = "control.osmc.q11", .unit = "1", .label = "q11", .lo = 1e-12, .hi = 1e12,
+     .check = kPositive, .decimals = 2, .number = [](S& s) -> double& { return s.gains.osmc_q11; }},
+    {.key = "control.osmc.q12", .unit = "1", .label = "q12", .lo = -1e12, .hi = 1e12,
+     .check = kRange, .decimals = 2, .number = [](S& s) -> double& { return s.gains.osmc_q12; }},
     {.key = "control.osmc.q22", .unit = "1", .label = "q22", .lo = 1e-12, .hi = 1e12,
      .check = kPositive, .decimals = 2,
      .number = [](S& s) -> double& { return s.gains.osmc_q22; }},
@@ -188,7 +195,8 @@ std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s) {
     c.range("cut.return_torque_2_nm", s.return_torque_2, -s.plant.torque_limit, 0, "N m");
     c.positive("tracking.mse_window_s", s.mse_window, 1e-3, s.track_duration, "s");
     const ControllerParams& g = s.gains;
-    if (!(g.osmc_q11 * g.osmc_q22 - g.osmc_q12 * g.osmc_q12 > 0))
+    if (!c.has("control.osmc.q11") && !c.has("control.osmc.q12") &&
+        !(g.osmc_q11 * g.osmc_q22 - g.osmc_q12 * g.osmc_q12 > 0))
         c.add("control.osmc.q11",
               messageC("control.osmc: Q = [q11 q12; q12 q22] = [%.6g %.6g; %.6g %.6g] must be "
                        "positive definite",
