@@ -140,6 +140,14 @@ TEST(Cli, AbsurdValuesAreRefusedAlsoWhereTheyAreUnused) {
     EXPECT_NE(v.output.find("machine.cut.velocity_m_s = 1e+300 m/s is outside [-10, -0.0001] m/s"),
               std::string::npos)
         << v.output;
+    // A schema-1 file of the crank: the robot's keys every schema-1 job carried go, its own
+    // stay and are checked (all were dropped: the default mechanism loaded silently).
+    const Result schema1 = variant("default_job.json", "\"machine\": \"pipe_robot_6axis\"",
+                                   "\"machine\": \"quick_return_cutter\", \"mechanism\": "
+                                   "{\"r2_m\": -5}");
+    EXPECT_EQ(schema1.code, 2) << schema1.output;
+    EXPECT_NE(schema1.output.find("machine.mechanism.r2_m = -5 m is outside"), std::string::npos)
+        << schema1.output;
     // The saw's wall with an overcut past its own range: the wall still has its message.
     const Result wall = variant("flying_saw_job.json", "\"wall_mm\": 2", "\"wall_mm\": -5");
     EXPECT_EQ(wall.code, 2) << wall.output;

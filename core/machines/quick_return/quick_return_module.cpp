@@ -56,8 +56,23 @@ json::Value QuickReturnModule::writeSection(const Job& job) const {
 }
 
 void QuickReturnModule::migrateSchema1(json::Object& section) const {
-    // Schema 1 knew no quick-return cutter: nothing of it to keep.
-    std::erase_if(section, [](const auto& kv) { return kv.first != "kind"; });
+    // Schema 1 knew no quick-return cutter: it made every job carry the pipe robot's keys,
+    // which go. Anything else stays and is read as this machine's (or refused by name): a
+    // hand-written file's mechanism.r2_m = -5 was dropped and the default loaded silently.
+    const auto isCrankCut = [](const json::Value& cut) {
+        if (!cut.isObject()) return false;
+        for (const auto& [k, v] : cut.asObject())
+            for (const auto& f : quickReturnFields())
+                if (std::string(f.key) == "cut." + k) return true;
+        return false;
+    };
+    std::erase_if(section, [&](const auto& kv) {
+        const std::string& k = kv.first;
+        if (k == "cut") return !isCrankCut(kv.second);
+        return k == "main_pipe" || k == "branch_pipe" || k == "angle_deg" ||
+               k == "eccentricity_mm" || k == "method" || k == "robot" || k == "controller" ||
+               k == "plant" || k == "other_branches" || k == "profile_cutter";
+    });
 }
 
 std::vector<JobIssue> QuickReturnModule::validate(const Job& job) const {
