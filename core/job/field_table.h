@@ -123,6 +123,18 @@ void readFields(SectionReader& section, std::span<const SectionField<Spec>> tabl
 }
 
 // The table's fields of s as the section's JSON (nested objects in the order of first use).
+// A machine section held whole by its table: `kind` (checked by the caller) and every field,
+// unknown keys refused.
+template <class Spec>
+Spec readSectionFields(const json::Value& section, std::span<const SectionField<Spec>> table) {
+    SectionReader m(section, "machine");
+    m.get("kind");
+    Spec s;
+    readFields(m, table, s);
+    m.finish();
+    return s;
+}
+
 template <class Spec>
 json::Object writeFields(std::span<const SectionField<Spec>> table, const Spec& s) {
     json::Object out;

@@ -196,12 +196,7 @@ std::span<const SectionField<FlyingSawSpec>> flyingSawFields() {
 }
 
 FlyingSawSpec readFlyingSawSection(const json::Value& section) {
-    SectionReader m(section, "machine");
-    m.get("kind");
-    FlyingSawSpec s;
-    readFields(m, flyingSawFields(), s);
-    m.finish();
-    return s;
+    return readSectionFields(section, flyingSawFields());
 }
 
 json::Object writeFlyingSawSection(const FlyingSawSpec& s) {

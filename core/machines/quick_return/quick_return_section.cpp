@@ -170,12 +170,8 @@ std::span<const SectionField<QuickReturnSpec>> quickReturnFields() {
 }
 
 QuickReturnSpec readQuickReturnSection(const json::Value& section) {
-    SectionReader m(section, "machine");
-    m.get("kind");
-    QuickReturnSpec s;
-    readFields(m, quickReturnFields(), s);
+    QuickReturnSpec s = readSectionFields(section, quickReturnFields());
     s.gains.gravity = s.plant.gravity;
-    m.finish();
     return s;
 }
 
