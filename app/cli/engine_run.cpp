@@ -154,6 +154,7 @@ EngineRunResult runOnEngine(const Job& job, const MachineModule& module, const M
     config.spec = job.engine;
     config.realtime = setup.rt;
     MotionEngine engine(devices, config);
+    if (setup.record) engine.setRunRecord(setup.record);
     struct EngineAttachment { // detached before the engine goes
         CanEngineDevices& can;
         ~EngineAttachment() { can.attachEngine(nullptr); }

@@ -14,8 +14,10 @@
 #include "core/job/job.h"
 #include "core/json/json.h"
 #include "core/machine/machine_module.h"
+#include "core/record/run_record.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace cutcell::cli {
@@ -27,6 +29,7 @@ struct EngineRunSetup {
     bool realtime = false;       // the simulated rig paced by the wall clock (CAN: can.realtime)
     bool quiet = false;          // events of severity Info not printed
     RealtimeSettings rt;         // the engine thread's set-up (real-time clock only)
+    std::shared_ptr<RunRecordSink> record; // the production record (null: none)
 };
 
 struct EngineRunResult {

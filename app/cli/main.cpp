@@ -28,6 +28,7 @@ struct AllOptions {
     ExportOptions exportFiles;
     RunOptions run;
     DriveSimOptions drivesim;
+    HistoryOptions history;
     MachinesOptions machines;
     UpgradeOptions upgrade;
     KinematicsOptions fk, ik;
@@ -187,6 +188,24 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
         ->type_name("FILE");
     run->add_option("--runs", o.run.runs, "run log directory (default: the job's engine.runs_dir)")
         ->type_name("DIR");
+    run->add_option("--record", o.run.record,
+                    "add the run to this production record (SQLite; the GUI's is "
+                    "~/.local/share/cutcell/production.db)")
+        ->type_name("FILE");
+
+    CLI::App* history = add("history", "list the runs of the production record (SQLite)",
+                            [&] { return runHistory(o.history); });
+    history
+        ->add_option("--db", o.history.db,
+                     "the record (default: $XDG_DATA_HOME/cutcell/production.db)")
+        ->type_name("FILE");
+    history->add_option("--since", o.history.since, "runs started on or after this day (UTC)")
+        ->type_name("YYYY-MM-DD");
+    history->add_option("--machine", o.history.machine, "one machine's runs (its id)");
+    history->add_option("--outcome", o.history.outcome,
+                        "runs with this outcome (completed, aborted, interrupted, ...)");
+    history->add_flag("--json", o.history.json, "print the runs as JSON");
+    history->add_flag("--csv", o.history.csv, "print the runs as CSV")->excludes("--json");
     addDeviceOptions(*run, o.run.devices);
 
     DriveSimOptions& d = o.drivesim;

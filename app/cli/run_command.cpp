@@ -7,12 +7,12 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
+#include "devices/record/sqlite_run_record.h"
 
 #include <cstdio>
 #include <filesystem>
 
 namespace cutcell::cli {
-
 int runRun(const RunOptions& o) {
     Job job;
     std::string text;
@@ -48,6 +48,21 @@ int runRun(const RunOptions& o) {
     setup.realtime = o.realtime;
     setup.quiet = o.quiet;
     setup.rt = o.rt; // the engine thread's set-up (with --realtime or CANopen)
+    if (!o.record.empty()) {
+        try {
+            auto record =
+                std::make_shared<SqliteRunRecord>(o.record, SqliteRunRecord::desktopUser());
+            if (record->interruptedAtOpen() > 0)
+                std::fprintf(stderr,
+                             "run: production record %s: %d run(s) of a killed program "
+                             "closed as interrupted\n",
+                             o.record.c_str(), record->interruptedAtOpen());
+            setup.record = std::move(record);
+        } catch (const RecordError& e) {
+            std::fprintf(stderr, "run: %s\n", e.what());
+            return kFailure;
+        }
+    }
     const EngineRunResult r = runOnEngine(job, module, plan, setup);
     if (r.code != kOk) return r.code;
     const std::string out = json::write(r.report);

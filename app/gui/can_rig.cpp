@@ -2,6 +2,7 @@
 
 #include "can_link.h"
 #include "can_panel_feed.h"
+#include "production_record.h"
 
 #include "core/machine/machine_registry.h"
 #include "devices/canopen/cell_safe_stop.h"
@@ -70,6 +71,7 @@ class CanRig : public CutCell::ui::EngineRig {
         config.clock = ClockMode::RealTime; // the bus runs on the wall clock
         tuneEngineForCanCell(config, cell, job, period_);
         engine_ = std::make_unique<MotionEngine>(devices, config);
+        engine_->setRunRecord(productionRecord());
         engine_->startThread();
         engineForEvents_.store(engine_.get(), std::memory_order_release);
         link_ = std::make_unique<CanLink>(*master_, where());

@@ -1,5 +1,6 @@
 // cutcell: the operator station of the cutting cell (Qt Widgets).
 #include "gui_run.h"
+#include "production_record.h"
 #include "sim_rig.h"
 
 #include "devices/process/safe_shutdown.h"
@@ -107,8 +108,13 @@ int main(int argc, char** argv) {
     const QCommandLineOption viewOpt(
         "view", "The 3D view's preset at the start: iso, front, top or follow (the tool).",
         "PRESET", "iso");
+    const QCommandLineOption recordOpt(
+        "record",
+        "The production record (SQLite) the runs go to: FILE, or off (default: "
+        "$XDG_DATA_HOME/cutcell/production.db; `cutcell-cli history` lists it).",
+        "FILE");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,
-                    languageOpt, viewOpt});
+                    languageOpt, viewOpt, recordOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
 
@@ -150,6 +156,9 @@ int main(int argc, char** argv) {
     }
     // The host rebuilds the window for a change of language (Language menu); unattended runs
     // below hold the first window, which no menu replaces while they run.
+    // Before any rig: each engine is told of the record as it is made.
+    std::fprintf(stderr, "cutcell: %s\n",
+                 cutcell::app::openProductionRecord(cli.value(recordOpt).toStdString()).c_str());
     CutCell::ui::WindowHost host(&cutcell::app::makeRig);
     CutCell::ui::MainWindow& window = *host.window();
     // Without --size the window fits the screen it opens on (MainWindow::fitToScreen): a fixed

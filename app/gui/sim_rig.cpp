@@ -5,6 +5,7 @@
 #include "can_rig.h"
 #include "core/machine/machine_registry.h"
 #include "devices/machines/sim_rig_registry.h"
+#include "production_record.h"
 
 #include <cstdio>
 
@@ -26,6 +27,7 @@ class SimulatedMachineRig : public CutCell::ui::EngineRig {
         // plots cover the whole cut. Real time keeps every cycle.
         if (clock == ClockMode::AsFastAsPossible) config.telemetry_every_n_cycles = 10;
         engine_ = std::make_unique<MotionEngine>(rig_->devices(), config);
+        engine_->setRunRecord(productionRecord());
         engine_->startThread();
     }
     ~SimulatedMachineRig() override { engine_->stopThread(); }

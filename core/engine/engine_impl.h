@@ -115,7 +115,9 @@ struct MotionEngine::Impl {
     RealtimeStatus realtime;                // written by the engine thread before its first cycle
     std::atomic<bool> realtimeKnown{false}; // ... and published by this flag
     std::mutex logMutex;                    // logger side only: one drainer at a time
-    std::unique_ptr<class RunLog> runLog;   // under logMutex
+    // Declared before the run log, which points to it, so it outlives the log.
+    std::shared_ptr<RunRecordSink> runRecord; // under logMutex (the run log tells it)
+    std::unique_ptr<class RunLog> runLog;     // under logMutex
     // Logger -> engine thread: a run-log problem the cycle reports as a Warning event (the
     // text is written before the flag is set, read after it is seen; no lock, no allocation).
     std::array<char, 200> logProblem{};

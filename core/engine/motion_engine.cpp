@@ -172,6 +172,12 @@ void MotionEngine::flushRunLog() {
     impl_->loggerDrain();
 }
 
+void MotionEngine::setRunRecord(std::shared_ptr<RunRecordSink> record) {
+    std::lock_guard<std::mutex> lock(impl_->logMutex);
+    impl_->runRecord = std::move(record);
+    if (impl_->runLog) impl_->runLog->setRecordSink(impl_->runRecord.get());
+}
+
 void MotionEngine::logExternalEvent(Severity severity, const std::string& text) {
     Impl& m = *impl_;
     EngineEvent e;

@@ -64,6 +64,7 @@
 #include "core/engine/motion_source.h"
 #include "core/engine/realtime_thread.h"
 #include "core/job/job.h"
+#include "core/record/run_record.h"
 #include "core/sim/tracking_stats.h"
 
 #include <array>
@@ -164,6 +165,9 @@ class MotionEngine {
     std::string lastRunDirectory() const;
     // Writes pending run-log events now (runCycles() mode; the thread mode has a logger thread).
     void flushRunLog();
+    // The production record: told of each run's start, alarms and end by the run logger (not
+    // the cycle). Any thread; null removes it. The engine keeps it alive.
+    void setRunRecord(std::shared_ptr<RunRecordSink> record);
     // An event from outside the cycle (a device's decoded fault, e.g. "node 3: EMCY 0x2310
     // over-current"; a shutdown) for the run log, written by the log's drainer before the
     // cycle's pending events. Any thread but the cycle's: it locks and allocates.

@@ -49,7 +49,35 @@ std::string RunLog::formatEvent(const EngineEvent& e) {
     return line;
 }
 
+namespace {
+
+std::int64_t unixMsNow() {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(
+               std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+} // namespace
+
+template <class F> void RunLog::tellRecord(F&& call) {
+    if (!sink_) return;
+    try {
+        call(*sink_);
+    } catch (const std::exception& e) {
+        problem(std::string("production record: ") + e.what());
+    }
+}
+
 void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText) {
+    beginRunFolder(runId, jobText);
+    tellRecord([&](RunRecordSink& r) {
+        r.opened({runId, jobName, jobText, dir_, unixMsNow()});
+        recordOpen_ = true;
+    });
+}
+
+void RunLog::beginRunFolder(std::uint32_t runId, const std::string& jobText) {
+    dir_.clear();
     if (runsDir_.empty()) return;
     char stamp[32];
     const std::time_t now = std::time(nullptr);
@@ -72,10 +100,17 @@ void RunLog::beginRun(std::uint32_t runId, const std::string& jobName, const std
     }
     openFile((dir / "events.log").string());
     runOpen_ = true;
-    (void)jobName;
 }
 
 void RunLog::event(const EngineEvent& e) {
+    if (recordOpen_ && e.severity != Severity::Info)
+        tellRecord([&](RunRecordSink& r) {
+            r.alarm({e.wall_ms,
+                     e.kind == EventKind::Fault      ? "fault"
+                     : e.severity == Severity::Error ? "error"
+                                                     : "warning",
+                     e.text.data()});
+        });
     if (runsDir_.empty()) return;
     if (!file_) {
         std::error_code ec;
@@ -109,7 +144,7 @@ void RunLog::eventForLastRun(const EngineEvent& e) {
 
 void RunLog::endRun(const std::string& outcome, const TrackingReport& report, const CycleStats& c,
                     const RunStopPoint& stop, const RunStopPoint& start, const RunStopPoint& end) {
-    if (runsDir_.empty() || dir_.empty()) return;
+    if (!recordOpen_ && (runsDir_.empty() || dir_.empty())) return;
     json::Object cycle{{"period_s", c.period_s},
                        {"cycles", static_cast<double>(c.cycles)},
                        {"overruns", static_cast<double>(c.overruns)},
@@ -142,10 +177,20 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
                          {"not_cut_before_mm", start.length_mm},
                          {"note", "a cut recovery: this run cut the path from this point on; "
                                   "the path before it was not cut by this run"}});
-    if (end.valid) top.emplace_back("made", madeToJson(terms_, end));
+    if (end.valid) {
+        // The run's time on the engine's clock, from Start to its end (the cycle time).
+        top.emplace_back("elapsed_s", end.elapsed_s);
+        top.emplace_back("made", madeToJson(terms_, end));
+    }
     const json::Value doc(std::move(top));
+    const std::string summary = json::write(doc);
+    if (recordOpen_) {
+        recordOpen_ = false;
+        tellRecord([&](RunRecordSink& r) { r.closed({outcome, unixMsNow(), summary}); });
+    }
+    if (runsDir_.empty() || dir_.empty()) return;
     try {
-        writeFileAtomically((fs::path(dir_) / "summary.json").string(), json::write(doc));
+        writeFileAtomically((fs::path(dir_) / "summary.json").string(), summary);
     } catch (const std::exception&) {
     }
     if (file_) {

@@ -8,6 +8,7 @@
 #include "core/engine/engine_types.h"
 #include "core/engine/run_terms.h"
 #include "core/json/json.h"
+#include "core/record/run_record.h"
 #include "core/sim/tracking_stats.h"
 
 #include <array>
@@ -25,6 +26,9 @@ class RunLog {
     RunLog(const RunLog&) = delete;
     RunLog& operator=(const RunLog&) = delete;
 
+    // The production record told of every run, its alarms and its end (null: none). Its
+    // failures are reported like the log's own (takeProblem), never thrown.
+    void setRecordSink(RunRecordSink* sink) { sink_ = sink; }
     // Opens a new run folder; events before the first run go to <runs_dir>/engine.log.
     void beginRun(std::uint32_t runId, const std::string& jobName, const std::string& jobText);
     // The names of the run's axes for summary.json (set after beginRun).
@@ -49,14 +53,18 @@ class RunLog {
     static std::string formatEvent(const EngineEvent& e);
 
   private:
+    void beginRunFolder(std::uint32_t runId, const std::string& jobText);
     void openFile(const std::string& path);
     void problem(const std::string& what);
+    template <class F> void tellRecord(F&& call);
     std::string runsDir_;
     std::string problem_;
     std::vector<std::string> reported_;
     std::string dir_;
     std::FILE* file_ = nullptr; // the run's events.log, or engine.log between runs
     bool runOpen_ = false;      // file_ is the open run's events.log
+    RunRecordSink* sink_ = nullptr;
+    bool recordOpen_ = false; // the sink was told of a run that has not closed
     std::array<std::string, kMaxAxes> names_{};
     RunTerms terms_;
 };

@@ -58,11 +58,19 @@ class TestCutcellApp : public QObject {
         const QString shot = dir.filePath("shot.png");
         auto env = QProcessEnvironment::systemEnvironment();
         env.insert("XDG_CONFIG_HOME", dir.path());
+        env.insert("XDG_DATA_HOME", dir.path());
         const Result r = run(CUTCELL_GUI,
                              {"--platform", "offscreen", "--job", defaultJob(), "--run",
                               "--screenshot", shot, "--size", "1280x800"},
                              env);
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
+        // The run is in the station's production record, in the user's data folder.
+        const QString record = dir.filePath("cutcell/production.db");
+        QVERIFY2(r.err.contains("production record: " + record), qPrintable(r.err));
+        const Result history = run(CUTCELL_CLI, {"history", "--db", record, "--csv"}, env);
+        QVERIFY2(history.code == 0, qPrintable(history.err));
+        QVERIFY2(history.out.contains(",pipe_robot_6axis,") && history.out.contains(",completed,"),
+                 qPrintable(history.out));
         // The percent in the desktop's number form (the GUI follows it: "100,0 %" under de_DE).
         QVERIFY2(r.out.contains(QLocale::system().toString(100.0, 'f', 1) + " %"),
                  qPrintable(r.out));

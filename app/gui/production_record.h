@@ -1,0 +1,19 @@
+#pragma once
+// The operator station's production record (devices/record/, SQLite): opened once at the start
+// (the user's data folder, or `--record FILE`; `--record off` for none), closing the runs of a
+// killed station as interrupted; every rig's engine is told of it (its run logger writes).
+#include "core/record/run_record.h"
+
+#include <memory>
+#include <string>
+
+namespace cutcell::app {
+
+// Opens the record at `where` ("" = the data folder's, "off" = none). Returns a line for the
+// operator (where it is, how many interrupted runs it closed, or why it is not kept: the
+// station runs without it then, it never stops a run).
+std::string openProductionRecord(const std::string& where);
+// The record every engine gets (null when none is kept).
+std::shared_ptr<RunRecordSink> productionRecord();
+
+} // namespace cutcell::app

@@ -1,0 +1,39 @@
+#pragma once
+// The production record as core sees it: one sink told when a run opens, what alarms it raises
+// and how it closes, in the run log's own words (the job file, summary.json). The run log
+// (core/engine/run_log.h) calls it on the engine's logger thread, never in the cycle; a sink
+// may do I/O and take its time. devices/record/ keeps the record in SQLite; the app wires it.
+#include <cstdint>
+#include <string>
+
+namespace cutcell {
+
+struct RunOpening {
+    std::uint32_t engine_run_id = 0; // the engine's run number (restarts with the program)
+    std::string job_name;
+    std::string job_text; // the job file the run executes
+    std::string run_dir;  // its run-log folder ("" when none is written)
+    std::int64_t unix_ms = 0;
+};
+
+struct RunAlarmNote {
+    std::int64_t unix_ms = 0;
+    std::string severity; // "warning", "error", "fault"
+    std::string text;
+};
+
+struct RunClosing {
+    std::string outcome; // "completed", "aborted", "emergency stop", "fault: ..."
+    std::int64_t unix_ms = 0;
+    std::string summary_json; // the run's summary.json: figures, stop point, what was made
+};
+
+class RunRecordSink {
+  public:
+    virtual ~RunRecordSink() = default;
+    virtual void opened(const RunOpening& run) = 0;
+    virtual void alarm(const RunAlarmNote& alarm) = 0;
+    virtual void closed(const RunClosing& run) = 0;
+};
+
+} // namespace cutcell

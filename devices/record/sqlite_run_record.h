@@ -1,0 +1,93 @@
+#pragma once
+// The production record in SQLite (Debian libsqlite3): one row per run - machine, job name,
+// the job file and its fingerprint, operator, start and end, outcome, cycle time, what was
+// made and where a short run stopped (summary.json's "made" and "stop") - and its alarms. One
+// file (the user's data folder by default), WAL journal, the schema versioned by
+// PRAGMA user_version with migrations from every earlier version. A run left open by a killed
+// program (its host's process is gone) is closed as "interrupted" when the record is next
+// opened; a run of a program still running stays open.
+//
+// The run log calls it on the engine's logger thread (RunRecordSink); queries may come from any
+// thread: one connection behind a mutex.
+#include "core/record/run_record.h"
+
+#include <cstdint>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct sqlite3;
+
+namespace cutcell {
+
+class RecordError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+struct RecordedRun {
+    std::int64_t id = 0;
+    std::string machine, job_name, job_hash, operator_name, run_dir;
+    std::string outcome; // "" while running; "interrupted" if the program died
+    std::int64_t started_ms = 0, ended_ms = 0; // ms since the epoch; ended 0 while open
+    double cycle_time_s = 0;
+    std::string made_json, stop_json; // "" when the run's summary had none
+    int alarms = 0;
+};
+
+struct RunQuery {
+    std::int64_t since_ms = 0; // runs started at or after this
+    std::string machine;       // "" for every machine
+    std::string outcome;       // "" for every outcome
+};
+
+class SqliteRunRecord final : public RunRecordSink {
+  public:
+    static constexpr int kSchemaVersion = 1;
+
+    // Opens or creates the record at `path` (its folder too) and migrates it; throws
+    // RecordError naming the file and SQLite's reason.
+    SqliteRunRecord(const std::string& path, std::string operatorName);
+    ~SqliteRunRecord() override;
+    SqliteRunRecord(const SqliteRunRecord&) = delete;
+    SqliteRunRecord& operator=(const SqliteRunRecord&) = delete;
+
+    // Runs found open at the start whose program was killed, now closed as "interrupted".
+    int interruptedAtOpen() const { return interrupted_; }
+    const std::string& path() const { return path_; }
+    int schemaVersion() const;
+
+    void opened(const RunOpening& run) override;
+    void alarm(const RunAlarmNote& alarm) override;
+    void closed(const RunClosing& run) override;
+
+    std::vector<RecordedRun> runs(const RunQuery& query) const; // oldest first
+    std::vector<RunAlarmNote> alarmsOf(std::int64_t runId) const;
+    std::string jobTextOf(std::int64_t runId) const;
+    // PRAGMA integrity_check's answer ("ok" for a sound file).
+    std::string integrityCheck() const;
+
+    // Who is at the station: the desktop's user ($USER, $LOGNAME) until user levels bring
+    // logins; "unknown".
+    static std::string desktopUser();
+    // $XDG_DATA_HOME/cutcell/production.db, or ~/.local/share/cutcell/production.db.
+    static std::string defaultPath();
+    // The machine a job file is for (its machine.kind, or a schema-1 job's machine); "".
+    static std::string machineOfJob(const std::string& jobText);
+    // A fingerprint of the job file (FNV-1a 64, hex): tells equal jobs apart, not a signature.
+    static std::string jobFingerprint(const std::string& jobText);
+
+  private:
+    void exec(const char* sql) const;
+    void migrate();
+    void closeInterrupted();
+    std::string path_;
+    std::string operator_;
+    sqlite3* db_ = nullptr;
+    mutable std::mutex mutex_;
+    std::int64_t openRun_ = 0; // row of the run being recorded
+    int interrupted_ = 0;
+};
+
+} // namespace cutcell
