@@ -248,8 +248,8 @@ TEST(QuickReturnControl, HoldSettlesWithTheFeedbackSeveralCyclesLate) {
     if (!findMachine(kQuickReturnId)) registerMachines();
     const Job job = findMachine(kQuickReturnId)->defaultJob();
     ExperimentSetup setup;
-    std::string problem;
-    ASSERT_TRUE(buildSetup(quickReturnSpec(job), &setup, &problem)) << problem;
+    const Outcome set = buildSetup(quickReturnSpec(job), &setup);
+    ASSERT_TRUE(set.ok()) << set.message;
     const double target = setup.law.stroke.q_bottom + 0.01;
     for (const double period : {0.001, 0.01})
         for (int delay = 0; delay <= 5; ++delay) {
@@ -353,8 +353,8 @@ TEST(QuickReturnControl, CutsThroughAnActuationDelayAsInProcessWhenTheLawPredict
     if (!findMachine(kQuickReturnId)) registerMachines();
     const Job job = findMachine(kQuickReturnId)->defaultJob();
     ExperimentSetup setup;
-    std::string problem;
-    ASSERT_TRUE(buildSetup(quickReturnSpec(job), &setup, &problem)) << problem;
+    const Outcome set = buildSetup(quickReturnSpec(job), &setup);
+    ASSERT_TRUE(set.ok()) << set.message;
     const DelayedCut inProcess = cutWithActuationDelay(setup, 0, false);
     ASSERT_EQ(inProcess.strokes, setup.law.strokes);
     for (const int delay : {1, 2}) {

@@ -13,36 +13,34 @@ json::Value vec(const Vec3& v) {
     return json::Array{v.x(), v.y(), v.z()};
 }
 
-bool badArm(const std::string& arm, std::string* why) {
-    if (arm.empty() || arm == "arm") return false;
-    if (why) *why = "--arm = " + json::quote(arm) + " is not this machine's arm (\"arm\")";
-    return true;
+Outcome checkArm(const std::string& arm) {
+    if (arm.empty() || arm == "arm") return Outcome::done();
+    return Outcome::refuse("--arm = " + json::quote(arm) + " is not this machine's arm (\"arm\")");
 }
 
-bool finite(const std::vector<double>& v, const char* option, std::string* why) {
+Outcome checkFinite(const std::vector<double>& v, const char* option) {
     for (size_t i = 0; i < v.size(); ++i)
-        if (!std::isfinite(v[i])) {
-            if (why)
-                *why = std::string(option) + ": value " + std::to_string(i + 1) + " is not finite";
-            return false;
-        }
-    return true;
+        if (!std::isfinite(v[i]))
+            return Outcome::refuse(std::string(option) + ": value " + std::to_string(i + 1) +
+                                   " is not finite");
+    return Outcome::done();
+}
+
+// The arm and the values of an option (--joints, --pose): Ok, or the first refusal.
+Outcome checkRequest(const std::string& arm, const std::vector<double>& v, const char* option) {
+    if (Outcome o = checkArm(arm); !o.ok()) return o;
+    return checkFinite(v, option);
 }
 
 } // namespace
 
 Outcome PipeRobotModule::forwardKinematics(const Job& job, const std::string& arm,
                                            const std::vector<double>& q, json::Value* out) const {
-    std::string whyText; // the helpers below word the refusal
-    std::string* why = &whyText;
-    if (badArm(arm, why) || !finite(q, "--joints", why)) return Outcome::refuse(whyText);
-    if (q.size() != kArmJointCount && q.size() != kAxisCount) {
-        if (why)
-            *why = "--joints needs 5 values theta1..theta5 (deg), or 6 with the chuck angle "
-                   "theta0 first; found " +
-                   std::to_string(q.size());
-        return Outcome::refuse(whyText);
-    }
+    if (Outcome o = checkRequest(arm, q, "--joints"); !o.ok()) return o;
+    if (q.size() != kArmJointCount && q.size() != kAxisCount)
+        return Outcome::refuse("--joints needs 5 values theta1..theta5 (deg), or 6 with the "
+                               "chuck angle theta0 first; found " +
+                               std::to_string(q.size()));
     const PipeRobot robot(pipeRobotSpec(job).dh);
     const size_t first = q.size() == kAxisCount ? 1 : 0;
     ArmVector arm5;
@@ -72,22 +70,15 @@ Outcome PipeRobotModule::forwardKinematics(const Job& job, const std::string& ar
 Outcome PipeRobotModule::inverseKinematics(const Job& job, const std::string& arm,
                                            const std::vector<double>& pose,
                                            json::Value* out) const {
-    std::string whyText; // the helpers below word the refusal
-    std::string* why = &whyText;
-    if (badArm(arm, why) || !finite(pose, "--pose", why)) return Outcome::refuse(whyText);
-    if (pose.size() != 6 && pose.size() != 7) {
-        if (why)
-            *why = "--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction), and "
-                   "optionally the roll theta5 (deg); found " +
-                   std::to_string(pose.size());
-        return Outcome::refuse(whyText);
-    }
+    if (Outcome o = checkRequest(arm, pose, "--pose"); !o.ok()) return o;
+    if (pose.size() != 6 && pose.size() != 7)
+        return Outcome::refuse("--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch "
+                               "direction), and optionally the roll theta5 (deg); found " +
+                               std::to_string(pose.size()));
     const Vec3 p(pose[0], pose[1], pose[2]);
     Vec3 t(pose[3], pose[4], pose[5]);
-    if (!(t.norm() > 1e-9)) {
-        if (why) *why = "--pose: the torch direction (tx, ty, tz) is zero";
-        return Outcome::refuse(whyText);
-    }
+    if (!(t.norm() > 1e-9))
+        return Outcome::refuse("--pose: the torch direction (tx, ty, tz) is zero");
     t.normalize();
     const double roll = pose.size() == 7 ? deg2rad(pose[6]) : 0.0;
     const PipeRobot robot(pipeRobotSpec(job).dh);

@@ -13,8 +13,7 @@ void QuickReturnModule::addBenchFigures(bool quick, json::Object& out) const {
     using namespace quick_return;
     const Job job = defaultJob();
     ExperimentSetup s;
-    std::string problem;
-    if (!buildSetup(quickReturnSpec(job), &s, &problem)) return;
+    if (!buildSetup(quickReturnSpec(job), &s).ok()) return;
     const auto t0 = std::chrono::steady_clock::now();
     for (ControllerKind k : kAllControllers) {
         const std::string c = toString(k);

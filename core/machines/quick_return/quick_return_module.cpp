@@ -90,9 +90,8 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
     MachinePlan out;
     const QuickReturnSpec& spec = quickReturnSpec(job);
     auto data = std::make_shared<QuickReturnPlanData>();
-    std::string problem;
-    if (!buildSetup(spec, &data->setup, &problem)) {
-        out.problem = messageC("not feasible: %s", problem.c_str());
+    if (const Outcome set = buildSetup(spec, &data->setup); !set.ok()) {
+        out.problem = messageC("not feasible: %s", set.message.c_str());
         return out;
     }
     const ExperimentSetup& s = data->setup;

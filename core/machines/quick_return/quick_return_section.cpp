@@ -248,20 +248,17 @@ std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s) {
     return c.issues;
 }
 
-bool buildSetup(const QuickReturnSpec& s, ExperimentSetup* setup, std::string* problem) {
+Outcome buildSetup(const QuickReturnSpec& s, ExperimentSetup* setup) {
     ExperimentSetup e;
     e.law.dims = s.dims;
     e.law.stroke = strokeInfo(s.dims);
-    if (!e.law.stroke.ok) {
-        *problem = messageC("the mechanism has no full crank turn with two singular points");
-        return false;
-    }
+    if (!e.law.stroke.ok)
+        return Outcome::refuse(
+            messageC("the mechanism has no full crank turn with two singular points"));
     e.law.profile =
         algorithm1(e.law.stroke.y_top, e.law.stroke.y_bottom, s.workpiece_length, s.velocity);
-    if (!e.law.profile.ok) {
-        *problem = messageC("Algorithm 1: %s", e.law.profile.problem);
-        return false;
-    }
+    if (!e.law.profile.ok)
+        return Outcome::refuse(messageC("Algorithm 1: %s", e.law.profile.problem));
     e.law.experiment = s.experiment;
     e.law.controller = s.controller;
     e.law.gains = s.gains;
@@ -286,7 +283,7 @@ bool buildSetup(const QuickReturnSpec& s, ExperimentSetup* setup, std::string* p
     e.mse_window = s.mse_window;
     e.mse_scale = s.mse_scale;
     *setup = e;
-    return true;
+    return Outcome::done();
 }
 
 } // namespace cutcell

@@ -15,6 +15,7 @@
 //                disturbance_nm, disturbance_hz,
 //                ffc { wn2, xi }, lqt { q1, q2, r }, smc { c, eta, phi },
 //                osmc { q11, q12, q22, lambda, k1, k2 } }
+#include "core/common/outcome.h"
 #include "core/job/field_table.h"
 #include "core/job/job.h"
 #include "core/job/job_io.h"
@@ -57,9 +58,8 @@ QuickReturnSpec readQuickReturnSection(const json::Value& section);
 json::Value writeQuickReturnSection(const QuickReturnSpec& s, const std::string& kind);
 std::vector<JobIssue> validateQuickReturn(const QuickReturnSpec& s);
 
-// The experiment set-up of a valid spec (stroke, Algorithm 1, law, plant); ok false + *problem
-// when the mechanism or the profile cannot be built.
-bool buildSetup(const QuickReturnSpec& s, quick_return::ExperimentSetup* setup,
-                std::string* problem);
+// The experiment set-up of a valid spec (stroke, Algorithm 1, law, plant) in *setup; Refused
+// with why when the mechanism or the profile cannot be built.
+Outcome buildSetup(const QuickReturnSpec& s, quick_return::ExperimentSetup* setup);
 
 } // namespace cutcell

@@ -29,10 +29,9 @@ json::Value branch(const std::array<double, N>& q, const std::array<ArmJointLimi
     return json::Object{{"joints_deg", joints}, {"status", status}};
 }
 
-bool badArm(const std::string& arm, std::string* why) {
-    if (arm == "path" || arm == "groove") return false;
-    if (why) *why = "--arm = " + json::quote(arm) + " is not one of \"path\", \"groove\"";
-    return true;
+Outcome checkArm(const std::string& arm) {
+    if (arm == "path" || arm == "groove") return Outcome::done();
+    return Outcome::refuse("--arm = " + json::quote(arm) + " is not one of \"path\", \"groove\"");
 }
 
 } // namespace
@@ -40,17 +39,12 @@ bool badArm(const std::string& arm, std::string* why) {
 Outcome SectionSteelModule::forwardKinematics(const Job& job, const std::string& arm,
                                               const std::vector<double>& q,
                                               json::Value* out) const {
-    std::string whyText; // the helpers below word the refusal
-    std::string* why = &whyText;
-    if (badArm(arm, why)) return Outcome::refuse(whyText);
+    if (Outcome o = checkArm(arm); !o.ok()) return o;
     const SectionSteelSpec* s = job.machine_spec.as<SectionSteelSpec>();
     const size_t n = arm == "path" ? 3 : 5;
-    if (!s || q.size() != n) {
-        if (why)
-            *why = "--joints needs " + std::to_string(n) + " values (deg) for the " + arm +
-                   " arm, found " + std::to_string(q.size());
-        return Outcome::refuse(whyText);
-    }
+    if (!s || q.size() != n)
+        return Outcome::refuse("--joints needs " + std::to_string(n) + " values (deg) for the " +
+                               arm + " arm, found " + std::to_string(q.size()));
     const SteelCell cell(*s);
     Vec3 p, t;
     if (arm == "path")
@@ -68,31 +62,22 @@ Outcome SectionSteelModule::forwardKinematics(const Job& job, const std::string&
 Outcome SectionSteelModule::inverseKinematics(const Job& job, const std::string& arm,
                                               const std::vector<double>& pose,
                                               json::Value* out) const {
-    std::string whyText; // the helpers below word the refusal
-    std::string* why = &whyText;
-    if (badArm(arm, why)) return Outcome::refuse(whyText);
+    if (Outcome o = checkArm(arm); !o.ok()) return o;
     const SectionSteelSpec* s = job.machine_spec.as<SectionSteelSpec>();
-    if (!s || pose.size() != 6) {
-        if (why) *why = "--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction)";
-        return Outcome::refuse(whyText);
-    }
+    if (!s || pose.size() != 6)
+        return Outcome::refuse("--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction)");
     const Vec3 p(pose[0], pose[1], pose[2]);
     Vec3 t(pose[3], pose[4], pose[5]);
-    if (!(t.norm() > 1e-9)) {
-        if (why) *why = "--pose: the torch direction (tx, ty, tz) is zero";
-        return Outcome::refuse(whyText);
-    }
+    if (!(t.norm() > 1e-9))
+        return Outcome::refuse("--pose: the torch direction (tx, ty, tz) is zero");
     t.normalize();
     const SteelCell cell(*s);
     json::Array branches;
     if (arm == "path") {
         PlanarPose pp;
-        if (!cell.pathPlanar(p, t, pp)) {
-            if (why)
-                *why = "--pose: the path arm works in the cut plane (square: x = 0 and tx = 0; "
-                       "mitred: the mitre plane of end_cut)";
-            return Outcome::refuse(whyText);
-        }
+        if (!cell.pathPlanar(p, t, pp))
+            return Outcome::refuse("--pose: the path arm works in the cut plane (square: x = 0 "
+                                   "and tx = 0; mitred: the mitre plane of end_cut)");
         for (const auto& b : cell.path.inverse(pp))
             branches.push_back(branch(b.q, s->path_limits));
     } else {

@@ -1,6 +1,7 @@
 #include "core/machines/section_steel/section_steel_planner.h"
 
 #include "core/common/c_format.h"
+#include "core/common/outcome.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,16 +38,14 @@ std::string limitViolation(const std::array<double, N>& q, const std::array<ArmJ
     return {};
 }
 
-// Picks among IK solutions: inside the limits, nearest to ref (unwrapped to it). *why says
-// why none fits.
+// Picks among IK solutions: inside the limits, nearest to ref (unwrapped to it). Refused with
+// why when none fits.
 template <size_t N>
-bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& ref,
-          const std::array<ArmJointLimit, N>& lim, const char* const* names, const char* arm,
-          std::array<double, N>& out, std::string* why, bool unwrap = true) {
-    if (sols.empty()) {
-        *why = messageC("%s: no inverse-kinematics solution (out of reach)", arm);
-        return false;
-    }
+Outcome pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& ref,
+             const std::array<ArmJointLimit, N>& lim, const char* const* names, const char* arm,
+             std::array<double, N>& out, bool unwrap = true) {
+    if (sols.empty())
+        return Outcome::refuse(messageC("%s: no inverse-kinematics solution (out of reach)", arm));
     double best = 1e300;
     std::string firstViolation;
     for (auto& q : sols) {
@@ -64,9 +63,8 @@ bool pick(std::vector<std::array<double, N>> sols, const std::array<double, N>& 
             out = q;
         }
     }
-    if (best < 1e300) return true;
-    *why = messageC("%s (all %zu branches)", firstViolation.c_str(), sols.size());
-    return false;
+    if (best < 1e300) return Outcome::done();
+    return Outcome::refuse(messageC("%s (all %zu branches)", firstViolation.c_str(), sols.size()));
 }
 
 // The groove arm's branch at the first point of a pass: of the IK branches inside the limits
@@ -188,7 +186,7 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
         bool first = true;
         for (size_t k = 0; k < pass.samples.size(); ++k) {
             const TorchTarget& tt = pass.samples[k];
-            std::string why;
+            Outcome picked; // the IK branch of this point
             // Torch body (cylinder behind the tip) against the section.
             if (const auto hit = torchHit(cut, cut.torchBody(), tt.p, tt.t, pass.name == "square"))
                 fail(pointProblem(
@@ -207,9 +205,10 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 for (const auto& s : cell.path.inverse(pose))
                     sols.push_back(s.q);
                 std::array<double, 3> q{};
-                if (!pick(sols, qp, spec.path_limits, kPathJointNames, messageC("path arm").c_str(),
-                          q, &why, !first)) {
-                    fail(pointProblem(cut, pass, k, why));
+                picked = pick(sols, qp, spec.path_limits, kPathJointNames,
+                              messageC("path arm").c_str(), q, !first);
+                if (!picked.ok()) {
+                    fail(pointProblem(cut, pass, k, picked.message));
                 } else {
                     if (!first && distance(q, qp) > jump)
                         fail(pointProblem(cut, pass, k,
@@ -236,9 +235,10 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                     std::vector<Q5> sols;
                     for (const auto& s : cell.groove.inverseTorch(pb, tb))
                         sols.push_back(s.q);
-                    if (!pick(sols, qg, spec.groove_limits, kGrooveJointNames,
-                              messageC("groove arm").c_str(), q, &why, !first)) {
-                        fail(pointProblem(cut, pass, k, why));
+                    picked = pick(sols, qg, spec.groove_limits, kGrooveJointNames,
+                                  messageC("groove arm").c_str(), q, !first);
+                    if (!picked.ok()) {
+                        fail(pointProblem(cut, pass, k, picked.message));
                         q = qg;
                     } else if (!first && distance(q, qg) > jump) {
                         fail(
@@ -250,7 +250,7 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
                 qg = q;
                 cell.grooveTorch(qg, p, t);
             }
-            if (why.empty())
+            if (picked.ok())
                 plan.max_torch_error_mm = std::max(plan.max_torch_error_mm, (p - tt.p).norm());
             first = false;
             JointVector j = JointVector::Zero();

@@ -47,9 +47,8 @@ bool fillQuickReturnCanCell(CanCellBuilder& b, std::string* error) {
         return false;
     }
     quick_return::ExperimentSetup s;
-    std::string problem;
-    if (!buildSetup(*qr, &s, &problem)) {
-        if (error) *error = problem;
+    if (const Outcome set = buildSetup(*qr, &s); !set.ok()) {
+        if (error) *error = set.message;
         return false;
     }
     s.plant.contact = qr->experiment == quick_return::Experiment::Cutting;

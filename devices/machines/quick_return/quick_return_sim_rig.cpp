@@ -72,8 +72,8 @@ std::unique_ptr<MachineSimRig> makeQuickReturnSimRig(const Job& job, const Motio
     const auto* law = dynamic_cast<const quick_return::QuickReturnLaw*>(program.source.get());
     if (!law) throw std::invalid_argument("the program has no quick-return control law");
     quick_return::ExperimentSetup s;
-    std::string problem;
-    if (!buildSetup(quickReturnSpec(job), &s, &problem)) throw std::invalid_argument(problem);
+    if (const Outcome set = buildSetup(quickReturnSpec(job), &s); !set.ok())
+        throw std::invalid_argument(set.message);
     s.plant.contact = law->config().experiment == quick_return::Experiment::Cutting;
     return std::make_unique<QuickReturnSimRig>(s, program);
 }

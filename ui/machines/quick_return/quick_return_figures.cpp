@@ -111,9 +111,11 @@ bool QuickReturnFiguresForm::startSimulation(QString* why) {
     }
     const cutcell::Job job = editor()->job();
     const cutcell::QuickReturnSpec* spec = job.machine_spec.as<cutcell::QuickReturnSpec>();
-    std::string problem = "the job is not for the quick-return cutter";
-    if (!spec || !cutcell::buildSetup(*spec, &simSetup_, &problem)) {
-        summary_->setText(tr("Cannot simulate: %1").arg(QString::fromStdString(problem)));
+    const cutcell::Outcome set =
+        spec ? cutcell::buildSetup(*spec, &simSetup_)
+             : cutcell::Outcome::refuse("the job is not for the quick-return cutter");
+    if (!set.ok()) {
+        summary_->setText(tr("Cannot simulate: %1").arg(QString::fromStdString(set.message)));
         if (why) *why = summary_->text();
         return false;
     }
@@ -166,11 +168,10 @@ void QuickReturnFiguresForm::addSamples(const std::vector<cutcell::TelemetrySamp
                 law = dynamic_cast<const qr::QuickReturnLaw*>(
                     runController_->program()->source.get());
             qr::ExperimentSetup setup;
-            std::string problem;
             const auto* spec = editor()->job().machine_spec.as<cutcell::QuickReturnSpec>();
             if (law)
                 run_.setLaw(law->config()); // immutable after construction: safe to read
-            else if (!runController_ && spec && cutcell::buildSetup(*spec, &setup, &problem))
+            else if (!runController_ && spec && cutcell::buildSetup(*spec, &setup).ok())
                 run_.setLaw(setup.law); // a bare page fed by hand (tests)
             else
                 continue; // another machine's run

@@ -34,8 +34,8 @@ LinkagePiece pin(const Vec3& p, double y0, double y1, double r) {
 SceneModel buildQuickReturnScene(const Job& job) {
     const QuickReturnSpec& spec = quickReturnSpec(job);
     quick_return::ExperimentSetup setup;
-    std::string problem;
-    if (!buildSetup(spec, &setup, &problem)) throw std::invalid_argument(problem);
+    if (const Outcome set = buildSetup(spec, &setup); !set.ok())
+        throw std::invalid_argument(set.message);
     const quick_return::WhitworthDims d = spec.dims;
     const quick_return::StrokeInfo& st = setup.law.stroke;
     // Scale readings to the crank frame (mm).

@@ -138,9 +138,11 @@ bool QuickReturnTrackingForm::startExperiment(QString* why) {
     }
     const cutcell::Job job = editor()->job();
     const auto* spec = job.machine_spec.as<cutcell::QuickReturnSpec>();
-    std::string problem = "the job is not for the quick-return cutter";
-    if (!spec || !cutcell::buildSetup(*spec, &setup_, &problem)) {
-        status_->setText(tr("Cannot run: %1").arg(QString::fromStdString(problem)));
+    const cutcell::Outcome set =
+        spec ? cutcell::buildSetup(*spec, &setup_)
+             : cutcell::Outcome::refuse("the job is not for the quick-return cutter");
+    if (!set.ok()) {
+        status_->setText(tr("Cannot run: %1").arg(QString::fromStdString(set.message)));
         if (why) *why = status_->text();
         return false;
     }

@@ -1,6 +1,7 @@
 #include "core/machines/section_steel/dstv/dstv_import.h"
 
 #include "core/common/c_format.h"
+#include "core/common/outcome.h"
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machines/section_steel/dstv/dstv_reader.h"
@@ -161,32 +162,26 @@ std::string prepText(const std::vector<dstv::WeldPrep>& prep) {
     return s;
 }
 
-// The groove an end-edge weld preparation asks for, or nullopt with the reason.
-std::optional<GrooveSpec> grooveOf(const std::vector<dstv::WeldPrep>& prep, double thickness,
-                                   std::string* why) {
+// The groove an end-edge weld preparation asks for (*out), or Refused with the reason.
+Outcome grooveOf(const std::vector<dstv::WeldPrep>& prep, double thickness, GrooveSpec* out) {
     GrooveSpec g;
     const double a = std::abs(prep[0].angle_deg);
     const double c = prep[0].blunting_mm;
     if (prep.size() == 2) {
-        if (!near(std::abs(prep[1].angle_deg), a, 1e-9) || !near(prep[1].blunting_mm, c, 1e-9)) {
-            *why = "the cutter cuts symmetric K grooves only";
-            return std::nullopt;
-        }
+        if (!near(std::abs(prep[1].angle_deg), a, 1e-9) || !near(prep[1].blunting_mm, c, 1e-9))
+            return Outcome::refuse("the cutter cuts symmetric K grooves only");
         g.type = GrooveType::K;
     } else {
         g.type = c > 0 ? GrooveType::Y : GrooveType::V;
     }
     g.angle_deg = a;
     g.root_face_mm = c;
-    if (!(a >= 5 && a <= 60)) {
-        *why = "the bevel head tilts the torch 5..60 deg";
-        return std::nullopt;
-    }
-    if (c >= thickness) {
-        *why = "a blunting of " + n(c) + " mm leaves no bevel in " + n(thickness) + " mm";
-        return std::nullopt;
-    }
-    return g;
+    if (!(a >= 5 && a <= 60)) return Outcome::refuse("the bevel head tilts the torch 5..60 deg");
+    if (c >= thickness)
+        return Outcome::refuse("a blunting of " + n(c) + " mm leaves no bevel in " + n(thickness) +
+                               " mm");
+    *out = g;
+    return Outcome::done();
 }
 
 struct FaceGroove {
@@ -276,9 +271,13 @@ void readOuterContour(const Contour& c, const Header& h, const SectionDims& d,
                                         "only)"));
             continue;
         }
-        std::string why;
-        groove = grooveOf(p.prep, thickness, &why);
-        if (!groove) report.push_back(lineOf(p.line) + edge + ": not cut (" + why + ")");
+        GrooveSpec g;
+        if (const Outcome o = grooveOf(p.prep, thickness, &g); o.ok()) {
+            groove = g;
+        } else {
+            groove.reset();
+            report.push_back(lineOf(p.line) + edge + ": not cut (" + o.message + ")");
+        }
     }
     if (!endCope) grooves.push_back({c.face, c.line, groove});
 }
