@@ -249,7 +249,7 @@ void RunController::onState(EngineState s) {
 }
 
 QString RunController::planProblem() const {
-    const QString text = engineText(QString::fromStdString(plan_->problem));
+    const QString text = engineText(QString::fromStdString(plan_->outcome.message));
     return labelKeys_ ? labelKeys_(text) : text;
 }
 

@@ -166,7 +166,7 @@ void benchSources(const Job& job, const std::shared_ptr<const MotionProgram>& pr
 void benchEngine(const Job& job, bool quick, const RealtimeSettings& realtime, json::Object& out) {
     const MachinePlan plan = machineFor(job).plan(job);
     if (!plan.ok() || !plan.program) {
-        std::fprintf(stderr, "bench: the job does not plan: %s\n", plan.problem.c_str());
+        std::fprintf(stderr, "bench: the job does not plan: %s\n", plan.outcome.message.c_str());
         return;
     }
     const std::shared_ptr<const MotionProgram> program = plan.program;

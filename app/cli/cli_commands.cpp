@@ -68,7 +68,7 @@ int runValidate(const ValidateOptions& o) {
     std::printf("job '%s' is valid: %s, %s\n", job.name.c_str(), module->id().c_str(),
                 plan.summary.c_str());
     if (!plan.ok()) {
-        std::fprintf(stderr, "%s\n", plan.problem.c_str());
+        std::fprintf(stderr, "%s\n", plan.outcome.message.c_str());
         return kUnreachable;
     }
     return kOk;
@@ -83,7 +83,7 @@ int runPlan(const PlanOptions& o) {
     MachinePlan plan;
     if (!planJob(job, {}, &module, &plan, &code)) return code;
     if (!plan.ok()) {
-        std::fprintf(stderr, "%s\n", plan.problem.c_str());
+        std::fprintf(stderr, "%s\n", plan.outcome.message.c_str());
         return kUnreachable;
     }
     try {
@@ -134,7 +134,7 @@ int runSimulate(const SimulateOptions& o) {
     MachinePlan plan;
     if (!planJob(job, {}, &m, &plan, &code)) return code;
     if (!plan.ok()) {
-        std::fprintf(stderr, "%s\n", plan.problem.c_str());
+        std::fprintf(stderr, "%s\n", plan.outcome.message.c_str());
         return kUnreachable;
     }
     if (overCan) {

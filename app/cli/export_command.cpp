@@ -55,7 +55,7 @@ int runExport(const ExportOptions& o) {
     try {
         const MachinePlan plan = module.plan(job, {});
         if (!plan.ok()) {
-            std::fprintf(stderr, "cutcell-cli export: %s\n", plan.problem.c_str());
+            std::fprintf(stderr, "cutcell-cli export: %s\n", plan.outcome.message.c_str());
             return kUnreachable;
         }
         // Every file asked for as one unit: a kill leaves the old files or the new ones.

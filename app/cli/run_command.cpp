@@ -38,7 +38,7 @@ int runRun(const RunOptions& o) {
         return kInvalidJob;
     }
     if (!plan.ok()) {
-        std::fprintf(stderr, "%s\n", plan.problem.c_str());
+        std::fprintf(stderr, "%s\n", plan.outcome.message.c_str());
         return kUnreachable;
     }
     EngineRunSetup setup;

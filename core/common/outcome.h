@@ -16,6 +16,7 @@ enum class OutcomeStatus : std::uint8_t {
     Refused,    // not done: the machine has no such thing, or the job cannot give it
     Incomplete, // done, but not all of it (a simulated run that stopped early): the message says
                 // why
+    Cancelled,  // stopped on the caller's request (a plan cancelled through PlanOptions::cancel)
 };
 
 struct Outcome {
@@ -25,6 +26,7 @@ struct Outcome {
 
     bool ok() const { return status == OutcomeStatus::Ok; }
     bool refused() const { return status == OutcomeStatus::Refused; }
+    bool cancelled() const { return status == OutcomeStatus::Cancelled; }
     static Outcome done() { return {}; }
     static Outcome refuse(std::string message, std::string key = {}) {
         return {OutcomeStatus::Refused, std::move(key), std::move(message)};
@@ -32,6 +34,7 @@ struct Outcome {
     static Outcome incomplete(std::string message, std::string key = {}) {
         return {OutcomeStatus::Incomplete, std::move(key), std::move(message)};
     }
+    static Outcome cancel() { return {OutcomeStatus::Cancelled, {}, {}}; }
 };
 
 } // namespace cutcell

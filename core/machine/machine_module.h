@@ -42,21 +42,18 @@ struct AxisInfo {
 const char* unitSymbol(AxisUnit u);         // "deg" or "mm"
 const char* commandModeName(CommandMode m); // "position", "velocity", "torque"
 
-enum class PlanStatus {
-    Ok,
-    Infeasible, // the job is valid but the machine cannot make this cut (reach, travel, rates)
-    Cancelled,  // PlanOptions::cancel was set while planning (no program)
-};
-
 // What plan() gives: the program for the engine and the machine's own data for its exports.
 struct MachinePlan {
-    PlanStatus status = PlanStatus::Infeasible;
+    // Ok; Refused when the job is valid but the machine cannot make this cut (reach, travel,
+    // rates): the message is one sentence naming the point, the value, the limit, the key the
+    // job key when the machine knows it; Cancelled when PlanOptions::cancel was set while
+    // planning (no program). Refused until the module has planned.
+    Outcome outcome = Outcome::refuse({});
     std::string summary; // one line for the operator ("530.1 mm at 8 mm/s, 66.3 s, ...")
-    std::string problem; // when Infeasible: one sentence naming the point, the value, the limit
     std::shared_ptr<const MotionProgram> program;
     std::shared_ptr<const void> data; // owned by the module that made it (its plan type)
-    bool ok() const { return status == PlanStatus::Ok; }
-    bool cancelled() const { return status == PlanStatus::Cancelled; }
+    bool ok() const { return outcome.ok(); }
+    bool cancelled() const { return outcome.cancelled(); }
 };
 
 // A file the machine can write from a plan.

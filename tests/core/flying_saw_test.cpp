@@ -469,7 +469,7 @@ TEST(SawModule, AnOvercutThatLeavesNoWallNamesTheOvercut) {
 TEST(SawModule, PlanRefusesWithTheFiguresAndExportsTheCamTable) {
     Job job = sawModule().defaultJob();
     MachinePlan plan = sawModule().plan(job, {});
-    ASSERT_TRUE(plan.ok()) << plan.problem;
+    ASSERT_TRUE(plan.ok()) << plan.outcome.message;
     ASSERT_TRUE(plan.program);
     EXPECT_EQ(plan.program->source_kind, MotionSourceKind::MasterAxis);
     const std::string csv = sawModule().exportFile("cam_csv", job, plan);
@@ -490,9 +490,9 @@ TEST(SawModule, PlanRefusesWithTheFiguresAndExportsTheCamTable) {
     job.machine_spec.as<FlyingSawSpec>()->queue = {{500, 2}};
     plan = sawModule().plan(job, {});
     EXPECT_FALSE(plan.ok());
-    EXPECT_NE(plan.problem.find("machine.cut.queue[0].length_mm = 500 mm is too short"),
+    EXPECT_NE(plan.outcome.message.find("machine.cut.queue[0].length_mm = 500 mm is too short"),
               std::string::npos)
-        << plan.problem;
+        << plan.outcome.message;
 }
 
 // A linear axis's counts are per mm, and so is the message (it said counts/deg).
@@ -520,7 +520,7 @@ TEST(SawModule, AQueueOverTheSimulationsBoundIsRefusedWithTheFigures) {
     s.queue = {{6000, 17000}};
     ASSERT_TRUE(validateJob(job).empty());
     const MachinePlan plan = sawModule().plan(job);
-    ASSERT_TRUE(plan.ok()) << plan.problem;
+    ASSERT_TRUE(plan.ok()) << plan.outcome.message;
     std::string json, text;
     const Outcome report = sawModule().offlineReport(job, plan, &json, &text);
     EXPECT_TRUE(report.refused());
@@ -558,7 +558,7 @@ TEST(SawModule, TheTurntablesCountsOfAWholeRunFitA32BitPosition) {
     FlyingSawSpec& s = *job.machine_spec.as<FlyingSawSpec>();
     s.queue = {{6000, 1000000}};
     const MachinePlan plan = sawModule().plan(job);
-    ASSERT_TRUE(plan.ok()) << plan.problem;
+    ASSERT_TRUE(plan.ok()) << plan.outcome.message;
     const MotionProgram& program = *plan.program;
     // Half a turn a piece (the source's own cycle), from wherever the last run left it.
     const double reachDeg = programReach(program, 1) * 180 / std::numbers::pi;

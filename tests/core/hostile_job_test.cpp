@@ -172,7 +172,7 @@ TEST(HostileJobs, EveryMachinesSectionIsRefusedByKeyOrReadAsValid) {
                     // Valid after all (a default, a value inside its range): it plans or says
                     // why, within the commands' work bounds.
                     const MachinePlan plan = machineFor(job).plan(job);
-                    if (!plan.ok()) EXPECT_FALSE(plan.problem.empty()) << label;
+                    if (!plan.ok()) EXPECT_FALSE(plan.outcome.message.empty()) << label;
                     ++planned;
                 } catch (const JobError& e) {
                     ++refused;

@@ -47,7 +47,7 @@ TEST_F(GermanLocale, EveryMachineWritesPointsNotCommas) {
         // own section included).
         EXPECT_EQ(json::write(jobToJson(again)), json::write(jobToJson(job)));
         const MachinePlan plan = m->plan(job, {});
-        ASSERT_TRUE(plan.ok()) << plan.problem;
+        ASSERT_TRUE(plan.ok()) << plan.outcome.message;
         for (const ExportInfo& e : m->exports()) {
             SCOPED_TRACE(e.id);
             const std::string text = m->exportFile(e.id, job, plan);

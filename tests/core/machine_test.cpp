@@ -40,7 +40,7 @@ std::string refusal(const std::string& text) {
 std::string planFiles(const Job& job) {
     const MachineModule& m = machineFor(job);
     const MachinePlan plan = m.plan(job, {});
-    EXPECT_TRUE(plan.ok()) << plan.problem;
+    EXPECT_TRUE(plan.ok()) << plan.outcome.message;
     std::string out;
     for (const ExportInfo& e : m.exports())
         if (e.plan_file) out += m.exportFile(e.id, job, plan);

@@ -463,7 +463,7 @@ TEST(QuickReturnJob, SimulateRefusesWorkOverItsBoundWithTheEstimate) {
     const MachineModule& m = *findMachine(kQuickReturnId);
     const auto refusal = [&](const Job& job) {
         const MachinePlan plan = m.plan(job);
-        EXPECT_TRUE(plan.ok()) << plan.problem;
+        EXPECT_TRUE(plan.ok()) << plan.outcome.message;
         const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
         return QuickReturnModule::offlineWorkProblem(quickReturnSpec(job), data->setup);
     };

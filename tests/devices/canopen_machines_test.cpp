@@ -96,7 +96,7 @@ class CanOpenMachinesTest : public QObject {
         job.engine.runs_dir.clear();
         const MachineModule& module = machineFor(job);
         plan_ = module.plan(job);
-        QVERIFY2(plan_.ok(), plan_.problem.c_str());
+        QVERIFY2(plan_.ok(), plan_.outcome.message.c_str());
         std::string error;
         QVERIFY2(makeCanCell(job, period, plan_.program.get(), &cell_, &error), error.c_str());
         DriveSimulatorConfig sc;

@@ -57,7 +57,7 @@ struct SawCell {
         job = m->defaultJob();
         job.machine_spec.as<FlyingSawSpec>()->queue = {{4000, pieces}};
         plan = m->plan(job, {});
-        EXPECT_TRUE(plan.ok()) << plan.problem;
+        EXPECT_TRUE(plan.ok()) << plan.outcome.message;
         std::string error;
         rig = makeSimulatedRig(job, *plan.program, &error);
         EXPECT_TRUE(rig) << error;

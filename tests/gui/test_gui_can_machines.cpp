@@ -178,7 +178,7 @@ class TestGuiCanMachines : public QObject {
         // The drive simulator plays the machine's cell, as `cutcell-cli drivesim` does.
         const cutcell::MachineModule& module = cutcell::machineFor(job);
         const cutcell::MachinePlan plan = module.plan(job);
-        QVERIFY2(plan.ok(), plan.problem.c_str());
+        QVERIFY2(plan.ok(), plan.outcome.message.c_str());
         cutcell::CanCellConfig cell;
         std::string error;
         QVERIFY2(cutcell::makeCanCell(job, period, plan.program.get(), &cell, &error),

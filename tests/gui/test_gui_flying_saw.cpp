@@ -183,7 +183,7 @@ class TestGuiFlyingSaw : public QObject {
         QVERIFY(ui);
         const cutcell::Job job = ui->defaultJob();
         const cutcell::MachinePlan plan = ui->plan(job, {});
-        QVERIFY2(plan.ok(), plan.problem.c_str());
+        QVERIFY2(plan.ok(), plan.outcome.message.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
         QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
@@ -193,9 +193,9 @@ class TestGuiFlyingSaw : public QObject {
         bad.machine_spec.as<FlyingSawSpec>()->queue = {{500, 2}};
         const cutcell::MachinePlan badPlan = ui->plan(bad, {});
         QVERIFY(!badPlan.ok());
-        QCOMPARE(badPlan.problem, cutcell::machineFor(bad).plan(bad).problem);
-        QVERIFY2(badPlan.problem.find("shortest possible") != std::string::npos,
-                 badPlan.problem.c_str());
+        QCOMPARE(badPlan.outcome.message, cutcell::machineFor(bad).plan(bad).outcome.message);
+        QVERIFY2(badPlan.outcome.message.find("shortest possible") != std::string::npos,
+                 badPlan.outcome.message.c_str());
     }
 
     void runCompletesAndTheFiguresHaveData() {

@@ -439,7 +439,7 @@ class TestGuiLanguage : public QObject {
         QVERIFY(module);
         const cutcell::MachinePlan plan = module->plan(job, text);
         QVERIFY(!plan.ok());
-        const QString english = QString::fromStdString(plan.problem);
+        const QString english = QString::fromStdString(plan.outcome.message);
         QVERIFY2(english.contains("cannot reach the line"), qPrintable(english));
         QVERIFY(CutCell::ui::applyGuiLanguage("de"));
         const QString german = CutCell::ui::engineText(english);

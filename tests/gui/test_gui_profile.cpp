@@ -245,10 +245,10 @@ class TestGuiProfile : public QObject {
         w.editor()->setJob(job);
         const cutcell::MachinePlan cli = cutcell::machineFor(job).plan(job);
         QVERIFY(!cli.ok());
-        QVERIFY(QString::fromStdString(cli.problem).contains("max_pulse_rate_hz"));
+        QVERIFY(QString::fromStdString(cli.outcome.message).contains("max_pulse_rate_hz"));
         QTRY_VERIFY_WITH_TIMEOUT(!w.run()->planning(), 10000);
         // The same sentence, the key named by its field's label.
-        const QString problem = QString::fromStdString(cli.problem);
+        const QString problem = QString::fromStdString(cli.outcome.message);
         const QString before = problem.left(problem.indexOf(
             QRegularExpression(R"((machine\.)?profile_cutter\.max_pulse_rate_hz)")));
         const QWidget* rate = w.parameters()->fieldFor("profile_cutter.max_pulse_rate_hz");

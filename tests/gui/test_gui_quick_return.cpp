@@ -112,7 +112,7 @@ class TestGuiQuickReturn : public QObject {
         QVERIFY(ui);
         const cutcell::Job job = ui->defaultJob();
         const cutcell::MachinePlan plan = ui->plan(job, {});
-        QVERIFY2(plan.ok(), plan.problem.c_str());
+        QVERIFY2(plan.ok(), plan.outcome.message.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
         QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
@@ -126,7 +126,7 @@ class TestGuiQuickReturn : public QObject {
         const cutcell::MachinePlan badPlan = ui->plan(bad, {});
         const cutcell::MachinePlan badCore = cutcell::machineFor(bad).plan(bad);
         QCOMPARE(badPlan.ok(), badCore.ok());
-        if (!badCore.ok()) QCOMPARE(badPlan.problem, badCore.problem);
+        if (!badCore.ok()) QCOMPARE(badPlan.outcome.message, badCore.outcome.message);
     }
 
     void runCompletesInTheFastClock() {

@@ -250,7 +250,7 @@ class TestGuiSectionSteel : public QObject {
         const CutCell::ui::MachineUi* ui = CutCell::ui::findMachineUi(kId);
         const cutcell::Job job = ui->defaultJob();
         const cutcell::MachinePlan plan = ui->plan(job, {});
-        QVERIFY2(plan.ok(), plan.problem.c_str());
+        QVERIFY2(plan.ok(), plan.outcome.message.c_str());
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
         QCOMPARE(ui->planSummary(job, plan), QString::fromStdString(core.summary));
         QCOMPARE(ui->plannedPointCount(plan), core.program->point_count);
@@ -377,7 +377,7 @@ class TestGuiSectionSteel : public QObject {
         // In real time from that fraction of the cut (cut recovery's "run from"), the torch on.
         const cutcell::Job job = w.editor()->job();
         const cutcell::MachinePlan core = cutcell::machineFor(job).plan(job);
-        QVERIFY2(core.ok(), core.problem.c_str());
+        QVERIFY2(core.ok(), core.outcome.message.c_str());
         w.run()->enable();
         QTRY_COMPARE_WITH_TIMEOUT(state(w), EngineState::Ready, 20000);
         w.run()->home();

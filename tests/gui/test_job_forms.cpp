@@ -217,7 +217,7 @@ class TestJobForms : public QObject {
         QVERIFY2(w.controls()->startBlockedReason().contains("not reachable"),
                  qPrintable(w.controls()->startBlockedReason()));
         QVERIFY(w.controls()->startBlockedReason().contains(
-            QString::fromStdString(w.run()->plan()->problem)));
+            QString::fromStdString(w.run()->plan()->outcome.message)));
     }
 };
 

@@ -84,7 +84,7 @@ class TestRunModel : public QObject {
         const cutcell::MachineModule* module = cutcell::findMachine(id.toStdString());
         QVERIFY(module);
         const cutcell::MachinePlan plan = module->plan(w.editor()->job());
-        QVERIFY2(plan.ok() && plan.program, plan.problem.c_str());
+        QVERIFY2(plan.ok() && plan.program, plan.outcome.message.c_str());
         auto* lamps = w.findChild<CutCell::ui::StateLamps*>();
         QVERIFY(lamps);
         QCOMPARE(lamps->lamp(CutCell::ui::StateLamps::Torch)->text().toLower(),

@@ -131,7 +131,7 @@ class RotaryTableModule : public MachineModule {
         p->source_text = jobText;
         out.program = p;
         out.summary = "a turn of " + num(s.turn_deg) + " deg in " + num(s.time_s) + " s";
-        out.status = PlanStatus::Ok;
+        out.outcome = Outcome::done();
         return out;
     }
     std::vector<ExportInfo> exports() const override { return {}; }

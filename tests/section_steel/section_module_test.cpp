@@ -111,7 +111,7 @@ TEST(SectionSteelModule, ValidationNamesKeyValueUnitLimit) {
 TEST(SectionSteelModule, DefaultJobPlansAJointSplineForEightAxes) {
     const Job job = steel().defaultJob();
     const MachinePlan plan = steel().plan(job, {});
-    ASSERT_TRUE(plan.ok()) << plan.problem;
+    ASSERT_TRUE(plan.ok()) << plan.outcome.message;
     ASSERT_TRUE(plan.program);
     EXPECT_EQ(plan.program->axis_count, 8);
     EXPECT_EQ(plan.program->source_kind, MotionSourceKind::JointSpline);

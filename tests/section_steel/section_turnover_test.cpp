@@ -211,14 +211,14 @@ TEST(SectionTurnover, KGroovedMitredIpeEndBevelsBothSidesOfBothFlangesInTwoSetup
     // Through the module: setup 1 tells the operator to turn the section over, setup 2 says
     // what it is.
     const MachinePlan one = steel().plan(job, {});
-    ASSERT_TRUE(one.ok()) << one.problem;
+    ASSERT_TRUE(one.ok()) << one.outcome.message;
     EXPECT_NE(one.summary.find("turn the section over"), std::string::npos) << one.summary;
     EXPECT_NE(one.summary.find("end_cut.setup = 2"), std::string::npos) << one.summary;
     Job two = job;
     two.machine_spec.as<SectionSteelSpec>()->cut.setup = 2;
     EXPECT_TRUE(steel().validate(two).empty());
     const MachinePlan p2 = steel().plan(two, {});
-    ASSERT_TRUE(p2.ok()) << p2.problem;
+    ASSERT_TRUE(p2.ok()) << p2.outcome.message;
     EXPECT_EQ(p2.summary.rfind("setup 2 of 2", 0), 0u) << p2.summary;
     EXPECT_EQ(p2.summary.find("turn the section over"), std::string::npos) << p2.summary;
 }
@@ -288,7 +288,7 @@ TEST(SectionTurnover, SetupTwoWithNothingLeftIsRefusedNamingTheKey) {
         const MachinePlan mp = steel().plan(job, {});
         EXPECT_FALSE(mp.ok());
         EXPECT_FALSE(mp.program);
-        EXPECT_EQ(mp.problem, issues[0].message);
+        EXPECT_EQ(mp.outcome.message, issues[0].message);
     }
     // An angle names its horizontal leg.
     SectionSteelSpec l = defaultSectionSteelSpec();

@@ -72,11 +72,10 @@ cutcell::MachinePlan MachineUi::plan(const cutcell::Job& job,
                                      const cutcell::PlanOptions& options) const {
     cutcell::MachinePlan p = module().plan(job, {}, options);
     if (options.cancelled()) { // a plan finished as it was cancelled is dropped all the same
-        p.status = cutcell::PlanStatus::Cancelled;
+        p.outcome = cutcell::Outcome::cancel();
         p.program.reset();
     } else if (p.ok() && !p.program) {
-        p.status = cutcell::PlanStatus::Infeasible;
-        p.problem = "the machine module gave no program";
+        p.outcome = cutcell::Outcome::refuse("the machine module gave no program");
     }
     return p;
 }
@@ -92,7 +91,7 @@ QString MachineUi::planSummary(const cutcell::Job&, const cutcell::MachinePlan& 
 
 std::shared_ptr<const cutcell::MotionProgram> programForRun(const cutcell::MachinePlan& plan,
                                                             const std::string& jobText) {
-    if (!plan.ok() || !plan.program) throw std::invalid_argument(plan.problem);
+    if (!plan.ok() || !plan.program) throw std::invalid_argument(plan.outcome.message);
     auto program = std::make_shared<cutcell::MotionProgram>(*plan.program);
     program->source_text = jobText;
     return program;

@@ -97,8 +97,8 @@ MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText,
     const FlyingSawPlan& p = data->plan;
     const FlyingSawSpec& s = data->spec;
     if (!p.ok) {
-        out.status = PlanStatus::Infeasible;
-        out.problem = messageC("not feasible: machine.%s", p.problem.c_str());
+        out.outcome =
+            Outcome::refuse(messageC("not feasible: machine.%s", p.problem.c_str()), p.problemKey);
         out.summary = p.problem;
         return out;
     }
@@ -108,7 +108,7 @@ MachinePlan FlyingSawModule::plan(const Job& job, const std::string& jobText,
         s.pieceCount(), s.line_speed_m_min, p.cycle_time_s, p.T1, p.T2, p.T3,
         p.nominal_reverse.duration(), p.k, p.stroke_needed_mm, s.stroke_mm, p.shortest_length_mm);
     out.program = buildFlyingSawProgram(job, s, p, jobText);
-    out.status = PlanStatus::Ok;
+    out.outcome = Outcome::done();
     return out;
 }
 
@@ -136,7 +136,7 @@ std::string FlyingSawModule::exportFile(const std::string& exportId, const Job&,
 Outcome FlyingSawModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                        std::string* text) const {
     const auto* data = static_cast<const FlyingSawPlanData*>(plan.data.get());
-    if (!data || !plan.ok()) return Outcome::refuse(plan.problem);
+    if (!data || !plan.ok()) return Outcome::refuse(plan.outcome.message);
     SawSimOptions o;
     o.period_s = job.sim.period_s;
     if (const std::string over = sawSimWorkProblem(data->spec, data->plan, o); !over.empty())

@@ -170,21 +170,20 @@ MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText,
     auto cut = std::make_shared<CutPlan>(planCut(job, options));
     out.data = cut;
     if (cut->cancelled) {
-        out.status = PlanStatus::Cancelled;
+        out.outcome = Outcome::cancel();
         return out;
     }
     out.summary =
         formatC("%s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)", toString(cut->method),
                 toString(job.cut.target), cut->length_mm, job.cut.speed_mm_s, cut->cut_time_s);
     if (!cut->reachable) {
-        out.status = PlanStatus::Infeasible;
-        out.problem = messageC("path not reachable (%s method): %s", toString(cut->method),
-                               cut->problem.c_str());
+        out.outcome = Outcome::refuse(messageC("path not reachable (%s method): %s",
+                                               toString(cut->method), cut->problem.c_str()));
         return out;
     }
     auto program = buildPipeRobotProgram(job, *cut, jobText);
     out.program = program;
-    out.status = PlanStatus::Ok;
+    out.outcome = Outcome::done();
     return out;
 }
 
@@ -218,7 +217,7 @@ std::string PipeRobotModule::exportFile(const std::string& exportId, const Job& 
 Outcome PipeRobotModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                        std::string* text) const {
     const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get());
-    if (!cut || !plan.ok()) return Outcome::refuse(plan.problem);
+    if (!cut || !plan.ok()) return Outcome::refuse(plan.outcome.message);
     const TrackingReport report = simulateCut(job, *cut);
     *json = json::write(reportToJson(report, &reportAxisNames()));
     std::string t = formatC("%s method, %.1f s simulated at %.4f s\n", report.method.c_str(),

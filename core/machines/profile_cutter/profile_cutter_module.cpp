@@ -182,22 +182,21 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
                 toString(job.cut.target), data->cut.points.size(), sch.developed_length_mm,
                 job.cut.speed_mm_s, sch.total_time_s, sch.max_x_rate_hz, sch.max_a_rate_hz,
                 profileCutterSpec(job).max_pulse_rate_hz);
-    out.status = PlanStatus::Infeasible;
     if (!sch.problem.empty()) {
-        out.problem = messageC("not feasible: %s", sch.problem.c_str());
+        out.outcome = Outcome::refuse(messageC("not feasible: %s", sch.problem.c_str()));
         return out;
     }
     if (const std::string travel = travelProblem(job, data->cut); !travel.empty()) {
-        out.problem = messageC("not feasible: %s", travel.c_str());
+        out.outcome = Outcome::refuse(messageC("not feasible: %s", travel.c_str()));
         return out;
     }
     try {
         out.program = buildProfileCutterProgram(job, jobText);
     } catch (const std::invalid_argument& e) {
-        out.problem = messageC("not feasible: %s", e.what());
+        out.outcome = Outcome::refuse(messageC("not feasible: %s", e.what()));
         return out;
     }
-    out.status = PlanStatus::Ok;
+    out.outcome = Outcome::done();
     return out;
 }
 

@@ -91,7 +91,7 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
     const QuickReturnSpec& spec = quickReturnSpec(job);
     auto data = std::make_shared<QuickReturnPlanData>();
     if (const Outcome set = buildSetup(spec, &data->setup); !set.ok()) {
-        out.problem = messageC("not feasible: %s", set.message.c_str());
+        out.outcome = Outcome::refuse(messageC("not feasible: %s", set.message.c_str()));
         return out;
     }
     const ExperimentSetup& s = data->setup;
@@ -130,7 +130,7 @@ MachinePlan QuickReturnModule::plan(const Job& job, const std::string& jobText,
                 "t_a %.4f s, t_c %.4f s, y_a %.4f m, y_b %.4f m",
                 toString(spec.experiment), toString(spec.controller), st.stroke, st.y_top,
                 st.y_bottom, st.q_top, st.q_bottom, p.t_a, p.t_c, p.y_a, p.y_b);
-    out.status = PlanStatus::Ok;
+    out.outcome = Outcome::done();
     return out;
 }
 
@@ -180,7 +180,7 @@ std::string QuickReturnModule::offlineWorkProblem(const QuickReturnSpec& spec,
 Outcome QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan, std::string* json,
                                          std::string* text) const {
     const auto* data = static_cast<const QuickReturnPlanData*>(plan.data.get());
-    if (!data || !plan.ok()) return Outcome::refuse(plan.problem);
+    if (!data || !plan.ok()) return Outcome::refuse(plan.outcome.message);
     const QuickReturnSpec& spec = quickReturnSpec(job);
     if (const std::string over = offlineWorkProblem(spec, data->setup); !over.empty())
         return Outcome::refuse(over);

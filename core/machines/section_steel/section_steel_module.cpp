@@ -86,8 +86,7 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
     MachinePlan out;
     const SectionSteelSpec& s = specOf(job);
     if (const std::string why = setupTwoProblem(s); !why.empty()) {
-        out.status = PlanStatus::Infeasible; // never an empty run
-        out.problem = why;
+        out.outcome = Outcome::refuse(why); // never an empty run
         out.summary = why;
         return out;
     }
@@ -117,15 +116,14 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
                               plate, -s.cut.mitre_vertical_deg, -s.cut.mitre_horizontal_deg) +
                       out.summary;
     if (!plan->ok) {
-        out.status = PlanStatus::Infeasible;
-        out.problem = plan->failed_points > 1
-                          ? messageC("%s (and %zu more points)", plan->problem.c_str(),
-                                     plan->failed_points - 1)
-                          : plan->problem;
+        out.outcome = Outcome::refuse(plan->failed_points > 1
+                                          ? messageC("%s (and %zu more points)",
+                                                     plan->problem.c_str(), plan->failed_points - 1)
+                                          : plan->problem);
         return out;
     }
     out.program = buildSectionSteelProgram(job, s, *plan, jobText);
-    out.status = PlanStatus::Ok;
+    out.outcome = Outcome::done();
     return out;
 }
 

@@ -63,7 +63,7 @@ bool planOf(const JobEditor& editor, cutcell::MachinePlan* out, QString* problem
     }
     *out = module->plan(job, {});
     if (!out->ok() || !out->data) {
-        *problem = engineText(QString::fromStdString(out->problem));
+        *problem = engineText(QString::fromStdString(out->outcome.message));
         return false;
     }
     return true;

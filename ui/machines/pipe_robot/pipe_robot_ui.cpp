@@ -46,9 +46,9 @@ const cutcell::CutPlan* cutPlanOf(const cutcell::MachinePlan& plan) {
 cutcell::MachinePlan PipeRobotUi::plan(const cutcell::Job& job,
                                        const cutcell::PlanOptions& options) const {
     cutcell::MachinePlan p = MachineUi::plan(job, options);
-    if (p.status == cutcell::PlanStatus::Infeasible)
+    if (p.outcome.refused())
         if (const cutcell::CutPlan* cut = cutPlanOf(p); cut && !cut->problem.empty())
-            p.problem = cut->problem;
+            p.outcome.message = cut->problem;
     return p;
 }
 
@@ -67,7 +67,7 @@ bool PipeRobotUi::buildScene(const cutcell::Job& job, const cutcell::MachinePlan
 #ifdef CUTCELL_HAVE_VIEW3D
     const cutcell::CutPlan* cut = cutPlanOf(plan);
     if (!cut) {
-        if (why) *why = QString::fromStdString(plan.problem);
+        if (why) *why = QString::fromStdString(plan.outcome.message);
         return false;
     }
     *out = cutcell::view3d::buildRobotScene(job, *cut);
