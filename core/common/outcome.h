@@ -1,10 +1,13 @@
 #pragma once
-// How a request to core went, in one shape for every machine module's query (CAN support, a
-// cut variant, the offline report, the kinematics): Ok, or why not - the job key it is about
-// ("" when none) and one sentence for the operator that names the value, the unit and the
-// limit. A job's validation lists every problem (JobIssue: key and message) and a plan says its
-// own status (MachinePlan); exceptions stay for a file or a configuration that cannot be read
-// at all.
+// How a request to core went, in one shape for the whole core layer: Ok, or why not - the job
+// key it is about ("" when none) and one sentence for the operator that names the value, the
+// unit and the limit. It answers a machine module's queries (CAN support, a cut variant, the
+// offline report, the kinematics), a plan (MachinePlan::outcome: Ok, Refused when the machine
+// cannot make the cut, Cancelled), each problem of a job's validation (JobIssue is an Outcome,
+// always Refused, with the range of a value outside it) and core's helpers that say why they
+// could not (quick-return buildSetup, the kinematics' argument checks). Exceptions stay for a
+// file or a configuration that cannot be read at all (JobError, JobFileError) and for
+// programming errors.
 #include <cstdint>
 #include <string>
 #include <utility>

@@ -3,6 +3,7 @@
 // the unit and the limit, e.g.
 //   "branch_pipe.radius_mm = 70 mm does not fit: |eccentricity_mm| + branch radius = 75 mm
 //    must be <= main_pipe.radius_mm = 60 mm".
+#include "core/common/outcome.h"
 #include "core/job/job.h"
 #include "core/json/json.h"
 
@@ -23,16 +24,15 @@ struct JobFileError : JobError {
     using JobError::JobError;
 };
 
-// One problem with a job value: the dotted key and a full sentence for the user.
-struct JobIssue {
-    JobIssue() = default;
-    JobIssue(std::string k, std::string m) : key(std::move(k)), message(std::move(m)) {}
+// One problem with a job value: an Outcome, always Refused, with the dotted key and a full
+// sentence for the user.
+struct JobIssue : Outcome {
+    JobIssue() : Outcome{OutcomeStatus::Refused, {}, {}} {}
+    JobIssue(std::string k, std::string m) : Outcome(refuse(std::move(m), std::move(k))) {}
     JobIssue(std::string k, std::string m, double v, double low, double high, std::string u)
-        : key(std::move(k)), message(std::move(m)), value(v), lo(low), hi(high),
+        : Outcome(refuse(std::move(m), std::move(k))), value(v), lo(low), hi(high),
           unit(std::move(u)) {}
 
-    std::string key;
-    std::string message;
     // A value outside its range (IssueChecker::range, positive): the value, the limits and the
     // unit, so that a form can say it in its own words with its field's label. The limits are
     // NaN for an issue of another kind (the message is all there is).
