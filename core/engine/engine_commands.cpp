@@ -364,6 +364,8 @@ void MotionEngine::Impl::handle(const EngineCommand& c) {
         processedLoadSeq.store(c.seq, std::memory_order_release);
         const MotionProgram* p = c.program;
         if (inMotion(s)) return refuse(c.type, "a motion is in progress (%s)", toString(s));
+        // A category-1 stop still brakes along the loaded program's path.
+        if (stopping()) return refuse(c.type, "the controlled stop is still in progress");
         if (!p) return refuse(c.type, "no program");
         if (p->axis_count < 1 || p->axis_count > kMaxAxes)
             return refuse(c.type, "axis_count = %d is outside 1 .. %d", p->axis_count, kMaxAxes);

@@ -209,6 +209,7 @@ struct MotionEngine::Impl {
     void advance();
     void stepRunning();
     void startSource(bool pierced); // the program's motion begins (or resumes) in RunPhase::Cut
+    void finishSource();            // ... and has ended (RunPhase::Finish, tool off)
     bool restReached() const;       // the move's rate or the source is at rest
     // engine_supervision.cpp
     void checkEmergencyStop();
@@ -276,8 +277,7 @@ struct MotionEngine::Impl {
     const MotionSource* source() const {
         return program && program->source ? program->source.get() : &splineSource;
     }
-    // The run's motion has come to its end (the source said Done).
-    bool finished() const { return phase == RunPhase::Finish || phase == RunPhase::Close; }
+
     void holdAt(const JointVector& q);
     JointVector actualPositions() const;
     // Axis i's set-point of the cycle its feedback was sampled in (this cycle's when the

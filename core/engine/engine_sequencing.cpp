@@ -19,7 +19,8 @@ void MotionEngine::Impl::advance() {
             captureStop(); // at rest on the path, before the hold
             holdAt(setpoint);
             setState(EngineState::Ready, EventKind::Transition,
-                     "Aborted: stopped on the path at %.3f s", runProgress.time_s);
+                     "Aborted: stopped on the path at %.3f s",
+                     runActive ? runProgress.time_s : moveClock.time());
             endRun("aborted");
         } else {
             disableAll();
@@ -41,6 +42,12 @@ void MotionEngine::Impl::advance() {
 }
 
 void MotionEngine::Impl::stepRunning() {
+    // The program's end finishes the cut (tool off) before a feed hold that comes with it can
+    // pause the run: a hold in the last part of a spline's path met the path's end still
+    // braking, and paused there with the torch in the Cut phase (relit on Resume).
+    if (state == EngineState::Running && phase == RunPhase::Cut && sourceRan &&
+        srcOut.status == SourceStatus::Done)
+        finishSource();
     if (state == EngineState::Running && halt == Halt::FeedHold && restReached()) {
         setState(EngineState::Paused, EventKind::Transition, "Paused on the path at %.3f s (%s %s)",
                  runProgress.time_s, toolName(), torchCommand ? "on" : "off");
@@ -83,7 +90,7 @@ void MotionEngine::Impl::stepRunning() {
             if (now - phaseSince > cfg.ignition_timeout_s)
                 enterFault("%s: %s not reported within %.1f s", toolName(),
                            program->terms.process_ok.c_str(), cfg.ignition_timeout_s);
-        } else if (dev.torch && program->pierce_s > 0 && !sourceStarted) {
+        } else if (dev.torch && program->uses_tool && program->pierce_s > 0 && !sourceStarted) {
             // At the first cut point (or the recovery point) the arc must go through the
             // material before it moves.
             phase = RunPhase::Pierce;
@@ -102,18 +109,7 @@ void MotionEngine::Impl::stepRunning() {
             startSource(true);
         }
         break;
-    case RunPhase::Cut:
-        if (sourceRan && srcOut.status == SourceStatus::Done) {
-            torchCommand = false;
-            phase = RunPhase::Finish;
-            if (program->terms.path_length)
-                note("Cut finished at path time %.3f s: %s off", program->cut_time_s, toolName());
-            else
-                note("Program finished (%s, %u of %u %s): %s off", source()->stateName(),
-                     srcOut.made, srcOut.point_count, madeNounPlural(program->terms.counts),
-                     toolName());
-        }
-        break;
+    case RunPhase::Cut: // ends in finishSource() above
     case RunPhase::Finish:
         break;
     case RunPhase::Close:
@@ -146,6 +142,16 @@ JointVector MotionEngine::Impl::startPosition() const {
                            : splineSource.startPosition();
 }
 
+void MotionEngine::Impl::finishSource() {
+    torchCommand = false;
+    phase = RunPhase::Finish;
+    if (source()->resumesInTime())
+        note("Cut finished at path time %.3f s: %s off", program->cut_time_s, toolName());
+    else
+        note("Program finished (%s, %u of %u %s): %s off", source()->stateName(), srcOut.made,
+             srcOut.point_count, madeNounPlural(program->terms.counts), toolName());
+}
+
 void MotionEngine::Impl::startSource(bool pierced) {
     phase = RunPhase::Cut;
     traj = TrajectoryKind::Source;
@@ -160,7 +166,7 @@ void MotionEngine::Impl::startSource(bool pierced) {
     }
     if (pierced)
         note("Pierced: cutting");
-    else if (program->terms.path_length)
+    else if (source()->resumesInTime())
         note(first ? "Arc established: cutting" : "Arc established: resuming the cut");
     else
         note(first ? "%s: %s program running" : "%s: %s program resumed",

@@ -145,7 +145,7 @@ void MotionEngine::Impl::superviseDevices() {
     if (dev.torch && torchFb.fault_code != 0)
         return enterFault("%s: fault 0x%04X", toolName(), torchFb.fault_code);
     if (dev.torch && torchCommand && arcWasOk && !torchFb.process_ok) {
-        if (!program->terms.path_length)
+        if (!source()->resumesInTime())
             return enterFault("%s: %s (%s, %s %u of %u)", toolName(),
                               program->terms.process_lost.c_str(), source()->stateName(),
                               unitSingular(program->terms.counts), runProgress.point + 1,

@@ -81,7 +81,7 @@ struct TelemetrySample {
     JointVector error = JointVector::Zero(); // setpoint - actual
     JointVector command = JointVector::Zero();
     double master_position = 0;             // MasterAxis source: the filtered master
-    std::array<char, 24> source_state{};    // MasterAxis / ControlLaw: e.g. "in sync"
+    std::array<char, 24> source_state{};    // the motion source's stateName(): e.g. "in sync"
     Vec3 cartesian_error_mm = Vec3::Zero(); // FK(actual) - FK(setpoint)
     double progress = 0;                    // 0..1 of the cut's length
     std::uint32_t point_index = 0;

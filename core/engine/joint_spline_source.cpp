@@ -17,8 +17,8 @@ JointVector JointSplineSource::startPosition() const {
 
 SourceOutput JointSplineSource::progressAtStart(double overrideFraction) const {
     SourceOutput out;
-    describe(startTime_, overrideFraction, out);
-    out.made = 0; // nothing pierced yet
+    describe(startTime_, 0.0, overrideFraction, out); // at the override it will run at
+    out.made = 0;                                     // nothing pierced yet
     return out;
 }
 
@@ -30,8 +30,10 @@ void JointSplineSource::start(const SourceInput& in) {
     lastRequest_ = SourceRequest::Run;
 }
 
-// Path time, progress, points and the time left of a sample at path time t.
-void JointSplineSource::describe(double t, double overrideFraction, SourceOutput& out) const {
+// Path time, progress, points and the time left of a sample at path time t, at `rate` (the
+// override's when at rest).
+void JointSplineSource::describe(double t, double rate, double overrideFraction,
+                                 SourceOutput& out) const {
     if (!program_) return;
     const double cut = program_->cut_time_s;
     out.program_time_s = t;
@@ -39,7 +41,7 @@ void JointSplineSource::describe(double t, double overrideFraction, SourceOutput
     out.point_count = static_cast<std::uint32_t>(program_->point_count);
     out.point_index = static_cast<std::uint32_t>(
         std::min<double>(t / program_->spline.dt(), static_cast<double>(program_->point_count)));
-    const double r = clock_.rate() > 0 ? clock_.rate() : overrideFraction;
+    const double r = rate > 0 ? rate : overrideFraction;
     out.remaining_s = r > 0 ? (cut - t) / r : 0;
     out.made = 1; // a path pierces once, where it starts (or resumes)
 }
@@ -52,7 +54,7 @@ void JointSplineSource::update(const SourceInput& in, SourceOutput& out) {
     out.position = s.q;
     out.velocity = s.qd * rate;
     out.acceleration = s.qdd * (rate * rate); // the rate's own change ignored (it ramps slowly)
-    describe(t, in.override_fraction, out);
+    describe(t, rate, in.override_fraction, out);
     const bool run = in.request == SourceRequest::Run;
     out.tool_on = run || (in.request == SourceRequest::FeedHold && in.tool_on_during_feed_hold);
 

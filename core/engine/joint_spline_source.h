@@ -21,7 +21,6 @@ class JointSplineSource final : public MotionSource {
     void bind(const MotionProgram* program, double feedHoldDecel_s);
     // Where the next start() begins: 0, or a cut recovery's path time.
     void setStartTime(double t) { startTime_ = t; }
-    double startTime() const { return startTime_; }
     // The set-point at the start time (the approach's target).
     JointVector startPosition() const;
     // The run's progress before its first update: where it will start.
@@ -33,7 +32,7 @@ class JointSplineSource final : public MotionSource {
     bool resumesInTime() const override { return true; }
 
   private:
-    void describe(double t, double overrideFraction, SourceOutput& out) const;
+    void describe(double t, double rate, double overrideFraction, SourceOutput& out) const;
 
     const MotionProgram* program_ = nullptr;
     double decel_s_ = 1;

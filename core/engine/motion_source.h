@@ -1,7 +1,7 @@
 #pragma once
-// A motion source: what a machine's program runs in the engine cycle instead of the joint
-// spline in time. One update(input, output) per cycle (Ruckig style), called on the engine
-// thread only; it must not allocate, lock or block. Three kinds:
+// A motion source: how a machine's program moves its axes in the engine cycle. One update(input,
+// output) per cycle (Ruckig style), called on the engine thread only; it must not allocate, lock or
+// block. Three kinds:
 //   - JointSplineSource (core/engine/joint_spline_source.h): the joint spline in path time.
 //   - MasterFollower (core/engine/master_follower.h): axes geared or cammed to a master axis
 //     that the engine does not drive (a line encoder); PLCopen MC_GearInPos / MC_CamIn.

@@ -117,6 +117,34 @@ TEST(EngineMotion, FeedHoldStopsOnThePathAndResumeContinuesWithoutAJump) {
     EXPECT_LE((cell.telemetry[k].setpoint - held).cwiseAbs().maxCoeff(), vmax * T);
 }
 
+// A feed hold so near the path's end that the path ends while it brakes: the cut finishes
+// (torch off) before the run pauses, and Resume completes it without lighting the torch again
+// (it paused at the end with the torch in the Cut phase and relit it on Resume).
+TEST(EngineMotion, AFeedHoldThatMeetsThePathsEndFinishesTheCutFirst) {
+    SimCell cell;
+    const double brake_s = 0.5 * testJob().engine.feed_hold_decel_s; // path time to rest
+    ASSERT_GT(brake_s, 0.02);
+    cell.toCutting(testProgram()->cut_time_s - 0.5 * brake_s);
+    const size_t from = cell.events.size();
+    cell.engine().feedHold();
+    cell.runUntil(EngineState::Paused);
+    const std::string text = cell.eventText(from);
+    const size_t finished = text.find("Cut finished at path time");
+    const size_t paused = text.find("Paused on the path");
+    ASSERT_NE(finished, std::string::npos) << text;
+    EXPECT_LT(finished, paused) << text;
+    EXPECT_FALSE(cell.torch().isOn());
+    const size_t resumed = cell.events.size();
+    cell.engine().resume();
+    cell.runUntil(EngineState::Completed);
+    EXPECT_EQ(cell.eventText(resumed).find("Arc established"), std::string::npos)
+        << cell.eventText(resumed);
+    std::string outcome;
+    TrackingReport report;
+    ASSERT_TRUE(cell.engine().lastRunReport(report, &outcome));
+    EXPECT_EQ(outcome, "completed");
+}
+
 TEST(EngineMotion, OverrideChangesThePathRateSmoothly) {
     SimCell cell;
     cell.toCutting(3.0);
