@@ -119,7 +119,7 @@
         <translation>eine Bewegung läuft (%s)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>no program</source>
         <translation>kein Programm</translation>
     </message>
@@ -384,12 +384,12 @@
         <translation>der NOT-HALT ist noch gedrückt (zuerst entriegeln)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-57"/>
         <source>the controlled stop is still in progress</source>
         <translation>der geführte Halt läuft noch</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+58"/>
         <source>Reset: %s cleared, drives disabled</source>
         <translation>Reset: %s quittiert, Antriebe abgeschaltet</translation>
     </message>
@@ -404,7 +404,7 @@
         <translation>NOT-HALT</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>%zu points</source>
         <translation>%zu Punkte</translation>
     </message>
@@ -419,7 +419,7 @@
         <translation>%zu Hübe</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+48"/>
         <source>emergency stop latched (release it, then Reset)</source>
         <translation>NOT-HALT verriegelt (entriegeln, dann Reset)</translation>
     </message>
@@ -544,7 +544,7 @@
         <translation>Eingestochen: Schneiden</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-1"/>
         <source>Program finished (%s, %u of %u %s): %s off</source>
         <translation>Programm beendet (%s, %u von %u %s): %s aus</translation>
     </message>
@@ -554,7 +554,7 @@
         <translation>Schnitt beendet bei Bahnzeit %.3f s: %s aus</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-4"/>
         <source>Completed: %.1f of %.1f mm in %.2f s (cut recovery from point %u of %u: the %.1f mm before it were not cut by this run)</source>
         <translation>Beendet: %.1f von %.1f mm in %.2f s (Wiederaufnahme ab Punkt %u von %u: die %.1f mm davor hat dieser Lauf nicht geschnitten)</translation>
     </message>
@@ -574,7 +574,7 @@
         <translation>beendet</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%s source (%s): %s</source>
         <translation>Quelle %s (%s): %s</translation>
     </message>
@@ -909,12 +909,12 @@
         <translation>Stück</translation>
     </message>
     <message>
-        <location line="-145"/>
+        <location line="-144"/>
         <source>Job loaded: %s (%s, %.2f s)</source>
         <translation>Auftrag geladen: %s (%s, %.2f s)</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+145"/>
         <source>strokes</source>
         <translation>Hübe</translation>
     </message>
@@ -1174,7 +1174,7 @@
         <translation>die Brennerachse liegt %.3f deg außerhalb der Ebene von Gelenk 1 (ein 5-achsiger Arm kann seinen Brenner nur in dieser Ebene neigen)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>robot.dh[%d].min_deg = %.6g deg must be below robot.dh[%d].max_deg = %.6g deg</source>
         <translation>robot.dh[%d].min_deg = %.6g deg muss unter robot.dh[%d].max_deg = %.6g deg liegen</translation>
     </message>
@@ -1209,7 +1209,7 @@
         <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>the offline simulation would compute about %.3g samples (%zu controllers x (%.1f s of tracking + %d strokes of about %.2f s) / control.sample_time_s = %.3g s), over the bound of %.3g samples: use a longer sample time or fewer strokes</source>
         <translation>die Offline-Simulation würde etwa %.3g Abtastwerte rechnen (%zu Regler x (%.1f s Folgeregelung + %d Hübe von etwa %.2f s) / control.sample_time_s = %.3g s), über der Grenze von %.3g Abtastwerten: eine längere Abtastzeit oder weniger Hübe wählen</translation>
     </message>
@@ -2194,17 +2194,17 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-271"/>
+        <location line="-264"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+1"/>
         <source>the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
         <translation>der Schnitt braucht X = %.3f mm (beta = %.2f deg), außerhalb des Wagenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>other_branches[%zu].angle_deg = %.6g deg is outside [0.1, 179.9] deg (angle to the main axis)</source>
         <translation>other_branches[%zu].angle_deg = %.6g deg liegt außerhalb von [0,1, 179,9] deg (Winkel zur Hauptachse)</translation>
     </message>
@@ -2229,12 +2229,12 @@
         <translation>die Schrittmotoren A und X des Profilschneiders werden von einer Pulskarte angesteuert, nicht von CANopen-Antrieben: devices.kind = &quot;simulated&quot; verwenden</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="+1"/>
         <source>not feasible: %s</source>
         <translation>nicht ausführbar: %s</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+1"/>
         <source>step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s</source>
         <translation>Schritt %zu (beta = %.3f deg) braucht %.0f Hz auf der Achse %s, mehr als machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: cut.speed_mm_s senken</translation>
     </message>
@@ -4352,30 +4352,30 @@ entriegeln</translation>
     <message>
         <location line="+0"/>
         <location line="+1"/>
-        <location line="+75"/>
-        <location line="+63"/>
+        <location line="+77"/>
+        <location line="+62"/>
         <source>y (m)</source>
         <translation>y (m)</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-139"/>
         <source>Velocity error in the work</source>
         <translation>Geschwindigkeitsfehler im Werkstück</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+75"/>
-        <location line="+63"/>
+        <location line="+77"/>
+        <location line="+62"/>
         <source>y_d&apos; - y&apos; (m/s)</source>
         <translation>y_d&apos; - y&apos; (m/s)</translation>
     </message>
     <message>
-        <location line="-95"/>
+        <location line="-96"/>
         <source>a simulation is running</source>
         <translation>eine Simulation läuft</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Cannot simulate: %1</source>
         <translation>Simulation nicht möglich: %1</translation>
     </message>
@@ -4386,12 +4386,12 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+63"/>
+        <location line="+62"/>
         <source>Velocity error in the work: max %1, RMS %2 m/s</source>
         <translation>Geschwindigkeitsfehler im Werkstück: max. %1, RMS %2 m/s</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-58"/>
         <source>Source: offline simulation of the job&apos;s cut (core runCutting, the engine&apos;s control law on the crank plant).</source>
         <translation>Quelle: Offline-Simulation des Schnitts des Auftrags (Kern runCutting, Regelgesetz der Steuerung an der Kurbelstrecke).</translation>
     </message>
@@ -4406,7 +4406,7 @@ entriegeln</translation>
         <translation>Nicht abgeschlossen: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+52"/>
         <source>Source: run %1 on the engine, live from its telemetry.</source>
         <translation>Quelle: Lauf %1 in der Steuerung, live aus deren Telemetrie.</translation>
     </message>
@@ -4549,7 +4549,7 @@ letzte %1 s</translation>
         <translation>Experiment 1 läuft</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Cannot run: %1</source>
         <translation>Ausführung nicht möglich: %1</translation>
     </message>
@@ -5445,7 +5445,7 @@ letzte %1 s</translation>
         <translation>Maschine für den neuen Auftrag:</translation>
     </message>
     <message>
-        <location filename="../../ui/machine/machine_ui_registry.cpp" line="+108"/>
+        <location filename="../../ui/machine/machine_ui_registry.cpp" line="+107"/>
         <source>Export &amp;G-code...</source>
         <translation>&amp;G-code exportieren...</translation>
     </message>
@@ -5710,7 +5710,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+176"/>
+        <location filename="../../app/gui/main.cpp" line="+185"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>
