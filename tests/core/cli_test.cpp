@@ -99,61 +99,49 @@ TEST(Cli, AFolderIsAnIoErrorAndEveryCountsEntryIsChecked) {
 // groove (unused there, but a value of the file), were accepted.
 TEST(Cli, AbsurdValuesAreRefusedAlsoWhereTheyAreUnused) {
     const fs::path dir = tempDir("absurd");
-    auto variant = [&](const std::string& job, const std::string& from, const std::string& to) {
-        std::ifstream in(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/" + job);
+    // A shipped job with one text replaced: validate exits 2 with the expected message.
+    const struct {
+        const char* why;
+        const char *job, *from, *to, *message;
+    } cases[] = {
+        {"a blade without kerf", "flying_saw_job.json", "\"kerf_mm\": 3", "\"kerf_mm\": 0",
+         "machine.blade.kerf_mm = 0 mm is outside [0.1, 20] mm"},
+        {"a root face where the groove is none", "section_steel_job.json", "\"root_face_mm\": 0",
+         "\"root_face_mm\": -1e308", "machine.end_cut.flanges.root_face_mm = -1e+308 mm"},
+        // OSMC's weights while another controller runs: q11 q22 overflowed to infinity and
+        // passed "positive definite".
+        {"q11 overflowing Q", "quick_return_job.json", "\"q11\": 900", "\"q11\": 1e300",
+         "machine.control.osmc.q11 = 1e+300 1 is outside [1e-12, 1e+12] 1"},
+        {"q12 overflowing Q", "quick_return_job.json", "\"q12\": 0", "\"q12\": 1e150",
+         "machine.control.osmc.q12 = 1e+150"},
+        // The velocity has a range of its own (it was checked only once the mechanism closed).
+        {"the crank's velocity", "quick_return_job.json", "\"velocity_m_s\": -0.762",
+         "\"velocity_m_s\": 1e300",
+         "machine.cut.velocity_m_s = 1e+300 m/s is outside [-10, -0.0001] m/s"},
+        // A schema-1 file of the crank: the robot's keys every schema-1 job carried go, its own
+        // stay and are checked (all were dropped: the default mechanism loaded silently).
+        {"a schema-1 crank", "default_job.json", "\"machine\": \"pipe_robot_6axis\"",
+         "\"machine\": \"quick_return_cutter\", \"mechanism\": {\"r2_m\": -5}",
+         "machine.mechanism.r2_m = -5 m is outside"},
+        // The saw's wall with an overcut past its own range: the wall still has its message.
+        {"the saw's wall", "flying_saw_job.json", "\"wall_mm\": 2", "\"wall_mm\": -5",
+         "machine.tube.wall_mm = -5 mm is outside [0.1, 500] mm"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.why);
+        std::ifstream in(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/" + c.job);
         std::stringstream ss;
         ss << in.rdbuf();
         std::string text = ss.str();
-        const size_t at = text.find(from);
-        EXPECT_NE(at, std::string::npos) << from;
-        if (at != std::string::npos) text.replace(at, from.size(), to);
-        const fs::path file = dir / job;
+        const size_t at = text.find(c.from);
+        ASSERT_NE(at, std::string::npos) << c.from;
+        text.replace(at, std::string(c.from).size(), c.to);
+        const fs::path file = dir / c.job;
         std::ofstream(file) << text;
-        return runCli("validate " + file.string());
-    };
-    const Result kerf = variant("flying_saw_job.json", "\"kerf_mm\": 3", "\"kerf_mm\": 0");
-    EXPECT_EQ(kerf.code, 2) << kerf.output;
-    EXPECT_NE(kerf.output.find("machine.blade.kerf_mm = 0 mm is outside [0.1, 20] mm"),
-              std::string::npos)
-        << kerf.output;
-    const Result root =
-        variant("section_steel_job.json", "\"root_face_mm\": 0", "\"root_face_mm\": -1e308");
-    EXPECT_EQ(root.code, 2) << root.output;
-    EXPECT_NE(root.output.find("machine.end_cut.flanges.root_face_mm = -1e+308 mm"),
-              std::string::npos)
-        << root.output;
-    // OSMC's weights while another controller runs: q11 q22 overflowed to infinity and passed
-    // "positive definite".
-    const Result q11 = variant("quick_return_job.json", "\"q11\": 900", "\"q11\": 1e300");
-    EXPECT_EQ(q11.code, 2) << q11.output;
-    EXPECT_NE(q11.output.find("machine.control.osmc.q11 = 1e+300 1 is outside [1e-12, 1e+12] 1"),
-              std::string::npos)
-        << q11.output;
-    const Result q12 = variant("quick_return_job.json", "\"q12\": 0", "\"q12\": 1e150");
-    EXPECT_EQ(q12.code, 2) << q12.output;
-    EXPECT_NE(q12.output.find("machine.control.osmc.q12 = 1e+150"), std::string::npos)
-        << q12.output;
-    // The velocity has a range of its own (it was checked only once the mechanism closed).
-    const Result v =
-        variant("quick_return_job.json", "\"velocity_m_s\": -0.762", "\"velocity_m_s\": 1e300");
-    EXPECT_EQ(v.code, 2) << v.output;
-    EXPECT_NE(v.output.find("machine.cut.velocity_m_s = 1e+300 m/s is outside [-10, -0.0001] m/s"),
-              std::string::npos)
-        << v.output;
-    // A schema-1 file of the crank: the robot's keys every schema-1 job carried go, its own
-    // stay and are checked (all were dropped: the default mechanism loaded silently).
-    const Result schema1 = variant("default_job.json", "\"machine\": \"pipe_robot_6axis\"",
-                                   "\"machine\": \"quick_return_cutter\", \"mechanism\": "
-                                   "{\"r2_m\": -5}");
-    EXPECT_EQ(schema1.code, 2) << schema1.output;
-    EXPECT_NE(schema1.output.find("machine.mechanism.r2_m = -5 m is outside"), std::string::npos)
-        << schema1.output;
-    // The saw's wall with an overcut past its own range: the wall still has its message.
-    const Result wall = variant("flying_saw_job.json", "\"wall_mm\": 2", "\"wall_mm\": -5");
-    EXPECT_EQ(wall.code, 2) << wall.output;
-    EXPECT_NE(wall.output.find("machine.tube.wall_mm = -5 mm is outside [0.1, 500] mm"),
-              std::string::npos)
-        << wall.output;
+        const Result r = runCli("validate " + file.string());
+        EXPECT_EQ(r.code, 2) << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
+    }
 }
 
 TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
