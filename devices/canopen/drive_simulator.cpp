@@ -205,8 +205,18 @@ void DriveSimulator::onFramesReceived() {
 }
 
 void DriveSimulator::onTick() {
-    out_.clear();
+    // A simulated drive's process can stall on a loaded host, which a drive's firmware does
+    // not: frames the master sent meanwhile may still wait in the socket (the bus's server
+    // relays them on the same thread). After a stall this tick only takes in what the device
+    // holds; the nodes judge the master's silence at the next one, once they are delivered.
+    onFramesReceived();
     const double t = now();
+    constexpr double kStallS = 0.05; // 25 ticks
+    const bool stalled = lastTick_s_ >= 0 && t - lastTick_s_ > kStallS && !tickDeferred_;
+    tickDeferred_ = stalled;
+    lastTick_s_ = t;
+    if (stalled) return;
+    out_.clear();
     for (DriveNode& n : nodes_)
         n.tick(t, out_);
     for (EncoderNode& n : encoders_)

@@ -77,6 +77,8 @@ class DriveSimulator {
     QObject* context_ = nullptr;      // lives on thread_: target of queued calls
     QCanBusDevice* device_ = nullptr; // owned by the simulator thread
     QTimer* tick_ = nullptr;
+    double lastTick_s_ = -1;    // [sim thread]
+    bool tickDeferred_ = false; // [sim thread] the last tick judged nothing after a stall
     std::vector<DriveNode> nodes_;
     std::vector<EncoderNode> encoders_;
     std::vector<CanFrame> out_;

@@ -90,9 +90,11 @@ struct CanOpenMaster::Impl {
     QTimer* housekeeping = nullptr;          // [master]
     std::thread pacer;
     std::atomic<bool> pacing{false};
-    bool stopping = false;        // [master]
-    std::int64_t lastSyncNs = 0;  // [master]
-    std::uint8_t syncCounter = 0; // [master] the last SYNC's counter (0x1019); 0: none yet
+    bool stopping = false;               // [master]
+    std::int64_t lastSyncNs = 0;         // [master]
+    std::int64_t lastHousekeepingNs = 0; // [master]
+    bool housekeepingDeferred = false;   // [master] the last round judged no deadline
+    std::uint8_t syncCounter = 0;        // [master] the last SYNC's counter (0x1019); 0: none yet
     std::uint8_t syncOverflow() const {
         return static_cast<std::uint8_t>(cfg.sync_counter_overflow >= 2 &&
                                                  cfg.sync_counter_overflow <= 240

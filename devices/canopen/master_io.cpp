@@ -500,7 +500,8 @@ void CanOpenMaster::Impl::onFrame(const CanFrame& f, std::int64_t now) {
         } else if (nmt == NmtState::Operational && r.phase == StartupPhase::WaitOperational) {
             r.phase = StartupPhase::Running;
             r.tpdo_cycle = cycles.load(std::memory_order_relaxed);
-            r.unansweredCount = 0; // SYNCs from now on
+            r.unansweredCount = 0;   // SYNCs from now on
+            r.awaiting_since_ns = 0; // not the SYNCs before a bus loss or a reboot
             s.master_fault.store(0, std::memory_order_release);
             {
                 std::lock_guard lock(mutex);
@@ -708,10 +709,19 @@ void CanOpenMaster::Impl::runCycle(std::int64_t now) {
 }
 
 void CanOpenMaster::Impl::onHousekeeping() {
+    onFrames(); // what the device already holds counts before any deadline
     const std::int64_t now = steadyNs();
     if (listening && now >= listenUntilNs) endListening(now);
     produceHeartbeat(now);
-    for (size_t i = 0; i < rt.size(); ++i) {
+    // After a stall of this thread (a loaded host), frames that came during it may still wait
+    // in the socket: no node's silence is judged until the event loop has delivered them.
+    constexpr std::int64_t kStallNs = 50'000'000; // 10 housekeeping periods
+    // Only one round is let go: a thread starved for good still judges every other round.
+    const bool stalled =
+        lastHousekeepingNs > 0 && now - lastHousekeepingNs > kStallNs && !housekeepingDeferred;
+    housekeepingDeferred = stalled;
+    lastHousekeepingNs = now;
+    for (size_t i = 0; i < rt.size() && !stalled; ++i) {
         NodeRuntime& r = rt[i];
         NodeShared& s = shared[i];
         const int node = cfg.nodes[i].node;

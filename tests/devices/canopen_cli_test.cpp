@@ -23,6 +23,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <csignal>
 #include <cstdlib>
 #include <functional>
@@ -226,7 +227,7 @@ class CanOpenCliTest : public QObject {
   private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() % 20000));
+        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
     }
 
     void defaultJobOverCanTracksLikeTheInProcessSimulation() {
@@ -297,7 +298,7 @@ class CanOpenCliTest : public QObject {
         // process's life), so killing the simulator loses only the drives, never the bus; the
         // other tests' bus stays the simulator's.
         const QString shared = interface_;
-        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 5) % 20000);
+        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
         const auto restore = qScopeGuard([&] { interface_ = shared; });
         BusListener bus;
         QVERIFY(bus.connectTo(interface_));
@@ -416,15 +417,27 @@ class CanOpenCliTest : public QObject {
         // Keep the SYNC going and ask every node for its statusword by SDO (a node stops its
         // PDOs when it leaves Operational): the drives' own SYNC watchdog stays quiet, so only
         // their consumer of the master's heartbeat can take them out of Operation Enabled. The
-        // SYNC goes on with the master's counter (0x1019), in sequence from its last one.
+        // SYNC goes on with the master's counter (0x1019), in sequence from its last one: the
+        // pacer starts once no SYNC of the master has come for 15 ms (its period is 4 ms), as
+        // SYNCs it sent just before the kill may still be on their way (a repeated counter is
+        // a 0x8100 EMCY, measured at 30-120 ms after the kill, not the heartbeat's timeout).
         const std::uint8_t overflow = 240; // the job's devices.sync_counter_overflow (default)
         std::uint8_t counter = 0;
-        for (size_t k = 0; k < from; ++k)
-            if (std::uint8_t c = 0; decodeSync(bus.heard[k].f, c) && c > 0) counter = c;
-        QVERIFY2(counter > 0, "the master's SYNC carried no counter");
         QTimer pacer;
         int tick = 0;
         connect(&pacer, &QTimer::timeout, this, [&] {
+            if (counter == 0) {
+                double lastSyncMs = -1;
+                for (const BusListener::Heard& h : bus.heard)
+                    if (std::uint8_t c = 0; decodeSync(h.f, c) && c > 0) {
+                        counter = c;
+                        lastSyncMs = h.t_ms;
+                    }
+                if (lastSyncMs < 0 || bus.now() - lastSyncMs < 15) {
+                    counter = 0;
+                    return;
+                }
+            }
             counter = nextSyncCounter(counter, overflow);
             bus.send(encodeSync(counter));
             if (tick++ % 2 == 0)
@@ -460,6 +473,7 @@ class CanOpenCliTest : public QObject {
             3000);
         pacer.stop();
         run.waitForFinished(3000);
+        QVERIFY2(counter > 0, "the master's SYNC carried no counter");
         QVERIFY2(allLeft, "a drive stayed in Operation Enabled after its master was killed");
         double lastBeat = -1;
         for (const BusListener::Heard& h : bus.heard)

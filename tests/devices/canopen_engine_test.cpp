@@ -16,6 +16,7 @@
 #include <QCanBusDevice>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <memory>
 #include <unistd.h>
 
@@ -51,7 +52,7 @@ class CanOpenEngineTest : public QObject {
   private slots:
     void init() {
         const QString interface =
-            QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 3) % 20000);
+            QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
         if (!hosted_) {
             // The bus's server on a thread of its own, as the CLI and the GUI host it: on this
             // thread it would relay frames only between the 10 ms sleeps of QTRY_* (qWait).

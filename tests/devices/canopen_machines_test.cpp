@@ -29,6 +29,7 @@
 #include <QCanBusDevice>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <cmath>
 #include <memory>
 #include <thread>
@@ -169,7 +170,7 @@ class CanOpenMachinesTest : public QObject {
 
   private slots:
     void initTestCase() {
-        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 11) % 20000);
+        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
         // The bus's server on a thread of its own, as the CLI and the GUI host it: on this
         // thread it would relay frames only between the 10 ms sleeps of QTRY_* (QTest::qWait),
         // holding each drive's feedback ~10 cycles late.

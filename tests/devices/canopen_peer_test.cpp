@@ -19,6 +19,7 @@
 #include <QStandardPaths>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -87,7 +88,7 @@ class CanOpenPeerTest : public QObject {
 
   private slots:
     void initTestCase() {
-        port_ = 30000 + static_cast<int>(getpid() % 5000);
+        port_ = cutcell::test::freeLocalPort();
         interface_ = QString("tcp://127.0.0.1:%1/can0").arg(port_);
         hostVirtualCanBus("virtualcan", interface_); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", interface_));

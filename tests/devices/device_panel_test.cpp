@@ -13,6 +13,7 @@
 #include <QTableWidget>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <unistd.h>
 
 using namespace cutcell;
@@ -33,7 +34,7 @@ class DevicePanelTest : public QObject {
         // trip by a stall (the last CI lost all heartbeats for 968 ms > 300 ms).
         job.devices.heartbeat_timeout_ms = 3000;
         job.devices.can_interface =
-            QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 7) % 20000).toStdString();
+            QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort()).toStdString();
         DriveSimulatorConfig sc;
         sc.interface = QString::fromStdString(job.devices.can_interface);
         sc.nodes = cutcell::canCellDriveNodes(job, {1, 2, 3});

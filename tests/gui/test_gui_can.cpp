@@ -22,6 +22,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <memory>
 #include <unistd.h>
 
@@ -79,7 +80,7 @@ class TestGuiCan : public QObject {
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(dir_.isValid());
-        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(40000 + (getpid() + 7) % 20000);
+        interface_ = QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
         cutcell::canopen::hostVirtualCanBus("virtualcan", interface_); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", interface_));
         QVERIFY(host_ && host_->connectDevice());

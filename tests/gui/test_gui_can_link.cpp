@@ -42,6 +42,7 @@
 #include <QTimer>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <memory>
 #include <unistd.h>
 
@@ -158,7 +159,7 @@ class TestGuiCanLink : public QObject {
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(dir_.isValid());
-        busPort_ = static_cast<quint16>(40000 + (getpid() + 11) % 20000);
+        busPort_ = static_cast<quint16>(cutcell::test::freeLocalPort());
         cutcell::canopen::hostVirtualCanBus("virtualcan", busUrl()); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", busUrl()));
         QVERIFY(host_ && host_->connectDevice());

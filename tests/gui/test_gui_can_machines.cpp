@@ -41,6 +41,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/support/free_local_port.h"
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -127,7 +128,7 @@ class TestGuiCanMachines : public QObject {
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(dir_.isValid());
-        busPort_ = static_cast<quint16>(40000 + (getpid() + 23) % 20000);
+        busPort_ = static_cast<quint16>(cutcell::test::freeLocalPort());
         cutcell::canopen::hostVirtualCanBus("virtualcan", busUrl()); // not on this thread
         host_.reset(QCanBus::instance()->createDevice("virtualcan", busUrl()));
         QVERIFY(host_ && host_->connectDevice());
