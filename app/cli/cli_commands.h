@@ -28,6 +28,8 @@ int runImport(const ImportOptions& o);     // import_command.cpp
 int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)
 int runDriveSim(const DriveSimOptions& o); // drivesim_command.cpp
 int runHistory(const HistoryOptions& o);   // history_command.cpp (needs CutCell::devices)
+int runUsers(const UsersOptions& o);       // users_command.cpp (needs CutCell::devices)
+int runAudit(const AuditOptions& o);       // users_command.cpp (needs CutCell::devices)
 // simulate --devices canopen: the program through the engine on the machine's CAN cell.
 int runSimulateCan(const Job& job, const MachineModule& module, const MachinePlan& plan,
                    const SimulateOptions& o); // can_run.cpp

@@ -92,6 +92,22 @@ struct HistoryOptions {
     bool json = false, csv = false;
 };
 
+// users: the station's users (user levels) in the production record.
+struct UsersOptions {
+    std::string action; // list, add, remove, passwd, level
+    std::string name;
+    std::string level; // add, level: operator, setter, engineer, administrator
+    std::string admin; // the administrator who authorises a change (password on stdin)
+    std::string db;    // empty: the default production record
+};
+
+// audit: the audit trail of the production record.
+struct AuditOptions {
+    std::string db;
+    std::string since; // YYYY-MM-DD (UTC)
+    bool json = false, csv = false;
+};
+
 struct DriveSimOptions {
     std::string job;                         // empty: the default job
     std::string nodes_text;                  // --nodes as given (empty: the job's node ids)

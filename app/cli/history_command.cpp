@@ -1,53 +1,18 @@
 // cutcell-cli history: the runs of the production record (devices/record/), filtered by day,
 // machine and outcome; a table, JSON or CSV.
 #include "cli_commands.h"
+#include "record_text.h"
 
 #include "core/common/c_format.h"
 #include "core/json/json.h"
 #include "devices/record/sqlite_run_record.h"
 
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <string>
 
 namespace cutcell::cli {
 namespace {
-
-// YYYY-MM-DD (UTC) as ms since the epoch; false if it is not such a day.
-bool parseDay(const std::string& day, std::int64_t* ms) {
-    std::tm tm{};
-    int y = 0, m = 0, d = 0;
-    char rest = 0;
-    if (std::sscanf(day.c_str(), "%4d-%2d-%2d%c", &y, &m, &d, &rest) != 3) return false;
-    if (y < 1970 || y > 9999 || m < 1 || m > 12 || d < 1 || d > 31) return false;
-    tm.tm_year = y - 1900;
-    tm.tm_mon = m - 1;
-    tm.tm_mday = d;
-    const std::time_t t = timegm(&tm);
-    if (tm.tm_mday != d) return false; // 2026-02-30 rolled over
-    *ms = static_cast<std::int64_t>(t) * 1000;
-    return true;
-}
-
-std::string utcTime(std::int64_t ms) {
-    if (ms <= 0) return "";
-    const std::time_t t = static_cast<std::time_t>(ms / 1000);
-    std::tm tm{};
-    gmtime_r(&t, &tm);
-    char s[32];
-    std::strftime(s, sizeof s, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return s;
-}
-
-// One CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csvField(const std::string& v) {
-    if (v.find_first_of(",\"\n\r") == std::string::npos) return v;
-    std::string out = "\"";
-    for (const char c : v)
-        out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
 
 json::Value parsedOrNull(const std::string& text) {
     if (text.empty()) return {};

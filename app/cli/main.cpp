@@ -29,6 +29,8 @@ struct AllOptions {
     RunOptions run;
     DriveSimOptions drivesim;
     HistoryOptions history;
+    UsersOptions users;
+    AuditOptions audit;
     MachinesOptions machines;
     UpgradeOptions upgrade;
     KinematicsOptions fk, ik;
@@ -206,6 +208,34 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                         "runs with this outcome (completed, aborted, interrupted, ...)");
     history->add_flag("--json", o.history.json, "print the runs as JSON");
     history->add_flag("--csv", o.history.csv, "print the runs as CSV")->excludes("--json");
+
+    CLI::App* users =
+        add("users", "the station's users and their levels (production record, Argon2id)",
+            [&] { return runUsers(o.users); });
+    users
+        ->add_option("action", o.users.action,
+                     "list, add, remove, passwd (password), level (change the level)")
+        ->required()
+        ->check(CLI::IsMember({"list", "add", "remove", "passwd", "level"}));
+    users->add_option("name", o.users.name, "the user");
+    users->add_option("--level", o.users.level,
+                      "operator, setter, engineer or administrator (add, level)");
+    users->add_option("--admin", o.users.admin,
+                      "the administrator who authorises it (password first on standard input)");
+    users->add_option("--db", o.users.db, "the record (default: the GUI's production.db)")
+        ->type_name("FILE");
+    users->footer("Passwords come one per line on standard input (on a terminal: asked without "
+                  "echo), the authorising one first. The first user must be an administrator; "
+                  "until one exists the station runs without log-in.");
+
+    CLI::App* audit = add("audit", "list the audit trail (who changed what, log-ins, E-STOPs)",
+                          [&] { return runAudit(o.audit); });
+    audit->add_option("--db", o.audit.db, "the record (default: the GUI's production.db)")
+        ->type_name("FILE");
+    audit->add_option("--since", o.audit.since, "events on or after this day (UTC)")
+        ->type_name("YYYY-MM-DD");
+    audit->add_flag("--json", o.audit.json, "print the events as JSON");
+    audit->add_flag("--csv", o.audit.csv, "print the events as CSV")->excludes("--json");
     addDeviceOptions(*run, o.run.devices);
 
     DriveSimOptions& d = o.drivesim;

@@ -182,8 +182,10 @@ void writeString(std::string& os, const std::string& s) {
 }
 
 void writeValue(std::string& os, const Value& v, int indent, int level, const std::string& path) {
-    const std::string pad(static_cast<size_t>(indent * (level + 1)), ' ');
-    const std::string padEnd(static_cast<size_t>(indent * level), ' ');
+    const bool oneLine = indent < 0; // JSON Lines: no line break anywhere
+    const std::string pad(oneLine ? 0 : static_cast<size_t>(indent * (level + 1)), ' ');
+    const std::string padEnd(oneLine ? 0 : static_cast<size_t>(indent * level), ' ');
+    const std::string newline = oneLine ? "" : "\n";
     if (v.isNull())
         os += "null";
     else if (v.isBool())
@@ -207,6 +209,7 @@ void writeValue(std::string& os, const Value& v, int indent, int level, const st
         bool flat = true;
         for (const auto& e : a)
             flat = flat && !e.isArray() && !e.isObject();
+        flat = flat || oneLine;
         os += '[';
         for (size_t i = 0; i < a.size(); ++i) {
             if (i) os += flat ? ", " : ",";
@@ -223,14 +226,14 @@ void writeValue(std::string& os, const Value& v, int indent, int level, const st
         }
         os += '{';
         for (size_t i = 0; i < o.size(); ++i) {
-            if (i) os += ',';
-            os += "\n" + pad;
+            if (i) os += oneLine ? ", " : ",";
+            os += newline + pad;
             writeString(os, o[i].first);
             os += ": ";
             writeValue(os, o[i].second, indent, level + 1,
                        path.empty() ? o[i].first : path + "." + o[i].first);
         }
-        os += "\n" + padEnd + '}';
+        os += newline + padEnd + '}';
     }
 }
 

@@ -72,7 +72,8 @@ inline constexpr size_t kMaxDocumentBytes = 16u << 20; // 16 MiB
 // Throws ParseError naming line and column (0, 0 for a duplicate key or a too deep nesting,
 // which name the key path instead).
 Value parse(const std::string& text);
-// Pretty-printed with two-space indentation; numbers as the shortest text that reads back to
+// Pretty-printed with `indent` spaces (a negative indent: all on one line, for JSON Lines);
+// numbers as the shortest text that reads back to
 // the same double. Throws std::domain_error naming the key path for NaN or Inf.
 std::string write(const Value& v, int indent = 2);
 

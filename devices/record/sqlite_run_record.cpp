@@ -7,48 +7,12 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 
 namespace cutcell {
 namespace {
-
-namespace fs = std::filesystem;
-
-// Migration k takes the schema from version k to k + 1; never edited once shipped.
-const char* const kMigrations[] = {
-    // 0 -> 1: runs and their alarms.
-    "CREATE TABLE runs ("
-    " id INTEGER PRIMARY KEY,"
-    " engine_run_id INTEGER NOT NULL,"
-    " machine TEXT NOT NULL,"
-    " job_name TEXT NOT NULL,"
-    " job_hash TEXT NOT NULL,"
-    " job_text TEXT NOT NULL,"
-    " operator TEXT NOT NULL,"
-    " run_dir TEXT NOT NULL,"
-    " host TEXT NOT NULL,"
-    " pid INTEGER NOT NULL,"
-    " started_ms INTEGER NOT NULL,"
-    " ended_ms INTEGER,"
-    " outcome TEXT,"
-    " cycle_time_s REAL,"
-    " made_json TEXT,"
-    " stop_json TEXT,"
-    " summary_json TEXT);"
-    "CREATE INDEX runs_started ON runs(started_ms);"
-    "CREATE TABLE alarms ("
-    " id INTEGER PRIMARY KEY,"
-    " run_id INTEGER NOT NULL REFERENCES runs(id),"
-    " time_ms INTEGER NOT NULL,"
-    " severity TEXT NOT NULL,"
-    " text TEXT NOT NULL);"
-    "CREATE INDEX alarms_run ON alarms(run_id);",
-};
-static_assert(std::size(kMigrations) == SqliteRunRecord::kSchemaVersion);
 
 std::string hostName() {
     char name[256] = {};
@@ -60,52 +24,6 @@ std::string hostName() {
 bool processAlive(std::int64_t pid) {
     return pid > 0 && (kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
 }
-
-std::int64_t unixMsNow() {
-    return std::chrono::duration_cast<std::chrono::milliseconds>(
-               std::chrono::system_clock::now().time_since_epoch())
-        .count();
-}
-
-// One prepared statement, finalized on scope exit.
-class Statement {
-  public:
-    Statement(sqlite3* db, const char* sql) : db_(db) {
-        if (sqlite3_prepare_v2(db, sql, -1, &st_, nullptr) != SQLITE_OK)
-            throw RecordError(std::string("production record: ") + sqlite3_errmsg(db));
-    }
-    ~Statement() { sqlite3_finalize(st_); }
-    Statement(const Statement&) = delete;
-    Statement& operator=(const Statement&) = delete;
-    Statement& bind(int i, std::int64_t v) {
-        sqlite3_bind_int64(st_, i, v);
-        return *this;
-    }
-    Statement& bind(int i, double v) {
-        sqlite3_bind_double(st_, i, v);
-        return *this;
-    }
-    Statement& bind(int i, const std::string& v) {
-        sqlite3_bind_text(st_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
-        return *this;
-    }
-    bool step() {
-        const int rc = sqlite3_step(st_);
-        if (rc == SQLITE_ROW) return true;
-        if (rc == SQLITE_DONE) return false;
-        throw RecordError(std::string("production record: ") + sqlite3_errmsg(db_));
-    }
-    std::int64_t integer(int col) const { return sqlite3_column_int64(st_, col); }
-    double real(int col) const { return sqlite3_column_double(st_, col); }
-    std::string text(int col) const {
-        const auto* p = sqlite3_column_text(st_, col);
-        return p ? std::string(reinterpret_cast<const char*>(p)) : std::string();
-    }
-
-  private:
-    sqlite3* db_;
-    sqlite3_stmt* st_ = nullptr;
-};
 
 // A member of the summary's JSON as text ("" when absent or the summary is not JSON).
 std::string summaryMember(const std::string& summary, const char* key) {
@@ -120,33 +38,15 @@ std::string summaryMember(const std::string& summary, const char* key) {
 } // namespace
 
 SqliteRunRecord::SqliteRunRecord(const std::string& path, std::string operatorName)
-    : path_(path), operator_(std::move(operatorName)) {
-    std::error_code ec;
-    if (const fs::path dir = fs::path(path).parent_path(); !dir.empty())
-        fs::create_directories(dir, ec);
-    if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
-        SQLITE_OK) {
-        const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
-        sqlite3_close(db_);
-        db_ = nullptr;
-        throw RecordError("production record " + path + ": cannot open (" + why + ")");
-    }
+    : path_(path), operator_(std::move(operatorName)), db_(openProductionDb(path)) {
     try {
-        sqlite3_busy_timeout(db_, 5000); // the GUI and a CLI may share the file
-        exec("PRAGMA journal_mode=WAL;");
-        exec("PRAGMA foreign_keys=ON;");
-        migrate();
         closeInterrupted();
     } catch (const RecordError& e) {
-        sqlite3_close(db_);
-        db_ = nullptr;
         throw RecordError("production record " + path + ": " + e.what());
     }
 }
 
-SqliteRunRecord::~SqliteRunRecord() {
-    sqlite3_close(db_);
-}
+SqliteRunRecord::~SqliteRunRecord() = default;
 
 // A run still open whose program (this host's) is gone was killed: closed as "interrupted".
 // Runs of a program still running (the GUI while a CLI reads) stay open; another host's
@@ -154,61 +54,28 @@ SqliteRunRecord::~SqliteRunRecord() {
 void SqliteRunRecord::closeInterrupted() {
     std::vector<std::int64_t> dead;
     {
-        Statement open(db_, "SELECT id, pid FROM runs WHERE ended_ms IS NULL AND host = ?1");
+        Statement open(db_.get(), "SELECT id, pid FROM runs WHERE ended_ms IS NULL AND host = ?1");
         open.bind(1, hostName());
         while (open.step())
             if (!processAlive(open.integer(1))) dead.push_back(open.integer(0));
     }
     for (const std::int64_t id : dead) {
-        Statement close(db_, "UPDATE runs SET outcome = 'interrupted', ended_ms = ?2, "
-                             "cycle_time_s = (?2 - started_ms) / 1000.0 WHERE id = ?1");
+        Statement close(db_.get(), "UPDATE runs SET outcome = 'interrupted', ended_ms = ?2, "
+                                   "cycle_time_s = (?2 - started_ms) / 1000.0 WHERE id = ?1");
         close.bind(1, id).bind(2, unixMsNow()).step();
     }
     interrupted_ = static_cast<int>(dead.size());
 }
 
-void SqliteRunRecord::exec(const char* sql) const {
-    char* err = nullptr;
-    if (sqlite3_exec(db_, sql, nullptr, nullptr, &err) != SQLITE_OK) {
-        const std::string why = err ? err : sqlite3_errmsg(db_);
-        sqlite3_free(err);
-        throw RecordError(why);
-    }
-}
-
 int SqliteRunRecord::schemaVersion() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_, "PRAGMA user_version");
-    return st.step() ? static_cast<int>(st.integer(0)) : 0;
-}
-
-void SqliteRunRecord::migrate() {
-    int version = 0;
-    {
-        Statement st(db_, "PRAGMA user_version");
-        if (st.step()) version = static_cast<int>(st.integer(0));
-    }
-    if (version > kSchemaVersion)
-        throw RecordError("schema version " + std::to_string(version) +
-                          " was written by a newer CutCell (this one knows up to " +
-                          std::to_string(kSchemaVersion) + ")");
-    for (; version < kSchemaVersion; ++version) {
-        exec("BEGIN IMMEDIATE;");
-        try {
-            exec(kMigrations[version]);
-            exec(("PRAGMA user_version = " + std::to_string(version + 1) + ";").c_str());
-            exec("COMMIT;");
-        } catch (const RecordError&) {
-            exec("ROLLBACK;");
-            throw;
-        }
-    }
+    return schemaVersionOf(db_.get());
 }
 
 void SqliteRunRecord::opened(const RunOpening& run) {
     std::lock_guard<std::mutex> lock(mutex_);
     Statement st(
-        db_,
+        db_.get(),
         "INSERT INTO runs (engine_run_id, machine, job_name, job_hash, job_text, "
         "operator, run_dir, host, pid, started_ms) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, "
         "?10)");
@@ -223,13 +90,13 @@ void SqliteRunRecord::opened(const RunOpening& run) {
         .bind(9, static_cast<std::int64_t>(getpid()))
         .bind(10, run.unix_ms);
     st.step();
-    openRun_ = sqlite3_last_insert_rowid(db_);
+    openRun_ = sqlite3_last_insert_rowid(db_.get());
 }
 
 void SqliteRunRecord::alarm(const RunAlarmNote& alarm) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (openRun_ == 0) return;
-    Statement st(db_,
+    Statement st(db_.get(),
                  "INSERT INTO alarms (run_id, time_ms, severity, text) VALUES (?1, ?2, ?3, ?4)");
     st.bind(1, openRun_).bind(2, alarm.unix_ms).bind(3, alarm.severity).bind(4, alarm.text);
     st.step();
@@ -241,9 +108,10 @@ void SqliteRunRecord::closed(const RunClosing& run) {
     // The cycle time on the engine's clock (summary.json's elapsed_s; a fast-clock run takes
     // less wall time), the wall clock's if the summary has none.
     const std::string elapsed = summaryMember(run.summary_json, "elapsed_s");
-    Statement st(db_, "UPDATE runs SET ended_ms = ?2, outcome = ?3, cycle_time_s = "
-                      "coalesce(?7, (?2 - started_ms) / 1000.0), made_json = ?4, stop_json = ?5, "
-                      "summary_json = ?6 WHERE id = ?1");
+    Statement st(db_.get(),
+                 "UPDATE runs SET ended_ms = ?2, outcome = ?3, cycle_time_s = "
+                 "coalesce(?7, (?2 - started_ms) / 1000.0), made_json = ?4, stop_json = ?5, "
+                 "summary_json = ?6 WHERE id = ?1");
     st.bind(1, openRun_)
         .bind(2, run.unix_ms)
         .bind(3, run.outcome)
@@ -257,13 +125,13 @@ void SqliteRunRecord::closed(const RunClosing& run) {
 
 std::vector<RecordedRun> SqliteRunRecord::runs(const RunQuery& q) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_, "SELECT id, machine, job_name, job_hash, operator, run_dir, "
-                      "coalesce(outcome, ''), started_ms, coalesce(ended_ms, 0), "
-                      "coalesce(cycle_time_s, 0), coalesce(made_json, ''), "
-                      "coalesce(stop_json, ''), "
-                      "(SELECT count(*) FROM alarms WHERE alarms.run_id = runs.id) "
-                      "FROM runs WHERE started_ms >= ?1 AND (?2 = '' OR machine = ?2) "
-                      "AND (?3 = '' OR coalesce(outcome, '') = ?3) ORDER BY started_ms, id");
+    Statement st(db_.get(), "SELECT id, machine, job_name, job_hash, operator, run_dir, "
+                            "coalesce(outcome, ''), started_ms, coalesce(ended_ms, 0), "
+                            "coalesce(cycle_time_s, 0), coalesce(made_json, ''), "
+                            "coalesce(stop_json, ''), "
+                            "(SELECT count(*) FROM alarms WHERE alarms.run_id = runs.id) "
+                            "FROM runs WHERE started_ms >= ?1 AND (?2 = '' OR machine = ?2) "
+                            "AND (?3 = '' OR coalesce(outcome, '') = ?3) ORDER BY started_ms, id");
     st.bind(1, q.since_ms).bind(2, q.machine).bind(3, q.outcome);
     std::vector<RecordedRun> out;
     while (st.step()) {
@@ -288,7 +156,8 @@ std::vector<RecordedRun> SqliteRunRecord::runs(const RunQuery& q) const {
 
 std::vector<RunAlarmNote> SqliteRunRecord::alarmsOf(std::int64_t runId) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_, "SELECT time_ms, severity, text FROM alarms WHERE run_id = ?1 ORDER BY id");
+    Statement st(db_.get(),
+                 "SELECT time_ms, severity, text FROM alarms WHERE run_id = ?1 ORDER BY id");
     st.bind(1, runId);
     std::vector<RunAlarmNote> out;
     while (st.step())
@@ -298,14 +167,14 @@ std::vector<RunAlarmNote> SqliteRunRecord::alarmsOf(std::int64_t runId) const {
 
 std::string SqliteRunRecord::jobTextOf(std::int64_t runId) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_, "SELECT job_text FROM runs WHERE id = ?1");
+    Statement st(db_.get(), "SELECT job_text FROM runs WHERE id = ?1");
     st.bind(1, runId);
     return st.step() ? st.text(0) : std::string();
 }
 
 std::string SqliteRunRecord::integrityCheck() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_, "PRAGMA integrity_check");
+    Statement st(db_.get(), "PRAGMA integrity_check");
     return st.step() ? st.text(0) : std::string();
 }
 
@@ -316,15 +185,7 @@ std::string SqliteRunRecord::desktopUser() {
 }
 
 std::string SqliteRunRecord::defaultPath() {
-    const char* xdg = std::getenv("XDG_DATA_HOME");
-    fs::path base;
-    if (xdg && *xdg)
-        base = xdg;
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        base = fs::path(home) / ".local" / "share";
-    else
-        base = ".";
-    return (base / "cutcell" / "production.db").string();
+    return defaultProductionDbPath();
 }
 
 std::string SqliteRunRecord::machineOfJob(const std::string& jobText) {

@@ -10,21 +10,14 @@
 // The run log calls it on the engine's logger thread (RunRecordSink); queries may come from any
 // thread: one connection behind a mutex.
 #include "core/record/run_record.h"
+#include "devices/record/production_db.h"
 
 #include <cstdint>
 #include <mutex>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-struct sqlite3;
-
 namespace cutcell {
-
-class RecordError : public std::runtime_error {
-  public:
-    using std::runtime_error::runtime_error;
-};
 
 struct RecordedRun {
     std::int64_t id = 0;
@@ -44,7 +37,7 @@ struct RunQuery {
 
 class SqliteRunRecord final : public RunRecordSink {
   public:
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = kProductionDbSchema;
 
     // Opens or creates the record at `path` (its folder too) and migrates it; throws
     // RecordError naming the file and SQLite's reason.
@@ -79,12 +72,10 @@ class SqliteRunRecord final : public RunRecordSink {
     static std::string jobFingerprint(const std::string& jobText);
 
   private:
-    void exec(const char* sql) const;
-    void migrate();
     void closeInterrupted();
     std::string path_;
     std::string operator_;
-    sqlite3* db_ = nullptr;
+    SqliteHandle db_;
     mutable std::mutex mutex_;
     std::int64_t openRun_ = 0; // row of the run being recorded
     int interrupted_ = 0;

@@ -20,6 +20,17 @@ TEST(Json, RoundTripKeepsValuesAndOrder) {
     EXPECT_EQ(back.find("u")->asString(), "\xc3\xa9");
 }
 
+// A negative indent writes one line (JSON Lines): the only line break is the last character,
+// a string's own line break is escaped, and it reads back to the same document.
+TEST(Json, OneLineWritingHasOneLineBreakAndRoundTrips) {
+    const json::Value v = json::parse(
+        R"({"b": 1.5, "a": [1, {"x": "y\nz"}, [2, [3]]], "o": {"p": {}}, "e": [], "n": null})");
+    const std::string line = json::write(v, -1);
+    ASSERT_FALSE(line.empty());
+    EXPECT_EQ(line.find('\n'), line.size() - 1) << line;
+    EXPECT_EQ(json::write(json::parse(line)), json::write(v));
+}
+
 TEST(Json, NumbersSurviveAtFullPrecision) {
     // Bit for bit (EXPECT_DOUBLE_EQ would let 4 ulps through). 0.1 + 0.2, 1 + 2^-52 and
     // 1/3 need 16 or 17 significant digits; the extremes must not overflow or flush to zero.

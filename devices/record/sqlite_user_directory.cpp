@@ -1,0 +1,213 @@
+#include "devices/record/sqlite_user_directory.h"
+
+#include <sodium.h>
+
+#include <optional>
+
+namespace cutcell {
+namespace {
+
+// 1-32 characters of letters, digits, '.', '_' and '-': a name that prints in any log line.
+Outcome checkName(const std::string& name) {
+    const bool valid =
+        !name.empty() && name.size() <= 32 &&
+        name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-") == std::string::npos;
+    if (valid) return Outcome::done();
+    return Outcome::refuse("user name \"" + name.substr(0, 40) +
+                               "\" is not valid: 1 to 32 letters, digits, '.', '_' or '-'",
+                           "user");
+}
+
+Outcome checkPassword(const std::string& password) {
+    const auto n = static_cast<int>(password.size());
+    if (n < SqliteUserDirectory::kMinPasswordLength)
+        return Outcome::refuse("the password has " + std::to_string(n) +
+                                   " characters; it needs at least " +
+                                   std::to_string(SqliteUserDirectory::kMinPasswordLength),
+                               "password");
+    if (n > SqliteUserDirectory::kMaxPasswordLength)
+        return Outcome::refuse("the password has " + std::to_string(n) + " characters; at most " +
+                                   std::to_string(SqliteUserDirectory::kMaxPasswordLength) +
+                                   " are taken",
+                               "password");
+    return Outcome::done();
+}
+
+// Argon2id (libsodium's default for crypto_pwhash_str) at its interactive limits.
+std::string hashPassword(const std::string& password) {
+    char out[crypto_pwhash_STRBYTES];
+    if (crypto_pwhash_str(out, password.data(), password.size(), crypto_pwhash_OPSLIMIT_INTERACTIVE,
+                          crypto_pwhash_MEMLIMIT_INTERACTIVE) != 0)
+        throw RecordError("users: no memory to hash a password (Argon2id needs 64 MiB)");
+    return out;
+}
+
+struct Row {
+    UserLevel level;
+    std::string hash;
+    int failed;
+    std::int64_t lockedUntil;
+};
+
+std::optional<Row> findUser(sqlite3* db, const std::string& name) {
+    Statement st(db, "SELECT level, pwhash, failed_logins, locked_until_ms FROM users "
+                     "WHERE name = ?1");
+    st.bind(1, name);
+    if (!st.step()) return std::nullopt;
+    return Row{parseUserLevel(st.text(0)).value_or(UserLevel::Operator), st.text(1),
+               static_cast<int>(st.integer(2)), st.integer(3)};
+}
+
+std::int64_t administrators(sqlite3* db) {
+    Statement st(db, "SELECT count(*) FROM users WHERE level = 'administrator'");
+    return st.step() ? st.integer(0) : 0;
+}
+
+} // namespace
+
+SqliteUserDirectory::SqliteUserDirectory(const std::string& path, AuditSink& audit, Clock clock)
+    : path_(path), audit_(audit), clock_(std::move(clock)), db_(openProductionDb(path)) {
+    if (sodium_init() < 0) throw RecordError("users: libsodium cannot start");
+}
+
+SqliteUserDirectory::~SqliteUserDirectory() = default;
+
+std::vector<UserAccount> SqliteUserDirectory::users() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Statement st(db_.get(), "SELECT name, level, created_ms, failed_logins, locked_until_ms "
+                            "FROM users ORDER BY name");
+    std::vector<UserAccount> out;
+    while (st.step())
+        out.push_back({st.text(0), parseUserLevel(st.text(1)).value_or(UserLevel::Operator),
+                       st.integer(2), static_cast<int>(st.integer(3)), st.integer(4)});
+    return out;
+}
+
+bool SqliteUserDirectory::hasAdministrator() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return administrators(db_.get()) > 0;
+}
+
+Outcome SqliteUserDirectory::addUser(const std::string& name, UserLevel level,
+                                     const std::string& password, const std::string& actor) {
+    if (Outcome o = checkName(name); !o.ok()) return o;
+    if (Outcome o = checkPassword(password); !o.ok()) return o;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (findUser(db_.get(), name))
+        return Outcome::refuse("user " + name + " exists already", "user");
+    if (level != UserLevel::Administrator && administrators(db_.get()) == 0)
+        return Outcome::refuse("the first user must be an administrator (level "
+                               "\"administrator\"), not " +
+                                   std::string(userLevelName(level)),
+                               "level");
+    Statement st(db_.get(), "INSERT INTO users (name, level, pwhash, created_ms) VALUES "
+                            "(?1, ?2, ?3, ?4)");
+    st.bind(1, name).bind(2, std::string(userLevelName(level))).bind(3, hashPassword(password));
+    st.bind(4, clock_()).step();
+    audit_.append(
+        {clock_(), actor, audit_event::kUserAdded, name, "", userLevelName(level), "", ""});
+    return Outcome::done();
+}
+
+Outcome SqliteUserDirectory::removeUser(const std::string& name, const std::string& actor) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::optional<Row> row = findUser(db_.get(), name);
+    if (!row) return Outcome::refuse("no user " + name.substr(0, 40), "user");
+    if (row->level == UserLevel::Administrator && administrators(db_.get()) == 1)
+        return Outcome::refuse("user " + name + " is the last administrator: add another one first",
+                               "user");
+    Statement st(db_.get(), "DELETE FROM users WHERE name = ?1");
+    st.bind(1, name).step();
+    audit_.append(
+        {clock_(), actor, audit_event::kUserRemoved, name, userLevelName(row->level), "", "", ""});
+    return Outcome::done();
+}
+
+Outcome SqliteUserDirectory::setPassword(const std::string& name, const std::string& password,
+                                         const std::string& actor) {
+    if (Outcome o = checkPassword(password); !o.ok()) return o;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!findUser(db_.get(), name)) return Outcome::refuse("no user " + name.substr(0, 40), "user");
+    Statement st(db_.get(), "UPDATE users SET pwhash = ?2, failed_logins = 0, locked_until_ms = 0 "
+                            "WHERE name = ?1");
+    st.bind(1, name).bind(2, hashPassword(password)).step();
+    audit_.append({clock_(), actor, audit_event::kPasswordChanged, name, "", "", "", ""});
+    return Outcome::done();
+}
+
+Outcome SqliteUserDirectory::setLevel(const std::string& name, UserLevel level,
+                                      const std::string& actor) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::optional<Row> row = findUser(db_.get(), name);
+    if (!row) return Outcome::refuse("no user " + name.substr(0, 40), "user");
+    if (row->level == UserLevel::Administrator && level != UserLevel::Administrator &&
+        administrators(db_.get()) == 1)
+        return Outcome::refuse("user " + name + " is the last administrator", "level");
+    Statement st(db_.get(), "UPDATE users SET level = ?2 WHERE name = ?1");
+    st.bind(1, name).bind(2, std::string(userLevelName(level))).step();
+    audit_.append({clock_(), actor, audit_event::kLevelChanged, name, userLevelName(row->level),
+                   userLevelName(level), "", ""});
+    return Outcome::done();
+}
+
+LoginResult SqliteUserDirectory::login(const std::string& name, const std::string& password) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::int64_t now = clock_();
+    // The operator is not told whether the name or the password was wrong; the trail is.
+    const Outcome wrong = Outcome::refuse("user name or password wrong", "password");
+    const std::optional<Row> row = checkName(name).ok() ? findUser(db_.get(), name) : std::nullopt;
+    if (!row) {
+        audit_.append({now, name.substr(0, 40), audit_event::kLoginFailed, name.substr(0, 40), "",
+                       "", "", "no such user"});
+        return {wrong};
+    }
+    if (row->lockedUntil > now) {
+        const std::int64_t left_s = (row->lockedUntil - now + 999) / 1000;
+        audit_.append({now, name, audit_event::kLoginFailed, name, "", "", "",
+                       "locked out for " + std::to_string(left_s) + " s more"});
+        return {Outcome::refuse("user " + name + " is locked out for " + std::to_string(left_s) +
+                                    " s more after " + std::to_string(kMaxFailedLogins) +
+                                    " failed log-ins",
+                                "user")};
+    }
+    if (crypto_pwhash_str_verify(row->hash.c_str(), password.data(), password.size()) == 0) {
+        Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = 0 "
+                                "WHERE name = ?1");
+        st.bind(1, name).step();
+        audit_.append(
+            {now, name, audit_event::kLogin, name, "", userLevelName(row->level), "", ""});
+        return {Outcome::done(), row->level};
+    }
+    const int failed = row->failed + 1;
+    if (failed >= kMaxFailedLogins) {
+        Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = ?2 "
+                                "WHERE name = ?1");
+        st.bind(1, name).bind(2, now + kLockoutMs).step();
+        audit_.append({now, name, audit_event::kLockedOut, name, "", "", "",
+                       std::to_string(failed) + " failed log-ins: locked for " +
+                           std::to_string(kLockoutMs / 1000) + " s"});
+        return {Outcome::refuse("user name or password wrong; " + std::to_string(failed) +
+                                    " failed log-ins: user " + name + " is locked out for " +
+                                    std::to_string(kLockoutMs / 1000) + " s",
+                                "password")};
+    }
+    Statement st(db_.get(), "UPDATE users SET failed_logins = ?2 WHERE name = ?1");
+    st.bind(1, name).bind(2, static_cast<std::int64_t>(failed)).step();
+    audit_.append({now, name, audit_event::kLoginFailed, name, "", "", "",
+                   "wrong password (" + std::to_string(failed) + " of " +
+                       std::to_string(kMaxFailedLogins) + ")"});
+    return {wrong};
+}
+
+void SqliteUserDirectory::logout(const std::string& name) {
+    audit_.append({clock_(), name, audit_event::kLogout, name, "", "", "", ""});
+}
+
+std::string SqliteUserDirectory::storedHash(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::optional<Row> row = findUser(db_.get(), name);
+    return row ? row->hash : std::string();
+}
+
+} // namespace cutcell
