@@ -125,6 +125,7 @@ void MainWindow::buildLayout() {
     auto* status = new QWidget;
     status->setObjectName("operatorStatus");
     auto* sv = new QVBoxLayout(status);
+    statusLayout_ = sv;
     sv->setContentsMargins(0, 0, 0, 0);
     sv->addWidget(lamps_);
     sv->addWidget(bus_);
@@ -274,6 +275,10 @@ MainWindow::Carry MainWindow::carry() const {
 void MainWindow::takeOver(const Carry& carry) {
     document_->adopt(carry.job, carry.path, carry.modified);
     params_->tabs()->setCurrentIndex(carry.tab);
+}
+
+void MainWindow::addStatusPanel(QWidget* panel) {
+    statusLayout_->insertWidget(0, panel);
 }
 
 bool MainWindow::canRebuild(QString* why) const {

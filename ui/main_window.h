@@ -18,6 +18,7 @@ class QTimer;
 class QMenu;
 class QProgressBar;
 class QPushButton;
+class QVBoxLayout;
 
 namespace cutcell::ui {
 class DevicePanel;
@@ -93,6 +94,9 @@ class MainWindow : public QMainWindow {
     RecoveryPanel* recovery() const { return recovery_; }
     BusPanel* busPanel() const { return bus_; }
     QWidget* operatorColumn() const { return column_; }
+    // A panel at the top of the operator column's status part (below E-STOP and the buttons,
+    // which stay on screen): the app's log-in panel.
+    void addStatusPanel(QWidget* panel);
 
     // What a rebuilt window (another language, ui/window_host.h) takes over from this one.
     struct Carry {
@@ -154,6 +158,7 @@ class MainWindow : public QMainWindow {
     RecoveryPanel* recovery_ = nullptr;
     BusPanel* bus_ = nullptr;
     QWidget* column_ = nullptr;
+    QVBoxLayout* statusLayout_ = nullptr;
     QTimer* deviceTimer_ = nullptr;
     QTabWidget* bottomTabs_ = nullptr; // event log, devices
     bool showingBus_ = false;

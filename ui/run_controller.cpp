@@ -257,7 +257,10 @@ void RunController::updateBlocked() {
     QString r;
     const auto s = bridge_->state();
     const auto& issues = editor_->issues();
-    if (!issues.empty())
+    const QString gate = runGate_ ? runGate_() : QString();
+    if (!gate.isEmpty())
+        r = gate;
+    else if (!issues.empty())
         r = tr("%n invalid field(s) - %1", nullptr, static_cast<int>(issues.size()))
                 .arg(describeIssue_ ? describeIssue_(issues.front())
                                     : issueText(issues.front(), QString()));

@@ -45,6 +45,13 @@ class RunController : public QObject {
     PlanWorker* planner() const { return planner_; }
     std::shared_ptr<const cutcell::MachinePlan> plan() const { return plan_; }
     QString startBlockedReason() const { return blocked_; }
+    // What else blocks Start ("" for nothing): the station's log-in (app wiring). Call
+    // recheckStart() when its answer changes.
+    void setRunGate(std::function<QString()> gate) {
+        runGate_ = std::move(gate);
+        recheckStart();
+    }
+    void recheckStart() { updateBlocked(); }
     bool planning() const;
     EngineRig* rig() const { return rig_.get(); } // null until a plan was loaded
     // The rig's link to its drives (a CAN bus): its state, Enable's wait for it.
@@ -154,6 +161,7 @@ class RunController : public QObject {
     bool programLoaded_ = false;
     QString programError_;
     QString blocked_;
+    std::function<QString()> runGate_;
     std::shared_ptr<const cutcell::MotionProgram> program_;
     const MachineUi* programMachine_ = nullptr;
     cutcell::EngineState lastState_ = cutcell::EngineState::Idle;

@@ -2,6 +2,8 @@
 #include "gui_run.h"
 #include "production_record.h"
 #include "sim_rig.h"
+#include "station_access.h"
+#include "ui/access_control.h"
 
 #include "devices/process/safe_shutdown.h"
 #include "ui/forms/parameter_tabs.h"
@@ -159,7 +161,16 @@ int main(int argc, char** argv) {
     // Before any rig: each engine is told of the record as it is made.
     std::fprintf(stderr, "cutcell: %s\n",
                  cutcell::app::openProductionRecord(cli.value(recordOpt).toStdString()).c_str());
+    std::fprintf(stderr, "cutcell: %s\n",
+                 cutcell::app::openStationAccess(cli.value(recordOpt).toStdString()).c_str());
+    QObject::connect(&app, &QCoreApplication::aboutToQuit, [] {
+        if (auto* access = cutcell::app::stationAccess()) access->logOut("the station closed");
+    });
     CutCell::ui::WindowHost host(&cutcell::app::makeRig);
+    cutcell::app::attachStationAccess(*host.window());
+    QObject::connect(
+        &host, &CutCell::ui::WindowHost::windowRebuilt,
+        [](CutCell::ui::MainWindow* rebuilt) { cutcell::app::attachStationAccess(*rebuilt); });
     CutCell::ui::MainWindow& window = *host.window();
     // Without --size the window fits the screen it opens on (MainWindow::fitToScreen): a fixed
     // 1440x900 put the E-STOP column off a 1280x720 panel.

@@ -33,4 +33,8 @@ std::shared_ptr<RunRecordSink> productionRecord() {
     return theRecord();
 }
 
+SqliteRunRecord* productionRecordFile() {
+    return theRecord().get();
+}
+
 } // namespace cutcell::app

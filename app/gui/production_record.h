@@ -7,6 +7,10 @@
 #include <memory>
 #include <string>
 
+namespace cutcell {
+class SqliteRunRecord;
+}
+
 namespace cutcell::app {
 
 // Opens the record at `where` ("" = the data folder's, "off" = none). Returns a line for the
@@ -15,5 +19,7 @@ namespace cutcell::app {
 std::string openProductionRecord(const std::string& where);
 // The record every engine gets (null when none is kept).
 std::shared_ptr<RunRecordSink> productionRecord();
+// The same as the file it is (the operator it names follows the log-in); null when none.
+SqliteRunRecord* productionRecordFile();
 
 } // namespace cutcell::app

@@ -104,6 +104,11 @@ class MachineModule {
     // How the machine's runs are told (its tool, what it counts) before any plan exists; a
     // program carries the same terms, with the planned pieces where there are pieces.
     virtual RunTerms runTerms() const { return {}; }
+    // Whether a key of the machine's own data (as the forms name it, without "machine.") is a
+    // machine parameter - geometry, drives, gains, scaling, limits -, which only an engineer
+    // may change; the machine's other keys are process parameters, a setter's
+    // (core/machine/parameter_level.h judges the common sections).
+    virtual bool isMachineParameter(const std::string& /*key*/) const { return false; }
 
     // Plans the cut of a valid job. jobText is kept in the program for the run log; options
     // report progress and cancel (a machine that plans in one go may ignore them). The plan

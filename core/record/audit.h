@@ -3,6 +3,8 @@
 // authorisation, CR 2.8 auditable events). Who may change what is a level; what was done is an
 // AuditEvent handed to an AuditSink. devices/record/ keeps users and the trail in the
 // production record's SQLite file; the app wires it in.
+#include "core/common/outcome.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -64,6 +66,22 @@ struct AuditEvent {
     std::string key;          // the job key or the user concerned ("" for none)
     std::string old_value, new_value, unit;
     std::string detail; // anything else worth a line (the job file, the reason)
+};
+
+struct LoginAnswer {
+    Outcome outcome; // Refused with the reason an operator may see
+    UserLevel level = UserLevel::Operator;
+};
+
+// Who may log in at the station (devices/record/: SqliteUserDirectory). With no users the
+// station runs in single-user mode: no log-in, every field editable.
+class UserAuthenticator {
+  public:
+    virtual ~UserAuthenticator() = default;
+    virtual bool hasUsers() const = 0;
+    virtual LoginAnswer login(const std::string& name, const std::string& password) = 0;
+    // `reason`: "" when the user logged out, else why ("idle for 600 s").
+    virtual void logout(const std::string& name, const std::string& reason) = 0;
 };
 
 class AuditSink {

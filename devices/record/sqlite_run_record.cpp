@@ -38,7 +38,8 @@ std::string summaryMember(const std::string& summary, const char* key) {
 } // namespace
 
 SqliteRunRecord::SqliteRunRecord(const std::string& path, std::string operatorName)
-    : path_(path), operator_(std::move(operatorName)), db_(openProductionDb(path)) {
+    : path_(path), operator_(std::move(operatorName)), desktopOperator_(operator_),
+      db_(openProductionDb(path)) {
     try {
         closeInterrupted();
     } catch (const RecordError& e) {
@@ -70,6 +71,11 @@ void SqliteRunRecord::closeInterrupted() {
 int SqliteRunRecord::schemaVersion() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return schemaVersionOf(db_.get());
+}
+
+void SqliteRunRecord::setOperator(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    operator_ = name.empty() ? desktopOperator_ : name;
 }
 
 void SqliteRunRecord::opened(const RunOpening& run) {

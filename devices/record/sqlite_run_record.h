@@ -51,6 +51,9 @@ class SqliteRunRecord final : public RunRecordSink {
     const std::string& path() const { return path_; }
     int schemaVersion() const;
 
+    // Who the next runs are by (the logged-in user); "" keeps the desktop's user.
+    void setOperator(const std::string& name);
+
     void opened(const RunOpening& run) override;
     void alarm(const RunAlarmNote& alarm) override;
     void closed(const RunClosing& run) override;
@@ -74,7 +77,8 @@ class SqliteRunRecord final : public RunRecordSink {
   private:
     void closeInterrupted();
     std::string path_;
-    std::string operator_;
+    std::string operator_;        // [mutex_]
+    std::string desktopOperator_; // the one given at the start
     SqliteHandle db_;
     mutable std::mutex mutex_;
     std::int64_t openRun_ = 0; // row of the run being recorded

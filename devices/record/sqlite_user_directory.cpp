@@ -200,8 +200,14 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
     return {wrong};
 }
 
-void SqliteUserDirectory::logout(const std::string& name) {
-    audit_.append({clock_(), name, audit_event::kLogout, name, "", "", "", ""});
+void SqliteUserDirectory::logout(const std::string& name, const std::string& reason) {
+    audit_.append({clock_(), name, audit_event::kLogout, name, "", "", "", reason});
+}
+
+bool SqliteUserDirectory::hasUsers() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Statement st(db_.get(), "SELECT count(*) FROM users");
+    return st.step() && st.integer(0) > 0;
 }
 
 std::string SqliteUserDirectory::storedHash(const std::string& name) const {

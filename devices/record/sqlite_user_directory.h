@@ -26,12 +26,9 @@ struct UserAccount {
     std::int64_t locked_until_ms = 0; // 0: not locked
 };
 
-struct LoginResult {
-    Outcome outcome; // Refused with the reason an operator may see
-    UserLevel level = UserLevel::Operator;
-};
+using LoginResult = LoginAnswer;
 
-class SqliteUserDirectory {
+class SqliteUserDirectory final : public UserAuthenticator {
   public:
     static constexpr int kMinPasswordLength = 8;
     static constexpr int kMaxPasswordLength = 128;
@@ -41,7 +38,7 @@ class SqliteUserDirectory {
 
     // Opens (creates, migrates) the record at `path`; throws RecordError. `audit` outlives this.
     SqliteUserDirectory(const std::string& path, AuditSink& audit, Clock clock = unixMsNow);
-    ~SqliteUserDirectory();
+    ~SqliteUserDirectory() override;
     SqliteUserDirectory(const SqliteUserDirectory&) = delete;
     SqliteUserDirectory& operator=(const SqliteUserDirectory&) = delete;
 
@@ -56,8 +53,9 @@ class SqliteUserDirectory {
                         const std::string& actor);
     Outcome setLevel(const std::string& name, UserLevel level, const std::string& actor);
 
-    LoginResult login(const std::string& name, const std::string& password);
-    void logout(const std::string& name);
+    bool hasUsers() const override;
+    LoginResult login(const std::string& name, const std::string& password) override;
+    void logout(const std::string& name, const std::string& reason = {}) override;
 
     // The stored hash (tests check it is Argon2id with crypto_pwhash_str_verify); "" if none.
     std::string storedHash(const std::string& name) const;

@@ -2555,6 +2555,49 @@
     </message>
 </context>
 <context>
+    <name>CutCell::ui::AccessControl</name>
+    <message>
+        <location filename="../../ui/access_control.cpp" line="+16"/>
+        <source>operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>setter</source>
+        <translation>Einrichter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>engineer</source>
+        <translation>Ingenieur</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>administrator</source>
+        <translation>Administrator</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Log in to change this (needs the %1 level)</source>
+        <translation>Zum Ändern anmelden (braucht die Stufe %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Needs the %1 level (%2 is logged in as %3)</source>
+        <translation>Braucht die Stufe %1 (%2 ist als %3 angemeldet)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>log in to run (E-STOP and feed hold work without log-in)</source>
+        <translation>zum Fahren anmelden (NOT-HALT und Vorschub-Halt wirken ohne Anmeldung)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no user list here</source>
+        <translation>hier gibt es keine Benutzerliste</translation>
+    </message>
+</context>
+<context>
     <name>CutCell::ui::AlarmPanel</name>
     <message>
         <location filename="../../ui/panels/alarm_panel.cpp" line="+46"/>
@@ -3280,7 +3323,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawCarriageSawForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+365"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+374"/>
         <source>Carriage (five periods: BC, CE, EF, FG-GH-HI)</source>
         <translation>Schlitten (fünf Phasen: BC, CE, EF, FG-GH-HI)</translation>
     </message>
@@ -3515,7 +3558,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawTubeLineForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-362"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-371"/>
         <source>length</source>
         <translation>Länge</translation>
     </message>
@@ -3635,7 +3678,7 @@ entriegeln</translation>
         <translation>Gesendet: %1 Stück ersetzen die noch nicht begonnenen Stücke, ab dem nächsten Stück.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>%1 mm per pulse (π D / pulses)</source>
         <translation>%1 mm pro Impuls (π D / Impulse)</translation>
     </message>
@@ -3676,7 +3719,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::JobForm</name>
     <message>
-        <location filename="../../ui/forms/job_form.cpp" line="+211"/>
+        <location filename="../../ui/forms/job_form.cpp" line="+256"/>
         <source>Range %1 to %2 %3</source>
         <translation>Bereich %1 bis %2 %3</translation>
     </message>
@@ -3744,20 +3787,53 @@ entriegeln</translation>
     </message>
 </context>
 <context>
+    <name>CutCell::ui::LoginPanel</name>
+    <message>
+        <location filename="../../ui/panels/login_panel.cpp" line="+14"/>
+        <source>Log in</source>
+        <translation>Anmelden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Log out</source>
+        <translation>Abmelden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>User</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not logged in: E-STOP and feed hold work for everyone</source>
+        <translation>Nicht angemeldet: NOT-HALT und Vorschub-Halt wirken für alle</translation>
+    </message>
+</context>
+<context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+155"/>
+        <location filename="../../ui/main_window.cpp" line="+156"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+206"/>
+        <location line="+210"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-209"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
@@ -3862,7 +3938,7 @@ entriegeln</translation>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>clear the %1 first (Release E-STOP, Reset)</source>
         <translation>zuerst %1 aufheben (NOT-HALT entriegeln, Reset)</translation>
     </message>
@@ -4050,7 +4126,7 @@ entriegeln</translation>
         <translation>Zyklus &amp;&amp; Geräte</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>This machine has no linear axis.</source>
         <translation>Diese Maschine hat keine Linearachse.</translation>
     </message>
@@ -4780,7 +4856,7 @@ letzte %1 s</translation>
         <translation>Abbruch</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+23"/>
         <source>%n invalid field(s) - %1</source>
         <translation>
             <numerusform>%n ungültiges Feld - %1</numerusform>
@@ -5057,7 +5133,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelEndCutForm</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+223"/>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+225"/>
         <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
         <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
     </message>
@@ -5155,7 +5231,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelSectionForm</name>
     <message>
-        <location line="-273"/>
+        <location line="-275"/>
         <source>L (equal legs)</source>
         <translation>L (gleichschenklig)</translation>
     </message>
@@ -5245,7 +5321,7 @@ letzte %1 s</translation>
         <translation>Stablänge</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>User-defined dimensions: checked against the section&apos;s own limits (the root radius must leave a flat flange).</source>
         <translation>Benutzerdefinierte Maße: geprüft gegen die Grenzen des Profils (der Ausrundungsradius muss einen ebenen Flansch übrig lassen).</translation>
     </message>
@@ -5710,7 +5786,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+185"/>
+        <location filename="../../app/gui/main.cpp" line="+196"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>

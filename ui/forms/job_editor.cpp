@@ -27,6 +27,18 @@ void JobEditor::edit(const std::function<void(cutcell::Job&)>& change) {
     emit issuesChanged();
 }
 
+bool JobEditor::editKey(const std::string& key, const QString& oldValue, const QString& newValue,
+                        const std::function<void(cutcell::Job&)>& change) {
+    if (const QString why = lockReason(key); !why.isEmpty()) {
+        emit editRefused(QString::fromStdString(key), why);
+        return false;
+    }
+    edit(change);
+    if (oldValue != newValue)
+        emit parameterChanged(QString::fromStdString(key), oldValue, newValue);
+    return true;
+}
+
 void JobEditor::revalidate() {
     issues_ = cutcell::validateJob(job_);
 }

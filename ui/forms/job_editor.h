@@ -7,6 +7,7 @@
 #include "core/job/job_io.h"
 
 #include <QObject>
+#include <QString>
 
 #include <functional>
 #include <vector>
@@ -28,17 +29,32 @@ class JobEditor : public QObject {
     void setJob(const cutcell::Job& job);
     // Applies one change from a form; emits edited() and issuesChanged().
     void edit(const std::function<void(cutcell::Job&)>& change);
+    // One change of the field `key` from a form, if the gate lets it through (user levels):
+    // then as edit(), and parameterChanged(key, old, new) for the audit trail; else nothing
+    // changes, editRefused(key, why) is emitted and false returned (the form shows the old
+    // value again).
+    bool editKey(const std::string& key, const QString& oldValue, const QString& newValue,
+                 const std::function<void(cutcell::Job&)>& change);
+    // The gate: "" lets a key be changed, else the reason it may not ("needs the engineer
+    // level"). None by default (every key may be changed).
+    using Gate = std::function<QString(const std::string& key)>;
+    void setGate(Gate gate) { gate_ = std::move(gate); }
+    // Why `key` may not be changed now ("" when it may).
+    QString lockReason(const std::string& key) const { return gate_ ? gate_(key) : QString(); }
 
   signals:
     void jobReset();
     void edited();
     void issuesChanged();
+    void parameterChanged(const QString& key, const QString& oldValue, const QString& newValue);
+    void editRefused(const QString& key, const QString& why);
 
   private:
     void revalidate();
 
     cutcell::Job job_;
     std::vector<cutcell::JobIssue> issues_;
+    Gate gate_;
 };
 
 } // namespace CutCell::ui

@@ -28,13 +28,49 @@
 namespace CutCell::ui {
 namespace {
 
+// The field's tooltip: its issues, then why it is read-only (user levels) if it is.
+void showTip(QWidget* w, const QString& issues) {
+    const QString locked = w->property("lockReason").toString();
+    w->setToolTip(locked.isEmpty() ? issues : issues.isEmpty() ? locked : issues + "\n" + locked);
+}
+
 void setInvalid(QWidget* w, bool invalid, const QString& tip) {
     if (w->property("invalid").toBool() != invalid) {
         w->setProperty("invalid", invalid);
         w->style()->unpolish(w);
         w->style()->polish(w);
     }
-    w->setToolTip(tip);
+    w->setProperty("issueTip", tip);
+    showTip(w, tip);
+}
+
+// Read-only with the reason (user levels) or editable again. Text fields keep their text
+// selectable; check boxes, choices and tables ignore input (their enabled state belongs to
+// the machine's pages, ParameterTabs::applyMachine).
+void setLocked(QWidget* w, const QString& reason) {
+    const bool locked = !reason.isEmpty();
+    if (auto* spin = qobject_cast<QAbstractSpinBox*>(w))
+        spin->setReadOnly(locked);
+    else if (auto* line = qobject_cast<QLineEdit*>(w))
+        line->setReadOnly(locked);
+    else if (auto* text = qobject_cast<QPlainTextEdit*>(w))
+        text->setReadOnly(locked);
+    else {
+        w->setAttribute(Qt::WA_TransparentForMouseEvents, locked);
+        w->setFocusPolicy(locked ? Qt::NoFocus : Qt::StrongFocus);
+        // A group or a table marked with one key (the saw's queue): its own fields too.
+        for (auto* field : w->findChildren<QAbstractSpinBox*>())
+            field->setReadOnly(locked);
+        for (auto* edit : w->findChildren<QLineEdit*>())
+            edit->setReadOnly(locked);
+    }
+    if (w->property("locked").toBool() != locked) {
+        w->setProperty("locked", locked);
+        w->style()->unpolish(w);
+        w->style()->polish(w);
+    }
+    w->setProperty("lockReason", reason);
+    showTip(w, w->property("issueTip").toString());
 }
 
 } // namespace
@@ -93,9 +129,11 @@ QDoubleSpinBox* JobForm::bindDouble(const std::string& key, int decimals, Double
                              auto copy = job;
                              w->setValue(ref(copy));
                          }});
-    connect(w, &QDoubleSpinBox::valueChanged, this, [this, ref](double v) {
+    connect(w, &QDoubleSpinBox::valueChanged, this, [this, key, ref](double v) {
         if (loading_) return;
-        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+        auto job = editor_->job();
+        commit(key, QString::number(ref(job), 'g', 12), QString::number(v, 'g', 12),
+               [&](cutcell::Job& j) { ref(j) = v; });
     });
     return w;
 }
@@ -112,9 +150,11 @@ QSpinBox* JobForm::bindInt(const std::string& key, IntRef ref) {
                              auto copy = job;
                              w->setValue(ref(copy));
                          }});
-    connect(w, &QSpinBox::valueChanged, this, [this, ref](int v) {
+    connect(w, &QSpinBox::valueChanged, this, [this, key, ref](int v) {
         if (loading_) return;
-        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+        auto job = editor_->job();
+        commit(key, QString::number(ref(job)), QString::number(v),
+               [&](cutcell::Job& j) { ref(j) = v; });
     });
     return w;
 }
@@ -126,9 +166,10 @@ QCheckBox* JobForm::bindBool(const std::string& key, const QString& text, BoolRe
                              auto copy = job;
                              w->setChecked(ref(copy));
                          }});
-    connect(w, &QCheckBox::toggled, this, [this, ref](bool v) {
+    connect(w, &QCheckBox::toggled, this, [this, key, ref](bool v) {
         if (loading_) return;
-        editor_->edit([&](cutcell::Job& j) { ref(j) = v; });
+        commit(key, v ? "false" : "true", v ? "true" : "false",
+               [&](cutcell::Job& j) { ref(j) = v; });
     });
     return w;
 }
@@ -141,9 +182,11 @@ QLineEdit* JobForm::bindString(const std::string& key, StringRef ref) {
                              w->setText(QString::fromStdString(ref(copy)));
                              w->setCursorPosition(0); // show the start of long names
                          }});
-    connect(w, &QLineEdit::textEdited, this, [this, ref](const QString& v) {
+    connect(w, &QLineEdit::textEdited, this, [this, key, ref](const QString& v) {
         if (loading_) return;
-        editor_->edit([&](cutcell::Job& j) { ref(j) = v.toStdString(); });
+        auto job = editor_->job();
+        commit(key, QString::fromStdString(ref(job)), v,
+               [&](cutcell::Job& j) { ref(j) = v.toStdString(); });
     });
     return w;
 }
@@ -156,12 +199,13 @@ QPlainTextEdit* JobForm::bindText(const std::string& key, StringRef ref) {
                              auto copy = job;
                              w->setPlainText(QString::fromStdString(ref(copy)));
                          }});
-    connect(w, &QPlainTextEdit::textChanged, this, [this, w, ref] {
+    connect(w, &QPlainTextEdit::textChanged, this, [this, key, w, ref] {
         if (loading_) return;
         const auto text = w->toPlainText().toStdString();
         auto current = editor_->job();
         if (ref(current) == text) return;
-        editor_->edit([&](cutcell::Job& j) { ref(j) = text; });
+        commit(key, QString::fromStdString(ref(current)), QString::fromStdString(text),
+               [&](cutcell::Job& j) { ref(j) = text; });
     });
     return w;
 }
@@ -173,9 +217,10 @@ QComboBox* JobForm::bindChoice(const std::string& key, const QStringList& items,
     w->addItems(items);
     registerField(key, w);
     bindings_.push_back({w, [w, get](const cutcell::Job& job) { w->setCurrentIndex(get(job)); }});
-    connect(w, &QComboBox::currentIndexChanged, this, [this, set](int i) {
+    connect(w, &QComboBox::currentIndexChanged, this, [this, key, items, get, set](int i) {
         if (loading_ || i < 0) return;
-        editor_->edit([&](cutcell::Job& j) { set(j, i); });
+        const int old = get(editor_->job());
+        commit(key, items.value(old), items.value(i), [&](cutcell::Job& j) { set(j, i); });
     });
     return w;
 }
@@ -235,6 +280,18 @@ void JobForm::addRow(QFormLayout* form, const QString& label, QWidget* field, co
     u->setMinimumWidth(64);
     h->addWidget(u);
     form->addRow(label, row);
+}
+
+void JobForm::commit(const std::string& key, const QString& oldValue, const QString& newValue,
+                     const std::function<void(cutcell::Job&)>& change) {
+    // A refused change (a level too low) leaves the job as it was: the field shows it again.
+    if (!editor_->editKey(key, oldValue, newValue, change))
+        QTimer::singleShot(0, this, [this] { reload(); });
+}
+
+void JobForm::applyAccess() {
+    for (const auto& [key, w] : fields_)
+        setLocked(w, editor_->lockReason(key));
 }
 
 void JobForm::reload() {

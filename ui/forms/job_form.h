@@ -44,6 +44,9 @@ class JobForm : public QWidget {
     // While the machine moves (ParameterTabs): off by default; a form may keep the fields that
     // can change during a run (the flying saw's queue of lengths) on.
     virtual void setEditingLocked(bool locked) { setEnabled(!locked); }
+    // Makes each field read-only whose key the editor's gate refuses (user levels), with the
+    // reason in its tooltip, and editable again when the gate lets it through.
+    void applyAccess();
 
   protected:
     using DoubleRef = std::function<double&(cutcell::Job&)>;
@@ -123,6 +126,11 @@ class JobForm : public QWidget {
 
     // Reloads extra (non-bound) widgets after the job was replaced.
     virtual void reloadExtra(const cutcell::Job&) {}
+
+    // A change of `key` through the editor's gate (JobEditor::editKey); a refused one reloads
+    // the fields.
+    void commit(const std::string& key, const QString& oldValue, const QString& newValue,
+                const std::function<void(cutcell::Job&)>& change);
 
   private:
     // bindRowTable's Qt calls (the header keeps QTableWidget declared only).

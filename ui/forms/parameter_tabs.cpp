@@ -84,6 +84,7 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     add(new CycleDevicesForm(editor), tr("Cycle && devices"), nullptr);
     connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyMachine);
     connect(editor, &JobEditor::edited, this, &ParameterTabs::applyMachine);
+    connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyAccess);
     applyMachine();
     // After the forms: they mark their fields first, the titles count them.
     connect(editor, &JobEditor::issuesChanged, this, &ParameterTabs::refreshTitles);
@@ -179,6 +180,11 @@ void ParameterTabs::setEditingLocked(bool locked, const QString& reason) {
         f->setEditingLocked(locked);
     lockNote_->setVisible(locked);
     lockNote_->setText(reason);
+}
+
+void ParameterTabs::applyAccess() {
+    for (auto* f : forms_)
+        f->applyAccess();
 }
 
 QString ParameterTabs::issueMessage(const cutcell::JobIssue& issue) const {

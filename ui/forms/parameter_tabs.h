@@ -37,6 +37,9 @@ class ParameterTabs : public QWidget {
     void revealField(const std::string& key);
     QTabWidget* tabs() const { return tabs_; }
     void setEditingLocked(bool locked, const QString& reason);
+    // Read-only, with the level they need, every field the editor's gate refuses (user
+    // levels); again after each new job and whenever the user changes.
+    void applyAccess();
     // Whether the tab with this (untranslated-count) title is shown for the current machine.
     bool tabShown(const QString& title) const;
     // Shows the n-th visible tab (the tab list depends on the machine).

@@ -1,5 +1,7 @@
 #include "core/machines/flying_saw/flying_saw_module.h"
 
+#include "core/machine/parameter_level.h"
+
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/machines/flying_saw/flying_saw_program.h"
@@ -186,6 +188,13 @@ json::Value FlyingSawModule::runReport(const Job&, const MachinePlan& plan,
     json::Value doc = reportToJson(report, &names);
     doc.set("machine", kFlyingSawId);
     return doc;
+}
+
+bool FlyingSawModule::isMachineParameter(const std::string& key) const {
+    return keyUnder(key,
+                    {"line.roller_pulses_per_rev", "line.roller_diameter_mm", "line.filter_alpha",
+                     "carriage", "saw.settle_s", "saw.clearance_mm", "saw.turntable_deg_s",
+                     "saw.turntable_deg_s2", "saw.table_points", "gauge", "line_sim"});
 }
 
 } // namespace cutcell

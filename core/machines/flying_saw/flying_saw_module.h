@@ -36,6 +36,9 @@ class FlyingSawModule : public MachineModule {
     Outcome canOpen() const override;
     std::vector<std::string> sensorNames() const override { return {"line encoder"}; }
     RunTerms runTerms() const override;
+    // The line's encoder and filter, the carriage, the saw's turntable and the gauge; the
+    // feeds, the overcut and the blade are the setter's.
+    bool isMachineParameter(const std::string& key) const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;

@@ -1,5 +1,7 @@
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 
+#include "core/machine/parameter_level.h"
+
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/drive_fields.h"
@@ -242,6 +244,10 @@ json::Value PipeRobotModule::runReport(const Job& job, const MachinePlan& plan,
     if (const CutPlan* cut = static_cast<const CutPlan*>(plan.data.get()))
         r.max_direction_deviation_deg = cut->max_deviation_deg;
     return reportToJson(r, &reportAxisNames());
+}
+
+bool PipeRobotModule::isMachineParameter(const std::string& key) const {
+    return keyUnder(key, {"robot", "controller", "plant"});
 }
 
 } // namespace cutcell

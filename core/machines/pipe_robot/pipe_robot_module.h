@@ -23,6 +23,9 @@ class PipeRobotModule : public MachineModule {
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
     Outcome canOpen() const override { return Outcome::done(); }
+    // The arm (DH table, axis ranges), its joints' PID gains and plant; pipes, method and cut
+    // are the setter's.
+    bool isMachineParameter(const std::string& key) const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     Outcome setVariant(Job& job, const std::string& variant) const override;

@@ -1,5 +1,7 @@
 #include "core/machines/profile_cutter/profile_cutter_module.h"
 
+#include "core/machine/parameter_level.h"
+
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/issue_checker.h"
@@ -240,6 +242,12 @@ std::string ProfileCutterModule::exportFileWith(const std::string& exportId, con
 json::Value ProfileCutterModule::runReport(const Job&, const MachinePlan&,
                                            const TrackingReport& report) const {
     return profileRunReportJson(report);
+}
+
+bool ProfileCutterModule::isMachineParameter(const std::string& key) const {
+    return keyUnder(key, {"profile_cutter.steps_per_rev_a", "profile_cutter.pulses_per_step_a",
+                          "profile_cutter.mm_per_pulse_x", "profile_cutter.max_pulse_rate_hz",
+                          "profile_cutter.x_travel_mm", "robot", "controller", "plant"});
 }
 
 } // namespace cutcell

@@ -31,6 +31,9 @@ class ProfileCutterModule : public MachineModule {
     void migrateSchema1(json::Object& section) const override;
     std::vector<JobIssue> validate(const Job& job) const override;
     Outcome canOpen() const override;
+    // The stepper and pulse scaling and the X travel, and the robot's data it shares; the
+    // pierce time and the branch position are the setter's.
+    bool isMachineParameter(const std::string& key) const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;

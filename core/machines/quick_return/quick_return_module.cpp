@@ -1,5 +1,7 @@
 #include "core/machines/quick_return/quick_return_module.h"
 
+#include "core/machine/parameter_level.h"
+
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/job_io.h"
@@ -192,6 +194,10 @@ json::Value QuickReturnModule::runReport(const Job&, const MachinePlan& plan,
                                          const TrackingReport& report) const {
     if (!plan.program) return reportToJson(report);
     return reportToJson(report, &plan.program->axis_names);
+}
+
+bool QuickReturnModule::isMachineParameter(const std::string& key) const {
+    return keyUnder(key, {"mechanism", "slider", "crank_motor", "control"});
 }
 
 } // namespace cutcell

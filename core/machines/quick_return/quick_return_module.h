@@ -33,6 +33,9 @@ class QuickReturnModule : public MachineModule {
     Outcome canOpen() const override;
     std::vector<std::string> sensorNames() const override { return {"slider scale"}; }
     RunTerms runTerms() const override;
+    // The mechanism, the slider, the crank's motor and the control law with its gains; the cut
+    // and the tracking test are the setter's.
+    bool isMachineParameter(const std::string& key) const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;

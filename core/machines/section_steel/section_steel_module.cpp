@@ -1,5 +1,7 @@
 #include "core/machines/section_steel/section_steel_module.h"
 
+#include "core/machine/parameter_level.h"
+
 #include "core/common/c_format.h"
 #include "core/job/default_job.h"
 #include "core/job/issue_checker.h"
@@ -151,6 +153,11 @@ json::Value SectionSteelModule::runReport(const Job&, const MachinePlan& plan,
         names[i] = kAxisNames[i];
     (void)plan;
     return reportToJson(report, &names);
+}
+
+bool SectionSteelModule::isMachineParameter(const std::string& key) const {
+    return keyUnder(key, {"path_arm", "groove_arm", "park_deg", "drives", "motion.torch_length_mm",
+                          "motion.torch_radius_mm", "motion.max_lean_deg"});
 }
 
 } // namespace cutcell

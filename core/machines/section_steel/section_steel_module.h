@@ -24,6 +24,9 @@ class SectionSteelModule : public MachineModule {
     void migrateSchema1(json::Object&) const override {}
     std::vector<JobIssue> validate(const Job& job) const override;
     Outcome canOpen() const override;
+    // The two arms, the torch's size and lean, the park pose and the drives; the section, the
+    // end cut and the speeds are the setter's.
+    bool isMachineParameter(const std::string& key) const override;
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     std::vector<ExportInfo> exports() const override;

@@ -329,7 +329,16 @@ void FlyingSawTubeLineForm::writeQueue() {
         auto* pieces = qobject_cast<QSpinBox*>(queue_->cellWidget(r, 1));
         if (length && pieces) q.push_back({length->value(), pieces->value()});
     }
-    editor()->edit([&q](Job& j) { spec(j).queue = q; });
+    const auto text = [](const std::vector<cutcell::PieceOrder>& orders) {
+        QStringList parts;
+        for (const cutcell::PieceOrder& o : orders)
+            parts << QStringLiteral("%1 x %2")
+                         .arg(QString::number(o.length_mm, 'g', 12))
+                         .arg(o.count);
+        return parts.join(QStringLiteral("; "));
+    };
+    Job current = editor()->job();
+    commit("cut.queue", text(spec(current).queue), text(q), [&q](Job& j) { spec(j).queue = q; });
 }
 
 void FlyingSawTubeLineForm::updateDerived(const Job& job) {

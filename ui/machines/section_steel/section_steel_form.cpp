@@ -169,7 +169,9 @@ SectionSteelSectionForm::SectionSteelSectionForm(JobEditor* editor, QWidget* par
         const auto found =
             cutcell::section_steel::findSection(designation_->itemText(i).toStdString());
         if (!found) return;
-        this->editor()->edit([&](Job& j) {
+        Job current = this->editor()->job();
+        const QString was = QString::fromStdString(spec(current).section.designation);
+        commit("section.designation", was, designation_->itemText(i), [&](Job& j) {
             spec(j).section = *found;
             spec(j).user_defined = false;
         });

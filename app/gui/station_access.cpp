@@ -1,0 +1,124 @@
+#include "station_access.h"
+
+#include "production_record.h"
+
+#include "core/machine/machine_registry.h"
+#include "devices/record/sqlite_audit_trail.h"
+#include "devices/record/sqlite_run_record.h"
+#include "devices/record/sqlite_user_directory.h"
+#include "ui/access_control.h"
+#include "ui/forms/job_editor.h"
+#include "ui/forms/parameter_tabs.h"
+#include "ui/main_window.h"
+#include "ui/panels/control_panel.h"
+#include "ui/panels/login_panel.h"
+#include "ui/panels/recovery_panel.h"
+#include "ui/run_controller.h"
+
+#include <QTimer>
+
+#include <memory>
+
+namespace cutcell::app {
+namespace {
+
+struct Station {
+    std::unique_ptr<SqliteAuditTrail> trail;
+    std::unique_ptr<SqliteUserDirectory> users;
+    std::unique_ptr<CutCell::ui::AccessControl> access;
+};
+
+Station& station() {
+    static Station s;
+    return s;
+}
+
+} // namespace
+
+std::string openStationAccess(const std::string& where) {
+    closeStationAccess();
+    Station& s = station();
+    std::string line;
+    if (where != "off") {
+        const std::string path = where.empty() ? defaultProductionDbPath() : where;
+        try {
+            s.trail = std::make_unique<SqliteAuditTrail>(path);
+            s.users = std::make_unique<SqliteUserDirectory>(path, *s.trail);
+            line = s.users->hasUsers()
+                       ? "users: log in at the operator column (" + path + ")"
+                       : "users: none in " + path + ": single-user mode (cutcell-cli users add)";
+        } catch (const RecordError& e) {
+            s.users.reset();
+            s.trail.reset();
+            line = std::string("users and audit trail not kept: ") + e.what();
+        }
+    } else {
+        line = "users: single-user mode, no audit trail (--record off)";
+    }
+    s.access = std::make_unique<CutCell::ui::AccessControl>(
+        s.users.get(), s.trail.get(), QString::fromStdString(SqliteRunRecord::desktopUser()));
+    return line;
+}
+
+CutCell::ui::AccessControl* stationAccess() {
+    return station().access.get();
+}
+
+void closeStationAccess() {
+    Station& s = station();
+    s.access.reset();
+    s.users.reset();
+    s.trail.reset();
+}
+
+void attachStationAccess(CutCell::ui::MainWindow& window) {
+    using namespace CutCell::ui;
+    AccessControl* access = stationAccess();
+    if (!access) return;
+    window.addStatusPanel(new LoginPanel(access, &window));
+    JobEditor* editor = window.editor();
+    editor->setGate([access, editor](const std::string& key) {
+        return access->lockReason(key, findMachine(editor->job().machine));
+    });
+    window.run()->setRunGate([access] { return access->runLockReason(); });
+    QObject::connect(access, &AccessControl::changed, &window, [&window] {
+        window.parameters()->applyAccess();
+        window.run()->recheckStart();
+        if (auto* record = productionRecordFile())
+            record->setOperator(stationAccess()->user().toStdString());
+    });
+    window.parameters()->applyAccess();
+    QObject::connect(editor, &JobEditor::parameterChanged, access,
+                     [access](const QString& key, const QString& was, const QString& now) {
+                         access->audit(audit_event::kParameterChanged, key, was, now);
+                     });
+    ControlPanel* controls = window.controls();
+    QObject::connect(controls, &ControlPanel::emergencyStopRequested, access,
+                     [access] { access->audit(audit_event::kEmergencyStop); });
+    QObject::connect(controls, &ControlPanel::resetRequested, access,
+                     [access] { access->audit(audit_event::kReset); });
+    QObject::connect(window.recovery(), &RecoveryPanel::startFromRequested, access,
+                     [access](double t) {
+                         access->audit(audit_event::kRecovery, "path_time_s", {},
+                                       QString::number(t, 'f', 3), "s");
+                     });
+    // An override is dragged through many values: one event per settled change.
+    auto* settle = new QTimer(&window);
+    settle->setSingleShot(true);
+    settle->setInterval(1000);
+    auto from = std::make_shared<double>(-1), to = std::make_shared<double>(-1);
+    QObject::connect(controls, &ControlPanel::overrideChanged, settle, [=](double f) {
+        if (*from < 0) *from = *to < 0 ? f : *to;
+        *to = f;
+        settle->start();
+    });
+    QObject::connect(settle, &QTimer::timeout, access, [=] {
+        if (*from >= 0 && *from != *to)
+            access->audit(audit_event::kOverrideChanged, "override",
+                          QString::number(*from * 100, 'f', 0), QString::number(*to * 100, 'f', 0),
+                          "%");
+        *from = -1;
+    });
+}
+
+} // namespace cutcell::app

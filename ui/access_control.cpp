@@ -1,0 +1,132 @@
+#include "ui/access_control.h"
+
+#include "core/machine/parameter_level.h"
+
+#include <QCoreApplication>
+#include <QEvent>
+#include <QTimer>
+
+#include <exception>
+
+namespace CutCell::ui {
+
+QString userLevelText(cutcell::UserLevel level) {
+    switch (level) {
+    case cutcell::UserLevel::Operator:
+        return AccessControl::tr("operator");
+    case cutcell::UserLevel::Setter:
+        return AccessControl::tr("setter");
+    case cutcell::UserLevel::Engineer:
+        return AccessControl::tr("engineer");
+    case cutcell::UserLevel::Administrator:
+        return AccessControl::tr("administrator");
+    }
+    return {};
+}
+
+AccessControl::AccessControl(cutcell::UserAuthenticator* users, cutcell::AuditSink* audit,
+                             QString desktopUser, QObject* parent)
+    : QObject(parent), users_(users), audit_(audit), desktopUser_(std::move(desktopUser)),
+      idle_(new QTimer(this)) {
+    idle_->setSingleShot(true);
+    connect(idle_, &QTimer::timeout, this,
+            [this] { logOut(QStringLiteral("idle for %1 s").arg(idleTimeoutS_)); });
+    if (QCoreApplication::instance()) QCoreApplication::instance()->installEventFilter(this);
+}
+
+AccessControl::~AccessControl() {
+    if (QCoreApplication::instance()) QCoreApplication::instance()->removeEventFilter(this);
+}
+
+bool AccessControl::singleUser() const {
+    try {
+        return !users_ || !users_->hasUsers();
+    } catch (const std::exception&) {
+        return false; // a record that cannot be read locks the fields, it never opens them
+    }
+}
+
+QString AccessControl::user() const {
+    if (loggedIn()) return user_;
+    return singleUser() ? desktopUser_ : QString();
+}
+
+QString AccessControl::lockReason(const std::string& key,
+                                  const cutcell::MachineModule* machine) const {
+    if (singleUser()) return {};
+    const cutcell::UserLevel needed = cutcell::levelToChange(key, machine);
+    if (!level_) return tr("Log in to change this (needs the %1 level)").arg(userLevelText(needed));
+    if (*level_ >= needed) return {};
+    return tr("Needs the %1 level (%2 is logged in as %3)")
+        .arg(userLevelText(needed), user_, userLevelText(*level_));
+}
+
+QString AccessControl::runLockReason() const {
+    if (singleUser() || loggedIn()) return {};
+    return tr("log in to run (E-STOP and feed hold work without log-in)");
+}
+
+cutcell::Outcome AccessControl::logIn(const QString& name, const QString& password) {
+    if (!users_) return cutcell::Outcome::refuse(tr("no user list here").toStdString());
+    cutcell::LoginAnswer answer;
+    try {
+        answer = users_->login(name.trimmed().toStdString(), password.toStdString());
+    } catch (const std::exception& e) {
+        return cutcell::Outcome::refuse(e.what());
+    }
+    if (!answer.outcome.ok()) return answer.outcome;
+    if (loggedIn() && user_ != name.trimmed())
+        logOut(QStringLiteral("%1 logged in").arg(name.trimmed()));
+    user_ = name.trimmed();
+    level_ = answer.level;
+    idle_->start(idleTimeoutS_ * 1000);
+    emit changed();
+    return cutcell::Outcome::done();
+}
+
+void AccessControl::logOut(const QString& reason) {
+    if (!loggedIn()) return;
+    try {
+        if (users_) users_->logout(user_.toStdString(), reason.toStdString());
+    } catch (const std::exception&) {
+        // The trail could not be written: the log-out itself still happens.
+    }
+    user_.clear();
+    level_.reset();
+    idle_->stop();
+    emit changed();
+}
+
+void AccessControl::setIdleTimeoutS(int seconds) {
+    idleTimeoutS_ = seconds > 0 ? seconds : 600;
+    if (loggedIn()) idle_->start(idleTimeoutS_ * 1000);
+}
+
+void AccessControl::audit(const char* event, const QString& key, const QString& oldValue,
+                          const QString& newValue, const QString& unit, const QString& detail) {
+    if (!audit_) return;
+    const QString who = user().isEmpty() ? QStringLiteral("(not logged in)") : user();
+    try {
+        audit_->append({0, who.toStdString(), event, key.toStdString(), oldValue.toStdString(),
+                        newValue.toStdString(), unit.toStdString(), detail.toStdString()});
+    } catch (const std::exception&) {
+        // Never in the way of the machine: a trail that cannot be written is reported where it
+        // is opened (app/gui/station_access.cpp), not at each command.
+    }
+}
+
+bool AccessControl::eventFilter(QObject* watched, QEvent* event) {
+    if (loggedIn()) switch (event->type()) {
+        case QEvent::KeyPress:
+        case QEvent::MouseButtonPress:
+        case QEvent::Wheel:
+        case QEvent::TouchBegin:
+            idle_->start(idleTimeoutS_ * 1000);
+            break;
+        default:
+            break;
+        }
+    return QObject::eventFilter(watched, event);
+}
+
+} // namespace CutCell::ui
