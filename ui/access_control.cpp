@@ -86,6 +86,7 @@ cutcell::Outcome AccessControl::logIn(const QString& name, const QString& passwo
 
 void AccessControl::logOut(const QString& reason) {
     if (!loggedIn()) return;
+    emit aboutToLogOut();
     try {
         if (users_) users_->logout(user_.toStdString(), reason.toStdString());
     } catch (const std::exception&) {

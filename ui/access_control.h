@@ -55,6 +55,8 @@ class AccessControl : public QObject {
 
   signals:
     void changed();
+    // Before the user goes (what is pending in their name is written first).
+    void aboutToLogOut();
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

@@ -257,10 +257,7 @@ void RunController::updateBlocked() {
     QString r;
     const auto s = bridge_->state();
     const auto& issues = editor_->issues();
-    const QString gate = runGate_ ? runGate_() : QString();
-    if (!gate.isEmpty())
-        r = gate;
-    else if (!issues.empty())
+    if (!issues.empty())
         r = tr("%n invalid field(s) - %1", nullptr, static_cast<int>(issues.size()))
                 .arg(describeIssue_ ? describeIssue_(issues.front())
                                     : issueText(issues.front(), QString()));
@@ -314,6 +311,12 @@ void RunController::updateBlocked() {
             break;
         }
     }
+    // The log-in (the run gate) comes after what the machine says while it moves or is
+    // stopped: an E-STOP, a fault, a running cut or a feed hold keep their own words.
+    const bool atRest = s == EngineState::Idle || s == EngineState::Ready ||
+                        s == EngineState::Completed;
+    if (const QString gate = runGate_ ? runGate_() : QString(); !gate.isEmpty() && atRest)
+        r = gate;
     if (r != blocked_) {
         blocked_ = r;
         emit startBlockedChanged(blocked_);

@@ -88,10 +88,33 @@ void attachStationAccess(CutCell::ui::MainWindow& window) {
             record->setOperator(stationAccess()->user().toStdString());
     });
     window.parameters()->applyAccess();
-    QObject::connect(editor, &JobEditor::parameterChanged, access,
-                     [access](const QString& key, const QString& was, const QString& now) {
-                         access->audit(audit_event::kParameterChanged, key, was, now);
+    // A value typed digit by digit is one change: the first old value to the last new one,
+    // written when another field changes, 2 s after the last keystroke, or at a log-out.
+    struct Pending {
+        QString key, was, now;
+    };
+    auto pending = std::make_shared<Pending>();
+    auto* typing = new QTimer(&window);
+    typing->setSingleShot(true);
+    typing->setInterval(2000);
+    const auto flush = [access, pending] {
+        if (pending->key.isEmpty()) return;
+        if (pending->was != pending->now)
+            access->audit(audit_event::kParameterChanged, pending->key, pending->was, pending->now);
+        pending->key.clear();
+    };
+    QObject::connect(editor, &JobEditor::parameterChanged, typing,
+                     [=](const QString& key, const QString& was, const QString& now) {
+                         if (key != pending->key) {
+                             flush();
+                             *pending = {key, was, now};
+                         }
+                         pending->now = now;
+                         typing->start();
                      });
+    QObject::connect(typing, &QTimer::timeout, access, flush);
+    QObject::connect(access, &AccessControl::aboutToLogOut, typing, flush);
+    QObject::connect(&window, &QObject::destroyed, access, flush);
     ControlPanel* controls = window.controls();
     QObject::connect(controls, &ControlPanel::emergencyStopRequested, access,
                      [access] { access->audit(audit_event::kEmergencyStop); });

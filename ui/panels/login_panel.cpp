@@ -23,6 +23,9 @@ LoginPanel::LoginPanel(AccessControl* access, QWidget* parent)
     name_->setPlaceholderText(tr("User"));
     password_->setPlaceholderText(tr("Password"));
     password_->setEchoMode(QLineEdit::Password);
+    // Named for assistive technology and the real-input walkthrough (AT-SPI).
+    name_->setAccessibleName(name_->placeholderText());
+    password_->setAccessibleName(password_->placeholderText());
     message_->setWordWrap(true);
     who_->setWordWrap(true);
     // Two fields side by side at most: the operator column is 320 px wide.
