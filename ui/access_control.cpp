@@ -1,5 +1,7 @@
 #include "ui/access_control.h"
 
+#include "core/job/job_diff.h"
+#include "core/machine/machine_registry.h"
 #include "core/machine/parameter_level.h"
 
 #include <QCoreApplication>
@@ -59,6 +61,24 @@ QString AccessControl::lockReason(const std::string& key,
     if (*level_ >= needed) return {};
     return tr("Needs the %1 level (%2 is logged in as %3)")
         .arg(userLevelText(needed), user_, userLevelText(*level_));
+}
+
+QString AccessControl::openLockReason(const cutcell::Job& from, const cutcell::Job& to) const {
+    if (singleUser() || (level_ && *level_ >= cutcell::UserLevel::Engineer)) return {};
+    const QString who = level_ ? tr("%1 is logged in as %2").arg(user_, userLevelText(*level_))
+                               : tr("nobody is logged in");
+    if (from.machine != to.machine)
+        return tr("it is a job for another machine (%1): opening it needs the %2 level (%3)")
+            .arg(QString::fromStdString(to.machine), userLevelText(cutcell::UserLevel::Engineer),
+                 who);
+    const cutcell::MachineModule* machine = cutcell::findMachine(to.machine);
+    for (const cutcell::ChangedKey& k : cutcell::changedKeys(from, to))
+        if (cutcell::levelToChange(k.key, machine) == cutcell::UserLevel::Engineer)
+            return tr("it changes %1 from %2 to %3: opening it needs the %4 level (%5)")
+                .arg(QString::fromStdString(k.key), QString::fromStdString(k.from),
+                     QString::fromStdString(k.to), userLevelText(cutcell::UserLevel::Engineer),
+                     who);
+    return {};
 }
 
 QString AccessControl::runLockReason() const {

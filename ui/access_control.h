@@ -20,7 +20,8 @@ class QTimer;
 
 namespace cutcell {
 class MachineModule;
-}
+struct Job;
+} // namespace cutcell
 
 namespace CutCell::ui {
 
@@ -39,6 +40,10 @@ class AccessControl : public QObject {
     std::optional<cutcell::UserLevel> level() const { return level_; }
     // "" when the key may be changed now, else why not (the level it needs).
     QString lockReason(const std::string& key, const cutcell::MachineModule* machine) const;
+    // "" when a job file may replace the current job, else why not: a job for another machine
+    // or one that changes a machine parameter needs the engineer level (the process
+    // parameters are the job's own: any user may open them).
+    QString openLockReason(const cutcell::Job& from, const cutcell::Job& to) const;
     // "" when a run may be started now, else why not.
     QString runLockReason() const;
 

@@ -22,11 +22,16 @@ QString JobDocument::displayName() const {
     return name.isEmpty() ? file : QStringLiteral("%1 - %2").arg(name, file);
 }
 
-void JobDocument::newJob(const cutcell::Job& job) {
+bool JobDocument::newJob(const cutcell::Job& job, QString* why) {
+    if (const QString refused = editor_->openLockReason(job); !refused.isEmpty()) {
+        if (why) *why = refused;
+        return false;
+    }
     editor_->setJob(job);
     path_.clear();
     modified_ = false;
     emit changed();
+    return true;
 }
 
 void JobDocument::adopt(const cutcell::Job& job, const QString& path, bool modified) {
@@ -47,6 +52,9 @@ bool JobDocument::open(const QString& path, QString* error) {
         }
         // Range problems are not refused here: the forms mark them and Start stays disabled.
         const cutcell::Job job = cutcell::jobFromJson(doc);
+        // User levels: a file that changes machine parameters needs their level.
+        if (const QString why = editor_->openLockReason(job); !why.isEmpty())
+            throw cutcell::JobError(why.toStdString());
         editor_->setJob(job);
     } catch (const std::exception& e) {
         if (error) *error = tr("Cannot open %1: %2").arg(path, QString::fromUtf8(e.what()));

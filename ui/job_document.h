@@ -22,7 +22,8 @@ class JobDocument : public QObject {
     // "name - file.json" for the window title (Qt's [*] marks modified).
     QString displayName() const;
 
-    void newJob(const cutcell::Job& job);
+    // False, with the reason, when the editor's open gate refuses the job (user levels).
+    bool newJob(const cutcell::Job& job, QString* why = nullptr);
     // Another window's document as it was: the job (with its unsaved edits), its file and its
     // modified mark (a rebuild of the window, ui/window_host.h).
     void adopt(const cutcell::Job& job, const QString& path, bool modified);

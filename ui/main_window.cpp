@@ -524,7 +524,13 @@ bool MainWindow::importJob(const std::string& importer, const QString& path, QSt
         if (error) *error = err;
         return false;
     }
-    document_->newJob(imported.job);
+    if (QString why; !document_->newJob(imported.job, &why)) {
+        err = tr("Cannot import %1: %2").arg(path, why);
+        log_->add(Severity::Error, err);
+        showFileError(tr("Cannot import the file"), err);
+        if (error) *error = err;
+        return false;
+    }
     const QString file = QFileInfo(path).fileName();
     for (const QString& line : imported.report)
         log_->add(Severity::Warning, QStringLiteral("%1: %2").arg(file, line));
@@ -562,7 +568,10 @@ bool MainWindow::newJob(const std::string& machineId) {
         return false;
     }
     try {
-        document_->newJob(machine->defaultJob());
+        if (QString why; !document_->newJob(machine->defaultJob(), &why)) {
+            log_->add(Severity::Error, tr("No new job for the %1: %2").arg(machine->title(), why));
+            return false;
+        }
     } catch (const std::exception& e) {
         log_->add(
             Severity::Error,

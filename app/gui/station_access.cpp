@@ -80,6 +80,9 @@ void attachStationAccess(CutCell::ui::MainWindow& window) {
     editor->setGate([access, editor](const std::string& key) {
         return access->lockReason(key, findMachine(editor->job().machine));
     });
+    editor->setOpenGate([access](const cutcell::Job& from, const cutcell::Job& to) {
+        return access->openLockReason(from, to);
+    });
     window.run()->setRunGate([access] { return access->runLockReason(); });
     QObject::connect(access, &AccessControl::changed, &window, [&window] {
         window.parameters()->applyAccess();

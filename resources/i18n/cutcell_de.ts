@@ -2557,7 +2557,7 @@
 <context>
     <name>CutCell::ui::AccessControl</name>
     <message>
-        <location filename="../../ui/access_control.cpp" line="+16"/>
+        <location filename="../../ui/access_control.cpp" line="+18"/>
         <source>operator</source>
         <translation>Bediener</translation>
     </message>
@@ -2588,6 +2588,26 @@
     </message>
     <message>
         <location line="+6"/>
+        <source>%1 is logged in as %2</source>
+        <translation>%1 ist als %2 angemeldet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nobody is logged in</source>
+        <translation>niemand ist angemeldet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it is a job for another machine (%1): opening it needs the %2 level (%3)</source>
+        <translation>es ist ein Auftrag für eine andere Maschine (%1): Öffnen braucht die Stufe %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>it changes %1 from %2 to %3: opening it needs the %4 level (%5)</source>
+        <translation>er ändert %1 von %2 auf %3: Öffnen braucht die Stufe %4 (%5)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>log in to run (E-STOP and feed hold work without log-in)</source>
         <translation>zum Fahren anmelden (NOT-HALT und Vorschub-Halt wirken ohne Anmeldung)</translation>
     </message>
@@ -3701,7 +3721,7 @@ entriegeln</translation>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+39"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
@@ -3809,7 +3829,7 @@ entriegeln</translation>
         <translation>Passwort</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -3999,11 +4019,17 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+7"/>
         <source>Cannot import the file</source>
         <translation>Datei kann nicht importiert werden</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-2"/>
+        <source>Cannot import %1: %2</source>
+        <translation>%1 kann nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Imported %1 as a new job (%2 report lines); save it to keep it.</source>
         <translation>%1 als neuer Auftrag importiert (%2 Berichtszeilen); zum Behalten speichern.</translation>
     </message>
@@ -4018,7 +4044,12 @@ entriegeln</translation>
         <translation>Keine Maschine &quot;%1&quot; in dieser Programmversion.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+5"/>
+        <source>No new job for the %1: %2</source>
+        <translation>Kein neuer Auftrag für %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>No default job for the %1: %2</source>
         <translation>Kein Standardauftrag für %1: %2</translation>
     </message>
@@ -4856,7 +4887,7 @@ letzte %1 s</translation>
         <translation>Abbruch</translation>
     </message>
     <message numerus="yes">
-        <location line="+23"/>
+        <location line="+20"/>
         <source>%n invalid field(s) - %1</source>
         <translation>
             <numerusform>%n ungültiges Feld - %1</numerusform>
@@ -4944,7 +4975,7 @@ letzte %1 s</translation>
         <translation>Störung - Ereignisprotokoll prüfen, dann Reset drücken</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>run aborted - press Home to cut again (or resume in the cut recovery box)</source>
         <translation>Ablauf abgebrochen - für neuen Schnitt Referenzieren drücken (oder im Feld Wiederaufnahme fortsetzen)</translation>
     </message>

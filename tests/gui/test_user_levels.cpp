@@ -10,6 +10,7 @@
 #include "sim_rig.h"
 #include "station_access.h"
 
+#include "core/job/job_io.h"
 #include "core/machine/machine_module.h"
 #include "core/machine/machine_registry.h"
 #include "core/machine/parameter_level.h"
@@ -120,8 +121,8 @@ class TestUserLevels : public QObject {
     void eachLevelSeesExactlyItsEditableFields() {
         for (const cutcell::MachineModule* m : cutcell::machines()) {
             MainWindow w(nullptr);
+            QVERIFY(w.newJob(m->id())); // before the levels: a new job needs an engineer
             cutcell::app::attachStationAccess(w);
-            QVERIFY(w.newJob(m->id()));
             const auto loggedOut = fieldsOf(w);
             QVERIFY2(loggedOut.size() > 5, m->id().c_str());
             QVERIFY2(editable(loggedOut).empty(), m->id().c_str());
@@ -273,6 +274,37 @@ class TestUserLevels : public QObject {
             idle = idle || (e.event.event == cutcell::audit_event::kLogout &&
                             e.event.detail == "idle for 1 s");
         QVERIFY(idle);
+    }
+
+    // A job file with a changed gain needs the engineer level to be opened (the job stays);
+    // one that changes only process parameters opens for an operator; so does the gain for an
+    // engineer. File -> New (another machine's defaults) needs an engineer too.
+    void openingAFileThatChangesAGainNeedsAnEngineer() {
+        MainWindow w(nullptr);
+        w.setErrorPrompt([](const QString&, const QString&) {});
+        cutcell::app::attachStationAccess(w);
+        const cutcell::Job original = w.editor()->job();
+        cutcell::Job gain = original, speed = original;
+        cutcell::pipeRobotSpec(gain).controller[0].kp += 100;
+        speed.cut.speed_mm_s += 1;
+        const QString gainFile = dir_.filePath("gain.json"),
+                      speedFile = dir_.filePath("speed.json");
+        cutcell::saveJobFile(gain, gainFile.toStdString());
+        cutcell::saveJobFile(speed, speedFile.toStdString());
+        logIn(UserLevel::Operator);
+        QString why;
+        QVERIFY(!w.openJob(gainFile, &why));
+        QVERIFY2(why.contains("controller[0].kp_nm_per_rad") && why.contains("engineer"),
+                 qPrintable(why));
+        QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).controller[0].kp,
+                 cutcell::pipeRobotSpec(original).controller[0].kp);
+        QVERIFY2(w.openJob(speedFile, &why), qPrintable(why));
+        QVERIFY(!w.newJob(cutcell::machines().back()->id()));
+        access().logOut();
+        logIn(UserLevel::Engineer);
+        QVERIFY2(w.openJob(gainFile, &why), qPrintable(why));
+        QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).controller[0].kp,
+                 cutcell::pipeRobotSpec(original).controller[0].kp + 100);
     }
 
     // Last: with the record off the station is single-user - every field editable, no panel.

@@ -39,6 +39,13 @@ class JobEditor : public QObject {
     // level"). None by default (every key may be changed).
     using Gate = std::function<QString(const std::string& key)>;
     void setGate(Gate gate) { gate_ = std::move(gate); }
+    // The gate for a whole job from a file (JobDocument::open): "" lets it replace this one,
+    // else why not (it changes a machine parameter above the user's level).
+    using OpenGate = std::function<QString(const cutcell::Job& from, const cutcell::Job& to)>;
+    void setOpenGate(OpenGate gate) { openGate_ = std::move(gate); }
+    QString openLockReason(const cutcell::Job& to) const {
+        return openGate_ ? openGate_(job_, to) : QString();
+    }
     // Why `key` may not be changed now ("" when it may).
     QString lockReason(const std::string& key) const { return gate_ ? gate_(key) : QString(); }
 
@@ -55,6 +62,7 @@ class JobEditor : public QObject {
     cutcell::Job job_;
     std::vector<cutcell::JobIssue> issues_;
     Gate gate_;
+    OpenGate openGate_;
 };
 
 } // namespace CutCell::ui
