@@ -277,6 +277,10 @@ void MainWindow::takeOver(const Carry& carry) {
     params_->tabs()->setCurrentIndex(carry.tab);
 }
 
+void MainWindow::addBottomTab(QWidget* tab, const QString& title) {
+    bottomTabs_->addTab(tab, title);
+}
+
 void MainWindow::addStatusPanel(QWidget* panel) {
     statusLayout_->insertWidget(0, panel);
 }

@@ -97,6 +97,8 @@ class MainWindow : public QMainWindow {
     // A panel at the top of the operator column's status part (below E-STOP and the buttons,
     // which stay on screen): the app's log-in panel.
     void addStatusPanel(QWidget* panel);
+    // A tab beside the event log, the alarms and the devices: the app's History view.
+    void addBottomTab(QWidget* tab, const QString& title);
 
     // What a rebuilt window (another language, ui/window_host.h) takes over from this one.
     struct Carry {

@@ -11,6 +11,7 @@
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
 #include "ui/panels/control_panel.h"
+#include "ui/panels/history_panel.h"
 #include "ui/panels/login_panel.h"
 #include "ui/panels/recovery_panel.h"
 #include "ui/run_controller.h"
@@ -76,6 +77,8 @@ void attachStationAccess(CutCell::ui::MainWindow& window) {
     AccessControl* access = stationAccess();
     if (!access) return;
     window.addStatusPanel(new LoginPanel(access, &window));
+    window.addBottomTab(new HistoryPanel(productionRecordFile(), &window),
+                        HistoryPanel::tr("History"));
     JobEditor* editor = window.editor();
     editor->setGate([access, editor](const std::string& key) {
         return access->lockReason(key, findMachine(editor->job().machine));

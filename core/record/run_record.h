@@ -5,6 +5,7 @@
 // may do I/O and take its time. devices/record/ keeps the record in SQLite; the app wires it.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace cutcell {
 
@@ -34,6 +35,31 @@ class RunRecordSink {
     virtual void opened(const RunOpening& run) = 0;
     virtual void alarm(const RunAlarmNote& alarm) = 0;
     virtual void closed(const RunClosing& run) = 0;
+};
+
+struct RecordedRun {
+    std::int64_t id = 0;
+    std::string machine, job_name, job_hash, operator_name, run_dir;
+    std::string outcome; // "" while running; "interrupted" if the program died
+    std::int64_t started_ms = 0, ended_ms = 0; // ms since the epoch; ended 0 while open
+    double cycle_time_s = 0;
+    std::string made_json, stop_json; // "" when the run's summary had none
+    int alarms = 0;
+};
+
+struct RunQuery {
+    std::int64_t since_ms = 0; // runs started at or after this
+    std::string machine;       // "" for every machine
+    std::string outcome;       // "" for every outcome
+};
+
+// The record read back (the History view, `cutcell-cli history`): devices/record/ answers.
+class RunHistory {
+  public:
+    virtual ~RunHistory() = default;
+    virtual std::vector<RecordedRun> runs(const RunQuery& query) const = 0; // oldest first
+    virtual std::vector<RunAlarmNote> alarmsOf(std::int64_t runId) const = 0;
+    virtual std::string jobTextOf(std::int64_t runId) const = 0;
 };
 
 } // namespace cutcell

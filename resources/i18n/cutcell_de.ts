@@ -3714,6 +3714,183 @@ entriegeln</translation>
     </message>
 </context>
 <context>
+    <name>CutCell::ui::HistoryPanel</name>
+    <message>
+        <location filename="../../ui/panels/history_panel.cpp" line="+97"/>
+        <source>every machine</source>
+        <translation>jede Maschine</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>every outcome</source>
+        <translation>jedes Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>faults</source>
+        <translation>Störungen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>job name contains</source>
+        <translation>Auftragsname enthält</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Started</source>
+        <translation>Begonnen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Operator</source>
+        <translation>Bediener</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outcome</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cycle (s)</source>
+        <translation>Zyklus (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarms</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shift report (CSV)...</source>
+        <translation>Schichtbericht (CSV)...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shift report (PDF)...</source>
+        <translation>Schichtbericht (PDF)...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Since</source>
+        <translation>Seit</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Shift report written: %1</source>
+        <translation>Schichtbericht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>No production record at this station (--record off).</source>
+        <translation>Kein Produktionsprotokoll an dieser Station (--record off).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The production record cannot be read: %1</source>
+        <translation>Das Produktionsprotokoll kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>running</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 run(s), %2 completed, %3 s of cycle time</source>
+        <translation>%1 Lauf/Läufe, %2 fertig, %3 s Zykluszeit</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Run %1: %2 on the %3</source>
+        <translation>Lauf %1: %2 auf %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Operator: %1</source>
+        <translation>Bediener: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Started %1, ended %2</source>
+        <translation>Begonnen %1, beendet %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outcome: %1, cycle time %2 s</source>
+        <translation>Ergebnis: %1, Zykluszeit %2 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Made: %1</source>
+        <translation>Gefertigt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped at: %1</source>
+        <translation>Angehalten bei: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Job fingerprint: %1</source>
+        <translation>Auftrags-Fingerabdruck: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run log: %1</source>
+        <translation>Laufprotokoll: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alarms: %1</source>
+        <translation>Alarme: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Alarms cannot be read: %1</source>
+        <translation>Alarme können nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <location line="+29"/>
+        <location line="+12"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="-215"/>
+        <location line="+183"/>
+        <location line="+26"/>
+        <source>Shift report</source>
+        <translation>Schichtbericht</translation>
+    </message>
+    <message>
+        <location filename="../../app/gui/station_access.cpp" line="+81"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+</context>
+<context>
     <name>CutCell::ui::JobDocument</name>
     <message>
         <location filename="../../ui/job_document.cpp" line="+21"/>
@@ -3848,12 +4025,12 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+210"/>
+        <location line="+214"/>
         <source>Alarms</source>
         <translation>Alarme</translation>
     </message>
     <message>
-        <location line="-209"/>
+        <location line="-213"/>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
@@ -3958,7 +4135,7 @@ entriegeln</translation>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>clear the %1 first (Release E-STOP, Reset)</source>
         <translation>zuerst %1 aufheben (NOT-HALT entriegeln, Reset)</translation>
     </message>
@@ -6711,6 +6888,49 @@ letzte %1 s</translation>
         <location line="+1"/>
         <source>strokes</source>
         <translation>Hübe</translation>
+    </message>
+</context>
+<context>
+    <name>cutcell::plots::HistoryChartsWidget</name>
+    <message>
+        <location filename="../../plots/history_charts_widget.cpp" line="+46"/>
+        <source>Cycle time per run</source>
+        <translation>Zykluszeit je Lauf</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>cycle time (s)</source>
+        <translation>Zykluszeit (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Alarms (Pareto)</source>
+        <translation>Alarme (Pareto)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cumulative (%)</source>
+        <translation>kumuliert (%)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>completed</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped short</source>
+        <translation>vorzeitig angehalten</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>other</source>
+        <translation>übrige</translation>
     </message>
 </context>
 <context>
