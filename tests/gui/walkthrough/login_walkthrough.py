@@ -17,7 +17,6 @@ Run as: dbus-run-session -- /usr/bin/python3 login_walkthrough.py --cutcell BIN 
         --job FILE --size 1280x720
 Exit 0 = every step held, 1 = a step failed (named), 77 = a tool is missing (skipped).
 """
-import json
 import os
 import shutil
 import subprocess
@@ -158,18 +157,8 @@ def main():
         if desk.app.poll() is not None:
             raise StepFailed("cutcell exited with %s" % desk.app.returncode)
     except StepFailed as e:
-        shot = desk.screenshot(os.path.join(work, "failed.png"))
-        desk.stop()
-        print("FAILED: %s" % e)
-        if shot:
-            print("the screen at the failure: " + shot)
-        with open(os.path.join(work, "cutcell.log"), errors="replace") as f:
-            print("--- cutcell's output (last lines) ---\n" + "".join(f.readlines()[-20:]))
-        return 1
-    desk.stop()
-    shutil.rmtree(work, ignore_errors=True)
-    print("PASSED")
-    return 0
+        return walk.failed(desk, work, e)
+    return walk.passed(desk, work)
 
 
 if __name__ == "__main__":

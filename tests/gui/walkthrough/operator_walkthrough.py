@@ -538,14 +538,23 @@ def main():
         if desk.app.poll() is not None:
             raise StepFailed("cutcell exited with %s" % desk.app.returncode)
     except StepFailed as e:
-        shot = desk.screenshot(os.path.join(work, "failed.png"))
-        desk.stop()
-        print("FAILED: %s" % e)
-        if shot:
-            print("the screen at the failure: " + shot)
-        with open(os.path.join(work, "cutcell.log")) as f:
-            print("--- cutcell's output (last lines) ---\n" + "".join(f.readlines()[-20:]))
-        return 1
+        return failed(desk, work, e)
+    return passed(desk, work)
+
+
+def failed(desk, work, e):
+    """A failed walk's report: the step, the screen, cutcell's last lines. Returns 1."""
+    shot = desk.screenshot(os.path.join(work, "failed.png"))
+    desk.stop()
+    print("FAILED: %s" % e)
+    if shot:
+        print("the screen at the failure: " + shot)
+    with open(os.path.join(work, "cutcell.log"), errors="replace") as f:
+        print("--- cutcell's output (last lines) ---\n" + "".join(f.readlines()[-20:]))
+    return 1
+
+
+def passed(desk, work):
     desk.stop()
     shutil.rmtree(work, ignore_errors=True)
     print("PASSED")
