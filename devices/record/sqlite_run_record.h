@@ -19,23 +19,7 @@
 
 namespace cutcell {
 
-struct RecordedRun {
-    std::int64_t id = 0;
-    std::string machine, job_name, job_hash, operator_name, run_dir;
-    std::string outcome; // "" while running; "interrupted" if the program died
-    std::int64_t started_ms = 0, ended_ms = 0; // ms since the epoch; ended 0 while open
-    double cycle_time_s = 0;
-    std::string made_json, stop_json; // "" when the run's summary had none
-    int alarms = 0;
-};
-
-struct RunQuery {
-    std::int64_t since_ms = 0; // runs started at or after this
-    std::string machine;       // "" for every machine
-    std::string outcome;       // "" for every outcome
-};
-
-class SqliteRunRecord final : public RunRecordSink {
+class SqliteRunRecord final : public RunRecordSink, public RunHistory {
   public:
     static constexpr int kSchemaVersion = kProductionDbSchema;
 
@@ -58,9 +42,9 @@ class SqliteRunRecord final : public RunRecordSink {
     void alarm(const RunAlarmNote& alarm) override;
     void closed(const RunClosing& run) override;
 
-    std::vector<RecordedRun> runs(const RunQuery& query) const; // oldest first
-    std::vector<RunAlarmNote> alarmsOf(std::int64_t runId) const;
-    std::string jobTextOf(std::int64_t runId) const;
+    std::vector<RecordedRun> runs(const RunQuery& query) const override; // oldest first
+    std::vector<RunAlarmNote> alarmsOf(std::int64_t runId) const override;
+    std::string jobTextOf(std::int64_t runId) const override;
     // PRAGMA integrity_check's answer ("ok" for a sound file).
     std::string integrityCheck() const;
 
