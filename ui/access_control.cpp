@@ -6,7 +6,9 @@
 
 #include <QCoreApplication>
 #include <QEvent>
+#include <QFutureWatcher>
 #include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <exception>
 
@@ -29,11 +31,14 @@ QString userLevelText(cutcell::UserLevel level) {
 AccessControl::AccessControl(cutcell::UserAuthenticator* users, cutcell::AuditSink* audit,
                              QString desktopUser, QObject* parent)
     : QObject(parent), users_(users), audit_(audit), desktopUser_(std::move(desktopUser)),
-      idle_(new QTimer(this)) {
+      idle_(new QTimer(this)), refresh_(new QTimer(this)) {
     idle_->setSingleShot(true);
+    connect(refresh_, &QTimer::timeout, this, &AccessControl::refreshUsers);
+    refresh_->start(5000);
     connect(idle_, &QTimer::timeout, this,
             [this] { logOut(QStringLiteral("idle for %1 s").arg(idleTimeoutS_)); });
     if (QCoreApplication::instance()) QCoreApplication::instance()->installEventFilter(this);
+    refreshUsers();
 }
 
 AccessControl::~AccessControl() {
@@ -41,11 +46,44 @@ AccessControl::~AccessControl() {
 }
 
 bool AccessControl::singleUser() const {
+    return unavailable_.isEmpty() && !hasUsers_;
+}
+
+void AccessControl::setUnavailable(const QString& why) {
+    unavailable_ = why;
+    emit changed();
+}
+
+void AccessControl::setRefreshMs(int ms) {
+    refresh_->start(ms > 0 ? ms : 5000);
+}
+
+void AccessControl::refreshUsers() {
+    if (!users_) return;
+    bool changedNow = false;
     try {
-        return !users_ || !users_->hasUsers();
-    } catch (const std::exception&) {
-        return false; // a record that cannot be read locks the fields, it never opens them
+        const bool has = users_->hasUsers();
+        changedNow = has != hasUsers_;
+        hasUsers_ = has;
+        if (level_) {
+            const std::optional<cutcell::UserLevel> now = users_->levelOf(user_.toStdString());
+            if (!now) {
+                logOut(QStringLiteral("the user was removed"));
+                return;
+            }
+            if (*now != *level_) {
+                audit(cutcell::audit_event::kLevelChanged, user_, userLevelName(*level_),
+                      userLevelName(*now), {}, QStringLiteral("taken at the station"));
+                level_ = now;
+                changedNow = true;
+            }
+        }
+    } catch (const std::exception& e) {
+        // A list that cannot be read any more locks the fields; it never opens them.
+        changedNow = unavailable_.isEmpty();
+        unavailable_ = QString::fromUtf8(e.what());
     }
+    if (changedNow) emit changed();
 }
 
 QString AccessControl::user() const {
@@ -55,6 +93,8 @@ QString AccessControl::user() const {
 
 QString AccessControl::lockReason(const std::string& key,
                                   const cutcell::MachineModule* machine) const {
+    if (!unavailable_.isEmpty())
+        return tr("The user list cannot be read (%1): the fields stay locked").arg(unavailable_);
     if (singleUser()) return {};
     const cutcell::UserLevel needed = cutcell::levelToChange(key, machine);
     if (!level_) return tr("Log in to change this (needs the %1 level)").arg(userLevelText(needed));
@@ -82,6 +122,10 @@ QString AccessControl::openLockReason(const cutcell::Job& from, const cutcell::J
 }
 
 QString AccessControl::runLockReason() const {
+    if (!unavailable_.isEmpty())
+        return tr("the user list cannot be read (%1): repair it, or start with --record off to "
+                  "run without users")
+            .arg(unavailable_);
     if (singleUser() || loggedIn()) return {};
     return tr("log in to run (E-STOP and feed hold work without log-in)");
 }
@@ -92,13 +136,44 @@ cutcell::Outcome AccessControl::logIn(const QString& name, const QString& passwo
     try {
         answer = users_->login(name.trimmed().toStdString(), password.toStdString());
     } catch (const std::exception& e) {
-        return cutcell::Outcome::refuse(e.what());
+        answer.outcome = cutcell::Outcome::refuse(e.what());
     }
+    return apply(name.trimmed(), answer);
+}
+
+void AccessControl::logInLater(const QString& name, const QString& password) {
+    if (!users_) {
+        emit loginFinished(cutcell::Outcome::refuse(tr("no user list here").toStdString()));
+        return;
+    }
+    if (loggingIn_) return;
+    loggingIn_ = true;
+    emit changed();
+    auto* watcher = new QFutureWatcher<cutcell::LoginAnswer>(this);
+    const QString who = name.trimmed();
+    connect(watcher, &QFutureWatcher<cutcell::LoginAnswer>::finished, this, [this, watcher, who] {
+        watcher->deleteLater();
+        loggingIn_ = false;
+        const cutcell::Outcome o = apply(who, watcher->result());
+        emit changed();
+        emit loginFinished(o);
+    });
+    cutcell::UserAuthenticator* users = users_;
+    watcher->setFuture(QtConcurrent::run([users, who, password]() -> cutcell::LoginAnswer {
+        try {
+            return users->login(who.toStdString(), password.toStdString());
+        } catch (const std::exception& e) {
+            return {cutcell::Outcome::refuse(e.what()), cutcell::UserLevel::Operator};
+        }
+    }));
+}
+
+cutcell::Outcome AccessControl::apply(const QString& name, const cutcell::LoginAnswer& answer) {
     if (!answer.outcome.ok()) return answer.outcome;
-    if (loggedIn() && user_ != name.trimmed())
-        logOut(QStringLiteral("%1 logged in").arg(name.trimmed()));
-    user_ = name.trimmed();
+    if (loggedIn() && user_ != name) logOut(QStringLiteral("%1 logged in").arg(name));
+    user_ = name;
     level_ = answer.level;
+    hasUsers_ = true;
     idle_->start(idleTimeoutS_ * 1000);
     emit changed();
     return cutcell::Outcome::done();

@@ -47,8 +47,18 @@ class AccessControl : public QObject {
     // "" when a run may be started now, else why not.
     QString runLockReason() const;
 
-    // Refused with the reason the operator may see (a wrong password, a lock-out).
+    // Refused with the reason the operator may see (a wrong password, a lock-out). Waits for
+    // the password's check (Argon2id, ~0.1 s): tests and tools; the panel uses logInLater.
     cutcell::Outcome logIn(const QString& name, const QString& password);
+    // The same off the GUI thread (the E-STOP stays live meanwhile): loginFinished tells.
+    void logInLater(const QString& name, const QString& password);
+    bool loggingIn() const { return loggingIn_; }
+    // The user list could not be opened (`why`): every field is locked, never opened.
+    void setUnavailable(const QString& why);
+    // Reads the user list again: users added or removed meanwhile (the CLI), the logged-in
+    // user's level changed or the user removed. Every refreshMs (5 s) and at each log-in.
+    void refreshUsers();
+    void setRefreshMs(int ms);
     void logOut(const QString& reason = {});
 
     int idleTimeoutS() const { return idleTimeoutS_; }
@@ -60,6 +70,7 @@ class AccessControl : public QObject {
 
   signals:
     void changed();
+    void loginFinished(const cutcell::Outcome& outcome);
     // Before the user goes (what is pending in their name is written first).
     void aboutToLogOut();
 
@@ -72,8 +83,14 @@ class AccessControl : public QObject {
     QString desktopUser_;
     QString user_;
     std::optional<cutcell::UserLevel> level_;
+    cutcell::Outcome apply(const QString& name, const cutcell::LoginAnswer& answer);
+
     QTimer* idle_;
+    QTimer* refresh_;
     int idleTimeoutS_ = 600;
+    bool hasUsers_ = false;
+    bool loggingIn_ = false;
+    QString unavailable_;
 };
 
 QString userLevelText(cutcell::UserLevel level); // in the GUI's language

@@ -39,7 +39,7 @@ Station& station() {
 std::string openStationAccess(const std::string& where) {
     closeStationAccess();
     Station& s = station();
-    std::string line;
+    std::string line, unavailable;
     if (where != "off") {
         const std::string path = where.empty() ? defaultProductionDbPath() : where;
         try {
@@ -51,13 +51,16 @@ std::string openStationAccess(const std::string& where) {
         } catch (const RecordError& e) {
             s.users.reset();
             s.trail.reset();
-            line = std::string("users and audit trail not kept: ") + e.what();
+            unavailable = e.what();
+            line = std::string("users and audit trail cannot be read: the fields are locked (") +
+                   e.what() + "; --record off runs without users)";
         }
     } else {
         line = "users: single-user mode, no audit trail (--record off)";
     }
     s.access = std::make_unique<CutCell::ui::AccessControl>(
         s.users.get(), s.trail.get(), QString::fromStdString(SqliteRunRecord::desktopUser()));
+    if (!unavailable.empty()) s.access->setUnavailable(QString::fromStdString(unavailable));
     return line;
 }
 

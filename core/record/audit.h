@@ -79,6 +79,9 @@ class UserAuthenticator {
   public:
     virtual ~UserAuthenticator() = default;
     virtual bool hasUsers() const = 0;
+    // The user's level now (an administrator may have changed it since the log-in); none when
+    // the user is gone.
+    virtual std::optional<UserLevel> levelOf(const std::string& name) const = 0;
     virtual LoginAnswer login(const std::string& name, const std::string& password) = 0;
     // `reason`: "" when the user logged out, else why ("idle for 600 s").
     virtual void logout(const std::string& name, const std::string& reason) = 0;

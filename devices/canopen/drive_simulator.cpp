@@ -185,6 +185,9 @@ void DriveSimulator::closeOnThread() {
 
 void DriveSimulator::onFramesReceived() {
     std::uint64_t count = 0;
+    // Not connected (the relay dropped the client): readFrame() fails and leaves the frame
+    // queued, so the loop would never end.
+    if (!device_ || device_->state() != QCanBusDevice::ConnectedState) return;
     while (device_->framesAvailable()) {
         const QCanBusFrame q = device_->readFrame();
         CanFrame f;

@@ -91,10 +91,16 @@ void migrate(sqlite3* db) {
             execSql(db, ("PRAGMA user_version = " + std::to_string(version + 1) + ";").c_str());
             execSql(db, "COMMIT;");
         } catch (const RecordError&) {
-            execSql(db, "ROLLBACK;");
+            // SQLite may have rolled back already: a second error would hide the first.
+            if (!sqlite3_get_autocommit(db))
+                sqlite3_exec(db, "ROLLBACK;", nullptr, nullptr, nullptr);
             throw;
         }
     }
+    if (const int now = schemaVersionOf(db); now > kProductionDbSchema) // migrated by another
+        throw RecordError("schema version " + std::to_string(now) +
+                          " was written by a newer CutCell (this one knows up to " +
+                          std::to_string(kProductionDbSchema) + ")");
 }
 
 } // namespace

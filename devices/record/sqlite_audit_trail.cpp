@@ -39,7 +39,10 @@ SqliteAuditTrail::~SqliteAuditTrail() = default;
 void SqliteAuditTrail::append(const AuditEvent& event) {
     std::lock_guard<std::mutex> lock(mutex_);
     insert(db_.get(), event);
-    rollIfFull();
+    // Counted once, then kept (other writers' rows are found at the next roll's count): a
+    // full count per event would scan the table each time.
+    rows_ = rows_ < 0 ? countRows(db_.get()) : rows_ + 1;
+    if (rows_ > maxRecords_ && rows_ >= rollRetryAt_) rollIfFull();
 }
 
 // Past the bound the oldest tenth goes to an archive file first, then leaves the table in one
@@ -47,7 +50,7 @@ void SqliteAuditTrail::append(const AuditEvent& event) {
 // crash between the two leaves the records in both places, never in neither.
 void SqliteAuditTrail::rollIfFull() {
     sqlite3* db = db_.get();
-    const std::int64_t rows = countRows(db);
+    const std::int64_t rows = rows_ = countRows(db);
     if (rows <= maxRecords_) return;
     const std::int64_t roll = rows - (maxRecords_ - maxRecords_ / 10);
     std::string lines;
@@ -71,6 +74,8 @@ void SqliteAuditTrail::rollIfFull() {
         fs::create_directories(archiveDir());
         writeFileAtomically(file.string(), lines);
     } catch (const std::exception& e) {
+        // Tried again after another tenth of the bound, not at every event.
+        rollRetryAt_ = rows + std::max<std::int64_t>(1, maxRecords_ / 10);
         throw RecordError("audit trail " + path_ + ": " + std::to_string(rows) +
                           " records exceed the bound of " + std::to_string(maxRecords_) +
                           " and the archive " + file.string() +
@@ -86,8 +91,9 @@ void SqliteAuditTrail::rollIfFull() {
                     std::to_string(roll) + " records (" + std::to_string(first) + " to " +
                         std::to_string(last) + ") moved to " + file.string()});
         execSql(db, "COMMIT;");
+        rows_ = countRows(db);
     } catch (const RecordError&) {
-        execSql(db, "ROLLBACK;");
+        if (!sqlite3_get_autocommit(db)) sqlite3_exec(db, "ROLLBACK;", nullptr, nullptr, nullptr);
         throw;
     }
 }

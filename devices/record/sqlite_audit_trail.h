@@ -50,6 +50,8 @@ class SqliteAuditTrail final : public AuditSink {
     std::int64_t maxRecords_;
     SqliteHandle db_;
     mutable std::mutex mutex_;
+    std::int64_t rows_ = -1;       // [mutex_] this connection's count (-1: not counted yet)
+    std::int64_t rollRetryAt_ = 0; // [mutex_] a failed roll is tried again at this count
 };
 
 } // namespace cutcell

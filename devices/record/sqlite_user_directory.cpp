@@ -43,6 +43,24 @@ std::string hashPassword(const std::string& password) {
     return out;
 }
 
+// A name as the trail may print it: at most 40 bytes, control characters as '?'.
+std::string printable(const std::string& name) {
+    std::string out = name.substr(0, 40);
+    for (char& c : out)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    return out;
+}
+
+// A hash of no one's password, checked for an unknown name (made once, at the first use).
+const std::string& dummyHash() {
+    static const std::string hash = [] {
+        unsigned char random[16];
+        randombytes_buf(random, sizeof random);
+        return hashPassword(std::string(reinterpret_cast<const char*>(random), sizeof random));
+    }();
+    return hash;
+}
+
 struct Row {
     UserLevel level;
     std::string hash;
@@ -158,20 +176,39 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
     const Outcome wrong = Outcome::refuse("user name or password wrong", "password");
     const std::optional<Row> row = checkName(name).ok() ? findUser(db_.get(), name) : std::nullopt;
     if (!row) {
-        audit_.append({now, name.substr(0, 40), audit_event::kLoginFailed, name.substr(0, 40), "",
-                       "", "", "no such user"});
+        // The same work as for a user's password: the time taken does not tell names apart.
+        const std::string& dummy = dummyHash();
+        if (crypto_pwhash_str_verify(dummy.c_str(), password.data(), password.size()) == 0)
+            return {wrong}; // no one's password: never a match, the time is what counts
+        audit_.append({now, printable(name), audit_event::kLoginFailed, printable(name), "", "", "",
+                       "no such user"});
         return {wrong};
     }
-    if (row->lockedUntil > now) {
-        const std::int64_t left_s = (row->lockedUntil - now + 999) / 1000;
+    const auto lockedOut = [&](std::int64_t until) {
+        const std::int64_t left_s = (until - now + 999) / 1000;
         audit_.append({now, name, audit_event::kLoginFailed, name, "", "", "",
                        "locked out for " + std::to_string(left_s) + " s more"});
-        return {Outcome::refuse("user " + name + " is locked out for " + std::to_string(left_s) +
-                                    " s more after " + std::to_string(kMaxFailedLogins) +
-                                    " failed log-ins",
-                                "user")};
+        return LoginResult{Outcome::refuse("user " + name + " is locked out for " +
+                                               std::to_string(left_s) + " s more after " +
+                                               std::to_string(kMaxFailedLogins) + " failed log-ins",
+                                           "user")};
+    };
+    if (row->lockedUntil > now) return lockedOut(row->lockedUntil);
+    // The attempt counts before the password is checked, in one statement: attempts of other
+    // processes (a CLI beside the GUI) started at the same time each count too.
+    int failed = 0;
+    {
+        Statement count(db_.get(), "UPDATE users SET failed_logins = failed_logins + 1 "
+                                   "WHERE name = ?1 RETURNING failed_logins, locked_until_ms");
+        count.bind(1, name);
+        if (!count.step()) return {wrong}; // removed meanwhile
+        failed = static_cast<int>(count.integer(0));
+        if (count.integer(1) > now) return lockedOut(count.integer(1));
     }
-    if (crypto_pwhash_str_verify(row->hash.c_str(), password.data(), password.size()) == 0) {
+    const bool right =
+        failed <= kMaxFailedLogins &&
+        crypto_pwhash_str_verify(row->hash.c_str(), password.data(), password.size()) == 0;
+    if (right) {
         Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = 0 "
                                 "WHERE name = ?1");
         st.bind(1, name).step();
@@ -179,7 +216,6 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
             {now, name, audit_event::kLogin, name, "", userLevelName(row->level), "", ""});
         return {Outcome::done(), row->level};
     }
-    const int failed = row->failed + 1;
     if (failed >= kMaxFailedLogins) {
         Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = ?2 "
                                 "WHERE name = ?1");
@@ -192,8 +228,6 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
                                     std::to_string(kLockoutMs / 1000) + " s",
                                 "password")};
     }
-    Statement st(db_.get(), "UPDATE users SET failed_logins = ?2 WHERE name = ?1");
-    st.bind(1, name).bind(2, static_cast<std::int64_t>(failed)).step();
     audit_.append({now, name, audit_event::kLoginFailed, name, "", "", "",
                    "wrong password (" + std::to_string(failed) + " of " +
                        std::to_string(kMaxFailedLogins) + ")"});
@@ -202,6 +236,13 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
 
 void SqliteUserDirectory::logout(const std::string& name, const std::string& reason) {
     audit_.append({clock_(), name, audit_event::kLogout, name, "", "", "", reason});
+}
+
+std::optional<UserLevel> SqliteUserDirectory::levelOf(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const std::optional<Row> row = findUser(db_.get(), name);
+    if (!row) return std::nullopt;
+    return row->level;
 }
 
 bool SqliteUserDirectory::hasUsers() const {

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,7 @@ class SqliteUserDirectory final : public UserAuthenticator {
     Outcome setLevel(const std::string& name, UserLevel level, const std::string& actor);
 
     bool hasUsers() const override;
+    std::optional<UserLevel> levelOf(const std::string& name) const override;
     LoginResult login(const std::string& name, const std::string& password) override;
     void logout(const std::string& name, const std::string& reason = {}) override;
 

@@ -2557,7 +2557,7 @@
 <context>
     <name>CutCell::ui::AccessControl</name>
     <message>
-        <location filename="../../ui/access_control.cpp" line="+18"/>
+        <location filename="../../ui/access_control.cpp" line="+20"/>
         <source>operator</source>
         <translation>Bediener</translation>
     </message>
@@ -2577,7 +2577,12 @@
         <translation>Administrator</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+71"/>
+        <source>The user list cannot be read (%1): the fields stay locked</source>
+        <translation>Die Benutzerliste kann nicht gelesen werden (%1): die Felder bleiben gesperrt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Log in to change this (needs the %1 level)</source>
         <translation>Zum Ändern anmelden (braucht die Stufe %1)</translation>
     </message>
@@ -2608,11 +2613,17 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>the user list cannot be read (%1): repair it, or start with --record off to run without users</source>
+        <translation>die Benutzerliste kann nicht gelesen werden (%1): reparieren oder mit --record off ohne Benutzer starten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>log in to run (E-STOP and feed hold work without log-in)</source>
         <translation>zum Fahren anmelden (NOT-HALT und Vorschub-Halt wirken ohne Anmeldung)</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location line="+12"/>
         <source>no user list here</source>
         <translation>hier gibt es keine Benutzerliste</translation>
     </message>
@@ -3343,7 +3354,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawCarriageSawForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+374"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="+376"/>
         <source>Carriage (five periods: BC, CE, EF, FG-GH-HI)</source>
         <translation>Schlitten (fünf Phasen: BC, CE, EF, FG-GH-HI)</translation>
     </message>
@@ -3578,7 +3589,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::FlyingSawTubeLineForm</name>
     <message>
-        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-371"/>
+        <location filename="../../ui/machines/flying_saw/flying_saw_forms.cpp" line="-373"/>
         <source>length</source>
         <translation>Länge</translation>
     </message>
@@ -3618,7 +3629,7 @@ entriegeln</translation>
         <translation>Rechteckig (a × b)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>Line and measuring roller</source>
         <translation>Linie und Messrolle</translation>
     </message>
@@ -3885,7 +3896,7 @@ entriegeln</translation>
         <translation>Schichtbericht</translation>
     </message>
     <message>
-        <location filename="../../app/gui/station_access.cpp" line="+81"/>
+        <location filename="../../app/gui/station_access.cpp" line="+84"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
@@ -4006,7 +4017,7 @@ entriegeln</translation>
         <translation>Passwort</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

@@ -253,12 +253,12 @@ class TestUserLevels : public QObject {
         name->setText("eve");
         password->setText("not it at all");
         QTest::mouseClick(button, Qt::LeftButton);
+        QVERIFY(password->text().isEmpty()); // at once, before the check (off the GUI thread)
+        QTRY_VERIFY2(message->text().contains("wrong"), qPrintable(message->text()));
         QVERIFY(!access().loggedIn());
-        QVERIFY2(message->text().contains("wrong"), qPrintable(message->text()));
-        QVERIFY(password->text().isEmpty());
         password->setText("eve-pass-1");
         QTest::keyClick(password, Qt::Key_Return);
-        QVERIFY(access().loggedIn());
+        QTRY_VERIFY(access().loggedIn());
         QCOMPARE(*access().level(), UserLevel::Engineer);
         QVERIFY(panel->findChild<QLabel*>("loginUser")->text().contains("eve"));
     }
@@ -305,6 +305,43 @@ class TestUserLevels : public QObject {
         QVERIFY2(w.openJob(gainFile, &why), qPrintable(why));
         QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).controller[0].kp,
                  cutcell::pipeRobotSpec(original).controller[0].kp + 100);
+    }
+
+    // An administrator demotes or removes a user who is logged in (the CLI beside the
+    // station): the station takes the new level at its next look at the list, or logs out.
+    void aLevelChangedMeanwhileTakesEffectAtTheStation() {
+        MainWindow w(nullptr);
+        cutcell::app::attachStationAccess(w);
+        logIn(UserLevel::Engineer);
+        QVERIFY(fieldsOf(w).at("controller[0].kp_nm_per_rad"));
+        cutcell::SqliteAuditTrail trail(db_);
+        cutcell::SqliteUserDirectory users(db_, trail);
+        QVERIFY(users.setLevel("eve", UserLevel::Setter, "ada").ok());
+        access().refreshUsers(); // what its 5 s timer does
+        QCOMPARE(*access().level(), UserLevel::Setter);
+        QVERIFY(!fieldsOf(w).at("controller[0].kp_nm_per_rad"));
+        QVERIFY(users.setLevel("eve", UserLevel::Engineer, "ada").ok());
+        QVERIFY(users.addUser("tmp", UserLevel::Operator, "tmp-pass-1", "ada").ok());
+        QVERIFY(access().logIn("tmp", "tmp-pass-1").ok());
+        QVERIFY(users.removeUser("tmp", "ada").ok());
+        access().refreshUsers();
+        QVERIFY(!access().loggedIn());
+    }
+
+    // A user list that cannot be opened (here: the record's path is a folder) locks every
+    // field and Start; it never opens them.
+    void anUnreadableUserListLocksEverything() {
+        qInfo("%s", cutcell::app::openStationAccess(dir_.path().toStdString()).c_str());
+        {
+            MainWindow w(nullptr);
+            cutcell::app::attachStationAccess(w);
+            const auto f = fieldsOf(w);
+            QVERIFY(!f.empty());
+            QVERIFY(editable(f).empty());
+            QVERIFY2(w.run()->startBlockedReason().contains("cannot be read"),
+                     qPrintable(w.run()->startBlockedReason()));
+        }
+        cutcell::app::openStationAccess(db_);
     }
 
     // Last: with the record off the station is single-user - every field editable, no panel.

@@ -43,6 +43,10 @@ LoginPanel::LoginPanel(AccessControl* access, QWidget* parent)
     connect(password_, &QLineEdit::returnPressed, this, &LoginPanel::submit);
     connect(logOut_, &QPushButton::clicked, this, [this] { access_->logOut(); });
     connect(access_, &AccessControl::changed, this, &LoginPanel::refresh);
+    connect(access_, &AccessControl::loginFinished, this, [this](const cutcell::Outcome& o) {
+        message_->setText(o.ok() ? QString() : QString::fromStdString(o.message));
+        refresh();
+    });
     refresh();
 }
 
@@ -55,15 +59,15 @@ void LoginPanel::refresh() {
     name_->setVisible(!in);
     password_->setVisible(!in);
     logIn_->setVisible(!in);
+    logIn_->setEnabled(!access_->loggingIn());
     if (in) message_->clear();
     message_->setVisible(!message_->text().isEmpty());
 }
 
 void LoginPanel::submit() {
-    const cutcell::Outcome o = access_->logIn(name_->text(), password_->text());
+    // Checked off the GUI thread (Argon2id takes ~0.1 s): the E-STOP stays live meanwhile.
+    access_->logInLater(name_->text(), password_->text());
     password_->clear(); // never kept, right or wrong
-    message_->setText(o.ok() ? QString() : QString::fromStdString(o.message));
-    refresh();
 }
 
 } // namespace CutCell::ui

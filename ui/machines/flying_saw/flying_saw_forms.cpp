@@ -123,7 +123,9 @@ FlyingSawTubeLineForm::FlyingSawTubeLineForm(JobEditor* editor, QWidget* parent)
             const QSignalBlocker block(height_);
             height_->setValue(v);
         }
-        this->editor()->edit([v](Job& j) { spec(j).height_mm = v; });
+        Job current = this->editor()->job();
+        commit("tube.height_mm", QString::number(spec(current).height_mm, 'g', 12),
+               QString::number(v, 'g', 12), [v](Job& j) { spec(j).height_mm = v; });
     });
 
     auto* line = new QGroupBox(tr("Line and measuring roller"), this);
