@@ -313,10 +313,9 @@ void RunController::updateBlocked() {
     }
     // The log-in (the run gate) comes after what the machine says while it moves or is
     // stopped: an E-STOP, a fault, a running cut or a feed hold keep their own words.
-    const bool atRest = s == EngineState::Idle || s == EngineState::Ready ||
-                        s == EngineState::Completed;
-    if (const QString gate = runGate_ ? runGate_() : QString(); !gate.isEmpty() && atRest)
-        r = gate;
+    const bool atRest =
+        s == EngineState::Idle || s == EngineState::Ready || s == EngineState::Completed;
+    if (const QString gate = runGate_ ? runGate_() : QString(); !gate.isEmpty() && atRest) r = gate;
     if (r != blocked_) {
         blocked_ = r;
         emit startBlockedChanged(blocked_);
@@ -388,6 +387,7 @@ void RunController::startFrom(double pathTime_s) {
     if (!rig_ || (!blocked_.isEmpty() && !onlyAborted)) return;
     homeAfterAbort_ = false;
     emit runStarting();
+    emit recoveryStarting(pathTime_s);
     coverage_.recoverFrom(pathTime_s);
     setUnconfirmed({});
     rig_->engine().startFrom(pathTime_s);

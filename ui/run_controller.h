@@ -119,6 +119,8 @@ class RunController : public QObject {
     // Start is being sent (button, key or auto run): the previous run's data can go now (a
     // fast run may be over before its first state change is seen).
     void runStarting();
+    // A cut recovery was accepted and starts from this path time (startFrom passed its checks).
+    void recoveryStarting(double pathTime_s);
     // A cut began (Ready -> Running) / ended short of its end (emergency stop, fault, abort).
     void runStarted();
     void runStopped(cutcell::EngineState state, const QString& how);

@@ -13,7 +13,6 @@
 #include "ui/panels/control_panel.h"
 #include "ui/panels/history_panel.h"
 #include "ui/panels/login_panel.h"
-#include "ui/panels/recovery_panel.h"
 #include "ui/run_controller.h"
 
 #include <QTimer>
@@ -129,11 +128,9 @@ void attachStationAccess(CutCell::ui::MainWindow& window) {
                      [access] { access->audit(audit_event::kEmergencyStop); });
     QObject::connect(controls, &ControlPanel::resetRequested, access,
                      [access] { access->audit(audit_event::kReset); });
-    QObject::connect(window.recovery(), &RecoveryPanel::startFromRequested, access,
-                     [access](double t) {
-                         access->audit(audit_event::kRecovery, "path_time_s", {},
-                                       QString::number(t, 'f', 3), "s");
-                     });
+    QObject::connect(window.run(), &RunController::recoveryStarting, access, [access](double t) {
+        access->audit(audit_event::kRecovery, "path_time_s", {}, QString::number(t, 'f', 3), "s");
+    });
     // An override is dragged through many values: one event per settled change.
     auto* settle = new QTimer(&window);
     settle->setSingleShot(true);
