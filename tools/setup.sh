@@ -24,7 +24,7 @@ packages=(
   clang-14 libfuzzer-14-dev libclang-rt-14-dev lld
   nodejs
   nlohmann-json3-dev locales
-  libsqlite3-dev sqlite3 libsodium-dev
+  libsqlite3-dev sqlite3 libsodium-dev libpq-dev postgresql
 )
 # npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
 command -v npm >/dev/null || packages+=(npm)

@@ -543,6 +543,13 @@ void RunController::stepAutoRun() {
         autoRun_ = false;
         emit autoRunFinished(ok, why);
     };
+    // An unattended run (--run) asks the same gate as the Start button: with users, nobody is
+    // logged in at the start, so it is refused rather than run by no one.
+    const QString gate = runGate_ && !autoStartSent_ ? runGate_() : QString();
+    if (!gate.isEmpty()) {
+        finish(false, gate);
+        return;
+    }
     switch (s) {
     case EngineState::Idle:
         if (!autoEnableSent_) {

@@ -79,14 +79,15 @@ struct RunOptions {
     bool quiet = false;
     std::string report; // empty: the report goes to stdout
     std::string runs;   // empty: the job's engine.runs_dir
-    std::string record; // the production record (SQLite) to add the run to; empty: none
+    std::string record; // the production record (SQLite file or PostgreSQL URL) to add the run to;
+                        // empty: none
     DeviceOptions devices;
     RealtimeSettings rt; // --rt-priority, --rt-cpu, --rt-dma-latency, --no-mlock
 };
 
 // history: the production record's runs.
 struct HistoryOptions {
-    std::string db;    // empty: SqliteRunRecord::defaultPath()
+    std::string db;    // empty: RunRecordStore::defaultPath()
     std::string since; // YYYY-MM-DD (UTC), empty: every run
     std::string machine, outcome;
     bool json = false, csv = false;

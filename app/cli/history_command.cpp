@@ -5,7 +5,7 @@
 
 #include "core/common/c_format.h"
 #include "core/json/json.h"
-#include "devices/record/sqlite_run_record.h"
+#include "devices/record/run_record_store.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -33,8 +33,8 @@ int runHistory(const HistoryOptions& o) {
         std::fprintf(stderr, "history: --since %s is not a day (YYYY-MM-DD)\n", o.since.c_str());
         return kUsage;
     }
-    const std::string path = o.db.empty() ? SqliteRunRecord::defaultPath() : o.db;
-    if (!std::filesystem::exists(path)) {
+    const std::string path = o.db.empty() ? RunRecordStore::defaultPath() : o.db;
+    if (!isPostgresConnection(path) && !std::filesystem::exists(path)) {
         std::fprintf(stderr,
                      "history: no production record at %s (the GUI records its runs there; "
                      "`cutcell-cli run --record FILE` adds a run to FILE)\n",
@@ -42,9 +42,11 @@ int runHistory(const HistoryOptions& o) {
         return kFailure;
     }
     std::vector<RecordedRun> runs;
+    std::string where;
     try {
-        const SqliteRunRecord record(path, {});
+        const RunRecordStore record(path, {});
         runs = record.runs(q);
+        where = record.where();
     } catch (const RecordError& e) {
         std::fprintf(stderr, "history: %s\n", e.what());
         return kFailure;
@@ -88,7 +90,7 @@ int runHistory(const HistoryOptions& o) {
                     r.outcome.empty() ? "running" : r.outcome.substr(0, 12).c_str(),
                     r.ended_ms ? formatC("%.1f", r.cycle_time_s).c_str() : "-", r.alarms,
                     r.job_name.c_str());
-    std::printf("%zu run(s) in %s\n", runs.size(), path.c_str());
+    std::printf("%zu run(s) in %s\n", runs.size(), where.c_str());
     return kOk;
 }
 

@@ -191,16 +191,19 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     run->add_option("--runs", o.run.runs, "run log directory (default: the job's engine.runs_dir)")
         ->type_name("DIR");
     run->add_option("--record", o.run.record,
-                    "add the run to this production record (SQLite; the GUI's is "
-                    "~/.local/share/cutcell/production.db)")
-        ->type_name("FILE");
+                    "add the run to this production record: a SQLite file (the GUI's is "
+                    "~/.local/share/cutcell/production.db) or a PostgreSQL connection string "
+                    "(postgresql://user@host:port/db)")
+        ->type_name("FILE|URL");
 
-    CLI::App* history = add("history", "list the runs of the production record (SQLite)",
-                            [&] { return runHistory(o.history); });
+    CLI::App* history =
+        add("history", "list the runs of the production record (SQLite or PostgreSQL)",
+            [&] { return runHistory(o.history); });
     history
         ->add_option("--db", o.history.db,
-                     "the record (default: $XDG_DATA_HOME/cutcell/production.db)")
-        ->type_name("FILE");
+                     "the record: a SQLite file (default: $XDG_DATA_HOME/cutcell/production.db) "
+                     "or a PostgreSQL connection string (postgresql://user@host:port/db)")
+        ->type_name("FILE|URL");
     history->add_option("--since", o.history.since, "runs started on or after this day (UTC)")
         ->type_name("YYYY-MM-DD");
     history->add_option("--machine", o.history.machine, "one machine's runs (its id)");
@@ -222,16 +225,22 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                       "operator, setter, engineer or administrator (add, level)");
     users->add_option("--admin", o.users.admin,
                       "the administrator who authorises it (password first on standard input)");
-    users->add_option("--db", o.users.db, "the record (default: the GUI's production.db)")
-        ->type_name("FILE");
+    users
+        ->add_option("--db", o.users.db,
+                     "the record: a SQLite file (default: the GUI's production.db) or a "
+                     "PostgreSQL connection string")
+        ->type_name("FILE|URL");
     users->footer("Passwords come one per line on standard input (on a terminal: asked without "
                   "echo), the authorising one first. The first user must be an administrator; "
                   "until one exists the station runs without log-in.");
 
     CLI::App* audit = add("audit", "list the audit trail (who changed what, log-ins, E-STOPs)",
                           [&] { return runAudit(o.audit); });
-    audit->add_option("--db", o.audit.db, "the record (default: the GUI's production.db)")
-        ->type_name("FILE");
+    audit
+        ->add_option("--db", o.audit.db,
+                     "the record: a SQLite file (default: the GUI's production.db) or a "
+                     "PostgreSQL connection string")
+        ->type_name("FILE|URL");
     audit->add_option("--since", o.audit.since, "events on or after this day (UTC)")
         ->type_name("YYYY-MM-DD");
     audit->add_flag("--json", o.audit.json, "print the events as JSON");

@@ -7,7 +7,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
-#include "devices/record/sqlite_run_record.h"
+#include "devices/record/run_record_store.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -50,13 +50,12 @@ int runRun(const RunOptions& o) {
     setup.rt = o.rt; // the engine thread's set-up (with --realtime or CANopen)
     if (!o.record.empty()) {
         try {
-            auto record =
-                std::make_shared<SqliteRunRecord>(o.record, SqliteRunRecord::desktopUser());
+            auto record = std::make_shared<RunRecordStore>(o.record, RunRecordStore::desktopUser());
             if (record->interruptedAtOpen() > 0)
                 std::fprintf(stderr,
                              "run: production record %s: %d run(s) of a killed program "
                              "closed as interrupted\n",
-                             o.record.c_str(), record->interruptedAtOpen());
+                             record->where().c_str(), record->interruptedAtOpen());
             setup.record = std::move(record);
         } catch (const RecordError& e) {
             std::fprintf(stderr, "run: %s\n", e.what());

@@ -6,9 +6,9 @@
 #include "record_text.h"
 
 #include "core/json/json.h"
-#include "devices/record/sqlite_audit_trail.h"
-#include "devices/record/sqlite_run_record.h"
-#include "devices/record/sqlite_user_directory.h"
+#include "devices/record/audit_trail.h"
+#include "devices/record/run_record_store.h"
+#include "devices/record/user_directory.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -26,7 +26,7 @@ int refused(const char* action, const Outcome& o) {
     return kFailure;
 }
 
-int listUsers(const SqliteUserDirectory& users, const std::string& path) {
+int listUsers(const UserDirectory& users, const std::string& path) {
     const auto all = users.users();
     if (all.empty()) {
         std::printf("no users in %s: the station runs in single-user mode (no log-in). "
@@ -44,8 +44,8 @@ int listUsers(const SqliteUserDirectory& users, const std::string& path) {
 
 // Who authorises the change: an administrator by --admin and its password, or, before any
 // administrator exists, the desktop user setting the station up. "" when refused (printed).
-std::string authorise(SqliteUserDirectory& users, const UsersOptions& o) {
-    if (!users.hasAdministrator()) return SqliteRunRecord::desktopUser();
+std::string authorise(UserDirectory& users, const UsersOptions& o) {
+    if (!users.hasAdministrator()) return RunRecordStore::desktopUser();
     if (o.admin.empty()) {
         std::fprintf(stderr,
                      "users %s: changing users needs an administrator: --admin NAME (its "
@@ -96,9 +96,9 @@ bool levelOf(const UsersOptions& o, UserLevel* level) {
 int runUsers(const UsersOptions& o) {
     const std::string path = recordPath(o.db);
     try {
-        SqliteAuditTrail trail(path);
-        SqliteUserDirectory users(path, trail);
-        if (o.action == "list") return listUsers(users, path);
+        AuditTrail trail(path);
+        UserDirectory users(path, trail);
+        if (o.action == "list") return listUsers(users, trail.where());
         if (o.name.empty()) {
             std::fprintf(stderr, "users %s: which user? (cutcell-cli users %s NAME)\n",
                          o.action.c_str(), o.action.c_str());
@@ -134,7 +134,7 @@ int runUsers(const UsersOptions& o) {
         }
         if (!done.ok()) return refused(o.action.c_str(), done);
         std::printf("users %s: %s done in %s (by %s)\n", o.action.c_str(), o.name.c_str(),
-                    path.c_str(), actor.c_str());
+                    trail.where().c_str(), actor.c_str());
         return kOk;
     } catch (const RecordError& e) {
         std::fprintf(stderr, "users: %s\n", e.what());
@@ -149,13 +149,16 @@ int runAudit(const AuditOptions& o) {
         return kUsage;
     }
     const std::string path = recordPath(o.db);
-    if (!std::filesystem::exists(path)) {
+    if (!isPostgresConnection(path) && !std::filesystem::exists(path)) {
         std::fprintf(stderr, "audit: no production record at %s\n", path.c_str());
         return kFailure;
     }
     std::vector<RecordedAuditEvent> events;
+    std::string where;
     try {
-        events = SqliteAuditTrail(path).events(since);
+        const AuditTrail trail(path);
+        events = trail.events(since);
+        where = trail.where();
     } catch (const RecordError& e) {
         std::fprintf(stderr, "audit: %s\n", e.what());
         return kFailure;
@@ -163,7 +166,7 @@ int runAudit(const AuditOptions& o) {
     if (o.json) {
         json::Array out;
         for (const RecordedAuditEvent& r : events) {
-            json::Value v = SqliteAuditTrail::toJson(r);
+            json::Value v = AuditTrail::toJson(r);
             v.asObject().insert(v.asObject().begin() + 1, {"time", utcTime(r.event.unix_ms)});
             out.push_back(std::move(v));
         }
@@ -189,7 +192,7 @@ int runAudit(const AuditOptions& o) {
                     utcTime(e.unix_ms).c_str(), e.actor.c_str(), e.event.c_str(), e.key.c_str(),
                     change.c_str(), e.detail.empty() ? "" : "  ", e.detail.c_str());
     }
-    std::printf("%zu event(s) in %s\n", events.size(), path.c_str());
+    std::printf("%zu event(s) in %s\n", events.size(), where.c_str());
     return kOk;
 }
 

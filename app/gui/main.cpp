@@ -112,9 +112,10 @@ int main(int argc, char** argv) {
         "PRESET", "iso");
     const QCommandLineOption recordOpt(
         "record",
-        "The production record (SQLite) the runs go to: FILE, or off (default: "
-        "$XDG_DATA_HOME/cutcell/production.db; `cutcell-cli history` lists it).",
-        "FILE");
+        "The production record the runs, users and audit trail go to: a SQLite FILE, a "
+        "PostgreSQL server shared by the shop's cells (postgresql://user@host:port/db), or off "
+        "(default: $XDG_DATA_HOME/cutcell/production.db; `cutcell-cli history` lists it).",
+        "FILE|URL");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,
                     languageOpt, viewOpt, recordOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");

@@ -1,12 +1,12 @@
 #include "production_record.h"
 
-#include "devices/record/sqlite_run_record.h"
+#include "devices/record/run_record_store.h"
 
 namespace cutcell::app {
 namespace {
 
-std::shared_ptr<SqliteRunRecord>& theRecord() {
-    static std::shared_ptr<SqliteRunRecord> record;
+std::shared_ptr<RunRecordStore>& theRecord() {
+    static std::shared_ptr<RunRecordStore> record;
     return record;
 }
 
@@ -15,14 +15,14 @@ std::shared_ptr<SqliteRunRecord>& theRecord() {
 std::string openProductionRecord(const std::string& where) {
     theRecord().reset();
     if (where == "off") return "production record: off (--record off)";
-    const std::string path = where.empty() ? SqliteRunRecord::defaultPath() : where;
+    const std::string path = where.empty() ? RunRecordStore::defaultPath() : where;
     try {
-        theRecord() = std::make_shared<SqliteRunRecord>(path, SqliteRunRecord::desktopUser());
+        theRecord() = std::make_shared<RunRecordStore>(path, RunRecordStore::desktopUser());
     } catch (const RecordError& e) {
         return std::string("production record not kept: ") + e.what();
     }
     const int interrupted = theRecord()->interruptedAtOpen();
-    std::string line = "production record: " + path;
+    std::string line = "production record: " + theRecord()->where();
     if (interrupted > 0)
         line += " (" + std::to_string(interrupted) +
                 " run(s) of a station that was killed closed as interrupted)";
@@ -33,7 +33,7 @@ std::shared_ptr<RunRecordSink> productionRecord() {
     return theRecord();
 }
 
-SqliteRunRecord* productionRecordFile() {
+RunRecordStore* productionRecordFile() {
     return theRecord().get();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The operator station's production record (devices/record/, SQLite): opened once at the start
-// (the user's data folder, or `--record FILE`; `--record off` for none), closing the runs of a
+// The operator station's production record (devices/record/): opened once at the start (the
+// user's data folder's SQLite file, `--record FILE`, or a shop's PostgreSQL server with
+// `--record postgresql://user@host:port/db`; `--record off` for none), closing the runs of a
 // killed station as interrupted; every rig's engine is told of it (its run logger writes).
 #include "core/record/run_record.h"
 
@@ -8,7 +9,7 @@
 #include <string>
 
 namespace cutcell {
-class SqliteRunRecord;
+class RunRecordStore;
 }
 
 namespace cutcell::app {
@@ -20,6 +21,6 @@ std::string openProductionRecord(const std::string& where);
 // The record every engine gets (null when none is kept).
 std::shared_ptr<RunRecordSink> productionRecord();
 // The same as the file it is (the operator it names follows the log-in); null when none.
-SqliteRunRecord* productionRecordFile();
+RunRecordStore* productionRecordFile();
 
 } // namespace cutcell::app

@@ -3,9 +3,9 @@
 #include "production_record.h"
 
 #include "core/machine/machine_registry.h"
-#include "devices/record/sqlite_audit_trail.h"
-#include "devices/record/sqlite_run_record.h"
-#include "devices/record/sqlite_user_directory.h"
+#include "devices/record/audit_trail.h"
+#include "devices/record/run_record_store.h"
+#include "devices/record/user_directory.h"
 #include "ui/access_control.h"
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
@@ -23,8 +23,8 @@ namespace cutcell::app {
 namespace {
 
 struct Station {
-    std::unique_ptr<SqliteAuditTrail> trail;
-    std::unique_ptr<SqliteUserDirectory> users;
+    std::unique_ptr<AuditTrail> trail;
+    std::unique_ptr<UserDirectory> users;
     std::unique_ptr<CutCell::ui::AccessControl> access;
 };
 
@@ -42,11 +42,12 @@ std::string openStationAccess(const std::string& where) {
     if (where != "off") {
         const std::string path = where.empty() ? defaultProductionDbPath() : where;
         try {
-            s.trail = std::make_unique<SqliteAuditTrail>(path);
-            s.users = std::make_unique<SqliteUserDirectory>(path, *s.trail);
+            s.trail = std::make_unique<AuditTrail>(path);
+            s.users = std::make_unique<UserDirectory>(path, *s.trail);
+            const std::string& in = s.trail->where(); // no password
             line = s.users->hasUsers()
-                       ? "users: log in at the operator column (" + path + ")"
-                       : "users: none in " + path + ": single-user mode (cutcell-cli users add)";
+                       ? "users: log in at the operator column (" + in + ")"
+                       : "users: none in " + in + ": single-user mode (cutcell-cli users add)";
         } catch (const RecordError& e) {
             s.users.reset();
             s.trail.reset();
@@ -58,7 +59,7 @@ std::string openStationAccess(const std::string& where) {
         line = "users: single-user mode, no audit trail (--record off)";
     }
     s.access = std::make_unique<CutCell::ui::AccessControl>(
-        s.users.get(), s.trail.get(), QString::fromStdString(SqliteRunRecord::desktopUser()));
+        s.users.get(), s.trail.get(), QString::fromStdString(RunRecordStore::desktopUser()));
     if (!unavailable.empty()) s.access->setUnavailable(QString::fromStdString(unavailable));
     return line;
 }

@@ -359,6 +359,16 @@ std::string writeTemporaryFile(std::string tmpl, const std::string& forPath,
 void writeFileAtomically(const std::string& path, const std::string& contents) {
     namespace fs = std::filesystem;
     const fs::path target(path);
+    // A device or a pipe (--report /dev/null, /dev/stdout, a FIFO) is written, never replaced:
+    // a rename would put a plain file in the place of /dev/null.
+    if (std::error_code ec; fs::exists(target, ec) && !fs::is_regular_file(target, ec) &&
+                            !fs::is_directory(target, ec)) {
+        std::ofstream out(path, std::ios::binary);
+        out << contents;
+        out.flush();
+        if (!out) throw JobError("cannot write " + path + ": " + std::strerror(errno));
+        return;
+    }
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
     // A writer killed between mkstemp and rename leaves ".<name>.XXXXXX" behind. Remove such
     // files older than a minute (no writer takes that long), and only where <name> is this

@@ -73,7 +73,7 @@ struct LoginAnswer {
     UserLevel level = UserLevel::Operator;
 };
 
-// Who may log in at the station (devices/record/: SqliteUserDirectory). With no users the
+// Who may log in at the station (devices/record/: UserDirectory). With no users the
 // station runs in single-user mode: no log-in, every field editable.
 class UserAuthenticator {
   public:

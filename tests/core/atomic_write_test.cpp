@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -53,5 +56,31 @@ TEST(AtomicWrite, StaleTemporariesOfKilledWritersAreRemoved) {
         ++files;
     }
     EXPECT_EQ(files, 5); // cut.ngc, cut.svg and the three kept above
+    fs::remove_all(dir);
+}
+
+// A target that is no plain file - a pipe here, /dev/null in `--report /dev/null` - is written
+// into and stays what it was: renaming a temporary over it once put a plain file in the place
+// of /dev/null.
+TEST(AtomicWrite, APipeOrDeviceIsWrittenIntoNotReplaced) {
+    const fs::path dir = fs::temp_directory_path() / ("cutcell_fifo_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path fifo = dir / "report.pipe";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] {
+        std::ifstream in(fifo);
+        std::stringstream text;
+        text << in.rdbuf();
+        received = text.str();
+    });
+    writeFileAtomically(fifo.string(), "{\"outcome\": \"completed\"}\n");
+    if (!fs::is_fifo(fifo)) {
+        reader.detach(); // it waits for a writer that never comes
+        FAIL() << "the pipe was replaced by a file";
+    }
+    reader.join();
+    EXPECT_EQ(received, "{\"outcome\": \"completed\"}\n");
     fs::remove_all(dir);
 }

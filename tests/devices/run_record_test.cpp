@@ -1,13 +1,15 @@
-// The production record against real SQLite files: the schema from an empty file, a run of
-// every machine through `cutcell-cli run --record` with the figures of its own summary.json,
-// a program killed during a run (closed as interrupted at the next start, nothing else lost,
-// integrity_check ok), a live program's run left open, and a newer schema refused.
+// The production record against a real database - SQLite files, and a PostgreSQL server the
+// test starts (record_backend.h: the same tests built twice): the schema from an empty record,
+// a run of every machine through `cutcell-cli run --record` with the figures of its own
+// summary.json, a program killed during a run (closed as interrupted at the next start,
+// nothing else lost, the integrity check ok), a live program's run left open, and a newer
+// schema refused.
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "devices/record/sqlite_run_record.h"
+#include "devices/record/run_record_store.h"
+#include "tests/devices/record_backend.h"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,12 +32,13 @@ fs::path freshDir(const std::string& name) {
     return dir;
 }
 
-TEST(RunRecord, AnEmptyFileGetsTheSchemaAndARunRoundTrips) {
-    const fs::path dir = freshDir("roundtrip");
-    const std::string db = (dir / "sub" / "p.db").string(); // the folder is made too
+using test::freshRecord;
+
+TEST(RunRecord, AnEmptyRecordGetsTheSchemaAndARunRoundTrips) {
+    const std::string db = freshRecord("roundtrip");
     {
-        SqliteRunRecord r(db, "ada");
-        EXPECT_EQ(r.schemaVersion(), SqliteRunRecord::kSchemaVersion);
+        RunRecordStore r(db, "ada");
+        EXPECT_EQ(r.schemaVersion(), RunRecordStore::kSchemaVersion);
         EXPECT_EQ(r.interruptedAtOpen(), 0);
         const std::string job = R"({"schema": 2, "name": "x", "machine": {"kind": "flying_saw"}})";
         r.opened({7, "x", job, "/runs/a", 1'000'000});
@@ -56,31 +59,33 @@ TEST(RunRecord, AnEmptyFileGetsTheSchemaAndARunRoundTrips) {
         EXPECT_EQ(runs[0].alarms, 1);
         EXPECT_EQ(r.alarmsOf(runs[0].id).at(0).text, "axis 1 (carriage): following error");
         EXPECT_EQ(r.jobTextOf(runs[0].id), job);
-        EXPECT_EQ(runs[0].job_hash, SqliteRunRecord::jobFingerprint(job));
-        EXPECT_NE(runs[0].job_hash, SqliteRunRecord::jobFingerprint(job + " "));
+        EXPECT_EQ(runs[0].job_hash, RunRecordStore::jobFingerprint(job));
+        EXPECT_NE(runs[0].job_hash, RunRecordStore::jobFingerprint(job + " "));
         // Filters.
-        EXPECT_EQ(r.runs({.machine = "pipe_robot_6axis"}).size(), 0u);
-        EXPECT_EQ(r.runs({.since_ms = 1'000'001}).size(), 0u);
-        EXPECT_EQ(r.runs({.outcome = "fault: axis 1"}).size(), 1u);
+        RunQuery byMachine, bySince, byOutcome;
+        byMachine.machine = "pipe_robot_6axis";
+        bySince.since_ms = 1'000'001;
+        byOutcome.outcome = "fault: axis 1";
+        EXPECT_EQ(r.runs(byMachine).size(), 0u);
+        EXPECT_EQ(r.runs(bySince).size(), 0u);
+        EXPECT_EQ(r.runs(byOutcome).size(), 1u);
     }
-    SqliteRunRecord again(db, "ada"); // reopening migrates nothing and keeps the run
+    RunRecordStore again(db, "ada"); // reopening migrates nothing and keeps the run
     EXPECT_EQ(again.runs({}).size(), 1u);
     EXPECT_EQ(again.integrityCheck(), "ok");
-    fs::remove_all(dir);
 }
 
 TEST(RunRecord, AKilledProgramsRunIsClosedAsInterruptedAndALiveOnesStaysOpen) {
-    const fs::path dir = freshDir("killed");
-    const std::string db = (dir / "p.db").string();
+    const std::string db = freshRecord("killed");
     {
-        SqliteRunRecord r(db, "op");
+        RunRecordStore r(db, "op");
         r.opened({1, "done", "{}", "", 1000});
         r.closed({"completed", 2000, "{}"});
     }
     const pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        SqliteRunRecord r(db, "op");
+        RunRecordStore r(db, "op");
         r.opened({2, "killed mid-run", "{}", "", 3000});
         r.alarm({3100, "warning", "a note before the kill"});
         raise(SIGKILL);
@@ -90,10 +95,10 @@ TEST(RunRecord, AKilledProgramsRunIsClosedAsInterruptedAndALiveOnesStaysOpen) {
     ASSERT_EQ(waitpid(child, &status, 0), child);
     ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
 
-    SqliteRunRecord live(db, "op"); // this process: its own open run must survive a reader
+    RunRecordStore live(db, "op"); // this process: its own open run must survive a reader
     EXPECT_EQ(live.interruptedAtOpen(), 1);
     live.opened({3, "running here", "{}", "", 4000});
-    const SqliteRunRecord reader(db, "");
+    const RunRecordStore reader(db, "");
     EXPECT_EQ(reader.interruptedAtOpen(), 0) << "a running program's run was closed";
     const auto runs = reader.runs({});
     ASSERT_EQ(runs.size(), 3u);
@@ -104,37 +109,32 @@ TEST(RunRecord, AKilledProgramsRunIsClosedAsInterruptedAndALiveOnesStaysOpen) {
     EXPECT_EQ(runs[1].alarms, 1) << "the alarm written before the kill was lost";
     EXPECT_EQ(runs[2].outcome, ""); // still running
     EXPECT_EQ(reader.integrityCheck(), "ok");
-    fs::remove_all(dir);
 }
 
-TEST(RunRecord, ANewerSchemaAndAFileThatIsNoDatabaseAreRefusedByName) {
-    const fs::path dir = freshDir("refused");
-    const std::string db = (dir / "p.db").string();
-    {
-        sqlite3* raw = nullptr;
-        ASSERT_EQ(sqlite3_open(db.c_str(), &raw), SQLITE_OK);
-        ASSERT_EQ(sqlite3_exec(raw, "PRAGMA user_version = 99;", nullptr, nullptr, nullptr),
-                  SQLITE_OK);
-        sqlite3_close(raw);
-    }
+TEST(RunRecord, ANewerSchemaAndARecordThatIsNoneAreRefusedByName) {
+    const std::string db = freshRecord("refused");
+    test::markSchemaVersion(db, 99);
     try {
-        SqliteRunRecord r(db, "op");
+        RunRecordStore r(db, "op");
         ADD_FAILURE() << "schema 99 opened";
     } catch (const RecordError& e) {
         EXPECT_NE(std::string(e.what()).find("newer CutCell"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find(db), std::string::npos) << e.what();
     }
-    const std::string text = (dir / "notes.txt").string();
-    writeFileAtomically(text, "these are not the droids you are looking for\n");
-    EXPECT_THROW(SqliteRunRecord(text, "op"), RecordError);
-    fs::remove_all(dir);
+    const std::string none = test::notARecord("none");
+    try {
+        RunRecordStore r(none, "op");
+        ADD_FAILURE() << none << " opened";
+    } catch (const RecordError& e) {
+        EXPECT_NE(std::string(e.what()).find(none), std::string::npos) << e.what();
+    }
 }
 
 // Each machine's shipped job run by the CLI leaves one row: its machine, "completed", and what
 // it made as its own summary.json says.
 TEST(RunRecord, ARunOfEveryMachineLeavesItsRowWithTheFiguresOfItsRunLog) {
-    const fs::path dir = freshDir("machines");
-    const std::string db = (dir / "p.db").string();
+    const fs::path dir = freshDir("machines"); // the run folders
+    const std::string db = freshRecord("machines");
     const std::string cli = CUTCELL_CLI;
     const char* jobs[] = {"default_job", "profile_cutter_job", "section_steel_job",
                           "flying_saw_job", "quick_return_job"};
@@ -144,7 +144,7 @@ TEST(RunRecord, ARunOfEveryMachineLeavesItsRowWithTheFiguresOfItsRunLog) {
                                 db + " --report " + (dir / "report.json").string() + " 2>/dev/null";
         ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     }
-    const SqliteRunRecord r(db, "");
+    const RunRecordStore r(db, "");
     const auto runs = r.runs({});
     ASSERT_EQ(runs.size(), std::size(jobs));
     std::set<std::string> machines;

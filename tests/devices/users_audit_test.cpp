@@ -1,19 +1,21 @@
-// The station's users and audit trail against real SQLite files (issue 25's security tests):
+// The station's users and audit trail against a real database - SQLite files, and a PostgreSQL
+// server the test starts (record_backend.h: the same tests built twice) - (issue 25's security
+// tests):
 // the stored hash is Argon2id and verifies with libsodium's own crypto_pwhash_str_verify; wrong
 // passwords lock a user out for a minute after five; short passwords, a first user who is no
 // administrator and the last administrator's removal are refused by name; the trail shows every
-// change and log-in made here, refuses edits and deletes in the file itself, and rolls its
+// change and log-in made here, refuses edits and deletes in the database itself, and rolls its
 // oldest records into an archive file without losing one; a record of schema 1 (written by the
 // code before users existed, tests/data/record/) migrates and keeps its runs.
 #include "core/job/job_io.h"
 #include "core/json/json.h"
-#include "devices/record/sqlite_audit_trail.h"
-#include "devices/record/sqlite_run_record.h"
-#include "devices/record/sqlite_user_directory.h"
+#include "devices/record/audit_trail.h"
+#include "devices/record/run_record_store.h"
+#include "devices/record/user_directory.h"
+#include "tests/devices/record_backend.h"
 
 #include <gtest/gtest.h>
 #include <sodium.h>
-#include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,15 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("cutcell_users_" + name + "_" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::vector<std::string> eventsNamed(const SqliteAuditTrail& trail, const std::string& event) {
+std::vector<std::string> eventsNamed(const AuditTrail& trail, const std::string& event) {
     std::vector<std::string> keys;
     for (const RecordedAuditEvent& e : trail.events())
         if (e.event.event == event) keys.push_back(e.event.key);
@@ -44,33 +38,29 @@ std::vector<std::string> eventsNamed(const SqliteAuditTrail& trail, const std::s
 }
 
 TEST(Users, TheStoredHashIsArgon2idAndVerifiesWithLibsodium) {
-    const fs::path dir = freshDir("hash");
-    const std::string db = (dir / "p.db").string();
-    SqliteAuditTrail trail(db);
-    SqliteUserDirectory users(db, trail);
+    const std::string db = test::freshRecord("hash");
+    AuditTrail trail(db);
+    UserDirectory users(db, trail);
     ASSERT_TRUE(users.addUser("ada", UserLevel::Administrator, "correct horse", "root").ok());
     const std::string hash = users.storedHash("ada");
     EXPECT_EQ(hash.rfind("$argon2id$", 0), 0u) << hash;
     ASSERT_GE(sodium_init(), 0);
     EXPECT_EQ(crypto_pwhash_str_verify(hash.c_str(), "correct horse", 13), 0);
     EXPECT_NE(crypto_pwhash_str_verify(hash.c_str(), "correct horsE", 13), 0);
-    // The password itself is nowhere in the file.
-    std::ifstream in(db, std::ios::binary);
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    EXPECT_EQ(bytes.str().find("correct horse"), std::string::npos);
+    // The password itself is nowhere in the record.
+    const std::string bytes = test::recordBytes(db);
+    EXPECT_NE(bytes.find("$argon2id$"), std::string::npos); // what is read holds the hash
+    EXPECT_EQ(bytes.find("correct horse"), std::string::npos);
     const LoginResult ok = users.login("ada", "correct horse");
     EXPECT_TRUE(ok.outcome.ok()) << ok.outcome.message;
     EXPECT_EQ(ok.level, UserLevel::Administrator);
-    fs::remove_all(dir);
 }
 
 TEST(Users, FiveWrongPasswordsLockTheUserOutForAMinute) {
-    const fs::path dir = freshDir("lockout");
-    const std::string db = (dir / "p.db").string();
+    const std::string db = test::freshRecord("lockout");
     std::int64_t now = 1'800'000'000'000;
-    SqliteAuditTrail trail(db);
-    SqliteUserDirectory users(db, trail, [&now] { return now; });
+    AuditTrail trail(db);
+    UserDirectory users(db, trail, [&now] { return now; });
     ASSERT_TRUE(users.addUser("boss", UserLevel::Administrator, "long enough 1", "root").ok());
     ASSERT_TRUE(users.addUser("olga", UserLevel::Operator, "long enough 2", "boss").ok());
     for (int i = 1; i <= 4; ++i) {
@@ -95,14 +85,12 @@ TEST(Users, FiveWrongPasswordsLockTheUserOutForAMinute) {
     EXPECT_EQ(eventsNamed(trail, audit_event::kLoginFailed).size(), 4u + 1 + 1);
     EXPECT_EQ(eventsNamed(trail, audit_event::kLockedOut), std::vector<std::string>{"olga"});
     EXPECT_EQ(eventsNamed(trail, audit_event::kLogin), (std::vector<std::string>{"boss", "olga"}));
-    fs::remove_all(dir);
 }
 
 TEST(Users, WeakPasswordsBadNamesAndALevelessStationAreRefusedByName) {
-    const fs::path dir = freshDir("refusals");
-    const std::string db = (dir / "p.db").string();
-    SqliteAuditTrail trail(db);
-    SqliteUserDirectory users(db, trail);
+    const std::string db = test::freshRecord("refusals");
+    AuditTrail trail(db);
+    UserDirectory users(db, trail);
     const Outcome first = users.addUser("olga", UserLevel::Operator, "long enough", "root");
     EXPECT_TRUE(first.refused());
     EXPECT_NE(first.message.find("first user must be an administrator"), std::string::npos);
@@ -118,15 +106,13 @@ TEST(Users, WeakPasswordsBadNamesAndALevelessStationAreRefusedByName) {
     EXPECT_NE(last.message.find("last administrator"), std::string::npos) << last.message;
     EXPECT_TRUE(users.setLevel("ada", UserLevel::Engineer, "ada").refused());
     EXPECT_TRUE(users.users().size() == 1 && users.hasAdministrator());
-    fs::remove_all(dir);
 }
 
 TEST(AuditTrail, ShowsEveryChangeMadeAndTheFileRefusesEditsAndDeletes) {
-    const fs::path dir = freshDir("trail");
-    const std::string db = (dir / "p.db").string();
+    const std::string db = test::freshRecord("trail");
     {
-        SqliteAuditTrail trail(db);
-        SqliteUserDirectory users(db, trail);
+        AuditTrail trail(db);
+        UserDirectory users(db, trail);
         ASSERT_TRUE(users.addUser("ada", UserLevel::Administrator, "long enough", "root").ok());
         ASSERT_TRUE(users.addUser("sam", UserLevel::Setter, "long enough", "ada").ok());
         ASSERT_TRUE(users.setLevel("sam", UserLevel::Engineer, "ada").ok());
@@ -137,7 +123,7 @@ TEST(AuditTrail, ShowsEveryChangeMadeAndTheFileRefusesEditsAndDeletes) {
         ASSERT_TRUE(users.removeUser("sam", "ada").ok());
         users.logout("ada");
     }
-    SqliteAuditTrail again(db); // the trail is in the file, not in memory
+    AuditTrail again(db); // the trail is in the file, not in memory
     const auto events = again.events();
     std::vector<std::string> seen;
     for (const auto& e : events)
@@ -156,21 +142,18 @@ TEST(AuditTrail, ShowsEveryChangeMadeAndTheFileRefusesEditsAndDeletes) {
     EXPECT_EQ(events[4].event.unit, "1/s");
     for (const auto& e : events)
         EXPECT_GT(e.event.unix_ms, 1'700'000'000'000) << e.event.event;
-    // Append-only in the file itself: another program's UPDATE or DELETE is refused.
-    sqlite3* raw = nullptr;
-    ASSERT_EQ(sqlite3_open(db.c_str(), &raw), SQLITE_OK);
-    EXPECT_NE(sqlite3_exec(raw, "UPDATE audit SET actor = 'x'", nullptr, nullptr, nullptr),
-              SQLITE_OK);
-    EXPECT_NE(sqlite3_exec(raw, "DELETE FROM audit", nullptr, nullptr, nullptr), SQLITE_OK);
-    sqlite3_close(raw);
+    // Append-only in the database itself: another program's UPDATE or DELETE is refused.
+    std::string why;
+    EXPECT_FALSE(test::execOnRecord(db, "UPDATE audit SET actor = 'x'", &why));
+    EXPECT_NE(why.find("append-only"), std::string::npos) << why;
+    EXPECT_FALSE(test::execOnRecord(db, "DELETE FROM audit", &why));
+    EXPECT_NE(why.find("append-only"), std::string::npos) << why;
     EXPECT_EQ(again.count(), static_cast<std::int64_t>(expected.size()));
-    fs::remove_all(dir);
 }
 
 TEST(AuditTrail, PastItsBoundTheOldestRecordsGoToAnArchiveNoneIsLost) {
-    const fs::path dir = freshDir("roll");
-    const std::string db = (dir / "p.db").string();
-    SqliteAuditTrail trail(db, 50);
+    const std::string db = test::freshRecord("roll");
+    AuditTrail trail(db, 50);
     const int appended = 237;
     for (int i = 0; i < appended; ++i)
         trail.append({0, "sam", audit_event::kOverrideChanged, "override", std::to_string(i),
@@ -195,24 +178,12 @@ TEST(AuditTrail, PastItsBoundTheOldestRecordsGoToAnArchiveNoneIsLost) {
     // Each roll is itself an event naming its file.
     const auto rolls = eventsNamed(trail, audit_event::kArchived);
     EXPECT_FALSE(rolls.empty());
-    fs::remove_all(dir);
 }
 
 TEST(ProductionDb, ARecordOfSchema1MigratesAndKeepsItsRuns) {
-    const fs::path dir = freshDir("migrate");
-    const fs::path db = dir / "old.db";
-    fs::copy_file(fs::path(CUTCELL_SOURCE_DIR) / "tests/data/record/production_schema1.db", db);
-    {
-        sqlite3* raw = nullptr;
-        ASSERT_EQ(sqlite3_open(db.c_str(), &raw), SQLITE_OK);
-        sqlite3_stmt* st = nullptr;
-        sqlite3_prepare_v2(raw, "PRAGMA user_version", -1, &st, nullptr);
-        ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-        EXPECT_EQ(sqlite3_column_int(st, 0), 1); // the file really is of the old schema
-        sqlite3_finalize(st);
-        sqlite3_close(raw);
-    }
-    SqliteRunRecord record(db.string(), "op");
+    const std::string db = test::schema1Record("migrate");
+    EXPECT_EQ(test::schemaVersionOf(db), 1); // the record really is of the old schema
+    RunRecordStore record(db, "op");
     EXPECT_EQ(record.schemaVersion(), kProductionDbSchema);
     const auto runs = record.runs({});
     ASSERT_EQ(runs.size(), 2u);
@@ -223,11 +194,10 @@ TEST(ProductionDb, ARecordOfSchema1MigratesAndKeepsItsRuns) {
         EXPECT_FALSE(record.jobTextOf(r.id).empty());
     }
     EXPECT_EQ(machines, (std::set<std::string>{"quick_return_cutter", "flying_saw"}));
-    SqliteAuditTrail trail(db.string());
-    SqliteUserDirectory users(db.string(), trail);
+    AuditTrail trail(db);
+    UserDirectory users(db, trail);
     EXPECT_TRUE(users.addUser("ada", UserLevel::Administrator, "long enough", "root").ok());
     EXPECT_EQ(record.integrityCheck(), "ok");
-    fs::remove_all(dir);
 }
 
 // Runs `cutcell-cli ARGS` with `input` on its standard input; returns the exit code, stdout in
@@ -252,8 +222,7 @@ int cli(const std::string& args, const std::string& input, std::string* out) {
 // change authorised by an administrator's password; a wrong one changes nothing; the audit
 // trail lists it all, as CSV too.
 TEST(UsersCli, AddsAUserOnlyWithAnAdministratorsPasswordAndTheTrailListsIt) {
-    const fs::path dir = freshDir("cli");
-    const std::string db = "--db " + (dir / "p.db").string();
+    const std::string db = "--db " + test::freshRecord("cli");
     std::string out;
     EXPECT_EQ(cli("users list " + db, "", &out), 0);
     EXPECT_NE(out.find("single-user mode"), std::string::npos) << out;
@@ -280,7 +249,6 @@ TEST(UsersCli, AddsAUserOnlyWithAnAdministratorsPasswordAndTheTrailListsIt) {
     EXPECT_NE(out.find(",ada,user added,olga,,operator,"), std::string::npos) << out;
     EXPECT_NE(out.find(",ada,login failed,ada,"), std::string::npos) << out;
     EXPECT_EQ(cli("audit --since 2026-02-30 " + db, "", &out), 64);
-    fs::remove_all(dir);
 }
 
 } // namespace

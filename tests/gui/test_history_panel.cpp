@@ -4,7 +4,7 @@
 // recomputed here from the alarms written), the cycle-time chart, and the shift report as CSV
 // (one line per run and the totals, a decimal point under a German locale) and as PDF (read
 // back with poppler's pdftotext where it is installed).
-#include "devices/record/sqlite_run_record.h"
+#include "devices/record/run_record_store.h"
 #include "plots/history_charts_widget.h"
 #include "ui/panels/history_panel.h"
 
@@ -29,14 +29,14 @@ std::string jobFor(const char* machine, const char* name) {
 class TestHistoryPanel : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    std::unique_ptr<cutcell::SqliteRunRecord> record_;
+    std::unique_ptr<cutcell::RunRecordStore> record_;
     std::int64_t now_ = 0;
 
   private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
         record_ =
-            std::make_unique<cutcell::SqliteRunRecord>(dir_.filePath("p.db").toStdString(), "ada");
+            std::make_unique<cutcell::RunRecordStore>(dir_.filePath("p.db").toStdString(), "ada");
         now_ = QDateTime::currentMSecsSinceEpoch();
         const std::int64_t day = 24LL * 3600 * 1000;
         // An old run (ten days ago), then three today: a saw's fault with two following-error

@@ -15,8 +15,8 @@
 #include "core/machine/machine_registry.h"
 #include "core/machine/parameter_level.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
-#include "devices/record/sqlite_audit_trail.h"
-#include "devices/record/sqlite_user_directory.h"
+#include "devices/record/audit_trail.h"
+#include "devices/record/user_directory.h"
 #include "main_window_run.h"
 #include "ui/access_control.h"
 #include "ui/forms/job_editor.h"
@@ -73,8 +73,8 @@ std::set<std::string> editable(const std::map<std::string, bool>& fields) {
     return out;
 }
 
-bool hasEvent(const cutcell::SqliteAuditTrail& trail, const std::string& event,
-              const std::string& key, const std::string& actor = {}) {
+bool hasEvent(const cutcell::AuditTrail& trail, const std::string& event, const std::string& key,
+              const std::string& actor = {}) {
     for (const auto& e : trail.events())
         if (e.event.event == event && e.event.key == key &&
             (actor.empty() || e.event.actor == actor))
@@ -103,8 +103,8 @@ class TestUserLevels : public QObject {
     void initTestCase() {
         QVERIFY(dir_.isValid());
         db_ = dir_.filePath("production.db").toStdString();
-        cutcell::SqliteAuditTrail trail(db_);
-        cutcell::SqliteUserDirectory users(db_, trail);
+        cutcell::AuditTrail trail(db_);
+        cutcell::UserDirectory users(db_, trail);
         for (const UserLevel l : {UserLevel::Administrator, UserLevel::Engineer, UserLevel::Setter,
                                   UserLevel::Operator})
             QVERIFY(users
@@ -191,7 +191,7 @@ class TestUserLevels : public QObject {
         QCOMPARE(refused.count(), 1);
         QCOMPARE(cutcell::pipeRobotSpec(w.editor()->job()).controller[0].kp, before);
         QTRY_COMPARE(gain->value(), before); // the field shows the job again
-        cutcell::SqliteAuditTrail trail(db_);
+        cutcell::AuditTrail trail(db_);
         QVERIFY(!hasEvent(trail, cutcell::audit_event::kParameterChanged, key));
     }
 
@@ -207,10 +207,30 @@ class TestUserLevels : public QObject {
         // The E-STOP keeps its own words in the Start reason; the log-in comes after it.
         QTRY_VERIFY2(w.run()->startBlockedReason().contains("EMERGENCY STOP"),
                      qPrintable(w.run()->startBlockedReason()));
-        cutcell::SqliteAuditTrail trail(db_);
+        cutcell::AuditTrail trail(db_);
         QVERIFY(hasEvent(trail, cutcell::audit_event::kEmergencyStop, "", "(not logged in)"));
         logIn(UserLevel::Operator);
         QVERIFY(!w.run()->startBlockedReason().contains("log in"));
+    }
+
+    // An unattended run (`cutcell --run`) asks the same gate as Start: logged out it is refused
+    // before the drives are enabled, and an operator's log-in lets it run.
+    void anUnattendedRunAsksTheLogInToo() {
+        MainWindow w(&cutcell::app::makeRig);
+        cutcell::app::attachStationAccess(w);
+        w.run()->setClockMode(cutcell::ClockMode::AsFastAsPossible);
+        QTRY_VERIFY_WITH_TIMEOUT(w.run()->program() != nullptr, 60000);
+        QSignalSpy finished(w.run(), &CutCell::ui::RunController::autoRunFinished);
+        w.run()->startAutoRun();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 10000);
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QVERIFY2(finished.at(0).at(1).toString().contains("log in"),
+                 qPrintable(finished.at(0).at(1).toString()));
+        QCOMPARE(state(w), cutcell::EngineState::Idle); // not even enabled
+        logIn(UserLevel::Operator);
+        w.run()->startAutoRun();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 120000);
+        QVERIFY2(finished.at(1).at(0).toBool(), qPrintable(finished.at(1).at(1).toString()));
     }
 
     // The setter's change goes to the trail with key, old and new value and the user.
@@ -224,7 +244,7 @@ class TestUserLevels : public QObject {
         // Typed digit by digit, one change: the first old value to the last new one.
         speed->setValue(before + 10);
         speed->setValue(before + 1);
-        cutcell::SqliteAuditTrail trail(db_);
+        cutcell::AuditTrail trail(db_);
         const auto changes = [&] {
             std::vector<cutcell::AuditEvent> out;
             for (const auto& e : trail.events())
@@ -268,7 +288,7 @@ class TestUserLevels : public QObject {
         logIn(UserLevel::Engineer);
         QTRY_VERIFY_WITH_TIMEOUT(!access().loggedIn(), 3000);
         access().setIdleTimeoutS(600);
-        cutcell::SqliteAuditTrail trail(db_);
+        cutcell::AuditTrail trail(db_);
         bool idle = false;
         for (const auto& e : trail.events())
             idle = idle || (e.event.event == cutcell::audit_event::kLogout &&
@@ -314,8 +334,8 @@ class TestUserLevels : public QObject {
         cutcell::app::attachStationAccess(w);
         logIn(UserLevel::Engineer);
         QVERIFY(fieldsOf(w).at("controller[0].kp_nm_per_rad"));
-        cutcell::SqliteAuditTrail trail(db_);
-        cutcell::SqliteUserDirectory users(db_, trail);
+        cutcell::AuditTrail trail(db_);
+        cutcell::UserDirectory users(db_, trail);
         QVERIFY(users.setLevel("eve", UserLevel::Setter, "ada").ok());
         access().refreshUsers(); // what its 5 s timer does
         QCOMPARE(*access().level(), UserLevel::Setter);

@@ -1,38 +1,40 @@
 #pragma once
-// The production record in SQLite (Debian libsqlite3): one row per run - machine, job name,
-// the job file and its fingerprint, operator, start and end, outcome, cycle time, what was
-// made and where a short run stopped (summary.json's "made" and "stop") - and its alarms. One
-// file (the user's data folder by default), WAL journal, the schema versioned by
-// PRAGMA user_version with migrations from every earlier version. A run left open by a killed
+// The production record's runs: one row per run - machine, job name, the job file and its
+// fingerprint, operator, start and end, outcome, cycle time, what was made and where a short
+// run stopped (summary.json's "made" and "stop") - and its alarms. Kept in a SQLite file (the
+// user's data folder by default) or on a PostgreSQL server (a connection string), the same
+// tables and statements in both (record_db.h). A run left open by a killed
 // program (its host's process is gone) is closed as "interrupted" when the record is next
 // opened; a run of a program still running stays open.
 //
 // The run log calls it on the engine's logger thread (RunRecordSink); queries may come from any
 // thread: one connection behind a mutex.
 #include "core/record/run_record.h"
-#include "devices/record/production_db.h"
+#include "devices/record/record_db.h"
 
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 namespace cutcell {
 
-class SqliteRunRecord final : public RunRecordSink, public RunHistory {
+class RunRecordStore final : public RunRecordSink, public RunHistory {
   public:
     static constexpr int kSchemaVersion = kProductionDbSchema;
 
-    // Opens or creates the record at `path` (its folder too) and migrates it; throws
-    // RecordError naming the file and SQLite's reason.
-    SqliteRunRecord(const std::string& path, std::string operatorName);
-    ~SqliteRunRecord() override;
-    SqliteRunRecord(const SqliteRunRecord&) = delete;
-    SqliteRunRecord& operator=(const SqliteRunRecord&) = delete;
+    // Opens or creates the record `where` (a file, its folder too; or a server's database) and
+    // migrates it; throws RecordError naming it and the database's reason.
+    RunRecordStore(const std::string& where, std::string operatorName);
+    ~RunRecordStore() override;
+    RunRecordStore(const RunRecordStore&) = delete;
+    RunRecordStore& operator=(const RunRecordStore&) = delete;
 
     // Runs found open at the start whose program was killed, now closed as "interrupted".
     int interruptedAtOpen() const { return interrupted_; }
-    const std::string& path() const { return path_; }
+    // The file, or the server and database (no password).
+    const std::string& where() const { return db_->where(); }
     int schemaVersion() const;
 
     // Who the next runs are by (the logged-in user); "" keeps the desktop's user.
@@ -45,7 +47,7 @@ class SqliteRunRecord final : public RunRecordSink, public RunHistory {
     std::vector<RecordedRun> runs(const RunQuery& query) const override; // oldest first
     std::vector<RunAlarmNote> alarmsOf(std::int64_t runId) const override;
     std::string jobTextOf(std::int64_t runId) const override;
-    // PRAGMA integrity_check's answer ("ok" for a sound file).
+    // "ok" for a sound record (SQLite: PRAGMA integrity_check; PostgreSQL: PgRecordDb's).
     std::string integrityCheck() const;
 
     // Who is at the station: the desktop's user ($USER, $LOGNAME) until user levels bring
@@ -60,10 +62,9 @@ class SqliteRunRecord final : public RunRecordSink, public RunHistory {
 
   private:
     void closeInterrupted();
-    std::string path_;
-    std::string operator_;        // [mutex_]
-    std::string desktopOperator_; // the one given at the start
-    SqliteHandle db_;
+    std::string operator_;         // [mutex_]
+    std::string desktopOperator_;  // the one given at the start
+    std::unique_ptr<RecordDb> db_; // [mutex_]
     mutable std::mutex mutex_;
     std::int64_t openRun_ = 0; // row of the run being recorded
     int interrupted_ = 0;

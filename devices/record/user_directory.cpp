@@ -1,4 +1,4 @@
-#include "devices/record/sqlite_user_directory.h"
+#include "devices/record/user_directory.h"
 
 #include <sodium.h>
 
@@ -21,15 +21,14 @@ Outcome checkName(const std::string& name) {
 
 Outcome checkPassword(const std::string& password) {
     const auto n = static_cast<int>(password.size());
-    if (n < SqliteUserDirectory::kMinPasswordLength)
+    if (n < UserDirectory::kMinPasswordLength)
         return Outcome::refuse("the password has " + std::to_string(n) +
                                    " characters; it needs at least " +
-                                   std::to_string(SqliteUserDirectory::kMinPasswordLength),
+                                   std::to_string(UserDirectory::kMinPasswordLength),
                                "password");
-    if (n > SqliteUserDirectory::kMaxPasswordLength)
+    if (n > UserDirectory::kMaxPasswordLength)
         return Outcome::refuse("the password has " + std::to_string(n) + " characters; at most " +
-                                   std::to_string(SqliteUserDirectory::kMaxPasswordLength) +
-                                   " are taken",
+                                   std::to_string(UserDirectory::kMaxPasswordLength) + " are taken",
                                "password");
     return Outcome::done();
 }
@@ -68,113 +67,108 @@ struct Row {
     std::int64_t lockedUntil;
 };
 
-std::optional<Row> findUser(sqlite3* db, const std::string& name) {
-    Statement st(db, "SELECT level, pwhash, failed_logins, locked_until_ms FROM users "
-                     "WHERE name = ?1");
-    st.bind(1, name);
-    if (!st.step()) return std::nullopt;
-    return Row{parseUserLevel(st.text(0)).value_or(UserLevel::Operator), st.text(1),
-               static_cast<int>(st.integer(2)), st.integer(3)};
+std::optional<Row> findUser(RecordDb& db, const std::string& name) {
+    const SqlRows r = db.query("SELECT level, pwhash, failed_logins, locked_until_ms FROM users "
+                               "WHERE name = ?1",
+                               {name});
+    if (r.empty()) return std::nullopt;
+    return Row{parseUserLevel(r[0].text(0)).value_or(UserLevel::Operator), r[0].text(1),
+               static_cast<int>(r[0].integer(2)), r[0].integer(3)};
 }
 
-std::int64_t administrators(sqlite3* db) {
-    Statement st(db, "SELECT count(*) FROM users WHERE level = 'administrator'");
-    return st.step() ? st.integer(0) : 0;
+std::int64_t administrators(RecordDb& db) {
+    const SqlRows r = db.query("SELECT count(*) FROM users WHERE level = 'administrator'");
+    return r.empty() ? 0 : r[0].integer(0);
 }
 
 } // namespace
 
-SqliteUserDirectory::SqliteUserDirectory(const std::string& path, AuditSink& audit, Clock clock)
-    : path_(path), audit_(audit), clock_(std::move(clock)), db_(openProductionDb(path)) {
+UserDirectory::UserDirectory(const std::string& where, AuditSink& audit, Clock clock)
+    : audit_(audit), clock_(std::move(clock)), db_(openRecordDb(where)) {
     if (sodium_init() < 0) throw RecordError("users: libsodium cannot start");
 }
 
-SqliteUserDirectory::~SqliteUserDirectory() = default;
+UserDirectory::~UserDirectory() = default;
 
-std::vector<UserAccount> SqliteUserDirectory::users() const {
+std::vector<UserAccount> UserDirectory::users() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_.get(), "SELECT name, level, created_ms, failed_logins, locked_until_ms "
-                            "FROM users ORDER BY name");
     std::vector<UserAccount> out;
-    while (st.step())
-        out.push_back({st.text(0), parseUserLevel(st.text(1)).value_or(UserLevel::Operator),
-                       st.integer(2), static_cast<int>(st.integer(3)), st.integer(4)});
+    for (const SqlRow& r : db_->query("SELECT name, level, created_ms, failed_logins, "
+                                      "locked_until_ms FROM users ORDER BY name"))
+        out.push_back({r.text(0), parseUserLevel(r.text(1)).value_or(UserLevel::Operator),
+                       r.integer(2), static_cast<int>(r.integer(3)), r.integer(4)});
     return out;
 }
 
-bool SqliteUserDirectory::hasAdministrator() const {
+bool UserDirectory::hasAdministrator() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return administrators(db_.get()) > 0;
+    return administrators(*db_) > 0;
 }
 
-Outcome SqliteUserDirectory::addUser(const std::string& name, UserLevel level,
-                                     const std::string& password, const std::string& actor) {
+Outcome UserDirectory::addUser(const std::string& name, UserLevel level,
+                               const std::string& password, const std::string& actor) {
     if (Outcome o = checkName(name); !o.ok()) return o;
     if (Outcome o = checkPassword(password); !o.ok()) return o;
     std::lock_guard<std::mutex> lock(mutex_);
-    if (findUser(db_.get(), name))
-        return Outcome::refuse("user " + name + " exists already", "user");
-    if (level != UserLevel::Administrator && administrators(db_.get()) == 0)
+    if (findUser(*db_, name)) return Outcome::refuse("user " + name + " exists already", "user");
+    if (level != UserLevel::Administrator && administrators(*db_) == 0)
         return Outcome::refuse("the first user must be an administrator (level "
                                "\"administrator\"), not " +
                                    std::string(userLevelName(level)),
                                "level");
-    Statement st(db_.get(), "INSERT INTO users (name, level, pwhash, created_ms) VALUES "
-                            "(?1, ?2, ?3, ?4)");
-    st.bind(1, name).bind(2, std::string(userLevelName(level))).bind(3, hashPassword(password));
-    st.bind(4, clock_()).step();
+    db_->query("INSERT INTO users (name, level, pwhash, created_ms) VALUES (?1, ?2, ?3, ?4)",
+               {name, std::string(userLevelName(level)), hashPassword(password), clock_()});
     audit_.append(
         {clock_(), actor, audit_event::kUserAdded, name, "", userLevelName(level), "", ""});
     return Outcome::done();
 }
 
-Outcome SqliteUserDirectory::removeUser(const std::string& name, const std::string& actor) {
+Outcome UserDirectory::removeUser(const std::string& name, const std::string& actor) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::optional<Row> row = findUser(db_.get(), name);
+    const std::optional<Row> row = findUser(*db_, name);
     if (!row) return Outcome::refuse("no user " + name.substr(0, 40), "user");
-    if (row->level == UserLevel::Administrator && administrators(db_.get()) == 1)
+    if (row->level == UserLevel::Administrator && administrators(*db_) == 1)
         return Outcome::refuse("user " + name + " is the last administrator: add another one first",
                                "user");
-    Statement st(db_.get(), "DELETE FROM users WHERE name = ?1");
-    st.bind(1, name).step();
+    db_->query("DELETE FROM users WHERE name = ?1", {name});
     audit_.append(
         {clock_(), actor, audit_event::kUserRemoved, name, userLevelName(row->level), "", "", ""});
     return Outcome::done();
 }
 
-Outcome SqliteUserDirectory::setPassword(const std::string& name, const std::string& password,
-                                         const std::string& actor) {
+Outcome UserDirectory::setPassword(const std::string& name, const std::string& password,
+                                   const std::string& actor) {
     if (Outcome o = checkPassword(password); !o.ok()) return o;
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!findUser(db_.get(), name)) return Outcome::refuse("no user " + name.substr(0, 40), "user");
-    Statement st(db_.get(), "UPDATE users SET pwhash = ?2, failed_logins = 0, locked_until_ms = 0 "
-                            "WHERE name = ?1");
-    st.bind(1, name).bind(2, hashPassword(password)).step();
+    if (!findUser(*db_, name)) return Outcome::refuse("no user " + name.substr(0, 40), "user");
+    db_->query("UPDATE users SET pwhash = ?2, failed_logins = 0, locked_until_ms = 0 "
+               "WHERE name = ?1",
+               {name, hashPassword(password)});
     audit_.append({clock_(), actor, audit_event::kPasswordChanged, name, "", "", "", ""});
     return Outcome::done();
 }
 
-Outcome SqliteUserDirectory::setLevel(const std::string& name, UserLevel level,
-                                      const std::string& actor) {
+Outcome UserDirectory::setLevel(const std::string& name, UserLevel level,
+                                const std::string& actor) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::optional<Row> row = findUser(db_.get(), name);
+    const std::optional<Row> row = findUser(*db_, name);
     if (!row) return Outcome::refuse("no user " + name.substr(0, 40), "user");
     if (row->level == UserLevel::Administrator && level != UserLevel::Administrator &&
-        administrators(db_.get()) == 1)
+        administrators(*db_) == 1)
         return Outcome::refuse("user " + name + " is the last administrator", "level");
-    Statement st(db_.get(), "UPDATE users SET level = ?2 WHERE name = ?1");
-    st.bind(1, name).bind(2, std::string(userLevelName(level))).step();
+    db_->query("UPDATE users SET level = ?2 WHERE name = ?1",
+               {name, std::string(userLevelName(level))});
     audit_.append({clock_(), actor, audit_event::kLevelChanged, name, userLevelName(row->level),
                    userLevelName(level), "", ""});
     return Outcome::done();
 }
 
-LoginResult SqliteUserDirectory::login(const std::string& name, const std::string& password) {
+LoginResult UserDirectory::login(const std::string& name, const std::string& password) {
     std::lock_guard<std::mutex> lock(mutex_);
     const std::int64_t now = clock_();
     // The operator is not told whether the name or the password was wrong; the trail is.
     const Outcome wrong = Outcome::refuse("user name or password wrong", "password");
-    const std::optional<Row> row = checkName(name).ok() ? findUser(db_.get(), name) : std::nullopt;
+    const std::optional<Row> row = checkName(name).ok() ? findUser(*db_, name) : std::nullopt;
     if (!row) {
         // The same work as for a user's password: the time taken does not tell names apart.
         const std::string& dummy = dummyHash();
@@ -198,28 +192,26 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
     // processes (a CLI beside the GUI) started at the same time each count too.
     int failed = 0;
     {
-        Statement count(db_.get(), "UPDATE users SET failed_logins = failed_logins + 1 "
-                                   "WHERE name = ?1 RETURNING failed_logins, locked_until_ms");
-        count.bind(1, name);
-        if (!count.step()) return {wrong}; // removed meanwhile
-        failed = static_cast<int>(count.integer(0));
-        if (count.integer(1) > now) return lockedOut(count.integer(1));
+        const SqlRows count = db_->query("UPDATE users SET failed_logins = failed_logins + 1 "
+                                         "WHERE name = ?1 RETURNING failed_logins, locked_until_ms",
+                                         {name});
+        if (count.empty()) return {wrong}; // removed meanwhile
+        failed = static_cast<int>(count[0].integer(0));
+        if (count[0].integer(1) > now) return lockedOut(count[0].integer(1));
     }
     const bool right =
         failed <= kMaxFailedLogins &&
         crypto_pwhash_str_verify(row->hash.c_str(), password.data(), password.size()) == 0;
     if (right) {
-        Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = 0 "
-                                "WHERE name = ?1");
-        st.bind(1, name).step();
+        db_->query("UPDATE users SET failed_logins = 0, locked_until_ms = 0 WHERE name = ?1",
+                   {name});
         audit_.append(
             {now, name, audit_event::kLogin, name, "", userLevelName(row->level), "", ""});
         return {Outcome::done(), row->level};
     }
     if (failed >= kMaxFailedLogins) {
-        Statement st(db_.get(), "UPDATE users SET failed_logins = 0, locked_until_ms = ?2 "
-                                "WHERE name = ?1");
-        st.bind(1, name).bind(2, now + kLockoutMs).step();
+        db_->query("UPDATE users SET failed_logins = 0, locked_until_ms = ?2 WHERE name = ?1",
+                   {name, now + kLockoutMs});
         audit_.append({now, name, audit_event::kLockedOut, name, "", "", "",
                        std::to_string(failed) + " failed log-ins: locked for " +
                            std::to_string(kLockoutMs / 1000) + " s"});
@@ -234,26 +226,26 @@ LoginResult SqliteUserDirectory::login(const std::string& name, const std::strin
     return {wrong};
 }
 
-void SqliteUserDirectory::logout(const std::string& name, const std::string& reason) {
+void UserDirectory::logout(const std::string& name, const std::string& reason) {
     audit_.append({clock_(), name, audit_event::kLogout, name, "", "", "", reason});
 }
 
-std::optional<UserLevel> SqliteUserDirectory::levelOf(const std::string& name) const {
+std::optional<UserLevel> UserDirectory::levelOf(const std::string& name) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::optional<Row> row = findUser(db_.get(), name);
+    const std::optional<Row> row = findUser(*db_, name);
     if (!row) return std::nullopt;
     return row->level;
 }
 
-bool SqliteUserDirectory::hasUsers() const {
+bool UserDirectory::hasUsers() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    Statement st(db_.get(), "SELECT count(*) FROM users");
-    return st.step() && st.integer(0) > 0;
+    const SqlRows r = db_->query("SELECT count(*) FROM users");
+    return !r.empty() && r[0].integer(0) > 0;
 }
 
-std::string SqliteUserDirectory::storedHash(const std::string& name) const {
+std::string UserDirectory::storedHash(const std::string& name) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    const std::optional<Row> row = findUser(db_.get(), name);
+    const std::optional<Row> row = findUser(*db_, name);
     return row ? row->hash : std::string();
 }
 

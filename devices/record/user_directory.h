@@ -1,17 +1,18 @@
 #pragma once
-// The station's users in the production record's SQLite file (IEC 62443-4-2 CR 1.1
-// identification and authentication, CR 1.7 strength of password-based authentication, CR 1.11
-// unsuccessful login attempts). Passwords are stored only as Argon2id hashes (libsodium
-// crypto_pwhash_str, its interactive limits: 2 passes over 64 MiB); at least 8 characters; five
-// failed log-ins lock the user out for a minute. The first user must be an administrator and
-// the last administrator cannot be removed. Every change and every log-in, failed or not, goes
-// to the audit trail.
+// The station's users in the production record (a SQLite file or a PostgreSQL database) (IEC
+// 62443-4-2 CR 1.1 identification and authentication, CR 1.7 strength of password-based
+// authentication, CR 1.11 unsuccessful login attempts). Passwords are stored only as Argon2id
+// hashes (libsodium crypto_pwhash_str, its interactive limits: 2 passes over 64 MiB); at least 8
+// characters; five failed log-ins lock the user out for a minute. The first user must be an
+// administrator and the last administrator cannot be removed. Every change and every log-in, failed
+// or not, goes to the audit trail.
 #include "core/common/outcome.h"
 #include "core/record/audit.h"
-#include "devices/record/production_db.h"
+#include "devices/record/record_db.h"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -29,7 +30,7 @@ struct UserAccount {
 
 using LoginResult = LoginAnswer;
 
-class SqliteUserDirectory final : public UserAuthenticator {
+class UserDirectory final : public UserAuthenticator {
   public:
     static constexpr int kMinPasswordLength = 8;
     static constexpr int kMaxPasswordLength = 128;
@@ -37,11 +38,12 @@ class SqliteUserDirectory final : public UserAuthenticator {
     static constexpr std::int64_t kLockoutMs = 60'000;
     using Clock = std::function<std::int64_t()>; // ms since the epoch
 
-    // Opens (creates, migrates) the record at `path`; throws RecordError. `audit` outlives this.
-    SqliteUserDirectory(const std::string& path, AuditSink& audit, Clock clock = unixMsNow);
-    ~SqliteUserDirectory() override;
-    SqliteUserDirectory(const SqliteUserDirectory&) = delete;
-    SqliteUserDirectory& operator=(const SqliteUserDirectory&) = delete;
+    // Opens (creates, migrates) the record `where` (record_db.h); throws RecordError. `audit`
+    // outlives this.
+    UserDirectory(const std::string& where, AuditSink& audit, Clock clock = unixMsNow);
+    ~UserDirectory() override;
+    UserDirectory(const UserDirectory&) = delete;
+    UserDirectory& operator=(const UserDirectory&) = delete;
 
     std::vector<UserAccount> users() const; // by name
     bool hasAdministrator() const;
@@ -63,10 +65,9 @@ class SqliteUserDirectory final : public UserAuthenticator {
     std::string storedHash(const std::string& name) const;
 
   private:
-    std::string path_;
     AuditSink& audit_;
     Clock clock_;
-    SqliteHandle db_;
+    std::unique_ptr<RecordDb> db_; // [mutex_]
     mutable std::mutex mutex_;
 };
 
