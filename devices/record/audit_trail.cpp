@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <stdexcept>
 
 namespace cutcell {
 namespace {
@@ -51,19 +52,21 @@ void AuditTrail::append(const AuditEvent& event) {
     if (rows_ > maxRecords_ && rows_ >= rollRetryAt_) rollIfFull();
 }
 
-// Past the bound the oldest tenth goes to an archive file first, then leaves the table, in one
-// write transaction that also marks audit_state.archiving (the delete trigger lets rows out only
-// while it is set; the mark also makes two rolling stations wait for each other). A crash
-// between the file and the commit leaves the records in both places, never in neither.
+// Past the bound the oldest tenth goes to an archive file first (outside any transaction: a
+// slow disk holds no lock), then leaves the table in one write transaction that marks
+// audit_state.archiving (the delete trigger lets rows out only while it is set; the mark also
+// makes two rolling stations wait for each other). The delete goes ahead only if the table
+// still holds exactly the archived rows up to the last one: a row another station committed
+// meanwhile below that id (ids are handed out before commit), or a roll of another station,
+// makes this one give up and try again later. A crash between the file and the commit leaves
+// the records in both places, never in neither.
 void AuditTrail::rollIfFull() {
     RecordDb& db = *db_;
-    RecordTransaction tx(db);
-    db.query("UPDATE audit_state SET archiving = 1");
-    const std::int64_t rows = rows_ = countRows(db); // after the mark: another roll is done
-    if (rows <= maxRecords_) return;                 // rolled back: nothing to roll
+    const std::int64_t rows = rows_ = countRows(db);
+    if (rows <= maxRecords_) return;
     const std::int64_t roll = rows - (maxRecords_ - maxRecords_ / 10);
     std::string lines;
-    std::int64_t first = 0, last = 0;
+    std::int64_t first = 0, last = 0, archived = 0;
     for (const SqlRow& r : db.query("SELECT id, time_ms, actor, event, key, old_value, "
                                     "new_value, unit, detail FROM audit ORDER BY id LIMIT ?1",
                                     {roll})) {
@@ -72,19 +75,36 @@ void AuditTrail::rollIfFull() {
         last = r.integer(0);
         if (first == 0) first = last;
         lines += json::write(toJson({last, e}), -1); // one line, ending in a line break
+        ++archived;
     }
     const fs::path file = fs::path(archiveDir_) / ("audit-" + std::to_string(first) + "-" +
                                                    std::to_string(last) + ".jsonl");
+    const auto retryLater = [&] {
+        rollRetryAt_ = rows + std::max<std::int64_t>(1, maxRecords_ / 10);
+    };
     try {
         fs::create_directories(archiveDir_);
+        // The archive is a new plain file: a link or a pipe planted under its name is refused.
+        if (std::error_code ec; fs::exists(fs::symlink_status(file, ec)) &&
+                                !fs::is_regular_file(fs::symlink_status(file, ec)))
+            throw std::runtime_error("it exists and is not a plain file");
         writeFileAtomically(file.string(), lines);
     } catch (const std::exception& e) {
-        // Tried again after another tenth of the bound, not at every event.
-        rollRetryAt_ = rows + std::max<std::int64_t>(1, maxRecords_ / 10);
+        retryLater(); // after another tenth of the bound, not at every event
         throw RecordError("audit trail " + db.where() + ": " + std::to_string(rows) +
                           " records exceed the bound of " + std::to_string(maxRecords_) +
                           " and the archive " + file.string() +
                           " cannot be written (every record is kept): " + e.what());
+    }
+    RecordTransaction tx(db);
+    db.query("UPDATE audit_state SET archiving = 1");
+    const SqlRows held =
+        db.query("SELECT count(*), coalesce(min(id), 0) FROM audit WHERE id <= ?1", {last});
+    if (held.empty() || held[0].integer(0) != archived || held[0].integer(1) != first) {
+        retryLater(); // the transaction rolls back; the file holds copies only
+        std::error_code ec;
+        fs::remove(file, ec);
+        return;
     }
     db.query("DELETE FROM audit WHERE id <= ?1", {last});
     db.query("UPDATE audit_state SET archiving = 0");

@@ -33,7 +33,9 @@ std::string reasonOf(const PGresult* res, pg_conn* conn) {
     const char* primary = res ? PQresultErrorField(res, PG_DIAG_MESSAGE_PRIMARY) : nullptr;
     if (!primary) return trimmed(PQerrorMessage(conn));
     std::string why = primary;
-    if (const char* detail = PQresultErrorField(res, PG_DIAG_MESSAGE_DETAIL))
+    // A detail that quotes a row ("Failing row contains (...)") could show a password hash.
+    if (const char* detail = PQresultErrorField(res, PG_DIAG_MESSAGE_DETAIL);
+        detail && std::string(detail).rfind("Failing row", 0) != 0)
         why += std::string(" (") + detail + ")";
     return why;
 }
@@ -71,9 +73,9 @@ std::string describePostgresConnection(const std::string& connection) {
     char* err = nullptr;
     PQconninfoOption* options = PQconninfoParse(connection.c_str(), &err);
     if (!options) {
-        const std::string why = err ? trimmed(err) : "out of memory";
+        // libpq's message may quote the string, password and all: not shown.
         PQfreemem(err);
-        return "postgresql:// (a connection string libpq cannot read: " + why + ")";
+        return "postgresql:// (a connection string libpq cannot read; check its syntax)";
     }
     std::string user, host, port, db;
     for (PQconninfoOption* o = options; o->keyword; ++o) {
@@ -95,9 +97,26 @@ void PgRecordDb::Closer::operator()(pg_conn* c) const {
 
 PgRecordDb::PgRecordDb(const std::string& connection)
     : where_(describePostgresConnection(connection)) {
-    // Defaults first: the string's own settings given later override them.
-    const char* keys[] = {"connect_timeout", "application_name", "dbname", nullptr};
-    const char* values[] = {"5", "cutcell", connection.c_str(), nullptr};
+    if (char* err = nullptr; PQconninfoOption* o = PQconninfoParse(connection.c_str(), &err))
+        PQconninfoFree(o);
+    else {
+        PQfreemem(err);
+        throw RecordError("production record " + where_);
+    }
+    // Defaults first: the string's own settings given later override them. Keep-alives and a
+    // TCP user time-out find a dead server in seconds, not minutes (a store's mutex is held
+    // meanwhile); the client encoding is a connection setting, so it survives a reconnect.
+    const char* keys[] = {"connect_timeout",
+                          "application_name",
+                          "keepalives_idle",
+                          "keepalives_interval",
+                          "keepalives_count",
+                          "tcp_user_timeout",
+                          "dbname",
+                          "client_encoding",
+                          nullptr};
+    const char* values[] = {"5",     "cutcell",          "10",   "5",    "3",
+                            "15000", connection.c_str(), "UTF8", nullptr};
     conn_.reset(PQconnectdbParams(keys, values, 1));
     if (!conn_ || PQstatus(conn_.get()) != CONNECTION_OK)
         throw RecordError("production record " + where_ + ": cannot connect (" +
@@ -106,7 +125,6 @@ PgRecordDb::PgRecordDb(const std::string& connection)
     where_ = "postgresql://" + std::string(PQuser(conn_.get())) + "@" + PQhost(conn_.get()) + ":" +
              PQport(conn_.get()) + "/" + PQdb(conn_.get());
     try {
-        exec("SET client_encoding = 'UTF8'");
         migrate();
     } catch (const RecordError& e) {
         throw RecordError("production record " + where_ + ": " + e.what());
@@ -125,7 +143,11 @@ void PgRecordDb::ensureConnected() {
 
 void PgRecordDb::exec(const std::string& sql) {
     ensureConnected();
-    const Result res(PQexec(conn_.get(), sql.c_str()));
+    Result res(PQexec(conn_.get(), sql.c_str()));
+    if (PQstatus(conn_.get()) == CONNECTION_BAD && !inTransaction_) { // as in query()
+        PQreset(conn_.get());
+        if (PQstatus(conn_.get()) == CONNECTION_OK) res.reset(PQexec(conn_.get(), sql.c_str()));
+    }
     const ExecStatusType s = res ? PQresultStatus(res.get()) : PGRES_FATAL_ERROR;
     if (s != PGRES_COMMAND_OK && s != PGRES_TUPLES_OK)
         throw RecordError(reasonOf(res.get(), conn_.get()));
@@ -153,9 +175,18 @@ SqlRows PgRecordDb::query(const std::string& sql, const std::vector<SqlValue>& p
         }
         values[i] = text[i].c_str();
     }
-    const Result res(PQexecParams(conn_.get(), dollarParameters(sql).c_str(),
-                                  static_cast<int>(params.size()), types.data(), values.data(),
-                                  nullptr, nullptr, 0));
+    const std::string statement = dollarParameters(sql);
+    const auto run = [&] {
+        return Result(PQexecParams(conn_.get(), statement.c_str(), static_cast<int>(params.size()),
+                                   types.data(), values.data(), nullptr, nullptr, 0));
+    };
+    Result res = run();
+    // A session the server dropped (a restart, a network cut) fails the statement that meets
+    // it before the server runs it: outside a transaction it is sent once more on a new one.
+    if (PQstatus(conn_.get()) == CONNECTION_BAD && !inTransaction_) {
+        PQreset(conn_.get());
+        if (PQstatus(conn_.get()) == CONNECTION_OK) res = run();
+    }
     const ExecStatusType s = res ? PQresultStatus(res.get()) : PGRES_FATAL_ERROR;
     if (s != PGRES_COMMAND_OK && s != PGRES_TUPLES_OK)
         throw RecordError("production record: " + reasonOf(res.get(), conn_.get()));
@@ -256,6 +287,11 @@ std::string PgRecordDb::integrityCheck() {
         findings = std::to_string(orphans[0].integer(0)) + " alarm(s) without their run";
     if (query("SELECT 1 FROM pg_extension WHERE extname = 'amcheck'").empty())
         return findings.empty() ? "ok (indexes not checked: no amcheck extension)" : findings;
+    const SqlRows may = query("SELECT has_function_privilege('bt_index_check(regclass, boolean)', "
+                              "'execute')");
+    if (may.empty() || may[0].integer(0) == 0)
+        return findings.empty() ? "ok (indexes not checked: this user may not run amcheck)"
+                                : findings;
     try {
         // Each B-tree index of the record's tables, its heap included (every row indexed).
         query("SELECT bt_index_check(c.oid, true) FROM pg_index i"

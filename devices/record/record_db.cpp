@@ -3,6 +3,8 @@
 #include "devices/record/pg_record_db.h"
 #include "devices/record/sqlite_record_db.h"
 
+#include <libpq-fe.h>
+
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
@@ -63,11 +65,23 @@ std::string SqlRow::text(int col) const {
 }
 
 bool isPostgresConnection(const std::string& where) {
-    if (where.rfind("postgresql://", 0) == 0 || where.rfind("postgres://", 0) == 0) return true;
-    // key=value form: it starts with one of libpq's keywords and '='.
-    for (const char* key : {"host=", "hostaddr=", "dbname=", "user=", "port=", "service="})
-        if (where.rfind(key, 0) == 0) return true;
-    return false;
+    const size_t start = where.find_first_not_of(" \t");
+    if (start == std::string::npos) return false;
+    const std::string w = where.substr(start);
+    if (w.rfind("postgresql://", 0) == 0 || w.rfind("postgres://", 0) == 0) return true;
+    // key=value form: its first word is one of libpq's keywords, followed by '='.
+    const size_t eq = w.find('=');
+    if (eq == std::string::npos) return false;
+    std::string key = w.substr(0, eq);
+    while (!key.empty() && (key.back() == ' ' || key.back() == '\t'))
+        key.pop_back();
+    bool known = false;
+    if (PQconninfoOption* options = PQconndefaults()) {
+        for (const PQconninfoOption* o = options; o->keyword; ++o)
+            known = known || key == o->keyword;
+        PQconninfoFree(options);
+    }
+    return known;
 }
 
 std::unique_ptr<RecordDb> openRecordDb(const std::string& where) {

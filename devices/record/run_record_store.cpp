@@ -10,14 +10,21 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 namespace cutcell {
 namespace {
 
+// The host a run's program ran on: its name and its machine id (cells cloned from one image
+// share a name, never a machine id; a shared server's record tells them apart).
 std::string hostName() {
     char name[256] = {};
-    if (gethostname(name, sizeof name - 1) != 0) return "unknown";
-    return name;
+    std::string host = gethostname(name, sizeof name - 1) == 0 ? name : "unknown";
+    std::ifstream id("/etc/machine-id");
+    std::string machineId;
+    if (std::getline(id, machineId) && machineId.size() >= 12)
+        host += " (" + machineId.substr(0, 12) + ")";
+    return host;
 }
 
 // Whether a process of this host still runs (kill(pid, 0) fails with ESRCH once it is gone).

@@ -42,11 +42,12 @@ std::string hashPassword(const std::string& password) {
     return out;
 }
 
-// A name as the trail may print it: at most 40 bytes, control characters as '?'.
+// A name as the trail may print it: at most 40 bytes of printable ASCII, anything else as '?'
+// (a byte cut out of a UTF-8 character would be refused by PostgreSQL's text).
 std::string printable(const std::string& name) {
     std::string out = name.substr(0, 40);
     for (char& c : out)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
     return out;
 }
 

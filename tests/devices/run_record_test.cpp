@@ -166,3 +166,31 @@ TEST(RunRecord, ARunOfEveryMachineLeavesItsRowWithTheFiguresOfItsRunLog) {
 
 } // namespace
 } // namespace cutcell
+
+namespace cutcell {
+namespace {
+
+// A PostgreSQL connection string may hold a password: it is recognised in every libpq form
+// (not taken for a file name) and never shown, even when libpq cannot read the string.
+TEST(RunRecord, APasswordInAConnectionStringIsNeverShown) {
+    EXPECT_TRUE(isPostgresConnection("postgresql://u:pw@db/cells"));
+    EXPECT_TRUE(isPostgresConnection("  password=s3cret-word host=127.0.0.1 dbname=x"));
+    EXPECT_TRUE(isPostgresConnection("sslmode=require host=db"));
+    EXPECT_FALSE(isPostgresConnection("/home/op/production.db"));
+    EXPECT_FALSE(isPostgresConnection("cell=3.db")); // no libpq keyword: a file's name
+    for (const std::string where :
+         {std::string("password=s3cret-word host=127.0.0.1 port=1 dbname=x connect_timeout=2"),
+          std::string("postgresql://u:s3cret-word@127.0.0.1:1/x?connect_timeout=2"),
+          std::string("postgresql://u:s3cret-word%zz@[::1/x")}) {
+        try {
+            RunRecordStore r(where, "op");
+            ADD_FAILURE() << "opened " << where;
+        } catch (const RecordError& e) {
+            EXPECT_EQ(std::string(e.what()).find("s3cret"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("postgresql://"), std::string::npos) << e.what();
+        }
+    }
+}
+
+} // namespace
+} // namespace cutcell

@@ -39,7 +39,10 @@ class PgTestServer {
             if (!owner) return fail(why, "running as root and no \"postgres\" user to run it");
             as = "runuser -u postgres -- ";
         }
-        dir_ = fs::temp_directory_path() / ("cutcell_pg_" + std::to_string(getpid()));
+        // The postgres user must reach the folder: /tmp itself when root hands it over (a
+        // TMPDIR under /root would not do).
+        const fs::path base = owner ? fs::path("/tmp") : fs::temp_directory_path();
+        dir_ = base / ("cutcell_pg_" + std::to_string(getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         if (owner && chown(dir_.c_str(), owner->pw_uid, owner->pw_gid) != 0)
@@ -60,6 +63,10 @@ class PgTestServer {
             return fail(why, "the server did not start (" + tail(log) + ")");
         restartCommand_ = ctl + "-m fast restart > /dev/null 2>&1";
         stopCommand_ = as + bin + "/pg_ctl -D " + data + " -m immediate -w stop > /dev/null 2>&1";
+        // A test killed (a crash, ctest's time-out) cannot stop its server: a watchdog does,
+        // once this process is gone, and removes the folder.
+        run("(while kill -0 " + std::to_string(getpid()) + " 2>/dev/null; do sleep 1; done; " +
+            stopCommand_ + "; rm -rf " + dir_.string() + ") > /dev/null 2>&1 &");
         return true;
     }
 
