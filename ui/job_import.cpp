@@ -3,9 +3,15 @@
 #include "core/job/job_io.h"
 
 #include <QAction>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
 
 namespace CutCell::ui {
 
@@ -73,6 +79,51 @@ void showImportReport(QWidget* parent, const QString& path, const QStringList& r
                                (report.size() > 8 ? QStringLiteral("\n...") : QString()));
     }
     box.exec();
+}
+
+void showImportBatchReport(QWidget* parent, const cutcell::ImportBatch& batch,
+                           const QString& folder) {
+    QDialog dialog(parent);
+    dialog.setWindowTitle(QObject::tr("Import report"));
+    auto* layout = new QVBoxLayout(&dialog);
+    const int imported = static_cast<int>(batch.rows.size()) - batch.refused;
+    layout->addWidget(new QLabel(
+        QObject::tr("%1 file(s): %2 imported, %3 refused. The jobs and import-report.csv are in "
+                    "%4.")
+            .arg(batch.rows.size())
+            .arg(imported)
+            .arg(batch.refused)
+            .arg(folder),
+        &dialog));
+    QStringList headers{QObject::tr("File"), QObject::tr("Result")};
+    for (const std::string& c : batch.columns)
+        headers << QString::fromStdString(c);
+    headers << QObject::tr("Refused because");
+    auto* table = new QTableWidget(static_cast<int>(batch.rows.size()),
+                                   static_cast<int>(headers.size()), &dialog);
+    table->setObjectName(QStringLiteral("importBatchTable"));
+    table->setHorizontalHeaderLabels(headers);
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    for (int r = 0; r < table->rowCount(); ++r) {
+        const cutcell::ImportBatchRow& row = batch.rows[static_cast<size_t>(r)];
+        int c = 0;
+        const auto cell = [&](const QString& text) {
+            table->setItem(r, c++, new QTableWidgetItem(text));
+        };
+        cell(QString::fromStdString(row.file));
+        cell(row.imported ? QObject::tr("imported") : QObject::tr("refused"));
+        for (const std::string& col : batch.columns)
+            cell(QString::fromStdString(cutcell::ImportBatch::fact(row, col)));
+        cell(QString::fromStdString(row.reason));
+    }
+    table->horizontalHeader()->setStretchLastSection(true);
+    table->resizeColumnsToContents();
+    layout->addWidget(table);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    layout->addWidget(buttons);
+    dialog.resize(1000, 480);
+    dialog.exec();
 }
 
 } // namespace CutCell::ui

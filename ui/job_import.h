@@ -6,6 +6,7 @@
 //
 // Threading contract: GUI thread only (an import is a short parse).
 #include "core/job/job.h"
+#include "core/machine/import_batch.h"
 #include "core/machine/job_importer.h"
 
 #include <QString>
@@ -36,5 +37,9 @@ void addImportActions(QMenu* menu, QWidget* parent,
                       const std::function<void(const std::string&)>& onImport);
 // The report in a dialog (title, file, the lines); nothing to show -> a short "nothing left out".
 void showImportReport(QWidget* parent, const QString& path, const QStringList& report);
+// A batch's table in a dialog: a row per file (imported with the importer's facts, or refused
+// with the line and the reason), the folder of the jobs and of import-report.csv.
+void showImportBatchReport(QWidget* parent, const cutcell::ImportBatch& batch,
+                           const QString& folder);
 
 } // namespace CutCell::ui

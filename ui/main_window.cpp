@@ -32,6 +32,7 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFrame>
@@ -548,13 +549,67 @@ bool MainWindow::importJob(const std::string& importer, const QString& path, QSt
     return true;
 }
 
+bool MainWindow::importJobs(const std::string& importer, const QStringList& paths,
+                            const QString& folder, QString* error) {
+    cutcell::JobImporter i;
+    QString err;
+    cutcell::ImportBatch batch;
+    try {
+        if (!cutcell::findJobImporter(importer, &i))
+            throw std::runtime_error("no importer \"" + importer + "\"");
+        std::vector<std::string> files;
+        for (const QString& p : paths)
+            files.push_back(p.toStdString());
+        batch = cutcell::importBatch(i, files, folder.toStdString());
+    } catch (const std::exception& e) {
+        err = tr("Cannot import the files: %1").arg(QString::fromUtf8(e.what()));
+        log_->add(Severity::Error, err);
+        showFileError(tr("Cannot import the files"), err);
+        if (error) *error = err;
+        return false;
+    }
+    QString first;
+    for (const cutcell::ImportBatchRow& r : batch.rows) {
+        const QString file = QString::fromStdString(r.file);
+        if (!r.imported) {
+            log_->add(Severity::Error,
+                      tr("%1: refused: %2").arg(file, QString::fromStdString(r.reason)));
+            continue;
+        }
+        for (const std::string& line : r.report)
+            log_->add(Severity::Warning,
+                      QStringLiteral("%1: %2").arg(file, QString::fromStdString(line)));
+        if (first.isEmpty()) first = QDir(folder).filePath(QString::fromStdString(r.job));
+    }
+    log_->add(Severity::Info, tr("Imported %1 of %2 file(s) into %3 (import-report.csv)")
+                                  .arg(batch.rows.size() - static_cast<size_t>(batch.refused))
+                                  .arg(batch.rows.size())
+                                  .arg(folder));
+    if (importBatchPrompt_)
+        importBatchPrompt_(batch);
+    else if (isVisible())
+        showImportBatchReport(this, batch, folder);
+    if (first.isEmpty()) {
+        if (error) *error = tr("No file was imported.");
+        return false;
+    }
+    return openJob(first, error);
+}
+
 void MainWindow::importFromMenu(const std::string& importer) {
     if (!maybeSave()) return;
     cutcell::JobImporter i;
     if (!cutcell::findJobImporter(importer, &i)) return;
-    const QString p = QFileDialog::getOpenFileName(
+    const QStringList paths = QFileDialog::getOpenFileNames(
         this, tr("Import %1").arg(QString::fromStdString(i.title)), {}, importFileFilter(i));
-    if (!p.isEmpty()) importJob(importer, p);
+    if (paths.size() == 1) importJob(importer, paths.front());
+    if (paths.size() < 2) return;
+    const QString folder = importFolderPrompt_
+                               ? importFolderPrompt_()
+                               : QFileDialog::getExistingDirectory(
+                                     this, tr("Folder for the %1 imported jobs").arg(paths.size()),
+                                     QFileInfo(paths.front()).absolutePath());
+    if (!folder.isEmpty()) importJobs(importer, paths, folder);
 }
 
 void MainWindow::newJobFromMenu() {

@@ -11,6 +11,11 @@
 #include <QMainWindow>
 
 #include <functional>
+#include <string>
+
+namespace cutcell {
+struct ImportBatch;
+}
 
 class QLabel;
 class QTabWidget;
@@ -67,7 +72,19 @@ class MainWindow : public QMainWindow {
     // File -> Import <format>: the file through that importer as a new document; its report
     // lines go to the event log (warnings) and, while the window is on screen, a dialog.
     bool importJob(const std::string& importer, const QString& path, QString* error = nullptr);
+    // Several files at once: one job per file into `folder` (and its import-report.csv), the
+    // table in a dialog (or the batch prompt), the first imported job opened. False when none
+    // was imported or the folder cannot be written (*error says why).
+    bool importJobs(const std::string& importer, const QStringList& paths, const QString& folder,
+                    QString* error = nullptr);
+    // File -> Import <format>: one file or several (a batch asks for the jobs' folder).
     void importFromMenu(const std::string& importer);
+    // Replaces the batch's folder question and its table dialog (tests).
+    void setImportBatchPrompts(std::function<QString()> folder,
+                               std::function<void(const cutcell::ImportBatch&)> report) {
+        importFolderPrompt_ = std::move(folder);
+        importBatchPrompt_ = std::move(report);
+    }
     // Replaces the import report dialog (tests): gets the file and the report lines.
     void setImportReportPrompt(std::function<void(const QString&, const QStringList&)> prompt) {
         importReportPrompt_ = std::move(prompt);
@@ -176,6 +193,8 @@ class MainWindow : public QMainWindow {
     std::function<std::string()> machinePrompt_;
     std::function<void(const QString&, const QString&)> errorPrompt_;
     std::function<void(const QString&, const QStringList&)> importReportPrompt_;
+    std::function<QString()> importFolderPrompt_;
+    std::function<void(const cutcell::ImportBatch&)> importBatchPrompt_;
     // Display frames: the panels follow the telemetry at most every kDisplayFrameMs.
     static constexpr int kDisplayFrameMs = 60;
     QElapsedTimer sinceDisplayFrame_;

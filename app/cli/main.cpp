@@ -164,9 +164,15 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                              "does not do, line by line")
                                 .c_str(),
                             [&io] { return runImport(io); });
-        imp->add_option("FILE", io.file, "the file to import")->type_name("FILE")->required();
-        imp->add_option("--out", io.out, "the job file (written atomically)")
-            ->type_name("JOB.json")
+        imp->add_option("FILE", io.file,
+                        "the file to import, or a folder: every file in it matching " + patterns +
+                            " (a batch: one job per piece)")
+            ->type_name("FILE|DIR")
+            ->required();
+        imp->add_option("--out", io.out,
+                        "the job file (written atomically); for a folder, the folder the jobs "
+                        "and import-report.csv go to")
+            ->type_name("JOB.json|DIR")
             ->required();
     }
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cutcell {
@@ -22,6 +23,9 @@ struct ImportResult {
     // One line per thing of the file the job does not do or takes with a change
     // ("line 23: BO hole 22 mm on face v (front): not cut by this machine").
     std::vector<std::string> report;
+    // What the piece is, for a batch's report table: (column, value) in column order, e.g.
+    // ("piece", "B12"), ("section", "IPE 300"), ("length_mm", "4978"), ("ignored", "3 holes").
+    std::vector<std::pair<std::string, std::string>> facts;
 };
 
 struct JobImporter {

@@ -310,6 +310,8 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "path arm changes branch (joint jump %.1f deg)"),
     QT_TRANSLATE_NOOP("CoreMessage", "groove arm"),
     QT_TRANSLATE_NOOP("CoreMessage", "groove arm changes branch (joint jump %.1f deg)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s has %zu bytes: at most %d"),
+    QT_TRANSLATE_NOOP("CoreMessage", "piece.quantity = %d pieces is outside [1, %d] pieces"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s.root_face_mm = %.6g mm: a V groove has no root face (use Y)"),
     QT_TRANSLATE_NOOP("CoreMessage", "end_cut.setup = %d is outside [1, %d]"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s.min_deg = %.6g deg must be below max_deg = %.6g deg"),
@@ -520,6 +522,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 510;
+const int kCoreMessageCount = 512;
 
 } // namespace CutCell::ui

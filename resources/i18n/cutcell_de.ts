@@ -1224,7 +1224,17 @@
         <translation>tracking.amplitude_m = %.6g m um tracking.offset_m = %.6g m: die Führungsgröße überstreicht [%.6g, %.6g] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+26"/>
+        <source>%s has %zu bytes: at most %d</source>
+        <translation>%s hat %zu Bytes: höchstens %d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>piece.quantity = %d pieces is outside [1, %d] pieces</source>
+        <translation>piece.quantity = %d Stück liegt außerhalb von [1, %d] Stück</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
         <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
     </message>
@@ -2194,7 +2204,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-264"/>
+        <location line="-266"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2459,7 +2469,7 @@
         <translation>der Schnitt hat keine Bahn</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>%s.root_face_mm = %.6g mm: a V groove has no root face (use Y)</source>
         <translation>%s.root_face_mm = %.6g mm: eine V-Fuge hat keinen Steg (Y verwenden)</translation>
     </message>
@@ -2484,7 +2494,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-76"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2504,7 +2514,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+75"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -4030,7 +4040,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+156"/>
+        <location filename="../../ui/main_window.cpp" line="+157"/>
         <source>Event log</source>
         <translation>Ereignisprotokoll</translation>
     </message>
@@ -4222,12 +4232,42 @@ entriegeln</translation>
         <translation>%1 als neuer Auftrag importiert (%2 Berichtszeilen); zum Behalten speichern.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+23"/>
+        <source>Cannot import the files: %1</source>
+        <translation>Die Dateien können nicht importiert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cannot import the files</source>
+        <translation>Die Dateien können nicht importiert werden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: refused: %2</source>
+        <translation>%1: abgelehnt: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Imported %1 of %2 file(s) into %3 (import-report.csv)</source>
+        <translation>%1 von %2 Datei(en) nach %3 importiert (import-report.csv)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No file was imported.</source>
+        <translation>Keine Datei wurde importiert.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
+        <source>Folder for the %1 imported jobs</source>
+        <translation>Ordner für die %1 importierten Aufträge</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>No machine &quot;%1&quot; in this build.</source>
         <translation>Keine Maschine &quot;%1&quot; in dieser Programmversion.</translation>
     </message>
@@ -5163,7 +5203,7 @@ letzte %1 s</translation>
         <translation>Störung - Ereignisprotokoll prüfen, dann Reset drücken</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>run aborted - press Home to cut again (or resume in the cut recovery box)</source>
         <translation>Ablauf abgebrochen - für neuen Schnitt Referenzieren drücken (oder im Feld Wiederaufnahme fortsetzen)</translation>
     </message>
@@ -5203,7 +5243,7 @@ letzte %1 s</translation>
         <translation>Neu verbinden abgelehnt: die Antriebe sind freigegeben (%1); ein Neuverbinden nimmt ihnen das Moment. Zuerst abbrechen oder anhalten.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+33"/>
         <source>Part counted as good by the operator (%1).</source>
         <translation>Teil vom Bediener als gut gezählt (%1).</translation>
     </message>
@@ -5243,7 +5283,7 @@ letzte %1 s</translation>
         <translation>Tippen abgelehnt: Achse %1 steht an ihrer Begrenzung.</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+51"/>
         <source>emergency stop during the run</source>
         <translation>NOT-HALT während des Ablaufs</translation>
     </message>
@@ -5352,7 +5392,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelEndCutForm</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+225"/>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+242"/>
         <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
         <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
     </message>
@@ -5450,7 +5490,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelSectionForm</name>
     <message>
-        <location line="-275"/>
+        <location line="-292"/>
         <source>L (equal legs)</source>
         <translation>L (gleichschenklig)</translation>
     </message>
@@ -5540,7 +5580,17 @@ letzte %1 s</translation>
         <translation>Stablänge</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+9"/>
+        <source>Piece (from the detailing software)</source>
+        <translation>Teil (aus der Konstruktionssoftware)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Order %1, drawing %2, phase %3, piece mark %4, steel %5, quantity %6 (the job cuts one piece)</source>
+        <translation>Auftrag %1, Zeichnung %2, Phase %3, Positionsnummer %4, Stahl %5, Stückzahl %6 (der Auftrag schneidet ein Teil)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>User-defined dimensions: checked against the section&apos;s own limits (the root radius must leave a flat flange).</source>
         <translation>Benutzerdefinierte Maße: geprüft gegen die Grenzen des Profils (der Ausrundungsradius muss einen ebenen Flansch übrig lassen).</translation>
     </message>
@@ -5692,7 +5742,7 @@ letzte %1 s</translation>
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/job_import.cpp" line="+17"/>
+        <location filename="../../ui/job_import.cpp" line="+23"/>
         <source>No importer &quot;%1&quot; in this build.</source>
         <translation>Kein Import &quot;%1&quot; in dieser Version.</translation>
     </message>
@@ -5713,11 +5763,12 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+19"/>
         <source>Import report</source>
         <translation>Importbericht</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-16"/>
         <source>%1: imported; the job does everything the file asks.</source>
         <translation>%1: importiert; der Auftrag setzt alles um, was die Datei verlangt.</translation>
     </message>
@@ -5728,6 +5779,36 @@ letzte %1 s</translation>
             <numerusform>%1: importiert. %n Angabe der Datei setzt der Auftrag nicht um (auch im Ereignisprotokoll):</numerusform>
             <numerusform>%1: importiert. %n Angaben der Datei setzt der Auftrag nicht um (auch im Ereignisprotokoll):</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 file(s): %2 imported, %3 refused. The jobs and import-report.csv are in %4.</source>
+        <translation>%1 Datei(en): %2 importiert, %3 abgelehnt. Die Aufträge und import-report.csv liegen in %4.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refused because</source>
+        <translation>Abgelehnt, weil</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>imported</source>
+        <translation>importiert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>refused</source>
+        <translation>abgelehnt</translation>
     </message>
     <message>
         <location filename="../../ui/machine/machine_choice.cpp" line="+19"/>
@@ -6005,7 +6086,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+196"/>
+        <location filename="../../app/gui/main.cpp" line="+197"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>

@@ -3,12 +3,15 @@
 // a broken file goes to the error prompt with its line and leaves the document alone.
 #include "core/job/job_io.h"
 #include "core/json/json.h"
+#include "core/machine/import_batch.h"
 #include "core/machine/job_importer.h"
 #include "ui/forms/job_editor.h"
 #include "ui/job_document.h"
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using CutCell::ui::MainWindow;
@@ -71,6 +74,37 @@ class TestJobImport : public QObject {
         QVERIFY2(err.contains("line 11: length (header field 9)"), qPrintable(err));
         QCOMPARE(shown.size(), 1);
         QCOMPARE(text(w.editor()->job()), before);
+    }
+
+    // Several files at once (File -> Import with a multiple selection): one job per file in the
+    // chosen folder with import-report.csv, the table's rows (a plate refused naming its line),
+    // the first imported job opened with its piece marks shown on the Section page.
+    void severalFilesImportAsABatchWithItsTable() {
+        MainWindow w(nullptr);
+        QTemporaryDir out;
+        QVERIFY(out.isValid());
+        std::vector<cutcell::ImportBatchRow> rows;
+        w.setImportBatchPrompts([&out] { return out.path(); },
+                                [&rows](const cutcell::ImportBatch& b) { rows = b.rows; });
+        const QString pub = QStringLiteral(CUTCELL_SOURCE_DIR "/tests/data/dstv/public/");
+        const QStringList files{pub + "tluijken-dstv_P1.nc", pub + "tluijken-dstv_P1565.nc",
+                                pub + "dstv-tools_2519.nc1"};
+        QString err;
+        QVERIFY2(w.importJobs("dstv", files, out.path(), &err), qPrintable(err));
+        QCOMPARE(rows.size(), size_t(3));
+        QVERIFY(rows[0].imported && rows[2].imported);
+        QVERIFY(!rows[1].imported);
+        QVERIFY2(QString::fromStdString(rows[1].reason).startsWith("line 10: profile code B"),
+                 rows[1].reason.c_str());
+        QVERIFY(QFile::exists(out.filePath("tluijken-dstv_P1.json")));
+        QVERIFY(QFile::exists(out.filePath("dstv-tools_2519.json")));
+        QVERIFY(QFile::exists(out.filePath("import-report.csv")));
+        QCOMPARE(w.document()->path(), out.filePath("tluijken-dstv_P1.json"));
+        auto* marks = w.findChild<QLabel*>("pieceMarks");
+        QVERIFY(marks);
+        QVERIFY2(marks->text().contains("B_1") && marks->text().contains("A992") &&
+                     marks->text().contains("PROJECT-1"),
+                 qPrintable(marks->text()));
     }
 };
 

@@ -104,6 +104,58 @@ json::Value writeDrives(const SectionSteelSpec& s) {
     return drives;
 }
 
+// piece: {order, drawing, phase, mark, steel_grade, quantity}: marks of at most 64 printable
+// characters (as a DSTV header field holds them), a whole quantity in [1, 1e6].
+constexpr int kMaxMarkLength = 64;
+constexpr int kMaxQuantity = 1'000'000;
+
+PieceMarks readPieceMarks(SectionReader p) {
+    PieceMarks m;
+    m.order = p.string("order", "");
+    m.drawing = p.string("drawing", "");
+    m.phase = p.string("phase", "");
+    m.mark = p.string("mark", "");
+    m.steel_grade = p.string("steel_grade", "");
+    m.quantity = p.integer("quantity", "pieces", 1, 1, kMaxQuantity);
+    p.finish();
+    return m;
+}
+
+json::Object writePieceMarks(const PieceMarks& m) {
+    json::Object o;
+    const std::pair<const char*, const std::string*> marks[] = {{"order", &m.order},
+                                                                {"drawing", &m.drawing},
+                                                                {"phase", &m.phase},
+                                                                {"mark", &m.mark},
+                                                                {"steel_grade", &m.steel_grade}};
+    for (const auto& [key, value] : marks)
+        if (!value->empty()) o.emplace_back(key, *value);
+    o.emplace_back("quantity", m.quantity);
+    return o;
+}
+
+void checkPieceMarks(IssueChecker& c, const PieceMarks& m) {
+    const std::pair<const char*, const std::string*> marks[] = {{"order", &m.order},
+                                                                {"drawing", &m.drawing},
+                                                                {"phase", &m.phase},
+                                                                {"mark", &m.mark},
+                                                                {"steel_grade", &m.steel_grade}};
+    for (const auto& [key, value] : marks) {
+        const std::string k = std::string("piece.") + key;
+        if (value->size() > static_cast<size_t>(kMaxMarkLength))
+            c.add(k, messageC("%s has %zu bytes: at most %d", k.c_str(), value->size(),
+                              kMaxMarkLength));
+        for (const char ch : *value)
+            if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) {
+                c.add(k, k + " holds a control character (marks are printable text)");
+                break;
+            }
+    }
+    if (m.quantity < 1 || m.quantity > kMaxQuantity)
+        c.add("piece.quantity", messageC("piece.quantity = %d pieces is outside [1, %d] pieces",
+                                         m.quantity, kMaxQuantity));
+}
+
 using Field = SectionField<SectionSteelSpec>;
 using S = SectionSteelSpec;
 constexpr FieldCheck kRange = FieldCheck::Range, kPositive = FieldCheck::Positive;
@@ -240,6 +292,7 @@ SectionSteelSpec readSteelSection(SectionReader& m) {
         s.length_mm = sec.number("length_mm", "mm", d.length_mm);
         sec.finish();
     }
+    if (m.has("piece")) s.piece = readPieceMarks(m.child("piece"));
     s.cut = EndCutSpec{}; // an end cut left out of the file is a square cut, setup 1
     readFields(m, sectionSteelFields(), s);
     return s;
@@ -260,6 +313,7 @@ void writeSteelSection(const SectionSteelSpec& s, json::Object& out) {
         sec.emplace_back("length_mm", s.length_mm);
         out.emplace_back("section", std::move(sec));
     }
+    if (!s.piece.empty()) out.emplace_back("piece", writePieceMarks(s.piece));
     for (auto& member : writeFields(sectionSteelFields(), s))
         out.push_back(std::move(member));
 }
@@ -268,6 +322,7 @@ void checkSteelSpec(IssueChecker& c, const SectionSteelSpec& s, double periodS) 
     for (const auto& [k, m] : checkSectionDims(s.section, "section"))
         c.add(k, m);
     c.positive("section.length_mm", s.length_mm, 50, 24000, "mm");
+    checkPieceMarks(c, s.piece);
     checkFields(c, sectionSteelFields(), s);
     const struct {
         const char* key;

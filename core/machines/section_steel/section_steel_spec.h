@@ -9,6 +9,7 @@
 #include "core/machines/section_steel/section_catalogue.h"
 
 #include <array>
+#include <string>
 
 namespace cutcell::section_steel {
 
@@ -42,6 +43,18 @@ struct EndCutSpec {
 
 inline constexpr int kLastSetup = 2;
 
+// Who the piece is for, as the detailing software marked it (a DSTV header's order, drawing,
+// phase and piece marks, steel grade and quantity); shown to the operator, not used by the cut.
+// Absent from a job written by hand: all empty, quantity 1.
+struct PieceMarks {
+    std::string order, drawing, phase, mark, steel_grade;
+    int quantity = 1;
+    bool empty() const {
+        return order.empty() && drawing.empty() && phase.empty() && mark.empty() &&
+               steel_grade.empty() && quantity == 1;
+    }
+};
+
 struct ArmJointLimit {
     double min_deg = -180, max_deg = 180;
 };
@@ -50,6 +63,7 @@ struct SectionSteelSpec : MachineSpecOf<SectionSteelSpec> {
     SectionDims section;       // from the catalogue (designation) or user-defined
     bool user_defined = false; // written as dimensions rather than a designation
     double length_mm = 1000;   // of the bar (drawn; only its end at x = 0 is cut)
+    PieceMarks piece;
     EndCutSpec cut;
     double speed_mm_s = 5;        // along the outline
     double ramp_s = 0.5;          // to and from the cutting speed

@@ -157,6 +157,14 @@ SectionSteelSectionForm::SectionSteelSectionForm(JobEditor* editor, QWidget* par
     source_->setObjectName("sectionSource");
     source_->setWordWrap(true);
     mainLayout()->addWidget(source_);
+    pieceBox_ = new QGroupBox(tr("Piece (from the detailing software)"), this);
+    auto* fp = new QVBoxLayout(pieceBox_);
+    piece_ = new QLabel(pieceBox_);
+    piece_->setObjectName("pieceMarks");
+    piece_->setWordWrap(true);
+    piece_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    fp->addWidget(piece_);
+    mainLayout()->addWidget(pieceBox_);
     mainLayout()->addStretch(1);
 
     // A new series or designation changes the dimensions shown (bound fields reload only when
@@ -186,6 +194,15 @@ void SectionSteelSectionForm::reloadExtra(const Job& job) {
 void SectionSteelSectionForm::refresh(const Job& job) {
     const SectionSteelSpec* s = specOf(job);
     if (!s) return;
+    pieceBox_->setVisible(!s->piece.empty());
+    const auto mark = [](const std::string& v) {
+        return v.empty() ? QStringLiteral("-") : QString::fromStdString(v);
+    };
+    piece_->setText(tr("Order %1, drawing %2, phase %3, piece mark %4, steel %5, quantity %6 "
+                       "(the job cuts one piece)")
+                        .arg(mark(s->piece.order), mark(s->piece.drawing), mark(s->piece.phase),
+                             mark(s->piece.mark), mark(s->piece.steel_grade))
+                        .arg(s->piece.quantity));
     refreshing_ = true;
     const int series = seriesOf(*s);
     {

@@ -13,7 +13,8 @@ class QLabel;
 namespace CutCell::ui {
 
 // The section: a catalogue series (IPE, HEA, HEB, UPN, UPE, equal and unequal angles) and its
-// designation, or user-defined dimensions (shape, h, b, tw, tf, r); the bar's length.
+// designation, or user-defined dimensions (shape, h, b, tw, tf, r); the bar's length; the
+// piece's marks (order, drawing, phase, piece mark, steel grade, quantity), shown read-only.
 class SectionSteelSectionForm : public JobForm {
     Q_OBJECT
   public:
@@ -37,6 +38,8 @@ class SectionSteelSectionForm : public JobForm {
     QComboBox* shape_ = nullptr;
     QDoubleSpinBox* dims_[6] = {}; // h, b, tw, tf, r, r2
     QLabel* source_ = nullptr;
+    QGroupBox* pieceBox_ = nullptr; // the piece's marks (a DSTV file's header), when it has any
+    QLabel* piece_ = nullptr;
     bool refreshing_ = false;
 };
 

@@ -184,6 +184,15 @@ Outcome grooveOf(const std::vector<dstv::WeldPrep>& prep, double thickness, Groo
     return Outcome::done();
 }
 
+// An end edge whose slope disagrees with the header's saw cut angle: the contour's angle
+// (dx = width tan(angle), the header's own convention), to be cut instead where the cutter can.
+struct EdgeAngle {
+    FaceGroup group;
+    int line;
+    std::string what;
+    double angle_deg;
+};
+
 struct FaceGroove {
     char face;
     int line;
@@ -193,7 +202,8 @@ struct FaceGroove {
 // One AK contour: copes and notches at either end, weld preparations, and the end edge's
 // groove (appended to grooves when the end is a straight edge across the face).
 void readOuterContour(const Contour& c, const Header& h, const SectionDims& d,
-                      std::vector<FaceGroove>& grooves, std::vector<std::string>& report) {
+                      std::vector<FaceGroove>& grooves, std::vector<EdgeAngle>& edges,
+                      std::vector<std::string>& report) {
     const FaceGroup group = groupOf(c.face);
     const double width = group == FaceGroup::Web ? d.h_mm : d.b_mm;
     const double thickness = group == FaceGroup::Web ? d.tw_mm : d.tf_mm;
@@ -250,12 +260,13 @@ void readOuterContour(const Contour& c, const Header& h, const SectionDims& d,
         const ContourPoint& p1 = c.points[a].y_mm < c.points[b].y_mm ? c.points[b] : c.points[a];
         const double dx = p1.x_mm - p0.x_mm;
         const double expect = width * std::tan(cutDeg * kPi / 180);
-        if (!near(std::abs(dx), std::abs(expect), 1.0))
-            report.push_back(
-                lineOf(p0.line) + "the AK end edge on " + face + " runs from " + pointText(p0) +
-                " to " + pointText(p1) + " (" + n(dx) + " mm along x) but the header's " +
-                (group == FaceGroup::Web ? "web" : "flange") + " end cut of " + n(cutDeg) +
-                " deg gives " + n(expect) + " mm: the header's angle is used");
+        if (!near(std::abs(dx), std::abs(expect), 1.0) && width > 0)
+            edges.push_back({group, p0.line,
+                             "the AK end edge on " + face + " runs from " + pointText(p0) + " to " +
+                                 pointText(p1) + " (" + n(dx) + " mm along x) but the header's " +
+                                 (group == FaceGroup::Web ? "web" : "flange") + " end cut of " +
+                                 n(cutDeg) + " deg gives " + n(expect) + " mm",
+                             std::atan(dx / width) * 180 / kPi});
     }
     std::optional<GrooveSpec> groove;
     for (size_t i = 0; i < count; ++i) {
@@ -334,7 +345,27 @@ std::string holeText(const dstv::Hole& h) {
         what = "slot " + n(h.diameter_mm) + " mm, " + n(h.slot_width_mm) + " x " +
                n(h.slot_height_mm) + " mm at " + n(h.slot_angle_deg) + " deg";
     return "BO " + what + " on " + dstv::faceName(h.face) + " at x " + n(h.x_mm) + ", y " +
-           n(h.y_mm) + " mm: not cut by this machine";
+           n(h.y_mm) + " mm: not cut by this machine" +
+           (h.extra_values > 0
+                ? " (" + std::to_string(h.extra_values) + " more number(s) after the depth ignored)"
+                : "");
+}
+
+// "3 holes, 1 marking, 2 inner contours": what of the piece the job does not cut.
+std::string ignoredText(const Part& part) {
+    int inner = 0;
+    for (const Contour& c : part.contours)
+        inner += c.outer ? 0 : 1;
+    std::string out;
+    const auto add = [&](int count, const char* one, const char* many) {
+        if (count == 0) return;
+        out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + (count == 1 ? one : many);
+    };
+    add(static_cast<int>(part.holes.size()), "hole", "holes");
+    add(static_cast<int>(part.markings.size()), "marking", "markings");
+    add(inner, "inner contour", "inner contours");
+    add(static_cast<int>(part.others.size()), "other block", "other blocks");
+    return out.empty() ? "nothing" : out;
 }
 
 } // namespace
@@ -342,6 +373,9 @@ std::string holeText(const dstv::Hole& h) {
 ImportResult importDstv(const std::string& text) {
     Part part;
     try {
+        // The piece's kind first: a plate or a tube is refused by name even where its contours
+        // would not read.
+        familyOf(dstv::parseDstvHeader(text));
         part = dstv::parseDstv(text);
     } catch (const dstv::DstvError& e) {
         throw ImportError(e.what());
@@ -368,11 +402,35 @@ ImportResult importDstv(const std::string& text) {
                      " mm)");
     if (h.quantity > 1)
         report.push_back(lineOf(h.field_line[5]) + "quantity " + std::to_string(h.quantity) +
-                         ": the job cuts one piece");
+                         ": the job cuts one piece (the quantity is kept in piece.quantity)");
+    // The bar's length (the cell's conveyor takes 50 .. 24000 mm) and the piece's marks.
+    if (h.length_mm < 50 || h.length_mm > 24000)
+        throw refuse(h.field_line[8], "length (header field 9) = " + n(h.length_mm) +
+                                          " mm: the cell takes bars of 50 .. 24000 mm "
+                                          "(section.length_mm)");
+    spec.length_mm = h.length_mm;
+    const auto mark = [&](const std::string& v, int field) {
+        std::string out;
+        for (const char c : v)
+            out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
+        if (out.size() > 64) {
+            report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "mark " +
+                             json::quote(out) + " cut to 64 bytes");
+            out.resize(64);
+        }
+        return out;
+    };
+    spec.piece.order = mark(h.order, 1);
+    spec.piece.drawing = mark(h.drawing, 2);
+    spec.piece.phase = mark(h.phase, 3);
+    spec.piece.mark = mark(h.piece, 4);
+    spec.piece.steel_grade = mark(h.steel_grade, 5);
+    spec.piece.quantity = h.quantity;
     std::vector<FaceGroove> grooves;
+    std::vector<EdgeAngle> edges;
     for (const Contour& c : part.contours) {
         if (c.outer) {
-            readOuterContour(c, h, spec.section, grooves, report);
+            readOuterContour(c, h, spec.section, grooves, edges, report);
             continue;
         }
         double lo = 1e300, hi = -1e300;
@@ -383,6 +441,46 @@ ImportResult importDstv(const std::string& text) {
         report.push_back(lineOf(c.line) + "IK inner contour on " + dstv::faceName(c.face) + " (" +
                          std::to_string(c.points.size() - 1) + " corners, x " + n(lo) + " .. " +
                          n(hi) + " mm): not cut by this machine");
+    }
+    // Where the contour's end edge disagrees with the header, the contour is the piece's shape:
+    // its angle is cut when the cutter can make it (a warning either way).
+    for (const FaceGroup g : {FaceGroup::Web, FaceGroup::Flanges}) {
+        const EdgeAngle* first = nullptr;
+        bool agree = true;
+        for (const EdgeAngle& e : edges)
+            if (e.group == g) {
+                if (!first) first = &e;
+                agree = agree && near(e.angle_deg, first->angle_deg, 0.05);
+            }
+        if (!first) continue;
+        double& mitre =
+            g == FaceGroup::Web ? spec.cut.mitre_horizontal_deg : spec.cut.mitre_vertical_deg;
+        const char* key =
+            g == FaceGroup::Web ? "end_cut.mitre_horizontal_deg" : "end_cut.mitre_vertical_deg";
+        // The web's slope has its sign (face v's y runs up from the underside, as the cell's z);
+        // a flange's is taken from the header's own angle, and a square header gives none.
+        double angle = first->angle_deg;
+        const bool signKnown = g == FaceGroup::Web || mitre != 0;
+        if (g == FaceGroup::Flanges && mitre != 0) angle = std::copysign(angle, mitre);
+        std::string verdict;
+        if (!agree)
+            verdict = "the faces' end edges disagree with each other: the header's " + n(mitre) +
+                      " deg is cut";
+        else if (std::abs(angle) > 45)
+            verdict = "the contour's " + n(std::abs(angle)) +
+                      " deg is beyond the cutter's 45 deg: the header's " + n(mitre) +
+                      " deg is cut";
+        else if (!signKnown)
+            verdict = "the flange contour's " + n(std::abs(angle)) +
+                      " deg has no direction the header confirms: the header's 0 deg is cut (set " +
+                      key + " to cut the contour)";
+        else {
+            mitre = std::round(angle * 100) / 100;
+            verdict = "the contour's " + n(mitre) + " deg is cut (" + key + ")";
+        }
+        for (const EdgeAngle& e : edges)
+            if (e.group == g)
+                report.push_back(lineOf(e.line) + "warning: " + e.what + ": " + verdict);
     }
     spec.cut.web = mergeGrooves(FaceGroup::Web, spec.section.family, grooves, report);
     spec.cut.flanges = mergeGrooves(FaceGroup::Flanges, spec.section.family, grooves, report);
@@ -417,6 +515,14 @@ ImportResult importDstv(const std::string& text) {
     if (!issues.empty())
         throw ImportError("the imported job is not valid: " + issues.front().message);
     out.job = std::move(job);
+    out.facts = {{"piece", h.piece},
+                 {"section", profile},
+                 {"length_mm", n(h.length_mm)},
+                 {"quantity", std::to_string(h.quantity)},
+                 {"steel", h.steel_grade},
+                 {"end cut", "web " + n(spec.cut.mitre_horizontal_deg) + " deg, flange " +
+                                 n(spec.cut.mitre_vertical_deg) + " deg"},
+                 {"ignored", ignoredText(part)}};
     return out;
 }
 

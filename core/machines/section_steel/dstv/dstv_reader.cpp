@@ -6,7 +6,6 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 namespace cutcell::dstv {
 
@@ -158,24 +157,33 @@ struct Line {
 
 class Reader {
   public:
+    // Lines end in LF, CR LF or a lone CR (old Macintosh exports); a last line without its
+    // end is a line.
     explicit Reader(const std::string& text) {
-        std::istringstream in(text);
-        std::string l;
         int n = 0;
-        while (std::getline(in, l)) {
-            if (!l.empty() && l.back() == '\r') l.pop_back();
-            lines_.push_back({++n, l});
+        size_t a = 0;
+        while (a < text.size()) {
+            size_t b = text.find_first_of("\r\n", a);
+            if (b == std::string::npos) b = text.size();
+            lines_.push_back({++n, text.substr(a, b - a)});
+            a = b + (text.compare(b, 2, "\r\n") == 0 ? 2 : 1);
         }
     }
 
-    Part parse() {
-        Part part;
+    Header parseHeader() {
+        Header h;
         skipBlankAndComments();
         if (at_ >= lines_.size()) throw DstvError(1, "empty file: no ST block");
         if (code(lines_[at_]) != "ST")
             throw DstvError(lines_[at_].number, "the file must start with the ST block, found " +
                                                     json::quote(trim(lines_[at_].text)));
-        readHeader(part.header);
+        readHeader(h);
+        return h;
+    }
+
+    Part parse() {
+        Part part;
+        part.header = parseHeader();
         while (true) {
             skipBlankAndComments();
             if (at_ >= lines_.size())
@@ -214,23 +222,38 @@ class Reader {
     }
 
   private:
-    static bool isComment(const Line& l) { return l.text.rfind("**", 0) == 0; }
+    // What a line is. The standard puts a block code in columns 1-2 and data two blanks in, but
+    // writers in the wild drop the blanks (of header lines, of contour points): a line is a
+    // block line when it holds nothing but two capitals (or a capital and a digit), a comment
+    // when it starts with "**", else data.
+    static bool isComment(const Line& l) { return trim(l.text).rfind("**", 0) == 0; }
     static bool isBlank(const Line& l) { return trim(l.text).empty(); }
-    static bool isData(const Line& l) {
-        return !l.text.empty() && std::isspace(static_cast<unsigned char>(l.text[0]));
+    static std::string blockCodeOf(const Line& l) {
+        std::string t = l.text;
+        if (const size_t c = t.find("**"); c != std::string::npos) t.erase(c);
+        t = trim(t);
+        const bool code = t.size() == 2 && std::isupper(static_cast<unsigned char>(t[0])) &&
+                          (std::isupper(static_cast<unsigned char>(t[1])) ||
+                           std::isdigit(static_cast<unsigned char>(t[1])));
+        if (!code) {
+            // "AK  v 0 0 0": a known code in columns 1-2 with data on its line.
+            const std::string c = l.text.substr(0, 2);
+            if (l.text.size() > 2 && isBlockCode(c) &&
+                std::isspace(static_cast<unsigned char>(l.text[2])) && !isComment(l))
+                throw DstvError(l.number, "text after the block code " + c + ": " +
+                                              json::quote(trim(l.text.substr(2))) +
+                                              " (a block's data go on the lines below it)");
+            return {};
+        }
+        return t;
     }
-    // The block code of a line starting in column 1; refuses text after it.
+    static bool isData(const Line& l) {
+        return !isBlank(l) && !isComment(l) && blockCodeOf(l).empty();
+    }
+    // The block code of a line that is no data.
     static std::string code(const Line& l) {
-        const std::string c = l.text.substr(0, 2);
-        std::string rest = l.text.size() > 2 ? trim(l.text.substr(2)) : "";
-        if (rest.rfind("**", 0) == 0) rest.clear();
-        if (c.size() == 2 && isBlockCode(c) && !rest.empty())
-            throw DstvError(l.number, "text after the block code " + c + ": " + json::quote(rest) +
-                                          " (data lines start with two blanks)");
-        if (!isBlockCode(c) && c.size() == 2 && !std::isalpha(static_cast<unsigned char>(c[0])))
-            throw DstvError(l.number,
-                            "data line must start with two blanks: " + json::quote(trim(l.text)));
-        return c.size() == 2 && rest.empty() ? c : trim(l.text);
+        const std::string c = blockCodeOf(l);
+        return c.empty() ? trim(l.text) : c;
     }
 
     void skipBlankAndComments() {
@@ -281,6 +304,8 @@ class Reader {
                                               "text info 2",
                                               "text info 3",
                                               "text info 4"};
+        // Fields by position, with or without their leading blanks; a line holding only a
+        // known block code ends the header (the texts are optional, the 20 fields are not).
         std::array<std::string, 24> value;
         int n = 0;
         while (n < 24 && at_ < lines_.size()) {
@@ -289,7 +314,16 @@ class Reader {
                 ++at_;
                 continue;
             }
-            if (!isBlank(l) && !isData(l)) break; // the next block
+            // A mark may read like a block code ("B1"): only where a number or a text line is
+            // due does a block code end the header.
+            const bool numberDue = n == 5 || (n >= 8 && n < 20);
+            if ((numberDue || n >= 20) && isBlockCode(blockCodeOf(l))) break; // the next block
+            // Where the texts are due, two capitals followed by indented data are a block (an
+            // unknown one, refused by name below), not a text such as "NA".
+            if (n >= 20 && !blockCodeOf(l).empty() && at_ + 1 < lines_.size() &&
+                isData(lines_[at_ + 1]) &&
+                std::isspace(static_cast<unsigned char>(lines_[at_ + 1].text[0])))
+                break;
             value[static_cast<size_t>(n)] = trim(l.text);
             h.field_line[static_cast<size_t>(n)] = l.number;
             ++n;
@@ -298,11 +332,6 @@ class Reader {
         if (n < 20) {
             const int where =
                 at_ < lines_.size() ? lines_[at_].number : static_cast<int>(lines_.size()) + 1;
-            if (at_ < lines_.size() && !isBlockCode(lines_[at_].text.substr(0, 2)))
-                throw DstvError(where, std::string("ST header field ") + std::to_string(n + 1) +
-                                           " (" + names[n] + ") " +
-                                           json::quote(trim(lines_[at_].text)) +
-                                           ": header lines start with two blanks");
             throw DstvError(where, "ST header truncated: field " + std::to_string(n + 1) + " (" +
                                        names[n] + ") missing; the header has 20 lines " +
                                        "(order .. flange end cut) and up to 4 text lines");
@@ -340,12 +369,19 @@ class Reader {
         if (!known)
             throw DstvError(line(7), field(7) + " " + json::quote(h.profile_code) +
                                          " is not one of I, U, L, B, RU, RO, M, C, T, SO");
-        // "length[, saw length]": the saw length (rough length before the end cuts) may follow.
+        // "length[ saw length]" or "length,saw length" (Tekla writes "233.70,233.70"): the saw
+        // length (the rough length before the end cuts) may follow. "5000,00" is no such pair
+        // (00 is no saw length of a 5 m piece): a decimal comma, refused as one.
         std::string len = value[8];
         std::string saw;
-        if (const size_t sep = len.find_first_of(" \t"); sep != std::string::npos) {
-            saw = trim(len.substr(sep));
-            len = len.substr(0, sep);
+        if (const size_t sep = len.find_first_of(" \t,"); sep != std::string::npos) {
+            const std::string first = len.substr(0, sep), second = trim(len.substr(sep + 1));
+            const std::optional<double> a = parseDouble(first), b = parseDouble(second);
+            const bool pair = a && b && *a > 0 && *b >= *a * 0.5 && *b <= *a * 1.5;
+            if (len[sep] != ',' || pair) {
+                saw = second;
+                len = first;
+            }
         }
         h.length_mm = checkedNumber(len, line(8), field(8), 1, kMaxMm, "mm");
         if (!saw.empty()) {
@@ -382,11 +418,17 @@ class Reader {
         const auto close = [&](int line) {
             const ContourPoint& a = c.points.front();
             const ContourPoint& b = c.points.back();
-            if (c.points.size() < 4)
+            // A circle is two arcs: start, opposite point (with radii), start again.
+            bool arcs = false;
+            for (const ContourPoint& p : c.points)
+                arcs = arcs || p.radius_mm != 0;
+            const size_t least = arcs ? 3 : 4;
+            if (c.points.size() < least)
                 throw DstvError(line, std::string(what) + " contour on face " +
                                           std::string(1, c.face) + " has " +
                                           std::to_string(c.points.size()) +
-                                          " points: a closed contour needs at least 4");
+                                          " points: a closed contour needs at least " +
+                                          std::to_string(least) + (arcs ? "" : " (3 with arcs)"));
             if (a.x_mm != b.x_mm || a.y_mm != b.y_mm)
                 throw DstvError(line,
                                 std::string(what) + " contour on face " + std::string(1, c.face) +
@@ -444,7 +486,10 @@ class Reader {
                 p.prep.pop_back();
             if (c.points.empty()) c.line = closed == 0 ? blockLine : l.number;
             c.points.push_back(p);
-            if (c.points.size() >= 4 && c.points.front().x_mm == p.x_mm &&
+            bool arcs = false;
+            for (const ContourPoint& q : c.points)
+                arcs = arcs || q.radius_mm != 0;
+            if (c.points.size() >= (arcs ? 3u : 4u) && c.points.front().x_mm == p.x_mm &&
                 c.points.front().y_mm == p.y_mm)
                 close(l.number);
         }
@@ -489,9 +534,9 @@ class Reader {
             h.slot_angle_deg =
                 checkedNumber(d.values[6].text, l.number, "slot angle", -360, 360, "deg");
         } else if (nv > 4) {
-            throw DstvError(l.number, "BO hole has " + std::to_string(nv) +
-                                          " numbers: x, y, diameter, depth expected (a slot has "
-                                          "l after the depth)");
+            // Some writers add numbers of their own after the depth (a tolerance, a tool
+            // number): kept out, and said in the import report.
+            h.extra_values = static_cast<int>(nv - 4);
         }
         if (h.kind != 'm' && !(h.diameter_mm > 0))
             throw DstvError(l.number, "diameter = " + num(h.diameter_mm) +
@@ -546,6 +591,10 @@ class Reader {
 
 Part parseDstv(const std::string& text) {
     return Reader(text).parse();
+}
+
+Header parseDstvHeader(const std::string& text) {
+    return Reader(text).parseHeader();
 }
 
 std::string faceName(char face) {

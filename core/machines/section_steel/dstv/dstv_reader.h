@@ -4,8 +4,9 @@
 // the file every structural-steel detailing package writes for CNC beam lines. Pure text in,
 // a Part out; no machine knowledge here (dstv_import.h maps a Part to a section-steel job).
 //
-// The format as read here: one piece per file. A block starts with its two-letter code in
-// columns 1-2 (the rest of that line blank); its data lines start with blanks. "**" in columns
+// The format as read here: one piece per file. A block starts with its two-letter code alone on
+// its line; its data lines follow (the standard indents them by two blanks; lines without the
+// blanks, as some writers make them, are read the same; line ends LF, CR LF or CR). "**" in columns
 // 1-2 is a comment line (a "**" in a data line ends it). ST (header: 20 fixed lines + up to 4
 // text lines) comes first, EN last; between them AK (outer contour), IK (inner contour), BO
 // (holes), SI (marking) and the blocks this reader knows but does not interpret (PU, KO, SC,
@@ -78,6 +79,7 @@ struct Hole {
     double diameter_mm = 0, depth_mm = 0;
     bool slot = false; // 'l' after the depth: width, height, angle follow
     double slot_width_mm = 0, slot_height_mm = 0, slot_angle_deg = 0;
+    int extra_values = 0; // numbers after the depth that are no slot's (not interpreted)
 };
 
 struct Marking {
@@ -107,6 +109,8 @@ struct Part {
 
 // Parses a whole file; throws DstvError.
 Part parseDstv(const std::string& text);
+// Only the ST block (what the piece is, before its contours are read); throws DstvError.
+Header parseDstvHeader(const std::string& text);
 
 // "web (v)", "top flange (o)", ...: the face letter for messages.
 std::string faceName(char face);
