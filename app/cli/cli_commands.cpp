@@ -65,12 +65,20 @@ int runValidate(const ValidateOptions& o) {
     const MachineModule* module = nullptr;
     MachinePlan plan;
     if (!planJob(job, {}, &module, &plan, &code)) return code;
-    std::printf("job '%s' is valid: %s, %s\n", job.name.c_str(), module->id().c_str(),
-                plan.summary.c_str());
     if (!plan.ok()) {
-        std::fprintf(stderr, "%s\n", plan.outcome.message.c_str());
+        // Well-formed, but the machine cannot make it: never "valid". The plan's summary when
+        // it tells more than the reason (the flying saw's summary is the reason itself).
+        const std::string& why = plan.outcome.message;
+        const bool summaryAdds =
+            !plan.summary.empty() && why.find(plan.summary) == std::string::npos;
+        std::printf("job '%s' is refused (not feasible): %s%s%s\n", job.name.c_str(),
+                    module->id().c_str(), summaryAdds ? ", " : "",
+                    summaryAdds ? plan.summary.c_str() : "");
+        std::fprintf(stderr, "%s\n", why.empty() ? "not feasible" : why.c_str());
         return kUnreachable;
     }
+    std::printf("job '%s' is valid: %s, %s\n", job.name.c_str(), module->id().c_str(),
+                plan.summary.c_str());
     return kOk;
 }
 

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <vector>
 
 using namespace cutcell;
 namespace fs = std::filesystem;
@@ -155,6 +156,61 @@ TEST(Cli, UnreachablePathExitsThreeNamingPointAndJoint) {
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("point "), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out" / "path.csv"));
+}
+
+// Issue 22: a job the machine cannot make (well-formed, refused by the plan) was reported "job
+// ... is valid: ..." with exit 3. validate says it is refused, names the reason, exit 3 - the
+// flying saw at twice the line speed its stroke allows, the pipe robot's unreachable branch
+// cut, the section-steel cutter's torch that may not lean between an IPE 100's flanges.
+TEST(Cli, ValidateNeverCallsARefusedJobValid) {
+    const fs::path dir = tempDir("refused");
+    const struct {
+        const char* why;
+        const char* job; // in resources/jobs, or "" for the pipe robot written below
+        std::vector<std::pair<std::string, std::string>> edits;
+        const char* reason;
+    } cases[] = {
+        {"the saw at 120 m/min",
+         "flying_saw_job.json",
+         {{"\"speed_m_min\": 60", "\"speed_m_min\": 120"}},
+         "carriage.stroke_mm = 2500 mm is too short"},
+        {"the robot's branch cut on a static pipe", "", {}, "path not reachable"},
+        {"a torch that may not lean",
+         "section_steel_job.json",
+         {{"\"IPE 300\"", "\"IPE 100\""}, {"\"max_lean_deg\": 60", "\"max_lean_deg\": 0"}},
+         "the torch body hits the section"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.why);
+        const fs::path file = dir / (std::string(c.job).empty() ? "robot.json" : c.job);
+        if (std::string(c.job).empty()) {
+            Job job = defaultJob();
+            cutcell::pipeRobotSpec(job).method = CutMethod::StaticPipe;
+            job.cut.target = CutTarget::Branch;
+            saveJobFile(job, file.string());
+        } else {
+            std::ifstream in(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/" + c.job);
+            std::stringstream ss;
+            ss << in.rdbuf();
+            std::string text = ss.str();
+            for (const auto& [from, to] : c.edits) {
+                const size_t at = text.find(from);
+                ASSERT_NE(at, std::string::npos) << from;
+                text.replace(at, from.size(), to);
+            }
+            std::ofstream(file) << text;
+        }
+        const Result r = runCli("validate " + file.string());
+        EXPECT_EQ(r.code, 3) << r.output;
+        EXPECT_EQ(r.output.find("is valid"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("is refused (not feasible)"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(c.reason), std::string::npos) << r.output;
+    }
+    // The shipped saw job still plans: valid, exit 0.
+    const Result ok = runCli("validate " + std::string(CUTCELL_SOURCE_DIR) +
+                             "/resources/jobs/flying_saw_job.json");
+    EXPECT_EQ(ok.code, 0) << ok.output;
+    EXPECT_NE(ok.output.find("is valid"), std::string::npos) << ok.output;
 }
 
 TEST(Cli, PlanWritesPathAndJointsCsv) {

@@ -16,7 +16,45 @@ struct Primitive {
     double a0 = 0, da = 0; // normal angle at the start and its change (turn)
     double effective = 0;  // length equivalent at the cutting speed
     size_t segment = 0;    // outline segment travelled (travel)
+    // The tip's path length (mm, world): the outline's length in the (mitred) cut plane, with
+    // the bevel's offset across the face where the groove's tilt ramps.
+    double length = 0;
+    // The time law where the world path is not a uniform image of the outline (a radius or a
+    // torch turn in a mitred plane, a groove pass): the effective length at f = i / n of the
+    // stretch (s0 .. s1 or a0 .. a0 + da), n = table.size() - 1; empty: effective * f.
+    std::vector<double> table;
 };
+
+Primitive travelOf(double s0, double s1, double effective, size_t segment) {
+    Primitive p;
+    p.s0 = s0;
+    p.s1 = s1;
+    p.effective = effective;
+    p.segment = segment;
+    return p;
+}
+
+Primitive turnOf(double s, double a0, double da, double effective) {
+    Primitive p;
+    p.turn = true;
+    p.s0 = s;
+    p.a0 = a0;
+    p.da = da;
+    p.effective = effective;
+    return p;
+}
+
+// The fraction f of a stretch at effective length e along it.
+double fractionAt(const Primitive& p, double e) {
+    if (p.table.empty()) return p.effective > 0 ? std::clamp(e / p.effective, 0.0, 1.0) : 0;
+    const std::vector<double>& c = p.table;
+    if (e <= c.front()) return 0;
+    if (e >= c.back()) return 1;
+    const size_t i = static_cast<size_t>(std::upper_bound(c.begin(), c.end(), e) - c.begin()) - 1;
+    const double span = c[i + 1] - c[i];
+    const double u = span > 0 ? std::clamp((e - c[i]) / span, 0.0, 1.0) : 0;
+    return (static_cast<double>(i) + u) / static_cast<double>(c.size() - 1);
+}
 
 double angleOf(const Vec2& v) {
     return std::atan2(v.y(), v.x());
@@ -203,27 +241,82 @@ std::vector<CutPass> EndCut::passes(double dt) const {
         const double turn = segs[i].arc ? std::fabs(segs[i].a1 - segs[i].a0) : 0;
         if (segs[i].length > 0)
             prims.push_back(
-                {false, s0, s0 + segs[i].length, 0, 0, std::max(segs[i].length, turn / w * v), i});
+                travelOf(s0, s0 + segs[i].length, std::max(segs[i].length, turn / w * v), i));
         if (i + 1 < segs.size()) {
             const double a0 = angleOf(segs[i].n1);
             const double da = std::remainder(angleOf(segs[i + 1].n0) - a0, 2 * kPi);
             if (std::fabs(da) > 1e-9)
-                prims.push_back({true, s0 + segs[i].length, 0, a0, da, std::fabs(da) / w * v});
+                prims.push_back(turnOf(s0 + segs[i].length, a0, da, std::fabs(da) / w * v));
         }
     }
+    // The target at fraction f of a stretch.
+    auto pointOf = [&](const Primitive& p, double f, bool groovePass) {
+        if (!p.turn) {
+            const double s = p.s0 + f * (p.s1 - p.s0);
+            // On its own face: a sample at the face's end must not take the next face's
+            // normal (the torch would turn a whole corner in one step).
+            return target(outline_.onSegment(p.segment, s), s, groovePass);
+        }
+        OutlinePoint o = outline_.at(p.s0);
+        const double a = p.a0 + f * p.da;
+        o.normal = Vec2(std::cos(a), std::sin(a));
+        o.tangent = Vec2(-o.normal.y(), o.normal.x());
+        TorchTarget t = target(o, p.s0, false);
+        t.turning = true;
+        return t;
+    };
+    // The time law of a stretch on the world path: the tip moves at v along its points (the
+    // outline in the mitred plane is longer than the square outline: 1 / cos of the mitre
+    // across the cut line, the bevel's offset where the tilt ramps), or slower where the
+    // untilted torch would turn faster than w (a torch turn, a tight radius); a turn at a
+    // corner, measured in the cut plane, is a turn by another angle than the outline's.
+    auto timeLaw = [&](Primitive& p, bool groovePass) {
+        const bool arc = !p.turn && segs[p.segment].arc;
+        if (!groovePass && !p.turn && !arc) {
+            // A face of the plain cut: a straight line in the cut plane, its length scaled
+            // uniformly (exactly 1 for a square cut).
+            const Vec2 d = (segs[p.segment].p1 - segs[p.segment].p0).normalized();
+            const double rise = d.x() * tanV_ + d.y() * tanH_;
+            const double scale = std::sqrt(1 + rise * rise);
+            p.length = (p.s1 - p.s0) * scale;
+            p.effective *= scale;
+            return;
+        }
+        if (!groovePass && square_) { // the outline itself: the law set up with the stretch
+            p.length = p.turn ? 0 : p.s1 - p.s0;
+            return;
+        }
+        // Nodes every 0.05 mm or 0.5 deg of the stretch (at least 64).
+        const double nodes = p.turn ? rad2deg(std::fabs(p.da)) / 0.5 : (p.s1 - p.s0) / 0.05;
+        const size_t n = static_cast<size_t>(std::clamp(std::ceil(nodes), 64.0, 2e4));
+        p.table.assign(n + 1, 0.0);
+        p.length = 0;
+        TorchTarget prev = pointOf(p, 0, groovePass);
+        for (size_t i = 1; i <= n; ++i) {
+            const TorchTarget t =
+                pointOf(p, static_cast<double>(i) / static_cast<double>(n), groovePass);
+            const double moved = p.turn ? 0 : (t.p - prev.p).norm();
+            const double turned = std::atan2(prev.t0.cross(t.t0).norm(), prev.t0.dot(t.t0));
+            p.length += moved;
+            p.table[i] = p.table[i - 1] + std::max(moved, turned / w * v);
+            prev = t;
+        }
+        p.effective = p.table.back();
+    };
     std::vector<CutPass> out;
     auto makePass = [&](const std::string& name, bool grooveArm, bool groovePass,
-                        const std::vector<Primitive>& ps) {
+                        std::vector<Primitive> ps) {
         double total = 0;
-        for (const auto& p : ps)
-            total += p.effective;
-        const SpeedProfile profile(total, v, spec_.ramp_s);
         CutPass pass;
         pass.name = name;
         pass.groove_arm = grooveArm;
+        for (auto& p : ps) {
+            timeLaw(p, groovePass);
+            total += p.effective;
+            pass.length_mm += p.length;
+        }
+        const SpeedProfile profile(total, v, spec_.ramp_s);
         pass.duration_s = profile.duration();
-        for (const auto& p : ps)
-            pass.length_mm += p.turn ? 0 : p.s1 - p.s0;
         const size_t n = static_cast<size_t>(std::floor(profile.duration() / dt)) + 1;
         size_t pi = 0;
         double primStart = 0;
@@ -234,23 +327,8 @@ std::vector<CutPass> EndCut::passes(double dt) const {
                 primStart += ps[pi].effective;
                 ++pi;
             }
-            const Primitive& p = ps[pi];
-            const double f =
-                p.effective > 0 ? std::clamp((dist - primStart) / p.effective, 0.0, 1.0) : 0;
-            if (!p.turn) {
-                const double s = p.s0 + f * (p.s1 - p.s0);
-                // On its own face: a sample at the face's end must not take the next face's
-                // normal (the torch would turn a whole corner in one step).
-                pass.samples.push_back(target(outline_.onSegment(p.segment, s), s, groovePass));
-            } else {
-                OutlinePoint o = outline_.at(p.s0);
-                const double a = p.a0 + f * p.da;
-                o.normal = Vec2(std::cos(a), std::sin(a));
-                o.tangent = Vec2(-o.normal.y(), o.normal.x());
-                TorchTarget t = target(o, p.s0, false);
-                t.turning = true;
-                pass.samples.push_back(t);
-            }
+            pass.samples.push_back(
+                pointOf(ps[pi], fractionAt(ps[pi], dist - primStart), groovePass));
         }
         applyLean(pass, dt);
         out.push_back(std::move(pass));
@@ -270,9 +348,9 @@ std::vector<CutPass> EndCut::passes(double dt) const {
         const double trim =
             std::min(spec_.blend_mm * std::min(1.0, kMinBevelDeg / std::max(1e-9, gs->angle_deg)),
                      segs[i].length / 4);
-        makePass(
-            "groove " + segs[i].name + (turnedOver() ? " (setup 2, turned over)" : ""), true, true,
-            {{false, s0 + trim, s0 + segs[i].length - trim, 0, 0, segs[i].length - 2 * trim, i}});
+        makePass("groove " + segs[i].name + (turnedOver() ? " (setup 2, turned over)" : ""), true,
+                 true,
+                 {travelOf(s0 + trim, s0 + segs[i].length - trim, segs[i].length - 2 * trim, i)});
     }
     return out;
 }

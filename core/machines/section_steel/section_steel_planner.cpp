@@ -288,6 +288,9 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
     if (plan.ok) {
         plan.spline = JointSpline(plan.knots, plan.dt);
         plan.cut_time_s = plan.spline.duration();
+    } else if (plan.knots.size() >= 2) {
+        // Refused: the time the cut would take (the summary), knots dt apart as the spline's.
+        plan.cut_time_s = plan.dt * static_cast<double>(plan.knots.size() - 1);
     }
     return plan;
 }
