@@ -43,8 +43,10 @@ std::string jobNameFor(const fs::path& file, std::set<std::string>& taken) {
     return name;
 }
 
-// One CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csvField(const std::string& v) {
+// One CSV field: quoted when it holds a comma, a quote or a line break; a text a spreadsheet
+// would take for a formula (=, +, @ first) starts with an apostrophe.
+std::string csvField(std::string v) {
+    if (!v.empty() && (v[0] == '=' || v[0] == '+' || v[0] == '@')) v.insert(0, 1, '\'');
     if (v.find_first_of(",\"\r\n") == std::string::npos) return v;
     std::string out = "\"";
     for (const char c : v)
@@ -104,7 +106,10 @@ ImportBatch importBatch(const JobImporter& importer, const std::vector<std::stri
         try {
             ImportResult r = importer.import(readTextFile(f));
             const std::string job = jobNameFor(f, taken);
-            saveJobFile(r.job, (fs::path(outDir) / job).string());
+            const fs::path target = fs::path(outDir) / job;
+            if (fs::exists(target, ec))
+                r.report.push_back(job + " of an earlier import in this folder is replaced");
+            saveJobFile(r.job, target.string());
             row.job = job;
             row.imported = true;
             row.facts = std::move(r.facts);

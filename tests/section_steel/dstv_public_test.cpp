@@ -107,6 +107,21 @@ TEST(DstvPublicFiles, AnEndContourThatDisagreesWithTheHeaderIsCutAsTheContourWit
     EXPECT_TRUE(warned);
 }
 
+// The direction of a web mitre: both files draw the top of the web longer than its bottom
+// (UPN: the header's -19.33 deg and the AK's top corner 56 mm further out; SE0004: a square
+// header and the AK's top 82.84 mm further out), and the cell's cut plane x = (z - h/2) tan(m)
+// puts the top further out (the kept bar at x < 0) for m > 0: both come out positive.
+TEST(DstvPublicFiles, AWebMitreKeepsTheDirectionTheFileDraws) {
+    const auto mitreOf = [](const char* file) {
+        const ImportResult r = importDstv(readTextFile((kPublic / file).string()));
+        return r.job.machine_spec.as<SectionSteelSpec>()->cut.mitre_horizontal_deg;
+    };
+    EXPECT_NEAR(mitreOf("dstvparser_UPN.nc"), 19.33, 1e-9);
+    EXPECT_NEAR(mitreOf("tluijken-dstv_0008-SE0004.nc1"), 22.5, 0.01);
+    // The file that draws the top shorter (header +26.01, AK top 112 mm back) comes out negative.
+    EXPECT_NEAR(mitreOf("dstv-tools_1010_HEA240.nc_N_1_pz.nc"), -26.01, 1e-9);
+}
+
 // Tekla's "length,saw length" pair, headers without their leading blanks, lone CR line ends:
 // read; a decimal comma is still refused as one.
 TEST(DstvPublicFiles, TheFormsWrittenInTheWildAreRead) {
@@ -122,6 +137,44 @@ TEST(DstvPublicFiles, TheFormsWrittenInTheWildAreRead) {
         if (c == '\n') c = '\r';
     EXPECT_EQ(json::write(jobToJson(importDstv(cr).job)),
               json::write(jobToJson(importDstv(lf).job)));
+}
+
+// Edits of a real file as other writers make them: texts "  NA" and "EN 10025-2" (not blocks),
+// a Latin-1 steel grade (read as such, said in the report), a 70-byte mark (cut on a character
+// boundary; the job still loads), a decimal comma in the length (refused as one).
+TEST(DstvPublicFiles, TextsCodePagesLongMarksAndDecimalCommas) {
+    const std::string good = readTextFile((kPublic / "dstv-tools_2519.nc1").string());
+    const auto edit = [&](const std::string& from, const std::string& to) {
+        std::string t = good;
+        const size_t at = t.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        return t.replace(at, from.size(), to);
+    };
+    const std::string texts = edit("  0.000\n\n\n", "  0.000\n  NA\nEN 10025-2\n");
+    EXPECT_EQ(dstv::parseDstvHeader(texts).text[0], "NA");
+    EXPECT_EQ(dstv::parseDstvHeader(texts).text[1], "EN 10025-2");
+    EXPECT_NO_THROW(importDstv(texts));
+    const ImportResult latin = importDstv(edit("  S275JR\n", "  S275JR \xe4\xf6\n"));
+    EXPECT_EQ(latin.job.machine_spec.as<SectionSteelSpec>()->piece.steel_grade,
+              "S275JR \xc3\xa4\xc3\xb6");
+    bool said = false;
+    for (const std::string& l : latin.report)
+        said = said || l.find("is not UTF-8: read as Latin-1") != std::string::npos;
+    EXPECT_TRUE(said);
+    const std::string longMark = std::string(63, 'A') + "\xc3\xa9" + "BCDE";
+    const ImportResult cut =
+        importDstv(edit("  2519\n  3\n  2519\n", "  2519\n  3\n  " + longMark + "\n"));
+    const std::string mark = cut.job.machine_spec.as<SectionSteelSpec>()->piece.mark;
+    EXPECT_EQ(mark, std::string(63, 'A')); // the 2-byte character does not fit: cut whole
+    EXPECT_NO_THROW(parseJob(json::write(jobToJson(cut.job))));
+    try {
+        importDstv(edit("    1760.00\n", "    1000,500\n"));
+        ADD_FAILURE() << "a decimal comma was read as a saw length";
+    } catch (const ImportError& e) {
+        EXPECT_NE(std::string(e.what()).find("DSTV numbers take a decimal point"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(DstvPublicFiles, TheBatchImportsTheFolderWithItsReportTable) {

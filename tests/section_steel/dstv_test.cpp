@@ -105,8 +105,10 @@ TEST(Dstv, SawCutAnglesAndAkWeldPreparationsBecomeMitresAndGrooves) {
     const ImportResult r = importDstv(data("ipe300_mitre_grooves.nc1"));
     const SectionSteelSpec& s = specOf(r.job);
     EXPECT_EQ(s.section.designation, "IPE 300");
-    EXPECT_EQ(s.cut.mitre_horizontal_deg, 15); // web end cut
-    EXPECT_EQ(s.cut.mitre_vertical_deg, 0);    // flange end cut
+    // The web end cut of 15 deg in DSTV's sense shortens the top of the web: the cell's mitre
+    // about y lengthens it when positive (see dstv_import.cpp), so it is -15 here.
+    EXPECT_EQ(s.cut.mitre_horizontal_deg, -15); // web end cut
+    EXPECT_EQ(s.cut.mitre_vertical_deg, 0);     // flange end cut
     EXPECT_EQ(s.cut.web.type, GrooveType::V);
     EXPECT_EQ(s.cut.web.angle_deg, 30);
     EXPECT_EQ(s.cut.flanges.type, GrooveType::Y);
@@ -165,7 +167,7 @@ TEST(Dstv, AProfileOutsideTheCatalogueTakesTheHeaderDimensions) {
     EXPECT_EQ(s.section.tf_mm, 11.43);
     EXPECT_EQ(s.section.tw_mm, 8.89);
     EXPECT_EQ(s.section.r_mm, 17.15);
-    EXPECT_EQ(s.cut.mitre_horizontal_deg, -10);
+    EXPECT_EQ(s.cut.mitre_horizontal_deg, 10); // the header's -10, in the cell's sense
     EXPECT_EQ(s.cut.mitre_vertical_deg, 5);
     EXPECT_TRUE(hasLine(r.report, "line 9: ", "not in the catalogue")) << all(r.report);
 }
@@ -302,7 +304,7 @@ TEST(Dstv, MitresAndGroovesRoundTripThroughWrittenFiles) {
                 for (const auto& fp : preps) {
                     const ImportResult r = importDstv(mitredPiece(web, flange, wp.prep, fp.prep));
                     const SectionSteelSpec& s = specOf(r.job);
-                    ASSERT_NEAR(s.cut.mitre_horizontal_deg, web, 1e-9);
+                    ASSERT_NEAR(s.cut.mitre_horizontal_deg, -web, 1e-9); // the cell's sense
                     ASSERT_NEAR(s.cut.mitre_vertical_deg, flange, 1e-9);
                     ASSERT_EQ(s.cut.web.type, wp.type) << wp.prep;
                     ASSERT_EQ(s.cut.flanges.type, fp.type) << fp.prep;
@@ -376,7 +378,7 @@ TEST(Dstv, CliImportUnderAGermanLocaleWritesTheSameJobAndRefusesWithTheLine) {
         << de.out;
     const std::string job = readTextFile((dir / "de.json").string());
     EXPECT_EQ(job, readTextFile((dir / "c.json").string()));
-    EXPECT_NE(job.find("\"mitre_horizontal_deg\": 15"), std::string::npos);
+    EXPECT_NE(job.find("\"mitre_horizontal_deg\": -15"), std::string::npos);
     EXPECT_NE(job.find("\"root_face_mm\": 2"), std::string::npos);
     EXPECT_TRUE(validateJob(loadJobFile((dir / "de.json").string())).empty());
 

@@ -161,6 +161,7 @@ SectionSteelSectionForm::SectionSteelSectionForm(JobEditor* editor, QWidget* par
     auto* fp = new QVBoxLayout(pieceBox_);
     piece_ = new QLabel(pieceBox_);
     piece_->setObjectName("pieceMarks");
+    piece_->setTextFormat(Qt::PlainText); // a mark is text, never markup
     piece_->setWordWrap(true);
     piece_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     fp->addWidget(piece_);

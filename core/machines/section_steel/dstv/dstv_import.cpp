@@ -351,6 +351,45 @@ std::string holeText(const dstv::Hole& h) {
                 : "");
 }
 
+// `raw` as UTF-8: valid sequences kept, any other byte read as Latin-1 (*latin1 set), control
+// characters (C0, DEL, C1) as '?'.
+std::string utf8Text(const std::string& raw, bool* latin1) {
+    std::string out;
+    const auto* b = reinterpret_cast<const unsigned char*>(raw.data());
+    const size_t n = raw.size();
+    for (size_t i = 0; i < n;) {
+        const unsigned char c = b[i];
+        const size_t len = c < 0x80         ? 1
+                           : (c >> 5) == 6  ? 2
+                           : (c >> 4) == 14 ? 3
+                           : (c >> 3) == 30 ? 4
+                                            : 0;
+        bool valid = len > 0 && i + len <= n;
+        for (size_t k = 1; valid && k < len; ++k)
+            valid = (b[i + k] & 0xC0) == 0x80;
+        if (valid && len == 2) valid = c >= 0xC2; // no overlong forms
+        if (valid) {
+            if (len == 1)
+                out += c < 0x20 || c == 0x7f ? '?' : static_cast<char>(c);
+            else if (len == 2 && c == 0xC2 && b[i + 1] < 0xA0)
+                out += '?'; // U+0080..U+009F: C1 controls
+            else
+                out.append(raw, i, len);
+            i += len;
+            continue;
+        }
+        *latin1 = true;
+        if (c < 0xA0) {
+            out += '?';
+        } else {
+            out += static_cast<char>(0xC0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        }
+        ++i;
+    }
+    return out;
+}
+
 // "3 holes, 1 marking, 2 inner contours": what of the piece the job does not cut.
 std::string ignoredText(const Part& part) {
     int inner = 0;
@@ -380,9 +419,23 @@ ImportResult importDstv(const std::string& text) {
     } catch (const dstv::DstvError& e) {
         throw ImportError(e.what());
     }
-    const Header& h = part.header;
     ImportResult out;
     std::vector<std::string>& report = out.report;
+    // The header's texts as UTF-8 (a job file is): older writers use a code page; a byte that
+    // is no UTF-8 is read as Latin-1, a control character as '?', and the report says so.
+    Header& h = part.header;
+    for (const auto& [text, field] : {std::pair<std::string*, int>{&h.order, 1},
+                                      {&h.drawing, 2},
+                                      {&h.phase, 3},
+                                      {&h.piece, 4},
+                                      {&h.steel_grade, 5},
+                                      {&h.profile, 7}}) {
+        bool latin1 = false;
+        *text = utf8Text(*text, &latin1);
+        if (latin1)
+            report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "text " +
+                             json::quote(*text) + " is not UTF-8: read as Latin-1");
+    }
     SectionSteelSpec spec = defaultSectionSteelSpec();
     spec.section = sectionOf(h, &spec.user_defined, report);
     // The end cut at x = length; the cutter mitres +-45 deg about each axis.
@@ -394,7 +447,13 @@ ImportResult importDstv(const std::string& text) {
                              " deg: the cutter mitres at most 45 deg (" + key + ")");
         return deg;
     };
-    spec.cut.mitre_horizontal_deg = mitre(h.web_end_deg, 18, "end_cut.mitre_horizontal_deg");
+    // The web's end cut in the cell's sense: DSTV's positive web angle shortens the top of the
+    // web face (its y runs up from the underside: x_top - x_bottom = -h tan(angle), as every
+    // mitred file here draws its AK), the cell's positive mitre about y lengthens it (cut plane
+    // x = (z - h/2) tan, the kept bar at x < 0). The flange angle keeps its sign (unverified:
+    // no file here shows a flange mitre's direction against the cell's y).
+    const double web = mitre(h.web_end_deg, 18, "end_cut.mitre_horizontal_deg");
+    spec.cut.mitre_horizontal_deg = web == 0 ? 0.0 : -web;
     spec.cut.mitre_vertical_deg = mitre(h.flange_end_deg, 20, "end_cut.mitre_vertical_deg");
     report.push_back(lineOf(h.field_line[16]) + "start end (x = 0: web cut " + n(h.web_start_deg) +
                      " deg, flange cut " + n(h.flange_start_deg) +
@@ -410,13 +469,15 @@ ImportResult importDstv(const std::string& text) {
                                           "(section.length_mm)");
     spec.length_mm = h.length_mm;
     const auto mark = [&](const std::string& v, int field) {
-        std::string out;
-        for (const char c : v)
-            out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
+        std::string out = v;
         if (out.size() > 64) {
-            report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "mark " +
-                             json::quote(out) + " cut to 64 bytes");
             out.resize(64);
+            while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80)
+                out.pop_back(); // a continuation byte: the character it ends is cut whole
+            if (!out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+            report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "mark " +
+                             json::quote(v) + " cut to " + std::to_string(out.size()) +
+                             " bytes (piece marks hold at most 64)");
         }
         return out;
     };

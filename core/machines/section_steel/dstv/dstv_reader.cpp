@@ -247,6 +247,16 @@ class Reader {
         }
         return t;
     }
+    // The block code a line holds alone ("" when it holds anything else); never throws.
+    static std::string plainBlockCode(const Line& l) {
+        std::string t = l.text;
+        if (const size_t c = t.find("**"); c != std::string::npos) t.erase(c);
+        t = trim(t);
+        const bool code = t.size() == 2 && std::isupper(static_cast<unsigned char>(t[0])) &&
+                          (std::isupper(static_cast<unsigned char>(t[1])) ||
+                           std::isdigit(static_cast<unsigned char>(t[1])));
+        return code ? t : std::string();
+    }
     static bool isData(const Line& l) {
         return !isBlank(l) && !isComment(l) && blockCodeOf(l).empty();
     }
@@ -315,13 +325,16 @@ class Reader {
                 continue;
             }
             // A mark may read like a block code ("B1"): only where a number or a text line is
-            // due does a block code end the header.
+            // due does a block code end the header, and only one written from column 1 (an
+            // indented "  NA" or "  EN 10025" is a text).
             const bool numberDue = n == 5 || (n >= 8 && n < 20);
-            if ((numberDue || n >= 20) && isBlockCode(blockCodeOf(l))) break; // the next block
+            const bool indented =
+                !l.text.empty() && std::isspace(static_cast<unsigned char>(l.text[0]));
+            const std::string c = indented ? std::string() : plainBlockCode(l);
+            if ((numberDue || n >= 20) && isBlockCode(c)) break; // the next block
             // Where the texts are due, two capitals followed by indented data are a block (an
             // unknown one, refused by name below), not a text such as "NA".
-            if (n >= 20 && !blockCodeOf(l).empty() && at_ + 1 < lines_.size() &&
-                isData(lines_[at_ + 1]) &&
+            if (n >= 20 && !c.empty() && at_ + 1 < lines_.size() && isData(lines_[at_ + 1]) &&
                 std::isspace(static_cast<unsigned char>(lines_[at_ + 1].text[0])))
                 break;
             value[static_cast<size_t>(n)] = trim(l.text);
@@ -376,8 +389,12 @@ class Reader {
         std::string saw;
         if (const size_t sep = len.find_first_of(" \t,"); sep != std::string::npos) {
             const std::string first = len.substr(0, sep), second = trim(len.substr(sep + 1));
+            // A pair as Tekla writes it has a decimal point in each half ("1000,500" is a
+            // decimal comma, refused as one, not a length of 1000 and a saw length of 500).
             const std::optional<double> a = parseDouble(first), b = parseDouble(second);
-            const bool pair = a && b && *a > 0 && *b >= *a * 0.5 && *b <= *a * 1.5;
+            const bool points =
+                first.find('.') != std::string::npos && second.find('.') != std::string::npos;
+            const bool pair = a && b && points && *a > 0;
             if (len[sep] != ',' || pair) {
                 saw = second;
                 len = first;
