@@ -1,6 +1,7 @@
 // cutcell-cli fk / ik: forward and inverse kinematics of an arm machine's arm, as JSON,
 // through MachineModule::forwardKinematics / inverseKinematics (other machines: exit 64 with
-// "... is not an arm machine").
+// "... is not an arm machine"). A pose without any solution (Outcome Incomplete): the JSON with
+// its reason, exit 3.
 #include "cli_commands.h"
 
 #include "core/json/json.h"
@@ -40,6 +41,14 @@ int run(const KinematicsOptions& o, bool forward) {
     json::Value out;
     const Outcome done = forward ? m.forwardKinematics(job, o.arm, values, &out)
                                  : m.inverseKinematics(job, o.arm, values, &out);
+    if (done.status == OutcomeStatus::Incomplete) {
+        // Answered, but no solution (a pose out of reach): the JSON says why; exit 3 as an
+        // unreachable plan does.
+        std::fputs(json::write(out).c_str(), stdout);
+        std::fputs("\n", stdout);
+        std::fprintf(stderr, "%s\n", done.message.c_str());
+        return kUnreachable;
+    }
     if (!done.ok()) {
         std::fprintf(stderr, "%s\n", done.message.c_str());
         return kUsage;

@@ -1,10 +1,13 @@
 #include "core/machines/section_steel/groove_arm.h"
 
+#include "core/common/c_format.h"
 #include "core/machines/section_steel/path_arm.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace cutcell::section_steel {
 namespace {
@@ -32,9 +35,10 @@ Q5 wrapped(Q5 q) {
     return q;
 }
 
-void addUnique(std::vector<GrooveArmSolution>& out, const GrooveArmSolution& s) {
+void addUnique(std::vector<GrooveArmSolution>& out, const GrooveArmSolution& s,
+               double spacing = 1e-7) {
     for (const auto& o : out)
-        if (jointDistance(o.q, s.q) < 1e-7) return;
+        if (jointDistance(o.q, s.q) < spacing) return;
     out.push_back(s);
 }
 
@@ -83,16 +87,22 @@ bool GrooveArm::polish(const Pose* full, const Vec3& p, const Vec3& t, Q5& q,
         const Pose T = forward(q);
         Eigen::Matrix<double, 6, 1> e;
         e.head<3>() = p - T.translation();
+        Eigen::Matrix<double, 6, 5> J = jacobian(q);
         if (full) {
             Vec3 w = Vec3::Zero();
             for (int c = 0; c < 3; ++c)
                 w += T.linear().col(c).cross(full->linear().col(c));
             e.tail<3>() = 0.5 * w;
         } else {
-            e.tail<3>() = T.linear().col(0).cross(t);
+            // The torch direction: its change z_i x x5, not the turn about it (the roll is
+            // free: rows of angular velocity would ask for a zero roll and stall Gauss-Newton
+            // at linear convergence).
+            const Vec3 x5 = T.linear().col(0);
+            e.tail<3>() = t - x5;
+            for (int i = 0; i < 5; ++i)
+                J.block<3, 1>(3, i) = Vec3(J.block<3, 1>(3, i)).cross(x5);
         }
         if (e.head<3>().norm() < 1e-11 && e.tail<3>().norm() < 1e-14) return true;
-        const Eigen::Matrix<double, 6, 5> J = jacobian(q);
         const Eigen::Matrix<double, 5, 1> dq = J.colPivHouseholderQr().solve(e);
         if (!dq.allFinite()) return false;
         for (int i = 0; i < 5; ++i)
@@ -157,109 +167,334 @@ bool GrooveArm::trackTorch(const Vec3& p, const Vec3& t, Q5& q) const {
     return ok;
 }
 
-std::vector<GrooveArmSolution> GrooveArm::inverseTorch(const Vec3& p, const Vec3& tIn) const {
-    std::vector<GrooveArmSolution> out;
-    const Vec3 t = tIn.normalized();
+void GrooveArm::torch(const Q5& q, Vec3& p, Vec3& t) const {
     const double A1 = g_.a1_mm, D3 = g_.d3_mm, A4 = g_.a4_mm;
-    if (std::fabs(p.z()) > A4) return out;
+    const double phi = q[0] + q[1];
+    const double c1 = std::cos(q[0]), s1 = std::sin(q[0]), cf = std::cos(phi), sf = std::sin(phi);
+    const double c3 = std::cos(q[2]), s3 = std::sin(q[2]), c4 = std::cos(q[3]), s4 = std::sin(q[3]);
+    const double c5 = std::cos(q[4]), s5 = std::sin(q[4]);
+    const Vec3 x3(c3 * cf, c3 * sf, s3), z3(sf, -cf, 0);
+    const Vec3 x4 = c4 * x3 - s4 * z3, y4 = -s4 * x3 - c4 * z3;
+    p = Vec3(A1 * c1, A1 * s1, 0) + D3 * z3 + A4 * x4;
+    t = c5 * x4 + s5 * y4;
+}
+
+// The torch IK in closed form. With phi = theta1 + theta2 (frame 3's origin o3 = o4 lies in
+// the base plane z = 0):
+//   o3 = a1 (c1, s1, 0) + d3 z3,  z3 = (s_phi, -c_phi, 0),
+//   z4 = z5 = y3 = -s3 (c_phi, s_phi, 0) + c3 (0, 0, 1),  tip p = o3 + a4 x4,  torch t = x5,
+// and x4, x5 are normal to z4. So, with u = c_phi px + s_phi py, v = s_phi px - c_phi py,
+// tau = c_phi tx + s_phi ty, w = v - d3, K = (|p|^2 + a1^2 + d3^2 - a4^2) / 2 - d3 v:
+//   (i)   z4 . t = 0:          (s3, c3) = +-(tz, tau) / |(tz, tau)|,
+//   (ii)  z4 . (p - o3) = 0:   with (i), tz X = C := u tz - tau pz,
+//   (iii) |p - o3| = a4:       u X + w Y = K,
+// where (X, Y) = a1 (c2, s2). X^2 + Y^2 = a1^2 then gives
+//   P(phi) = C^2 w^2 + (tz K - u C)^2 - a1^2 tz^2 w^2 = 0,
+// a trigonometric polynomial of degree 4 in phi: up to 8 real roots, each with two theta3.
+namespace {
+
+struct TorchEq {
+    double px, py, pz, tx, ty, tz, A1, D3, K0;
+    struct At {
+        double c, s, u, v, tau, C, K, w, E, P, terms;
+    };
+    At at(double c, double s) const {
+        At a;
+        a.c = c;
+        a.s = s;
+        a.u = c * px + s * py;
+        a.v = s * px - c * py;
+        a.tau = c * tx + s * ty;
+        a.C = a.u * tz - a.tau * pz;
+        a.K = K0 - D3 * a.v;
+        a.w = a.v - D3;
+        a.E = tz * a.K - a.u * a.C;
+        const double cw = a.C * a.w, tw = A1 * tz * a.w;
+        a.P = cw * cw + a.E * a.E - tw * tw;
+        a.terms = cw * cw + a.E * a.E + tw * tw;
+        return a;
+    }
+    At at(double phi) const { return at(std::cos(phi), std::sin(phi)); }
+    double dP(const At& a) const {
+        const double du = -a.v, dv = a.u, dtau = -a.s * tx + a.c * ty;
+        const double dC = du * tz - dtau * pz, dK = -D3 * dv, dw = dv;
+        const double dE = tz * dK - du * a.C - a.u * dC;
+        return 2 * a.C * a.w * (dC * a.w + a.C * dw) + 2 * a.E * dE -
+               2 * A1 * A1 * tz * tz * a.w * dw;
+    }
+};
+
+// (1 + x^2)^4 e^{i k psi} with x = tan(psi / 2) is (1 + ix)^(4 + k) (1 - ix)^(4 - k): its
+// coefficients of x^0 .. x^8 for k = 0..4; and cos / sin of the 9 sample angles 2 pi j / 9.
+struct TorchTables {
+    std::complex<double> half[5][9];
+    double c9[9], s9[9];
+    TorchTables() {
+        for (int k = 0; k <= 4; ++k) {
+            std::complex<double> poly[9] = {1.0};
+            int deg = 0;
+            auto times = [&](std::complex<double> b) { // poly *= (1 + b x)
+                for (int m = deg + 1; m >= 1; --m)
+                    poly[m] += b * poly[m - 1];
+                ++deg;
+            };
+            for (int i = 0; i < 4 + k; ++i)
+                times({0, 1});
+            for (int i = 0; i < 4 - k; ++i)
+                times({0, -1});
+            for (int m = 0; m < 9; ++m)
+                half[k][m] = poly[m];
+        }
+        for (int j = 0; j < 9; ++j) {
+            c9[j] = std::cos(2 * kPi * j / 9);
+            s9[j] = std::sin(2 * kPi * j / 9);
+        }
+    }
+};
+
+const TorchTables& torchTables() {
+    static const TorchTables tables;
+    return tables;
+}
+
+// Points (X, Y) on the circle of radius r with u X + w Y = K: 0, 1 or 2. A line that misses
+// the circle by less than `slack` (relative) gives the circle's point nearest to it.
+int lineCircle(double u, double w, double K, double r, double slack, double X[2], double Y[2]) {
+    const double n = std::hypot(u, w);
+    if (!(n > 0)) return 0;
+    double c = K / (r * n);
+    if (!(std::fabs(c) <= 1 + slack)) return 0;
+    c = std::clamp(c, -1.0, 1.0);
+    const double base = std::atan2(w, u), off = std::acos(c);
+    X[0] = r * std::cos(base + off);
+    Y[0] = r * std::sin(base + off);
+    X[1] = r * std::cos(base - off);
+    Y[1] = r * std::sin(base - off);
+    return off == 0 ? 1 : 2;
+}
+
+} // namespace
+
+GrooveTorchIk GrooveArm::solveTorch(const Vec3& p, const Vec3& tIn) const {
+    GrooveTorchIk r;
+    const double A1 = g_.a1_mm, D3 = g_.d3_mm, A4 = g_.a4_mm, L = A1 + D3 + A4;
+    if (!p.allFinite() || !tIn.allFinite() || !(tIn.norm() > 0)) {
+        r.why = "the tip or the torch direction is not a finite vector (or the direction is zero)";
+        return r;
+    }
+    const Vec3 t = tIn.normalized();
+    // Reach: o3 runs over the annulus |a1 - d3| .. a1 + d3 of the plane z = 0, the tip is a4
+    // from it.
+    const double rxy = std::hypot(p.x(), p.y());
+    if (std::fabs(p.z()) > A4) {
+        r.why =
+            formatC("the tip is out of reach: it is %.1f mm %s the plane of links 1 and 2 (base "
+                    "z = 0), and the torch link reaches at most a4 = %.0f mm from that plane",
+                    std::fabs(p.z()), p.z() > 0 ? "above" : "below", A4);
+        return r;
+    }
     const double rho = std::sqrt(A4 * A4 - p.z() * p.z());
-    // The wrist W (origin of frame 4, z = 0) lies on a circle of radius rho about p; a 2R arm
-    // (a1 along theta1, d3 along theta12 - 90 deg) reaches it in two elbow branches. The axis
-    // a = z4 must be normal to both the torch and (p - W), and its horizontal part must lie
-    // along (cos theta12, sin theta12): f(psi) = 0.
-    struct Eval {
-        bool ok = false;
-        double f = 0, th1 = 0, th12 = 0;
-        Vec3 d{0, 0, 0};
+    const double rIn = std::max(0.0, std::fabs(D3 - A1) - rho), rOut = A1 + D3 + rho;
+    if (rxy > rOut + 1e-9 || rxy < rIn - 1e-9) {
+        r.why = formatC("the tip is out of reach: it is %.1f mm from joint 1's axis, and at %.1f "
+                        "mm from the plane of links 1 and 2 the arm reaches %.1f to %.1f mm from "
+                        "that axis (links %.0f and %.0f mm, torch link %.0f mm)",
+                        rxy, std::fabs(p.z()), rIn, rOut, A1, D3, A4);
+        return r;
+    }
+    const TorchEq eq{p.x(), p.y(), p.z(),
+                     t.x(), t.y(), t.z(),
+                     A1,    D3,    0.5 * (p.squaredNorm() + A1 * A1 + D3 * D3 - A4 * A4)};
+    const double tz = t.z(), pz = p.z();
+
+    // Joint values at phi for (X, Y) = a1 (c2, s2) and (s3, c3); theta4 and theta5 from the
+    // frames.
+    auto assemble = [&](double phi, double X, double Y, double s3, double c3) {
+        const double cf = std::cos(phi), sf = std::sin(phi);
+        const double n2 = std::hypot(X, Y), c2 = X / n2, s2 = Y / n2;
+        const double n3 = std::hypot(s3, c3);
+        s3 /= n3;
+        c3 /= n3;
+        const double c1 = cf * c2 + sf * s2, s1 = sf * c2 - cf * s2;
+        const Vec3 x3(c3 * cf, c3 * sf, s3), z3(sf, -cf, 0);
+        const Vec3 d = p - Vec3(A1 * c1 + D3 * sf, A1 * s1 - D3 * cf, 0);
+        const double th4 = std::atan2(-d.dot(z3), d.dot(x3));
+        const double c4 = std::cos(th4), s4 = std::sin(th4);
+        const Vec3 x4 = c4 * x3 - s4 * z3, y4 = -s4 * x3 - c4 * z3;
+        return Q5{std::atan2(s1, c1), std::atan2(s2, c2), std::atan2(s3, c3), th4,
+                  std::atan2(t.dot(y4), t.dot(x4))};
     };
-    auto eval = [&](double psi, double elbow) {
-        Eval e;
-        const Vec3 W(p.x() + rho * std::cos(psi), p.y() + rho * std::sin(psi), 0);
-        const double r2 = W.x() * W.x() + W.y() * W.y();
-        const double c = (r2 - A1 * A1 - D3 * D3) / (2 * A1 * D3);
-        if (std::fabs(c) > 1) return e;
-        const double s = elbow * std::sqrt((1 - c) * (1 + c));
-        const double rel = std::atan2(s, c); // phi - theta1, phi = theta12 - pi/2
-        e.th1 = std::atan2(W.y(), W.x()) - std::atan2(D3 * s, A1 + D3 * c);
-        e.th12 = e.th1 + rel + kPi / 2;
-        e.d = p - W;
-        const Vec3 m = e.d.cross(t);
-        e.f = -m.x() * std::sin(e.th12) + m.y() * std::cos(e.th12);
-        e.f /= std::max(1e-300, m.norm());
-        e.ok = m.norm() > 1e-9 * A4;
-        return e;
-    };
-    auto finish = [&](double psi, double elbow) {
-        const Eval e = eval(psi, elbow);
-        if (!e.ok) return;
-        const Vec3 m = e.d.cross(t).normalized();
-        const double c12 = std::cos(e.th12), s12 = std::sin(e.th12);
-        const Vec3 y2(-s12, c12, 0);
-        for (double sign : {1.0, -1.0}) {
-            const Vec3 a = sign * m;
-            const double s3 = -(a.x() * c12 + a.y() * s12), c3 = a.z();
-            const double th3 = std::atan2(s3, c3);
-            const Vec3 x3(c12 * c3, s12 * c3, s3);
-            const Vec3 dh = e.d / A4;
-            const double th4 = std::atan2(dh.dot(y2), dh.dot(x3));
-            const double th45 = std::atan2(t.dot(y2), t.dot(x3));
-            Q5 q = {e.th1, e.th12 - e.th1, th3, th4, th45 - th4};
-            if (!polish(nullptr, p, t, q, 12)) continue;
-            q = wrapped(q);
-            const Pose T = forward(q);
-            addUnique(out, {q, (T.translation() - p).norm() + (T.linear().col(0) - t).norm()});
+    // A candidate: kept when FK reproduces the target (tip < 1e-6 mm, direction < 1e-9),
+    // Gauss-Newton first when it is within the gate but not yet at 1e-10 mm / 1e-12. True when
+    // kept (also when it was already in the list).
+    double spacing = 1e-7; // distinct solutions (a continuum's sample: 5 deg apart)
+    auto consider = [&](Q5 q, double gateMm, double gateDir) {
+        Vec3 pp, tt;
+        torch(q, pp, tt);
+        double ep = (pp - p).norm(), eo = (tt - t).norm();
+        if (!(ep < gateMm && eo < gateDir)) return false;
+        if (ep > 1e-10 || eo > 1e-12) {
+            polish(nullptr, p, t, q, 12);
+            torch(q, pp, tt);
+            ep = (pp - p).norm();
+            eo = (tt - t).norm();
         }
+        if (!(ep < 1e-6 && eo < 1e-9)) return false;
+        addUnique(r.solutions, {wrapped(q), ep + eo}, spacing);
+        return true;
     };
-    constexpr int kSteps = 720;
-    // A root at the end of a reachable stretch of the circle (the 2R arm stretched or folded,
-    // where its two elbow branches meet) shows as a sign change across the fold, not along
-    // one branch (or as two roots close together): start Gauss-Newton from both branches.
-    {
-        Eval prev = eval(0, 1.0);
-        for (int k = 1; k <= kSteps; ++k) {
-            const double psi = 2 * kPi * k / kSteps;
-            const Eval cur = eval(psi, 1.0);
-            if (prev.ok != cur.ok) {
-                const double psiOk = prev.ok ? 2 * kPi * (k - 1) / kSteps : psi;
-                double in = psiOk, outPsi = prev.ok ? psi : 2 * kPi * (k - 1) / kSteps;
-                for (int it = 0; it < 50; ++it) {
-                    const double mid = 0.5 * (in + outPsi);
-                    (eval(mid, 1.0).ok ? in : outPsi) = mid;
-                }
-                for (double w : {0.0, 0.25, 0.5, 1.0})
-                    for (double elbow : {1.0, -1.0})
-                        finish(in + w * (psiOk - in), elbow);
+    // Seeds at phi where theta2 solves (iii) alone (the line meets the circle, or nearly) and
+    // theta3 solves (i) or (ii) alone. (ii) alone is exact where (i) holds for every theta3 (the
+    // torch along z3); both are near the solutions where the roots in phi crowd together.
+    auto tipSeeds = [&](double phi, bool fromTorch, bool fromTip, double slack, double gateMm,
+                        double gateDir) {
+        const TorchEq::At a = eq.at(phi);
+        double X[2], Y[2];
+        const int n = lineCircle(a.u, a.w, a.K, A1, slack, X, Y);
+        bool got = false;
+        for (int i = 0; i < n; ++i) {
+            const double sc[2][2] = {{tz, a.tau}, {pz, a.u - X[i]}};
+            for (int m = 0; m < 2; ++m) {
+                if (!(m == 0 ? fromTorch : fromTip)) continue;
+                if (!(std::hypot(sc[m][0], sc[m][1]) > (m == 0 ? 1e-9 : 1e-9 * L))) continue;
+                for (double sigma : {1.0, -1.0})
+                    got |= consider(assemble(phi, X[i], Y[i], sigma * sc[m][0], sigma * sc[m][1]),
+                                    gateMm, gateDir);
             }
-            prev = cur;
+        }
+        return got;
+    };
+
+    // P at 9 samples: its 9 Fourier coefficients exactly.
+    const TorchTables& tab = torchTables();
+    double P[9], pmax = 0, termMax = 0;
+    int jmax = 0;
+    for (int j = 0; j < 9; ++j) {
+        const TorchEq::At a = eq.at(tab.c9[j], tab.s9[j]);
+        P[j] = a.P;
+        termMax = std::max(termMax, a.terms);
+        if (std::fabs(a.P) > pmax) {
+            pmax = std::fabs(a.P);
+            jmax = j;
         }
     }
-    for (double elbow : {1.0, -1.0}) {
-        Eval prev = eval(0, elbow);
-        double prevPsi = 0;
-        for (int k = 1; k <= kSteps; ++k) {
-            const double psi = 2 * kPi * k / kSteps;
-            const Eval cur = eval(psi, elbow);
-            if (prev.ok && cur.ok && (prev.f == 0 || (prev.f < 0) != (cur.f < 0))) {
-                // Bisection (f is continuous on a reachable stretch of the circle).
-                double lo = prevPsi, hi = psi, flo = prev.f;
-                for (int it = 0; it < 60; ++it) {
-                    const double mid = 0.5 * (lo + hi);
-                    const Eval em = eval(mid, elbow);
-                    if (!em.ok) break;
-                    if ((em.f < 0) == (flo < 0)) {
-                        lo = mid;
-                        flo = em.f;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                finish(0.5 * (lo + hi), elbow);
-            }
-            prev = cur;
-            prevPsi = psi;
+    // Within 1e-9 of a horizontal torch with the tip in the plane z = 0 the solutions are
+    // those of that singular pose to within rounding: the same continuum.
+    const bool horizontalInPlane = std::hypot(tz, pz / A4) < 1e-9;
+    if (pmax <= 1e-12 * termMax || horizontalInPlane) {
+        // P vanishes for every phi: a continuum of solutions. List a sample of it.
+        r.continuum = true;
+        spacing = deg2rad(5);
+        for (int k = 0; k < 720; ++k)
+            tipSeeds(2 * kPi * k / 720, true, true, 0, 1e-3, 1e-6);
+        const bool alongAxis = rxy < 1e-9 * L && std::hypot(t.x(), t.y()) < 1e-9;
+        r.why = formatC(
+            "singular pose: %s; the arm reaches it in a continuum of ways, %zu of them are listed",
+            horizontalInPlane
+                ? "the torch is horizontal and the tip in the plane of links 1 and 2 (base z = 0), "
+                  "so with theta3 = 0 or 180 deg joints 4 and 5 are parallel to joints 1 and 2"
+            : alongAxis ? "the tip is on joint 1's axis and the torch along it, so turning joint 1 "
+                          "keeps the pose"
+                        : "the torch equations hold for every theta1 + theta2",
+            r.solutions.size());
+        return r;
+    }
+    double a[5] = {0, 0, 0, 0, 0}, b[5] = {0, 0, 0, 0, 0};
+    for (int j = 0; j < 9; ++j) {
+        a[0] += P[j] / 9;
+        for (int k = 1; k <= 4; ++k) {
+            a[k] += 2 * P[j] * tab.c9[(k * j) % 9] / 9;
+            b[k] += 2 * P[j] * tab.s9[(k * j) % 9] / 9;
         }
     }
-    return out;
+    // phi = phi0 + psi with psi = pi at the largest sample (x = tan(psi / 2) = infinity there,
+    // so the polynomial's leading coefficient is that sample: far from 0).
+    const double phi0 = 2 * kPi * jmax / 9 - kPi;
+    double coef[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (int k = 0; k <= 4; ++k) {
+        const double ck = std::cos(k * phi0), sk = std::sin(k * phi0);
+        const double A = a[k] * ck + b[k] * sk, B = b[k] * ck - a[k] * sk;
+        for (int m = 0; m < 9; ++m)
+            coef[m] += A * tab.half[k][m].real() + B * tab.half[k][m].imag();
+    }
+    Eigen::Matrix<double, 8, 8> M = Eigen::Matrix<double, 8, 8>::Zero();
+    for (int i = 1; i < 8; ++i)
+        M(i, i - 1) = 1;
+    for (int j = 0; j < 8; ++j)
+        M(0, j) = -coef[7 - j] / coef[8];
+    const Eigen::EigenSolver<Eigen::Matrix<double, 8, 8>> es(M, false);
+    if (es.info() == Eigen::Success) {
+        for (int i = 0; i < 8; ++i) {
+            const std::complex<double> z = es.eigenvalues()[i];
+            // Real roots, and complex ones close to real (a double root split by rounding).
+            if (std::fabs(z.imag()) > 1e-3 * (1 + std::norm(z))) continue;
+            double phi = phi0 + 2 * std::atan(z.real());
+            for (int it = 0; it < 8; ++it) { // Newton on P, short steps only
+                const TorchEq::At e = eq.at(phi);
+                const double d = eq.dP(e);
+                if (!(std::fabs(d) > 0)) break;
+                const double step = e.P / d;
+                if (!(std::fabs(step) < 0.05)) break;
+                phi -= step;
+                if (std::fabs(step) < 1e-15) break;
+            }
+            const TorchEq::At e = eq.at(phi);
+            const double nt = std::hypot(tz, e.tau);
+            bool got = false;
+            if (std::fabs(tz) > 1e-14 && nt > 1e-14) { // else the torch is along z3: below
+                const double X = e.C / tz;
+                double Ys[2] = {0, 0};
+                int ny = 1;
+                if (std::fabs(e.w) > 1e-6 * D3) {
+                    Ys[0] = (e.K - e.u * X) / e.w;
+                } else { // (iii) does not fix s2: both signs
+                    Ys[0] = std::sqrt(std::max(0.0, A1 * A1 - X * X));
+                    Ys[1] = -Ys[0];
+                    ny = 2;
+                }
+                for (int i2 = 0; i2 < ny; ++i2)
+                    for (double sigma : {1.0, -1.0})
+                        got |= consider(assemble(phi, X, Ys[i2], sigma * tz, sigma * e.tau), 1.0,
+                                        1e-2);
+            }
+            // Where the closed form is ill-conditioned (roots crowding together: a torch near
+            // horizontal, w near 0, a fold where two solutions meet) seed Gauss-Newton from
+            // theta2 of (iii) alone and theta3 of (i) or (ii) alone.
+            if (!got) tipSeeds(phi, true, true, 1e-3, 10.0, 0.05);
+        }
+    }
+    // A torch within 1e-3 of horizontal: the roots crowd in pairs round the two phi where the
+    // torch is along z3 (for a horizontal torch they are double, and theta3 is fixed by (ii)
+    // instead of (i)). Gauss-Newton from the horizontal torch's solutions finds them.
+    if (std::fabs(tz) < 1e-3) {
+        const double th = std::atan2(t.y(), t.x());
+        for (double phi : {th + kPi / 2, th - kPi / 2})
+            tipSeeds(phi, false, true, 1e-3, 100.0, 0.1);
+    }
+    if (r.solutions.empty()) {
+        // The tip is within reach (the annulus): the torch direction is not. How far off is the
+        // nearest direction the arm can point there (normal to z4 = y3 on the 1-D family of tip
+        // solutions)?
+        double best = 1e300;
+        for (int k = 0; k < 3600; ++k) {
+            const double phi = 2 * kPi * k / 3600;
+            const TorchEq::At e = eq.at(phi);
+            double X[2], Y[2];
+            const int n = lineCircle(e.u, e.w, e.K, A1, 0, X, Y);
+            for (int i = 0; i < n; ++i) {
+                const double s3 = pz, c3 = e.u - X[i], n3 = std::hypot(s3, c3);
+                if (!(n3 > 0)) continue;
+                const Vec3 z4(-s3 * e.c / n3, -s3 * e.s / n3, c3 / n3);
+                best = std::min(best, std::asin(std::min(1.0, std::fabs(z4.dot(t)))));
+            }
+        }
+        r.why = formatC("the torch cannot point along (%.4f, %.4f, %.4f) with the tip at (%.1f, "
+                        "%.1f, %.1f) mm (base frame): there it must lie in the plane normal to "
+                        "joints 4 and 5, and the nearest direction the arm reaches is %.2f deg "
+                        "away",
+                        t.x(), t.y(), t.z(), p.x(), p.y(), p.z(), rad2deg(best));
+    }
+    return r;
 }
 
 } // namespace cutcell::section_steel

@@ -34,6 +34,17 @@ struct GrooveArmSolution {
     double residual = 0; // |position| mm + |orientation| rad of FK(q) against the target
 };
 
+// Every solution of a torch target (GrooveArm::solveTorch), or why there is none.
+struct GrooveTorchIk {
+    std::vector<GrooveArmSolution> solutions;
+    // Empty when `solutions` is the complete (finite) set. Otherwise, in words: why there is no
+    // solution (the tip out of reach, with its distance and the reachable range in mm; a torch
+    // direction the arm cannot point at there, with how far off the nearest one is), or why
+    // `solutions` is only a sample (`continuum`: a singular pose with infinitely many).
+    std::string why;
+    bool continuum = false;
+};
+
 class GrooveArm {
   public:
     GrooveArm() = default;
@@ -47,10 +58,26 @@ class GrooveArm {
     // All solutions of a full pose (closed form: up to 4; none at the singular s3 = 0 where
     // joints 4/5 are parallel to joints 1/2). Each solution is polished by Gauss-Newton.
     std::vector<GrooveArmSolution> inverse(const Pose& target) const;
-    // All solutions that put the torch tip at p pointing along t (unit); the roll about the
-    // torch is free (the arm has 5 joints). A 1-D root search over the wrist position.
-    std::vector<GrooveArmSolution> inverseTorch(const Vec3& p, const Vec3& t) const;
-    // Gauss-Newton from q towards the torch target; true when converged (1e-10 mm / rad).
+    // All solutions that put the torch tip at p pointing along t (unit), both in the base
+    // frame; the roll about the torch is not a joint (5 constraints, 5 joints). Closed form:
+    // phi = theta1 + theta2 is a root of a trigonometric polynomial of degree 4 (up to 8 roots,
+    // from the eigenvalues of its companion matrix), each root gives theta2 and two theta3
+    // (theta3 + pi with theta4, theta5 to match): up to 16 solutions, each checked by FK
+    // (tip < 1e-6 mm, direction < 1e-9) and polished by Gauss-Newton where it needs it; a
+    // root where the closed form is ill-conditioned seeds Gauss-Newton from the tip alone. A
+    // torch within 1e-3 of horizontal (where the roots crowd together in pairs) is also solved
+    // from its horizontal neighbour's solutions by Gauss-Newton. Singular poses with a
+    // continuum of solutions (the torch horizontal and the tip in the plane z = 0, to within
+    // 1e-9; tip and torch on joint 1's axis): `continuum`, a sample 5 deg apart, and `why`.
+    // No solution: `why` (the tip out of reach, or the direction, in mm and deg).
+    GrooveTorchIk solveTorch(const Vec3& p, const Vec3& t) const;
+    std::vector<GrooveArmSolution> inverseTorch(const Vec3& p, const Vec3& t) const {
+        return solveTorch(p, t).solutions;
+    }
+    // Tip and torch direction (x5) at q in the base frame (closed form, cheaper than forward).
+    void torch(const Q5& q, Vec3& p, Vec3& t) const;
+    // Gauss-Newton from q towards the torch target (the roll about the torch left free); true
+    // when converged (1e-9 mm, 1e-11).
     bool trackTorch(const Vec3& p, const Vec3& t, Q5& q) const;
 
   private:

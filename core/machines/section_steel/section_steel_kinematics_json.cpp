@@ -46,16 +46,35 @@ Outcome SectionSteelModule::forwardKinematics(const Job& job, const std::string&
         return Outcome::refuse("--joints needs " + std::to_string(n) + " values (deg) for the " +
                                arm + " arm, found " + std::to_string(q.size()));
     const SteelCell cell(*s);
-    Vec3 p, t;
-    if (arm == "path")
+    if (arm == "path") {
+        Vec3 p, t;
         cell.pathTorch({deg2rad(q[0]), deg2rad(q[1]), deg2rad(q[2])}, p, t);
-    else
-        cell.grooveTorch(
-            {deg2rad(q[0]), deg2rad(q[1]), deg2rad(q[2]), deg2rad(q[3]), deg2rad(q[4])}, p, t);
-    *out = json::Object{{"arm", arm},
-                        {"frame", "cell (x along the bar, z up), mm"},
-                        {"tip_mm", vec(p)},
-                        {"torch", vec(t)}};
+        *out = json::Object{{"arm", arm},
+                            {"frame", "cell (x along the bar, z up), mm"},
+                            {"tip_mm", vec(p)},
+                            {"torch", vec(t)}};
+        return Outcome::done();
+    }
+    // The groove arm: the whole torch frame (frame 5: x = the torch, z = joint 5's axis) in the
+    // cell and in the arm's base frame {0}.
+    const Pose base = cell.groove.forward(
+        {deg2rad(q[0]), deg2rad(q[1]), deg2rad(q[2]), deg2rad(q[3]), deg2rad(q[4])});
+    const Pose world = cell.groove_base * base;
+    *out = json::Object{
+        {"arm", arm},
+        {"frame", "cell (x along the bar, z up), mm"},
+        {"tip_mm", vec(world.translation())},
+        {"torch", vec(world.linear().col(0))},
+        {"x_axis", vec(world.linear().col(0))},
+        {"y_axis", vec(world.linear().col(1))},
+        {"z_axis", vec(world.linear().col(2))},
+        {"base",
+         json::Object{{"frame", "groove arm base {0} (modified DH: z along joint 1, links 1 and 2 "
+                                "in its plane z = 0), mm"},
+                      {"tip_mm", vec(base.translation())},
+                      {"x_axis", vec(base.linear().col(0))},
+                      {"y_axis", vec(base.linear().col(1))},
+                      {"z_axis", vec(base.linear().col(2))}}}};
     return Outcome::done();
 }
 
@@ -80,14 +99,29 @@ Outcome SectionSteelModule::inverseKinematics(const Job& job, const std::string&
                                    "and tx = 0; mitred: the mitre plane of end_cut)");
         for (const auto& b : cell.path.inverse(pp))
             branches.push_back(branch(b.q, s->path_limits));
-    } else {
-        const Vec3 pb = cell.groove_base.inverse() * p;
-        const Vec3 tb = cell.groove_base.linear().transpose() * t;
-        for (const auto& b : cell.groove.inverseTorch(pb, tb))
-            branches.push_back(branch(b.q, s->groove_limits));
+        *out = json::Object{
+            {"arm", arm}, {"tip_mm", vec(p)}, {"torch", vec(t)}, {"branches", branches}};
+        return Outcome::done();
     }
-    *out =
-        json::Object{{"arm", arm}, {"tip_mm", vec(p)}, {"torch", vec(t)}, {"branches", branches}};
+    // The groove arm: every solution, or why there is none (then the command exits 3, as for
+    // an unreachable plan), or why the list is only a sample (a singular pose).
+    const Vec3 pb = cell.groove_base.inverse() * p;
+    const Vec3 tb = cell.groove_base.linear().transpose() * t;
+    const GrooveTorchIk ik = cell.groove.solveTorch(pb, tb);
+    for (const auto& b : ik.solutions)
+        branches.push_back(branch(b.q, s->groove_limits));
+    const char* status = ik.solutions.empty() ? "unreachable" : ik.continuum ? "singular" : "ok";
+    json::Object o{{"arm", arm},
+                   {"frame", "cell (x along the bar, z up), mm"},
+                   {"tip_mm", vec(p)},
+                   {"torch", vec(t)},
+                   {"base_tip_mm", vec(pb)},
+                   {"base_torch", vec(tb)},
+                   {"status", std::string(status)}};
+    if (!ik.why.empty()) o.emplace_back("reason", ik.why);
+    o.emplace_back("branches", branches);
+    *out = json::Value(std::move(o));
+    if (ik.solutions.empty()) return Outcome::incomplete("groove arm: " + ik.why);
     return Outcome::done();
 }
 
