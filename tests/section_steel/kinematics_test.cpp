@@ -444,7 +444,7 @@ TEST(SectionSteelGrooveArm, TorchIkRoundTrips10000) {
     }
     EXPECT_EQ(continua, 0);
     EXPECT_LE(worstP, 1e-9);
-    EXPECT_LE(worstT, 1e-11);
+    EXPECT_LE(worstT, 1e-13); // measured 9.3e-16
     std::printf("groove torch IK round trips: 10000 poses, %zu solutions (%.3f per pose), worst "
                 "%.3g mm / %.3g; solutions per pose:",
                 total, static_cast<double>(total) / 10000, worstP, worstT);
@@ -583,6 +583,9 @@ TEST(SectionSteelGrooveArm, TorchIkOutOfReachSaysWhy) {
         {{1000, 0, 400}, {1, 0, 0}, {"400.0 mm above the plane", "a4 = 310 mm"}},
         // In reach, but the torch cannot point that way there.
         {{50, 0, 20}, {0, 0, 1}, {"the torch cannot point along", "85.29 deg away"}},
+        // At the edge of the reach (|z| = a4): the tip's solutions are isolated points, no
+        // direction is sampled there - the reason says so instead of printing "1e300 deg away".
+        {{1500, 0, 310}, {0, 1, 0}, {"the torch cannot point along", "edge of the arm's reach"}},
     };
     for (const auto& c : cases) {
         const GrooveTorchIk ik = arm.solveTorch(c.p, c.t);

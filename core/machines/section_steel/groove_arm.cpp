@@ -161,8 +161,11 @@ std::vector<GrooveArmSolution> GrooveArm::inverse(const Pose& target) const {
     return out;
 }
 
-bool GrooveArm::trackTorch(const Vec3& p, const Vec3& t, Q5& q) const {
-    const bool ok = polish(nullptr, p, t, q, 12);
+bool GrooveArm::trackTorch(const Vec3& p, const Vec3& tIn, Q5& q) const {
+    // The step compares directions (t - x5): t must be a unit vector.
+    const double n = tIn.norm();
+    if (!(n > 0) || !std::isfinite(n)) return false;
+    const bool ok = polish(nullptr, p, tIn / n, q, 12);
     q = wrapped(q);
     return ok;
 }
@@ -326,9 +329,12 @@ GrooveTorchIk GrooveArm::solveTorch(const Vec3& p, const Vec3& tIn) const {
     };
     // A candidate: kept when FK reproduces the target (tip < 1e-6 mm, direction < 1e-9),
     // Gauss-Newton first when it is within the gate but not yet at 1e-10 mm / 1e-12. True when
-    // kept (also when it was already in the list).
+    // the candidate's own solution is in the list: added, or found there when Gauss-Newton
+    // stayed near the candidate (a candidate carried to a neighbour already listed does not
+    // count: its root's own solution may still be missing).
     double spacing = 1e-7; // distinct solutions (a continuum's sample: 5 deg apart)
     auto consider = [&](Q5 q, double gateMm, double gateDir) {
+        const Q5 assembled = q;
         Vec3 pp, tt;
         torch(q, pp, tt);
         double ep = (pp - p).norm(), eo = (tt - t).norm();
@@ -340,8 +346,9 @@ GrooveTorchIk GrooveArm::solveTorch(const Vec3& p, const Vec3& tIn) const {
             eo = (tt - t).norm();
         }
         if (!(ep < 1e-6 && eo < 1e-9)) return false;
+        const size_t before = r.solutions.size();
         addUnique(r.solutions, {wrapped(q), ep + eo}, spacing);
-        return true;
+        return r.solutions.size() > before || jointDistance(q, assembled) < 1e-3;
     };
     // Seeds at phi where theta2 solves (iii) alone (the line meets the circle, or nearly) and
     // theta3 solves (i) or (ii) alone. (ii) alone is exact where (i) holds for every theta3 (the
@@ -488,11 +495,17 @@ GrooveTorchIk GrooveArm::solveTorch(const Vec3& p, const Vec3& tIn) const {
                 best = std::min(best, std::asin(std::min(1.0, std::fabs(z4.dot(t)))));
             }
         }
-        r.why = formatC("the torch cannot point along (%.4f, %.4f, %.4f) with the tip at (%.1f, "
-                        "%.1f, %.1f) mm (base frame): there it must lie in the plane normal to "
-                        "joints 4 and 5, and the nearest direction the arm reaches is %.2f deg "
-                        "away",
-                        t.x(), t.y(), t.z(), p.x(), p.y(), p.z(), rad2deg(best));
+        if (best < 10) // radians: a direction was found on the sampled family
+            r.why = formatC("the torch cannot point along (%.4f, %.4f, %.4f) with the tip at "
+                            "(%.4g, %.4g, %.4g) mm (base frame): there it must lie in the plane "
+                            "normal to joints 4 and 5, and the nearest direction the arm reaches "
+                            "is %.2f deg away",
+                            t.x(), t.y(), t.z(), p.x(), p.y(), p.z(), rad2deg(best));
+        else // the tip is reached at isolated points only (the edge of the reach)
+            r.why = formatC("the torch cannot point along (%.4f, %.4f, %.4f) with the tip at "
+                            "(%.4g, %.4g, %.4g) mm (base frame): the tip lies at the edge of the "
+                            "arm's reach, where it points the torch in one plane only",
+                            t.x(), t.y(), t.z(), p.x(), p.y(), p.z());
     }
     return r;
 }

@@ -87,8 +87,16 @@ Outcome SectionSteelModule::inverseKinematics(const Job& job, const std::string&
         return Outcome::refuse("--pose needs 6 values: x, y, z (mm), tx, ty, tz (torch direction)");
     const Vec3 p(pose[0], pose[1], pose[2]);
     Vec3 t(pose[3], pose[4], pose[5]);
-    if (!(t.norm() > 1e-9))
-        return Outcome::refuse("--pose: the torch direction (tx, ty, tz) is zero");
+    // A position far beyond any cell (1e6 mm = 1 km) would overflow the frame change.
+    constexpr double kMaxMm = 1e6;
+    for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(p[i]) <= kMaxMm))
+            return Outcome::refuse(formatC("--pose: %c = %g mm is outside [-%g, %g] mm", "xyz"[i],
+                                           p[i], kMaxMm, kMaxMm));
+    const double big = t.cwiseAbs().maxCoeff(); // scaled first: 1e300 components do not overflow
+    if (!(big > 0) || !std::isfinite(big))
+        return Outcome::refuse("--pose: the torch direction (tx, ty, tz) is zero or not finite");
+    t /= big;
     t.normalize();
     const SteelCell cell(*s);
     json::Array branches;

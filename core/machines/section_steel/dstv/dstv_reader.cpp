@@ -228,25 +228,6 @@ class Reader {
     // when it starts with "**", else data.
     static bool isComment(const Line& l) { return trim(l.text).rfind("**", 0) == 0; }
     static bool isBlank(const Line& l) { return trim(l.text).empty(); }
-    static std::string blockCodeOf(const Line& l) {
-        std::string t = l.text;
-        if (const size_t c = t.find("**"); c != std::string::npos) t.erase(c);
-        t = trim(t);
-        const bool code = t.size() == 2 && std::isupper(static_cast<unsigned char>(t[0])) &&
-                          (std::isupper(static_cast<unsigned char>(t[1])) ||
-                           std::isdigit(static_cast<unsigned char>(t[1])));
-        if (!code) {
-            // "AK  v 0 0 0": a known code in columns 1-2 with data on its line.
-            const std::string c = l.text.substr(0, 2);
-            if (l.text.size() > 2 && isBlockCode(c) &&
-                std::isspace(static_cast<unsigned char>(l.text[2])) && !isComment(l))
-                throw DstvError(l.number, "text after the block code " + c + ": " +
-                                              json::quote(trim(l.text.substr(2))) +
-                                              " (a block's data go on the lines below it)");
-            return {};
-        }
-        return t;
-    }
     // The block code a line holds alone ("" when it holds anything else); never throws.
     static std::string plainBlockCode(const Line& l) {
         std::string t = l.text;
@@ -256,6 +237,19 @@ class Reader {
                           (std::isupper(static_cast<unsigned char>(t[1])) ||
                            std::isdigit(static_cast<unsigned char>(t[1])));
         return code ? t : std::string();
+    }
+    // The same, refusing a known code in columns 1-2 with data on its line ("AK  v 0 0 0").
+    static std::string blockCodeOf(const Line& l) {
+        std::string t = plainBlockCode(l);
+        if (t.empty()) {
+            const std::string c = l.text.substr(0, 2);
+            if (l.text.size() > 2 && isBlockCode(c) &&
+                std::isspace(static_cast<unsigned char>(l.text[2])) && !isComment(l))
+                throw DstvError(l.number, "text after the block code " + c + ": " +
+                                              json::quote(trim(l.text.substr(2))) +
+                                              " (a block's data go on the lines below it)");
+        }
+        return t;
     }
     static bool isData(const Line& l) {
         return !isBlank(l) && !isComment(l) && blockCodeOf(l).empty();
