@@ -14,6 +14,7 @@ namespace cutcell {
 namespace {
 
 template <class... F> struct Visit : F... { using F::operator()...; };
+template <class... F> Visit(F...) -> Visit<F...>; // clang 14 deduces no aggregate
 
 } // namespace
 
