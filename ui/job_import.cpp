@@ -13,6 +13,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace CutCell::ui {
 
 bool importJobFile(const std::string& importer, const QString& path, ImportOutcome* out,
@@ -95,10 +97,10 @@ void showImportBatchReport(QWidget* parent, const cutcell::ImportBatch& batch,
             .arg(batch.refused)
             .arg(folder),
         &dialog));
-    QStringList headers{QObject::tr("File"), QObject::tr("Result")};
+    // The reason right after the result: a refused row has nothing else to show.
+    QStringList headers{QObject::tr("File"), QObject::tr("Result"), QObject::tr("Refused because")};
     for (const std::string& c : batch.columns)
         headers << QString::fromStdString(c);
-    headers << QObject::tr("Refused because");
     auto* table = new QTableWidget(static_cast<int>(batch.rows.size()),
                                    static_cast<int>(headers.size()), &dialog);
     table->setObjectName(QStringLiteral("importBatchTable"));
@@ -112,12 +114,13 @@ void showImportBatchReport(QWidget* parent, const cutcell::ImportBatch& batch,
         };
         cell(QString::fromStdString(row.file));
         cell(row.imported ? QObject::tr("imported") : QObject::tr("refused"));
+        cell(QString::fromStdString(row.reason));
+        table->item(r, c - 1)->setToolTip(QString::fromStdString(row.reason));
         for (const std::string& col : batch.columns)
             cell(QString::fromStdString(cutcell::ImportBatch::fact(row, col)));
-        cell(QString::fromStdString(row.reason));
     }
-    table->horizontalHeader()->setStretchLastSection(true);
     table->resizeColumnsToContents();
+    table->setColumnWidth(2, std::min(table->columnWidth(2), 360)); // the whole text: tooltip
     layout->addWidget(table);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
     QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
