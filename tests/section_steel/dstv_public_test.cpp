@@ -82,8 +82,9 @@ TEST(DstvPublicFiles, EveryIULSectionImportsAndPlansEveryOtherPieceIsRefusedByLi
             ++refused;
             const std::string why = e.what();
             EXPECT_TRUE(std::regex_search(why, std::regex("^line [0-9]+: "))) << why;
-            if (!iul)
+            if (!iul) {
                 EXPECT_NE(why.find("profile code " + head.profile_code), std::string::npos) << why;
+            }
         }
     }
     std::printf("public DSTV files: %zu, I/U/L sections imported %d (planned %d), refused %d\n",
