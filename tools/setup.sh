@@ -25,6 +25,7 @@ packages=(
   nodejs
   nlohmann-json3-dev locales
   libsqlite3-dev sqlite3 libsodium-dev libpq-dev postgresql
+  liborocos-kdl-dev
 )
 # npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
 command -v npm >/dev/null || packages+=(npm)

@@ -22,7 +22,9 @@ int runBench(const BenchOptions& o);
 int runExport(const ExportOptions& o);
 int runMachines(const MachinesOptions& o); // machines_command.cpp
 int runUpgrade(const UpgradeOptions& o);   // machines_command.cpp
+int runTune(const TuneCommandOptions& o);  // tune_command.cpp
 int runFk(const KinematicsOptions& o);     // kinematics_command.cpp
+int runCompare(const CompareOptions& o);   // compare_command.cpp
 int runIk(const KinematicsOptions& o);     // kinematics_command.cpp
 int runImport(const ImportOptions& o);     // import_command.cpp
 int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)

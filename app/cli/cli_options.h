@@ -55,10 +55,23 @@ struct MachinesOptions {
 };
 
 // cutcell-cli fk / ik (arm machines): the arm, and the joints (deg) or the torch pose.
+struct CompareOptions {
+    std::string job;
+    std::string out; // default: ./compare-<job stem>
+};
+
 struct KinematicsOptions {
     std::string job;
     std::string arm;
     std::string values; // comma-separated numbers (C locale)
+};
+
+// cutcell-cli tune: the job, where the tuned job goes (empty: nowhere, the gains are printed)
+// and the closed-loop time constant (0: the machine's default).
+struct TuneCommandOptions {
+    std::string job;
+    std::string out;
+    double tau_c_ms = 0;
 };
 
 struct UpgradeOptions {

@@ -33,7 +33,9 @@ struct AllOptions {
     AuditOptions audit;
     MachinesOptions machines;
     UpgradeOptions upgrade;
+    TuneCommandOptions tune;
     KinematicsOptions fk, ik;
+    CompareOptions compare;
     std::deque<ImportOptions> imports; // one per importer (stable addresses for CLI11)
 };
 
@@ -150,6 +152,18 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                    "the machine's arm (pipe robot: arm; section-steel: path | groove)");
     ik->add_option("--pose", o.ik.values, "x,y,z (mm),tx,ty,tz (torch direction)")->required();
 
+    CLI::App* compare =
+        add("compare",
+            "both cutting methods (static and rotating pipe) simulated side by side: table, "
+            "time series and figures into DIR",
+            [&] { return runCompare(o.compare); });
+    addJob(*compare, o.compare.job);
+    compare
+        ->add_option("--out", o.compare.out,
+                     "output directory (default: ./compare-<job stem>): comparison.json, "
+                     "comparison.md, the figures as SVG and PNG (written as one unit)")
+        ->type_name("DIR");
+
     // import-<name>: one command per registered importer (MachineModule::importers()).
     for (const JobImporter& importer : jobImporters()) {
         ImportOptions& io = o.imports.emplace_back();
@@ -175,6 +189,19 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
             ->type_name("JOB.json|DIR")
             ->required();
     }
+
+    CLI::App* tune = add("tune",
+                         "the drives' PID gains from the machine's model (pipe robot: SIMC per "
+                         "axis): prints them; --out writes the job with them",
+                         [&] { return runTune(o.tune); });
+    addJob(*tune, o.tune.job);
+    tune->add_option("--out", o.tune.out,
+                     "write the tuned job here (atomically; give JOB itself to replace it); "
+                     "without it nothing is written")
+        ->type_name("FILE");
+    addNumber(*tune, "--tau-c-ms", o.tune.tau_c_ms, {0.01, 10000, "ms"},
+              "desired closed-loop time constant tau_c (default: SIMC's tight tuning, tau_c = "
+              "the effective delay theta)");
 
     CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
                             [&] { return runUpgrade(o.upgrade); });

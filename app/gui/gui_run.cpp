@@ -6,10 +6,12 @@
 #include "ui/panels/progress_panel.h"
 #include "ui/run_controller.h"
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPixmap>
+#include <QPointer>
 #include <QTimer>
 
 #include <algorithm>
@@ -79,15 +81,26 @@ void saveAndExit(MainWindow& window, const QString& path) {
 
 } // namespace
 
-void startScreenshotOnly(MainWindow& window, const QString& path) {
+bool startScreenshotOnly(MainWindow& window, const QString& path, const QString& press) {
+    QPointer<QAbstractButton> button;
+    if (!press.isEmpty()) {
+        button = window.findChild<QAbstractButton*>(press);
+        if (!button) {
+            std::fprintf(stderr, "cutcell: --press: the window has no button %s\n",
+                         press.toUtf8().constData());
+            return false;
+        }
+        button->click();
+    }
     auto* poll = new QTimer(&window);
     poll->setInterval(100);
-    QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, path] {
-        if (window.run()->planning()) return;
+    QObject::connect(poll, &QTimer::timeout, &window, [&window, poll, path, button] {
+        if (window.run()->planning() || (button && !button->isEnabled())) return;
         poll->stop();
         QTimer::singleShot(400, &window, [&window, path] { saveAndExit(window, path); });
     });
     poll->start();
+    return true;
 }
 
 namespace {

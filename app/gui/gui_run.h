@@ -20,8 +20,12 @@ struct RunOptions {
 // written), 1 on a fault, an emergency stop or an unreachable path, 3 on timeout.
 void startUnattendedRun(CutCell::ui::MainWindow& window, const RunOptions& options);
 
-// Saves the main window to `path` once planning has settled (no run), then exits 0.
-void startScreenshotOnly(CutCell::ui::MainWindow& window, const QString& path);
+// Saves the main window to `path` once planning has settled (no run), then exits 0. With
+// `press` (a push button's object name, e.g. the robot's "compareMethods"), first clicks that
+// button and waits until it is enabled again (the page's own work done). False, with the
+// reason on stderr, when the window has no such button.
+bool startScreenshotOnly(CutCell::ui::MainWindow& window, const QString& path,
+                         const QString& press = {});
 
 // Runs the current job in real time for `seconds` (or to completion) and prints
 // {"gui_max_stall_ms": ...} on stdout, then exits.

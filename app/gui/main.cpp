@@ -116,8 +116,14 @@ int main(int argc, char** argv) {
         "PostgreSQL server shared by the shop's cells (postgresql://user@host:port/db), or off "
         "(default: $XDG_DATA_HOME/cutcell/production.db; `cutcell-cli history` lists it).",
         "FILE|URL");
+    const QCommandLineOption pressOpt(
+        "press",
+        "With --screenshot: click the push button of this object name first (e.g. "
+        "compareMethods on the robot's Compare page) and take the shot once it is enabled "
+        "again.",
+        "NAME");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,
-                    languageOpt, viewOpt, recordOpt});
+                    languageOpt, viewOpt, recordOpt, pressOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
 
@@ -211,7 +217,8 @@ int main(int argc, char** argv) {
         if (opt.timeout_s <= 0) opt.timeout_s = 300;
         cutcell::app::startUnattendedRun(window, opt);
     } else if (cli.isSet(shotOpt)) {
-        cutcell::app::startScreenshotOnly(window, cli.value(shotOpt));
+        if (!cutcell::app::startScreenshotOnly(window, cli.value(shotOpt), cli.value(pressOpt)))
+            return 64;
     }
     return app.exec();
 }

@@ -21,6 +21,11 @@ class JointPlant {
     double position() const { return q_; }
     double velocity() const { return v_; }
     double torqueLimit() const { return limit_; }
+    // The exact discretisation: v+ = av v + bv u, q+ = q + aq v + bq u.
+    struct Coefficients {
+        double av, bv, aq, bq;
+    };
+    Coefficients coefficients() const { return {av_, bv_, aq_, bq_}; }
 
   private:
     double q_ = 0, v_ = 0;

@@ -17,10 +17,24 @@ class PidFilter {
 
     void configure(const PidGains& gains, double period_s);
     void reset() { x1_ = x2_ = 0; }
+    // The state of a loop that has been holding still (zero error) with this output: the
+    // integral carries it, e.g. the torque that holds an arm against gravity (no bump when a
+    // drive takes over from its brake). Needs Ki > 0; otherwise like reset().
+    void preload(double output) {
+        x1_ = 0;
+        x2_ = c2_ != 0 ? output / c2_ : 0;
+    }
     // Output for the error e at this sample; the state then advances one period.
     double step(double e);
     // Output without advancing (what step() would return).
     double output(double e) const { return c1_ * x1_ + c2_ * x2_ + d_ * e; }
+
+    // The discrete coefficients: x1+ = E x1 + g1 e, x2+ = x2 + g1 x1 + g2 e,
+    // V = c1 x1 + c2 x2 + d e (for analyses of the sampled loop, e.g. its margins).
+    struct Coefficients {
+        double E, g1, g2, c1, c2, d;
+    };
+    Coefficients coefficients() const { return {e_, g1_, g2_, c1_, c2_, d_}; }
 
     double x1() const { return x1_; }
     double x2() const { return x2_; }

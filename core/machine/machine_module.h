@@ -19,9 +19,11 @@
 #include "core/json/json.h"
 #include "core/machine/job_importer.h"
 #include "core/machine/plan_options.h"
+#include "core/sim/line_chart.h"
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cutcell {
@@ -73,6 +75,20 @@ struct ExportSettings {
     static const std::vector<std::string>& papers();
 };
 
+// What MachineModule::compareMethods gives (`cutcell-cli compare`): the files' contents and
+// the figures, each written as SVG and PNG under its file stem.
+struct MethodComparisonFiles {
+    std::string json;     // comparison.json: the table and the time series
+    std::string markdown; // comparison.md: the table
+    std::vector<std::pair<std::string, LineChart>> charts; // file stem -> figure
+};
+
+// How `cutcell-cli tune` and the forms ask a machine to tune its drives' controllers.
+struct TuneOptions {
+    double tau_c_s = 0; // desired closed-loop time constant; <= 0: the machine's default
+    PlanOptions plan;   // progress and cancel of the plan the tuning may need
+};
+
 class MachineModule {
   public:
     virtual ~MachineModule() = default;
@@ -118,6 +134,10 @@ class MachineModule {
     // "variant" of the cut where the machine has one (the robot's method); Refused when the value
     // is not one of the machine's or the machine has none.
     virtual Outcome setVariant(Job& job, const std::string& variant) const;
+    // The machine's cutting methods (its variants) side by side on one job, simulated offline
+    // (`cutcell-cli compare`): Ok; Incomplete with the files when a method could not be
+    // simulated (the message says which and why); Refused when the machine has none to compare.
+    virtual Outcome compareMethods(const Job& job, MethodComparisonFiles* out) const;
 
     virtual std::vector<ExportInfo> exports() const = 0;
     // The contents of one export of a plan (text, or the PDF's bytes). Throws
@@ -150,6 +170,11 @@ class MachineModule {
                                       const std::vector<double>& jointsDeg, json::Value* out) const;
     virtual Outcome inverseKinematics(const Job& job, const std::string& arm,
                                       const std::vector<double>& pose, json::Value* out) const;
+    // Tunes the drives' controllers of a valid job from the machine's model and writes the gains
+    // into job: Ok with the figures for the operator (a table, one line per axis) in *text;
+    // Refused with why, the job then unchanged: the key of the first issue of an invalid job, no
+    // key when the job cannot be planned, "machine.kind" from the default (no tuning).
+    virtual Outcome tuneControllers(Job& job, const TuneOptions& options, std::string* text) const;
     // File formats this machine turns into jobs (File -> Import..., `cutcell-cli
     // import-<name>`; core/machine/job_importer.h); none by default.
     virtual std::vector<JobImporter> importers() const { return {}; }

@@ -78,10 +78,20 @@ Outcome MachineModule::setVariant(Job&, const std::string& variant) const {
                            json::quote(variant) + ")");
 }
 
+Outcome MachineModule::compareMethods(const Job&, MethodComparisonFiles*) const {
+    return Outcome::refuse("machine " + json::quote(id()) + " has no cutting methods to compare");
+}
+
 Outcome MachineModule::offlineReport(const Job&, const MachinePlan&, std::string*,
                                      std::string*) const {
     return Outcome::refuse("machine " + json::quote(id()) +
                            " has no offline report; it runs in the engine: cutcell-cli run JOB");
+}
+
+Outcome MachineModule::tuneControllers(Job&, const TuneOptions&, std::string*) const {
+    return Outcome::refuse("machine " + json::quote(id()) +
+                               " has no controller tuning; set its gains in the job",
+                           "machine.kind");
 }
 
 Outcome MachineModule::forwardKinematics(const Job&, const std::string&, const std::vector<double>&,

@@ -27,7 +27,14 @@ DriveNode::DriveNode(const DriveNodeConfig& c) : cfg_(c), mech_(c.mechanics) {
     plant_.setState(c.start_position_rad, 0);
     cycleTargetRad_ = previousTargetRad_ = plantPosition();
     targetCounts_ = actualCounts();
+    updateBrake();
     resetCommunication();
+}
+
+void DriveNode::updateBrake() {
+    if (mech_)
+        mech_->setHeld(state_ != Cia402State::OperationEnabled &&
+                       state_ != Cia402State::QuickStopActive);
 }
 
 void DriveNode::resetCommunication() {
@@ -242,6 +249,9 @@ void DriveNode::onSdo(const CanFrame& in, std::vector<CanFrame>& out) {
 }
 
 void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
+    // A cycle's deferred loop steps are all run before the next SYNC samples.
+    while (hasDeferredStep())
+        runDeferredStep(out);
     ++syncs_;
     lastSync_s_ = now_s;
     // 1. Sample: TPDOs carry the state at the SYNC instant.
@@ -272,8 +282,20 @@ void DriveNode::onSync(double now_s, std::vector<CanFrame>& out) {
     const double cycle = cyclePeriodUs_ * 1e-6;
     const int steps =
         std::max(1, static_cast<int>(std::ceil(cycle / cfg_.max_loop_period_s - 1e-9)));
-    advance(steps, cycle / steps, out);
+    if (mech_ && mech_->sharedWithOtherNodes()) {
+        prepareLoop(cycle / steps);
+        deferredStep_ = 0;
+        deferredSteps_ = steps;
+        deferredH_ = cycle / steps;
+    } else {
+        advance(steps, cycle / steps, out);
+    }
     lastAdvance_s_ = now_s;
+}
+
+void DriveNode::runDeferredStep(std::vector<CanFrame>& out) {
+    if (!hasDeferredStep()) return;
+    loopStep(deferredStep_++, deferredSteps_, deferredH_, out);
 }
 
 void DriveNode::onRpdo(int which, const CanFrame& in, double now_s, std::vector<CanFrame>& out) {
@@ -326,7 +348,9 @@ void DriveNode::enterState(Cia402State s, double now_s) {
         // torque until the master's first target torque.
         previousTargetRad_ = cycleTargetRad_ = plantPosition();
         targetTorque_ = 0;
-        pid_.reset();
+        // Taking over from the brake (if the mechanics have one): the loop starts with the
+        // torque that holds the axis (0 without one: a reset loop).
+        pid_.preload(mech_ ? mech_->holdingTorque() : 0.0);
         enabledSince_s_ = now_s;
     } else {
         enabledSince_s_ = -1;
@@ -338,17 +362,25 @@ void DriveNode::enterState(Cia402State s, double now_s) {
         if (mode_ == kModeCyclicSyncTorque) s = Cia402State::SwitchOnDisabled;
     }
     state_ = s;
+    updateBrake();
 }
 
 void DriveNode::raiseFault(std::uint16_t code, std::vector<CanFrame>& out) {
     if (state_ == Cia402State::OperationEnabled) disabledAtSync_ = syncs_;
     state_ = Cia402State::Fault; // fault reaction: power stage off at once
+    updateBrake();
     enabledSince_s_ = -1;
     errorCode_ = code;
     out.push_back(encodeEmcy(cfg_.node, code, errorRegisterFor(code)));
 }
 
 void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
+    prepareLoop(h);
+    for (int j = 0; j < steps; ++j)
+        loopStep(j, steps, h, out);
+}
+
+void DriveNode::prepareLoop(double h) {
     if (std::fabs(h - loopPeriod_) > 1e-12) {
         loopPeriod_ = h;
         const double q = plant_.position(), v = plant_.velocity(); // the joint model's own
@@ -356,39 +388,38 @@ void DriveNode::advance(int steps, double h, std::vector<CanFrame>& out) {
         plant_.configure(cfg_.plant, h);
         plant_.setState(q, v);
     }
+}
+
+void DriveNode::loopStep(int j, int steps, double h, std::vector<CanFrame>& out) {
     const double window = followingWindow_ / cfg_.counts_per_rad;
     const double decel = quickStopDecel_ / cfg_.counts_per_rad;
-    for (int j = 0; j < steps; ++j) {
-        double u = 0;
-        if (mode_ == kModeCyclicSyncTorque) {
-            // CST: the master's torque, only while enabled (no position loop, no window).
-            if (state_ == Cia402State::OperationEnabled && !torqueLost_)
-                u = targetTorque_ * 1e-3 * ratedTorque();
-        } else if (state_ == Cia402State::OperationEnabled) {
-            const double r =
-                previousTargetRad_ + (cycleTargetRad_ - previousTargetRad_) * j / steps;
-            const double e = r - plantPosition();
-            u = pid_.step(e);
-            if (torqueLost_) u = 0;
-            if (std::fabs(e) > window) {
-                followingError_ = true;
-                raiseFault(emcy_code::kFollowingError, out);
-                u = 0;
-            }
-        } else if (state_ == Cia402State::QuickStopActive) {
-            // Reference decelerates at 0x6085 to rest; the position loop follows it.
-            const double dv = std::min(std::fabs(quickStopVelocity_), decel * h);
-            quickStopVelocity_ -= std::copysign(dv, quickStopVelocity_);
-            previousTargetRad_ += quickStopVelocity_ * h;
-            u = pid_.step(previousTargetRad_ - plantPosition());
-            if (quickStopVelocity_ == 0 && std::fabs(plantVelocity()) < 1e-3 &&
-                quickStopOption_ != 6) {
-                enterState(Cia402State::SwitchOnDisabled, -1);
-                u = 0;
-            }
+    double u = 0;
+    if (mode_ == kModeCyclicSyncTorque) {
+        // CST: the master's torque, only while enabled (no position loop, no window).
+        if (state_ == Cia402State::OperationEnabled && !torqueLost_)
+            u = targetTorque_ * 1e-3 * ratedTorque();
+    } else if (state_ == Cia402State::OperationEnabled) {
+        const double r = previousTargetRad_ + (cycleTargetRad_ - previousTargetRad_) * j / steps;
+        const double e = r - plantPosition();
+        u = pid_.step(e);
+        if (torqueLost_) u = 0;
+        if (std::fabs(e) > window) {
+            followingError_ = true;
+            raiseFault(emcy_code::kFollowingError, out);
+            u = 0;
         }
-        lastTorque_ = plantStep(u, h);
+    } else if (state_ == Cia402State::QuickStopActive) {
+        // Reference decelerates at 0x6085 to rest; the position loop follows it.
+        const double dv = std::min(std::fabs(quickStopVelocity_), decel * h);
+        quickStopVelocity_ -= std::copysign(dv, quickStopVelocity_);
+        previousTargetRad_ += quickStopVelocity_ * h;
+        u = pid_.step(previousTargetRad_ - plantPosition());
+        if (quickStopVelocity_ == 0 && std::fabs(plantVelocity()) < 1e-3 && quickStopOption_ != 6) {
+            enterState(Cia402State::SwitchOnDisabled, -1);
+            u = 0;
+        }
     }
+    lastTorque_ = plantStep(u, h);
 }
 
 DriveNode::Pdo* DriveNode::pdoFor(std::uint16_t index) {

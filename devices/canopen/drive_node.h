@@ -78,6 +78,12 @@ class DriveNode {
     void injectFault(std::uint16_t code, std::vector<CanFrame>& out) { raiseFault(code, out); }
     void stopHeartbeat() { heartbeatStopped_ = true; }
 
+    // Coupled mechanics (TorquePlant::sharedWithOtherNodes): a SYNC leaves the loop steps of
+    // the coming cycle to be run one at a time, interleaved with the other nodes' (the drive
+    // simulator runs them right after the SYNC has reached every node).
+    bool hasDeferredStep() const { return deferredStep_ < deferredSteps_; }
+    void runDeferredStep(std::vector<CanFrame>& out);
+
     int node() const { return cfg_.node; }
     NmtState nmtState() const { return nmt_; }
     Cia402State driveState() const { return state_; }
@@ -108,7 +114,13 @@ class DriveNode {
     void setControlword(std::uint16_t cw, double now_s, std::vector<CanFrame>& out);
     void enterState(Cia402State s, double now_s);
     void raiseFault(std::uint16_t code, std::vector<CanFrame>& out);
+    // The mechanics' brake follows the power stage (torque only in Operation Enabled and Quick
+    // Stop Active).
+    void updateBrake();
     void advance(int steps, double h, std::vector<CanFrame>& out);
+    // advance() in parts: the loop period for h, then loop step j of `steps`.
+    void prepareLoop(double h);
+    void loopStep(int j, int steps, double h, std::vector<CanFrame>& out);
     void superviseMaster(double now_s, std::vector<CanFrame>& out);
     // A SYNC's counter against 0x1019 (false: a communication error, already reacted to).
     bool syncInSequence(const CanFrame& in, std::uint8_t counter, double now_s,
@@ -170,6 +182,8 @@ class DriveNode {
     double lastSync_s_ = -1;    // wall time of the last SYNC (< 0: none yet)
     double lastAdvance_s_ = -1; // wall time the plant was last advanced to
     std::uint64_t syncs_ = 0;
+    int deferredStep_ = 0, deferredSteps_ = 0; // loop steps of this cycle left to the simulator
+    double deferredH_ = 0;
 };
 
 // Counts per radian for a joint given in counts per degree (or per mm for linear axes, where

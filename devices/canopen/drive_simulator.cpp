@@ -200,6 +200,15 @@ void DriveSimulator::onFramesReceived() {
             n.handle(f, t, out_);
         for (DriveNode& n : nodes_)
             n.handle(f, t, out_);
+        // Nodes on coupled mechanics: their loop steps of the cycle a SYNC started, in turn.
+        for (bool any = true; any;) {
+            any = false;
+            for (DriveNode& n : nodes_)
+                if (n.hasDeferredStep()) {
+                    n.runDeferredStep(out_);
+                    any = true;
+                }
+        }
         send(out_);
     }
     publish();

@@ -3,6 +3,13 @@
 // itself with the core's PID (first-order filter) on the core's joint plant, one step per
 // write(), in the same order as simulateCut() (sample, PID, plant).
 //
+// Shared mechanics (optional, devices/sim/shared_mechanics.h): the drive's axis is one of the
+// cell's coupled mechanics instead of its own joint plant. write() then gives the hub its loop
+// torque and the first read() of the next cycle (any drive of the cell) steps all axes at once.
+// While the drive has no torque (not Enabled nor QuickStop) its axis is on its brake (held);
+// on Enabled the brake releases and the loop starts from the holding torque (PidFilter::
+// preload), or from 0 with gravity feed-forward. Without shared mechanics: the joint plant.
+//
 // Lifecycle like a CiA 402 drive: activate() -> Enabling for enable_delay_s -> Enabled
 // (holding its actual position); deactivate() -> Disabled at once (torque off, the axis
 // coasts); quickStop() -> QuickStop (holds the position where it was) for quick_stop_s, then
@@ -19,9 +26,11 @@
 #include "core/control/pid_filter.h"
 #include "core/devices/device_interfaces.h"
 #include "core/job/job.h"
+#include "devices/sim/shared_mechanics.h"
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 
 namespace cutcell {
 
@@ -32,6 +41,10 @@ struct SimulatedDriveConfig {
     double initial_position = 0;
     double enable_delay_s = 0.002;
     double quick_stop_s = 0.01;
+    // The cell's coupled mechanics and this drive's axis in them (null: the joint plant
+    // above, from initial_position; with mechanics, plant and initial_position are unused).
+    std::shared_ptr<SharedMechanics> mechanics;
+    int axis = 0;
 };
 
 class SimulatedDrive : public AxisDrive {
@@ -55,13 +68,18 @@ class SimulatedDrive : public AxisDrive {
     void clearInjections();
 
     // Simulation only (engine thread or before the engine runs): the true plant state.
-    double truePosition() const { return plant_.position(); }
-    double trueVelocity() const { return plant_.velocity(); }
+    double truePosition() const { return mech_ ? mech_->position(axis_) : plant_.position(); }
+    double trueVelocity() const { return mech_ ? mech_->velocity(axis_) : plant_.velocity(); }
 
   private:
+    // The brake follows the state: on while the drive gives no torque.
+    void updateBrake();
+
     SimulatedDriveConfig cfg_;
     PidFilter pid_;
     JointPlant plant_;
+    SharedMechanics* mech_ = nullptr; // owned by cfg_.mechanics
+    int axis_ = 0;
     DriveState state_ = DriveState::Disabled;
     std::uint32_t faultCode_ = 0;
     double now_ = 0;

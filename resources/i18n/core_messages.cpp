@@ -243,16 +243,21 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "the torch must tilt %.2f deg into the plane of joint 1 (5-DOF arm), more than cut.max_direction_deviation_deg = %.2f deg"),
+    QT_TRANSLATE_NOOP("CoreMessage", "path not reachable"),
     QT_TRANSLATE_NOOP("CoreMessage", "out of reach: the wrist is %.3f mm beyond the arm's reach (joint 3)"),
     QT_TRANSLATE_NOOP("CoreMessage", "joint %d = %.3f deg is past its limit %.3f deg by %.3f deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "singular at joint %d (its angle is undefined here)"),
     QT_TRANSLATE_NOOP("CoreMessage", "torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only tilt its torch within that plane)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the inertia tensor has a negative principal moment %.6g kg cm^2"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the principal moments %.6g, %.6g, %.6g kg cm^2 break the triangle inequality (the largest may be at most the sum of the others)"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].min_deg = %.6g deg must be below robot.dh[%d].max_deg = %.6g deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].min_deg = %.6g deg: the axis's range must hold its reference 0 deg (at most 0 deg)"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].max_deg = %.6g deg: the axis's range must hold its reference 0 deg (at least 0 deg)"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].alpha_deg = %.6g deg: the pipe robot's inverse kinematics needs %.6g deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[%d].%s = %.6g mm: the pipe robot's inverse kinematics needs 0 mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "robot.links[%zu] (link %zu): %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "robot.chuck.inertia_kg_m2 = %.6g kg m^2: the chuck axis has no inertia (chuck, pipe and rotor sum to 0)"),
     QT_TRANSLATE_NOOP("CoreMessage", "controller[%d].tau_f_s = %.6g s must be >= half the control period (%.6g s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "path not reachable (%s method): %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm"),
@@ -264,6 +269,13 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "not feasible: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s"),
     QT_TRANSLATE_NOOP("CoreMessage", "did not finish %d strokes in %d s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "too short: %zu samples for a %.3g s window"),
+    QT_TRANSLATE_NOOP("CoreMessage", "no period between %.4g s and %.4g s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "not periodic: the autocorrelation's best peak, at %.4g Hz, is %.2f (less than %.2f)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%.4g Hz oscillation below the floor (amplitude %.3g <= %.3g)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "decaying: the %.4g Hz oscillation falls to %.2f of its amplitude over the window (less than %.2f)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "limit cycle: %.4g Hz sustained (periodicity %.2f, late/early amplitude %.2f)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the k2 sweep would compute about %.3g samples (%d runs of %.3g), over the bound of %.3g"),
     QT_TRANSLATE_NOOP("CoreMessage", "holding"),
     QT_TRANSLATE_NOOP("CoreMessage", "open-loop return (push)"),
     QT_TRANSLATE_NOOP("CoreMessage", "open-loop return (brake)"),
@@ -522,6 +534,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 512;
+const int kCoreMessageCount = 524;
 
 } // namespace CutCell::ui

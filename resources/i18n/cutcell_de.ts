@@ -1155,6 +1155,11 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>path not reachable</source>
+        <translation>Bahn nicht erreichbar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>out of reach: the wrist is %.3f mm beyond the arm&apos;s reach (joint 3)</source>
         <translation>außer Reichweite: das Handgelenk liegt %.3f mm jenseits der Reichweite des Arms (Gelenk 3)</translation>
     </message>
@@ -1172,6 +1177,16 @@
         <location line="+1"/>
         <source>torch axis is %.3f deg off the plane of joint 1 (a 5-DOF arm can only tilt its torch within that plane)</source>
         <translation>die Brennerachse liegt %.3f deg außerhalb der Ebene von Gelenk 1 (ein 5-achsiger Arm kann seinen Brenner nur in dieser Ebene neigen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the inertia tensor has a negative principal moment %.6g kg cm^2</source>
+        <translation>der Trägheitstensor hat ein negatives Hauptträgheitsmoment %.6g kg cm^2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the principal moments %.6g, %.6g, %.6g kg cm^2 break the triangle inequality (the largest may be at most the sum of the others)</source>
+        <translation>die Hauptträgheitsmomente %.6g, %.6g, %.6g kg cm^2 verletzen die Dreiecksungleichung (das größte darf höchstens die Summe der anderen sein)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1205,11 +1220,56 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>robot.links[%zu] (link %zu): %s</source>
+        <translation>robot.links[%zu] (Glied %zu): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>robot.chuck.inertia_kg_m2 = %.6g kg m^2: the chuck axis has no inertia (chuck, pipe and rotor sum to 0)</source>
+        <translation>robot.chuck.inertia_kg_m2 = %.6g kg m^2: die Futterachse hat keine Trägheit (Futter, Rohr und Rotor ergeben zusammen 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>controller[%d].tau_f_s = %.6g s must be &gt;= half the control period (%.6g s)</source>
         <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+11"/>
+        <source>too short: %zu samples for a %.3g s window</source>
+        <translation>zu kurz: %zu Abtastwerte für ein Fenster von %.3g s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no period between %.4g s and %.4g s</source>
+        <translation>keine Periode zwischen %.4g s und %.4g s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not periodic: the autocorrelation&apos;s best peak, at %.4g Hz, is %.2f (less than %.2f)</source>
+        <translation>nicht periodisch: die höchste Spitze der Autokorrelation, bei %.4g Hz, beträgt %.2f (weniger als %.2f)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%.4g Hz oscillation below the floor (amplitude %.3g &lt;= %.3g)</source>
+        <translation>Schwingung mit %.4g Hz unter der Schwelle (Amplitude %.3g &lt;= %.3g)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>decaying: the %.4g Hz oscillation falls to %.2f of its amplitude over the window (less than %.2f)</source>
+        <translation>abklingend: die Schwingung mit %.4g Hz fällt im Fenster auf %.2f ihrer Amplitude (weniger als %.2f)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>limit cycle: %.4g Hz sustained (periodicity %.2f, late/early amplitude %.2f)</source>
+        <translation>Grenzzyklus: %.4g Hz anhaltend (Periodizität %.2f, Amplitude spät/früh %.2f)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the k2 sweep would compute about %.3g samples (%d runs of %.3g), over the bound of %.3g</source>
+        <translation>der k2-Durchlauf würde etwa %.3g Abtastwerte berechnen (%d Läufe zu %.3g), über der Grenze von %.3g</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>the offline simulation would compute about %.3g samples (%zu controllers x (%.1f s of tracking + %d strokes of about %.2f s) / control.sample_time_s = %.3g s), over the bound of %.3g samples: use a longer sample time or fewer strokes</source>
         <translation>die Offline-Simulation würde etwa %.3g Abtastwerte rechnen (%zu Regler x (%.1f s Folgeregelung + %d Hübe von etwa %.2f s) / control.sample_time_s = %.3g s), über der Grenze von %.3g Abtastwerten: eine längere Abtastzeit oder weniger Hübe wählen</translation>
     </message>
@@ -2204,7 +2264,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-266"/>
+        <location line="-273"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2254,7 +2314,7 @@
         <translation>%d Hübe nicht in %d s beendet</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>holding</source>
         <translation>hält</translation>
     </message>
@@ -2494,7 +2554,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-88"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2514,7 +2574,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+87"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -2997,19 +3057,181 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ControllerForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+40"/>
+        <location filename="../../ui/machines/pipe_robot/controller_form.cpp" line="+63"/>
+        <location line="+193"/>
+        <source>0 chuck</source>
+        <translation>0 Futter</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>1 base</source>
+        <translation>1 Basis</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>2 shoulder</source>
+        <translation>2 Schulter</translation>
+    </message>
+    <message>
+        <location line="-192"/>
+        <location line="+193"/>
+        <source>3 elbow</source>
+        <translation>3 Ellbogen</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>4 wrist</source>
+        <translation>4 Handgelenk</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+193"/>
+        <source>5 roll</source>
+        <translation>5 Rollachse</translation>
+    </message>
+    <message>
+        <location line="-190"/>
+        <source>link %1</source>
+        <translation>Glied %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>PID with first-order filter, per joint</source>
         <translation>PID mit Filter 1. Ordnung, je Gelenk</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); output in N m.</source>
         <translation>C(s) = (Kd s + Kp + Ki/s) / (tau_f s + 1); Ausgang in N m.</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>Tune (SIMC)</source>
+        <translation>Einstellen (SIMC)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Kp, Ki and Kd of every joint by Skogestad&apos;s SIMC rules (tight: tau_c = theta) from the joint&apos;s inertia and viscous friction: the rigid-body model at the cut&apos;s mean pose, or the linear plant rows. tau_f stays.</source>
+        <translation>Kp, Ki und Kd jedes Gelenks nach Skogestads SIMC-Regeln (straff: tau_c = theta) aus Trägheit und viskoser Reibung des Gelenks: das Starrkörpermodell in der mittleren Stellung des Schnitts oder die Zeilen der linearen Strecke. tau_f bleibt.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Mechanics of the simulated drives</source>
+        <translation>Mechanik der simulierten Antriebe</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rigid body</source>
+        <translation>Starrkörper</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Linear plant</source>
+        <translation>Lineare Strecke</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Plant model</source>
+        <translation>Streckenmodell</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Gravity feed-forward</source>
+        <translation>Schwerkraft-Vorsteuerung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rigid body: the arm&apos;s links and the drive trains below, coupled. Linear: one inertia and viscous friction per joint.</source>
+        <translation>Starrkörper: die Glieder des Arms und die Antriebsstränge unten, gekoppelt. Linear: eine Trägheit und eine viskose Reibung je Gelenk.</translation>
+    </message>
+    <message>
         <location line="+5"/>
-        <source>Joint plant (simulated drives)</source>
-        <translation>Regelstrecke Gelenk (simulierte Antriebe)</translation>
+        <source>Joint plant (linear model)</source>
+        <translation>Gelenkstrecke (lineares Modell)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Arm links (rigid-body model)</source>
+        <translation>Glieder des Arms (Starrkörpermodell)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Centre of mass in the link&apos;s frame; inertia tensor about the centre of mass, in the same frame.</source>
+        <translation>Schwerpunkt im Koordinatensystem des Glieds; Trägheitstensor um den Schwerpunkt, im selben System.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Drive trains (rigid-body model)</source>
+        <translation>Antriebsstränge (Starrkörpermodell)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Rotor inertia on the motor side; friction and torque limit on the joint side.</source>
+        <translation>Rotorträgheit auf der Motorseite; Reibung und Momentgrenze auf der Gelenkseite.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Chuck (rigid-body model)</source>
+        <translation>Futter (Starrkörpermodell)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Chuck inertia</source>
+        <translation>Trägheit des Futters</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Pipe density</source>
+        <translation>Dichte des Rohrs</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The pipe in the chuck turns with it: the chuck&apos;s inertia adds it.</source>
+        <translation>Das Rohr im Futter dreht sich mit: die Trägheit des Futters schließt es ein.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+24"/>
+        <source>Not tuned: %1</source>
+        <translation>Nicht eingestellt: %1</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>Not tuned: the job has invalid values; correct the marked fields first.</source>
+        <translation>Nicht eingestellt: der Auftrag hat ungültige Werte; zuerst die markierten Felder berichtigen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Tuning: planning the cut for its mean pose...</source>
+        <translation>Einstellen: der Schnitt wird für seine mittlere Stellung geplant ...</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Not tuned: the job changed while tuning; tune again.</source>
+        <translation>Nicht eingestellt: der Auftrag hat sich beim Einstellen geändert; erneut einstellen.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1: J = %2 kg m², b = %3 N m s/rad, theta = %4 ms, Kc = %5 N m/rad, tau_I = %6 ms, tau_D = %7 ms, gain margin %8</source>
+        <translation>%1: J = %2 kg m², b = %3 N m s/rad, theta = %4 ms, Kc = %5 N m/rad, tau_I = %6 ms, tau_D = %7 ms, Amplitudenreserve %8</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>rigid body at the cut&apos;s mean pose</source>
+        <translation>Starrkörper in der mittleren Stellung des Schnitts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>linear plant rows</source>
+        <translation>Zeilen der linearen Strecke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SIMC gains written (%1): tau_c = theta = %2 ms, gain margin %3 or more.</source>
+        <translation>SIMC-Verstärkungen eingetragen (%1): tau_c = theta = %2 ms, Amplitudenreserve %3 oder mehr.</translation>
     </message>
 </context>
 <context>
@@ -3937,7 +4159,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::JobForm</name>
     <message>
-        <location filename="../../ui/forms/job_form.cpp" line="+256"/>
+        <location filename="../../ui/forms/job_form.cpp" line="+259"/>
         <source>Range %1 to %2 %3</source>
         <translation>Bereich %1 bis %2 %3</translation>
     </message>
@@ -4332,6 +4554,160 @@ entriegeln</translation>
         <location line="+1"/>
         <source>The machine is %1. Quitting stops it at once (emergency stop). Quit?</source>
         <translation>Maschinenzustand: %1. Beenden stoppt die Maschine sofort (NOT-HALT). Beenden?</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::MethodComparisonForm</name>
+    <message>
+        <location filename="../../ui/machines/pipe_robot/method_comparison_page.cpp" line="+32"/>
+        <source>static pipe</source>
+        <translation>stehendes Rohr</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rotating pipe</source>
+        <translation>drehendes Rohr</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Compare methods</source>
+        <translation>Verfahren vergleichen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plans and simulates the job&apos;s cut with the pipe static and with the pipe turning (seed 000, Fig. 11-14).</source>
+        <translation>Plant und simuliert den Schnitt des Auftrags mit stehendem und mit drehendem Rohr (Seed 000, Abb. 11-14).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Compare the job&apos;s cut with the pipe static and with the pipe turning: joint errors and the torch tip&apos;s error over time.</source>
+        <translation>Vergleicht den Schnitt des Auftrags mit stehendem und mit drehendem Rohr: Gelenkfehler und Fehler der Brennerspitze über der Zeit.</translation>
+    </message>
+    <message>
+        <location line="+150"/>
+        <source>Joint errors, %1</source>
+        <translation>Gelenkfehler, %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>commanded - actual (deg)</source>
+        <translation>Soll - Ist (deg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tip position error, %1</source>
+        <translation>Positionsfehler der Spitze, %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FK(actual) - FK(commanded) (mm)</source>
+        <translation>FK(Ist) - FK(Soll) (mm)</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <source>a comparison is running</source>
+        <translation>ein Vergleich läuft</translation>
+    </message>
+    <message>
+        <location line="-70"/>
+        <source>Max |joint error| (deg) and the tip error&apos;s range min … max (mm, robot base frame), over every cycle:</source>
+        <translation>Max. |Gelenkfehler| (deg) und Bereich des Spitzenfehlers min. … max. (mm, Roboter-Basissystem), über alle Zyklen:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Static</source>
+        <translation>Stehend</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rotating</source>
+        <translation>Drehend</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ratio</source>
+        <translation>Verhältnis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pipe static</source>
+        <translation>Rohr stehend</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pipe turning</source>
+        <translation>Rohr drehend</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rotating / static of the max |error| (n/a where the static figure is zero)</source>
+        <translation>Drehend / stehend des max. |Fehlers| (k. A., wo der stehende Wert null ist)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Joint 0 (chuck)</source>
+        <translation>Gelenk 0 (Futter)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Joint %1</source>
+        <translation>Gelenk %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Tip %1</source>
+        <translation>Spitze %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Figures of the static pipe (Fig. 11, 13)</source>
+        <translation>Diagramme des stehenden Rohrs (Abb. 11, 13)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Figures of the rotating pipe (Fig. 12, 14)</source>
+        <translation>Diagramme des drehenden Rohrs (Abb. 12, 14)</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Planning and simulating both methods ...</source>
+        <translation>Beide Verfahren werden geplant und simuliert ...</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The comparison was cancelled.</source>
+        <translation>Der Vergleich wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 s simulated at %3 ms per cycle</source>
+        <translation>%1: %2 s simuliert mit %3 ms je Zyklus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: not simulated - %2</source>
+        <translation>%1: nicht simuliert - %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>n/a</source>
+        <translation>k. A.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 … %2</source>
+        <translation>%1 … %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>joint %1</source>
+        <translation>Gelenk %1</translation>
     </message>
 </context>
 <context>
@@ -5392,7 +5768,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelEndCutForm</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+242"/>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+243"/>
         <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
         <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
     </message>
@@ -5490,7 +5866,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelSectionForm</name>
     <message>
-        <location line="-292"/>
+        <location line="-293"/>
         <source>L (equal legs)</source>
         <translation>L (gleichschenklig)</translation>
     </message>
@@ -5585,7 +5961,7 @@ letzte %1 s</translation>
         <translation>Teil (aus der Konstruktionssoftware)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Order %1, drawing %2, phase %3, piece mark %4, steel %5, quantity %6 (the job cuts one piece)</source>
         <translation>Auftrag %1, Zeichnung %2, Phase %3, Positionsnummer %4, Stahl %5, Stückzahl %6 (der Auftrag schneidet ein Teil)</translation>
     </message>
@@ -5742,7 +6118,7 @@ letzte %1 s</translation>
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/job_import.cpp" line="+23"/>
+        <location filename="../../ui/job_import.cpp" line="+25"/>
         <source>No importer &quot;%1&quot; in this build.</source>
         <translation>Kein Import &quot;%1&quot; in dieser Version.</translation>
     </message>
@@ -5786,7 +6162,7 @@ letzte %1 s</translation>
         <translation>%1 Datei(en): %2 importiert, %3 abgelehnt. Die Aufträge und import-report.csv liegen in %4.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
@@ -5796,12 +6172,12 @@ letzte %1 s</translation>
         <translation>Ergebnis</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+0"/>
         <source>Refused because</source>
         <translation>Abgelehnt, weil</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>imported</source>
         <translation>importiert</translation>
     </message>
@@ -5937,7 +6313,7 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+77"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+82"/>
         <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+99"/>
         <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="+49"/>
         <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+47"/>
@@ -5955,7 +6331,7 @@ letzte %1 s</translation>
         <translation>Drehendes Rohr: das Futter dreht das Rohr so, dass der Schnittpunkt oben bleibt; der Brenner fährt auf einer kurzen Geraden.</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-59"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-63"/>
         <source>Pipe-cutting robot: 5-DOF arm + pipe chuck (6 axes)</source>
         <translation>Rohrschneidroboter: 5-achsiger Arm + Rohrfutter (6 Achsen)</translation>
     </message>
@@ -5976,7 +6352,12 @@ letzte %1 s</translation>
         <translation>Regler</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+2"/>
+        <source>Compare</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).</source>
         <translation>%1 Punkte geplant, %2 mm in %3 s (max. Brennerneigung %4 deg).</translation>
     </message>
@@ -6086,7 +6467,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+197"/>
+        <location filename="../../app/gui/main.cpp" line="+203"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>
@@ -6456,7 +6837,7 @@ letzte %1 s</translation>
         <translation>Zufallsstartwert</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+22"/>
         <source>Steps per revolution (n)</source>
         <translation>Schritte pro Umdrehung (n)</translation>
     </message>
@@ -6556,7 +6937,7 @@ letzte %1 s</translation>
         <translation>Coulomb-Reibung</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-84"/>
         <source>Torque limit</source>
         <translation>Momentgrenze</translation>
     </message>
@@ -6592,6 +6973,81 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+45"/>
+        <source>mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>com x</source>
+        <translation>SP x</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>com y</source>
+        <translation>SP y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>com z</source>
+        <translation>SP z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ixx</source>
+        <translation>Ixx</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Iyy</source>
+        <translation>Iyy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Izz</source>
+        <translation>Izz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ixy</source>
+        <translation>Ixy</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ixz</source>
+        <translation>Ixz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Iyz</source>
+        <translation>Iyz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gear N</source>
+        <translation>Getriebe N</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rotor J</source>
+        <translation>Rotor J</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>viscous</source>
+        <translation>viskos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coulomb</source>
+        <translation>Coulomb-Reibung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torque limit</source>
+        <translation>Momentgrenze</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>alpha</source>
         <translation>alpha</translation>
     </message>

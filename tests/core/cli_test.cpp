@@ -4,6 +4,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "core/machines/pipe_robot/pipe_robot_tuning.h"
 
 #include <gtest/gtest.h>
 
@@ -309,4 +310,57 @@ TEST(Cli, PipeRobotForwardThenInverseListsTheJoints) {
     const Result arm = runCli("ik " + defaultJobPath() + " --arm path --pose 1,2,3,0,0,1");
     EXPECT_EQ(arm.code, 64);
     EXPECT_NE(arm.output.find("--arm"), std::string::npos) << arm.output;
+}
+
+// cutcell-cli tune: prints the SIMC gains and touches no file without --out; --out writes the
+// job with them (the rest of the job as it was), also over the job itself; a machine without
+// tuning is a usage error, a cut that cannot be planned exit 3.
+TEST(Cli, TunePrintsTheGainsAndWritesOnlyWhereTold) {
+    const fs::path dir = tempDir("tune");
+    const Job original = loadJobFile(defaultJobPath());
+    const fs::path job = dir / "job.json";
+    saveJobFile(original, job.string());
+    const std::string before = readTextFile(job.string());
+
+    const Result look = runCli("tune " + job.string());
+    EXPECT_EQ(look.code, 0) << look.output;
+    for (const char* s :
+         {"chuck (theta0)", "theta5", "Kp", "tau_f", "integrating with lag", "not written"})
+        EXPECT_NE(look.output.find(s), std::string::npos) << s << "\n" << look.output;
+    EXPECT_EQ(readTextFile(job.string()), before);
+
+    const PipeRobotTuning expected = tunePipeRobot(original);
+    const fs::path out = dir / "tuned.json";
+    const Result write = runCli("tune " + job.string() + " --out " + out.string());
+    EXPECT_EQ(write.code, 0) << write.output;
+    Job tuned = loadJobFile(out.string());
+    for (size_t i = 0; i < kAxisCount; ++i) {
+        const PidGains& g = pipeRobotSpec(tuned).controller[i];
+        EXPECT_EQ(g.kp, expected.gains[i].kp) << i;
+        EXPECT_EQ(g.ki, expected.gains[i].ki) << i;
+        EXPECT_EQ(g.kd, expected.gains[i].kd) << i;
+        EXPECT_EQ(g.tau_f, pipeRobotSpec(original).controller[i].tau_f) << i;
+    }
+    pipeRobotSpec(tuned).controller = pipeRobotSpec(original).controller;
+    EXPECT_EQ(json::write(jobToJson(tuned)), json::write(jobToJson(original)));
+
+    // A slower closed loop: smaller gains. Over the job itself.
+    const Result smooth = runCli("tune " + job.string() + " --tau-c-ms 10 --out " + job.string());
+    EXPECT_EQ(smooth.code, 0) << smooth.output;
+    EXPECT_LT(pipeRobotSpec(loadJobFile(job.string())).controller[2].kp, expected.gains[2].kp);
+    EXPECT_EQ(runCli("tune " + job.string() + " --tau-c-ms 0").code, 64);
+
+    const Result saw =
+        runCli("tune " + std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/flying_saw_job.json");
+    EXPECT_EQ(saw.code, 64) << saw.output;
+    EXPECT_NE(saw.output.find("has no controller tuning"), std::string::npos) << saw.output;
+
+    Job unreachable = original;
+    pipeRobotSpec(unreachable).method = CutMethod::StaticPipe;
+    unreachable.cut.target = CutTarget::Branch;
+    saveJobFile(unreachable, (dir / "far.json").string());
+    const Result far = runCli("tune " + (dir / "far.json").string() + " --out " +
+                              (dir / "far_tuned.json").string());
+    EXPECT_EQ(far.code, 3) << far.output;
+    EXPECT_FALSE(fs::exists(dir / "far_tuned.json"));
 }

@@ -41,9 +41,14 @@ int runCli(const std::string& args) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// The default job with its method replaced (plan has no --method option).
+// The robot's golden input: the default job as it was before the rigid-body plant (its gains,
+// one linear plant per joint, "plant_model": "linear"). The linear plant's outputs must not
+// change; the rigid-body plant is checked by its own tests.
+const fs::path kRobotJob = kSource / "tests/data/golden/robot_linear_job.json";
+
+// The robot's golden job with its method replaced (plan has no --method option).
 fs::path jobWithMethod(const fs::path& dir, const std::string& method) {
-    std::string text = readAll(kSource / "resources/jobs/default_job.json");
+    std::string text = readAll(kRobotJob);
     const std::string from = "\"method\": \"rotating_pipe\"";
     const size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos);
@@ -55,7 +60,7 @@ fs::path jobWithMethod(const fs::path& dir, const std::string& method) {
 
 // Writes every golden output into dir (relative names as under tests/data/golden).
 std::vector<std::string> generate(const fs::path& dir) {
-    const std::string defaultJob = (kSource / "resources/jobs/default_job.json").string();
+    const std::string defaultJob = kRobotJob.string();
     const std::string profileJob = (kSource / "resources/jobs/profile_cutter_job.json").string();
     for (const std::string method : {"static_pipe", "rotating_pipe"}) {
         const fs::path job = jobWithMethod(dir, method);

@@ -145,7 +145,12 @@ TEST(Machines, NumbersHavePhysicalRanges) {
          "machine.cut.speed_mm_s = 0.001 mm/s is outside [0.1, 500] mm/s"},
         {"\"speed_mm_s\": 4.397", "\"speed_mm_s\": 1e-300",
          "machine.cut.speed_mm_s = 1e-300 mm/s is outside [0.1, 500] mm/s"},
-        {"\"kp_nm_per_rad\": 1080", "\"kp_nm_per_rad\": 1e308",
+        {"\"mass_kg\": 1.9049", "\"mass_kg\": -1",
+         "machine.robot.links[0].mass_kg = -1 kg is outside [0, 500] kg"},
+        {"\"ixx_kg_cm2\": 246.509", "\"ixx_kg_cm2\": 900", "break the triangle inequality"},
+        {"\"gear_ratio\": 50", "\"gear_ratio\": 0.5",
+         "machine.robot.drives[0].gear_ratio = 0.5  is outside [1, 1000]"},
+        {"\"kp_nm_per_rad\": 889.06", "\"kp_nm_per_rad\": 1e308",
          "machine.controller[0].kp_nm_per_rad = 1e+308 N m/rad is outside [0, 1e+06] N m/rad"},
     };
     for (const auto& c : cases) {

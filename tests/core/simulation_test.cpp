@@ -15,9 +15,10 @@ using namespace cutcell;
 
 namespace {
 
-TrackingReport run(CutMethod m) {
+TrackingReport run(CutMethod m, PlantModel model = PlantModel::Linear) {
     Job job = defaultJob();
     cutcell::pipeRobotSpec(job).method = m;
+    cutcell::pipeRobotSpec(job).plant_model = model;
     const CutPlan plan = planCut(job);
     EXPECT_TRUE(plan.reachable) << plan.problem;
     return simulateCut(job, plan);
@@ -41,6 +42,8 @@ TEST(Simulation, DefaultJobIsAThirtySecondCut) {
     EXPECT_EQ(r.steps, static_cast<long>(std::llround(r.simulated_s / job.sim.period_s)) + 1);
 }
 
+// The linear plant (one J q'' + b q' = u per joint, the job's plant[] rows): its figures are
+// the golden ones of the sessions before the rigid-body plant, unchanged.
 TEST(Simulation, BothMethodsStayWithinTheSeedsFigures) {
     const TrackingReport stat = run(CutMethod::StaticPipe);
     const TrackingReport rot = run(CutMethod::RotatingPipe);
@@ -61,7 +64,7 @@ TEST(Simulation, BothMethodsStayWithinTheSeedsFigures) {
     EXPECT_LT(rot.max_torque_fraction, 1.0);
 }
 
-TEST(Simulation, RotatingPipeTracksBetterThanStaticPipe) {
+TEST(Simulation, LinearPlantRotatingPipeTracksBetterThanStaticPipe) {
     const TrackingReport stat = run(CutMethod::StaticPipe);
     const TrackingReport rot = run(CutMethod::RotatingPipe);
     EXPECT_LT(maxJoint(rot), maxJoint(stat));

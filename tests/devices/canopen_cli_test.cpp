@@ -100,6 +100,14 @@ class CanOpenCliTest : public QObject {
 
     const QString cli_ = QStringLiteral(CUTCELL_CLI);
     const QString job_ = QStringLiteral(CUTCELL_SOURCE_DIR "/resources/jobs/default_job.json");
+    // The default job's coupled rigid-body arm without Coulomb friction: over CAN and in process
+    // the drives' loops then start the cut from the same settled state, so the bus's effect on
+    // the dynamics can be compared to 10 %. (With friction the loops hunt around the first cut
+    // point before Start, and each run starts from a different stick-slip state: the max errors
+    // then differ by up to 40 % between two runs of the same plant, bus or not - see README,
+    // "The arm's mechanics".)
+    const QString dynamicsJob_ =
+        QStringLiteral(CUTCELL_SOURCE_DIR "/tests/data/robot_rigid_frictionless_job.json");
     QString interface_;
     QTemporaryDir dir_;
 
@@ -230,21 +238,26 @@ class CanOpenCliTest : public QObject {
         interface_ = QString("tcp://127.0.0.1:%1/can0").arg(cutcell::test::freeLocalPort());
     }
 
-    void defaultJobOverCanTracksLikeTheInProcessSimulation() {
+    // At 1000 counts/deg the rigid-body arm's errors without friction (~0.001 deg) are one
+    // count: the coarse comparison runs on the linear joint plants it was written for (the
+    // golden files' job); fineEncodersShowTheSameDynamics compares the coupled arm.
+    void linearJobOverCanTracksLikeTheInProcessSimulation() {
+        const QString linear =
+            QStringLiteral(CUTCELL_SOURCE_DIR "/tests/data/golden/robot_linear_job.json");
         QProcess sim;
-        QVERIFY(startDriveSim(sim));
+        QVERIFY(startDriveSim(sim, {linear}));
         QByteArray out, err;
-        const int code = simulateOverCan(job_, {}, out, err);
+        const int code = simulateOverCan(linear, {}, out, err);
         stop(sim);
         QVERIFY2(code == 0, err.constData());
         const QJsonObject can = QJsonDocument::fromJson(out).object();
         QCOMPARE(can["devices"].toObject()["kind"].toString(), QString("canopen"));
-        compare(inProcess(cli_, job_), can, 1000);
+        compare(inProcess(cli_, linear), can, 1000);
     }
 
     void fineEncodersShowTheSameDynamics() {
         // With 100 000 counts/deg quantisation vanishes and the plant/PID dynamics must agree.
-        QFile in(job_);
+        QFile in(dynamicsJob_);
         QVERIFY(in.open(QIODevice::ReadOnly));
         QByteArray text = in.readAll();
         text.replace("\"counts_per_unit\": [1000, 1000, 1000, 1000, 1000, 1000]",

@@ -1,5 +1,6 @@
 #include "engine_fixture.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "devices/machines/pipe_robot/pipe_robot_shared_mechanics.h"
 
 namespace cutcell::test {
 
@@ -26,15 +27,25 @@ std::shared_ptr<const MotionProgram> quickProgram() {
     return program;
 }
 
-SimCell::SimCell(const CellOptions& o) : program_(o.quick ? quickProgram() : testProgram()) {
-    const Job& job = testJob();
+SimCell::SimCell(const CellOptions& o)
+    : program_(o.program ? o.program
+               : o.quick ? quickProgram()
+                         : testProgram()) {
+    const Job& job = o.job ? *o.job : testJob();
     EngineDevices devices;
+    // The six drives share the job's mechanics, as in the simulated cell (the plant of
+    // simulateCut()).
+    JointVector q0 = JointVector::Zero();
+    q0[0] = deg2rad(o.chuck_start_deg);
+    const auto mechanics = makePipeRobotSharedMechanics(job, job.sim.period_s, q0);
     for (int i = 0; i < kAxisCount; ++i) {
         SimulatedDriveConfig dc;
         dc.gains = cutcell::pipeRobotSpec(job).controller[static_cast<size_t>(i)];
         dc.plant = cutcell::pipeRobotSpec(job).plant[static_cast<size_t>(i)];
         dc.period_s = job.sim.period_s;
-        dc.initial_position = i == 0 ? deg2rad(o.chuck_start_deg) : 0.0;
+        dc.initial_position = q0[i];
+        dc.mechanics = mechanics;
+        dc.axis = i;
         drives_.push_back(std::make_unique<SimulatedDrive>(dc));
         devices.axes[static_cast<size_t>(i)] = drives_.back().get();
     }
@@ -46,6 +57,7 @@ SimCell::SimCell(const CellOptions& o) : program_(o.quick ? quickProgram() : tes
     config.spec.estop_category = o.category;
     config.spec.runs_dir = o.runs_dir;
     config.telemetry_every_n_cycles = o.telemetry_every;
+    config.in_position_window = pipeRobotInPositionWindow(job, config.in_position_window);
     if (o.quick) config.spec.home_speed_deg_s = 90;
     engine_ = std::make_unique<MotionEngine>(devices, config);
     engine_->load(program_);

@@ -31,6 +31,9 @@ struct CellOptions {
     std::uint32_t telemetry_every = 1;
     ClockMode clock = ClockMode::AsFastAsPossible;
     bool quick = false; // quickProgram() and a faster home speed
+    // Another job and its program (both or neither; null: testJob() and the program above).
+    const Job* job = nullptr;
+    std::shared_ptr<const MotionProgram> program;
 };
 
 class SimCell {

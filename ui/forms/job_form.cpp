@@ -249,8 +249,11 @@ int JobForm::rowCount(const QTableWidget* table) {
 void JobForm::setColumnHeader(QTableWidget* table, int column, const char* label, const char* unit,
                               double lo, double hi, bool checked) {
     const QString u = displayUnit(unit);
-    auto* item =
-        new QTableWidgetItem(fieldLabel(label) + QStringLiteral("\n[") + u + QStringLiteral("]"));
+    // A ratio (no unit) keeps the header's second line, without an empty "[]".
+    auto* item = new QTableWidgetItem(fieldLabel(label) +
+                                      (u.trimmed().isEmpty()
+                                           ? QStringLiteral("\n")
+                                           : QStringLiteral("\n[") + u + QStringLiteral("]")));
     if (checked)
         item->setToolTip(
             tr("Range %1 to %2 %3").arg(shownSignificant(lo, 6), shownSignificant(hi, 6), u));

@@ -8,6 +8,7 @@ set(CUTCELL_MACHINE_UI_SOURCES
   ${_m}/pipe_robot/method_form.cpp
   ${_m}/pipe_robot/robot_dh_table_form.cpp
   ${_m}/pipe_robot/controller_form.cpp
+  ${_m}/pipe_robot/method_comparison_page.cpp
   ${_m}/profile_cutter/profile_cutter_ui.cpp
   ${_m}/profile_cutter/profile_cutter_form.cpp
   ${_m}/quick_return/quick_return_ui.cpp

@@ -1,7 +1,7 @@
 #include "core/machines/pipe_robot/cut_simulation.h"
 
-#include "core/control/joint_plant.h"
 #include "core/control/pid_filter.h"
+#include "core/machines/pipe_robot/pipe_robot_mechanics.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 
 #include <algorithm>
@@ -10,6 +10,10 @@
 namespace cutcell {
 
 TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
+    return simulateCut(job, plan, nullptr);
+}
+
+TrackingReport simulateCut(const Job& job, const CutPlan& plan, const CutSampleObserver& onSample) {
     const PipeRobotSpec& spec = pipeRobotSpec(job);
     TrackingReport report;
     report.axis_count = kAxisCount;
@@ -28,13 +32,16 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
     const double ramp = (profile.duration() - plan.length_mm / job.cut.speed_mm_s);
     const double cruiseFrom = ramp, cruiseTo = plan.cut_time_s - ramp;
     std::array<PidFilter, kAxisCount> pid;
-    std::array<JointPlant, kAxisCount> plant;
-    const JointSample start = plan.spline.evaluate(0);
+    PipeRobotMechanics plant(job, T);
+    plant.setState(plan.spline.evaluate(0).q);
+    // The drives have been holding the start pose: each loop starts with the torque that
+    // holds it (gravity, on the rigid-body plant), as a drive releasing its brake does.
     for (int i = 0; i < kAxisCount; ++i) {
         pid[static_cast<size_t>(i)].configure(spec.controller[static_cast<size_t>(i)], T);
-        plant[static_cast<size_t>(i)].configure(spec.plant[static_cast<size_t>(i)], T);
-        plant[static_cast<size_t>(i)].setState(start.q[i], 0);
+        if (!spec.gravity_feedforward) pid[static_cast<size_t>(i)].preload(plant.holdingTorque(i));
     }
+    JointVector torque = JointVector::Zero(), applied = JointVector::Zero();
+    JointVector gravity = JointVector::Zero();
     const double simulated = std::max(job.sim.duration_s, plan.cut_time_s);
     const long steps = static_cast<long>(std::ceil(simulated / T - 1e-9));
     JointVector actual = JointVector::Zero();
@@ -42,16 +49,19 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan) {
         const double t = static_cast<double>(k) * T;
         const JointVector ref = plan.spline.position(t);
         for (int i = 0; i < kAxisCount; ++i)
-            actual[i] = plant[static_cast<size_t>(i)].position();
+            actual[i] = plant.position(i);
         // The tips are computed once and shared by the overall and the cruise figures.
+        if (onSample) onSample(t, ref, actual);
         const TipSample tips = stats.tips(ref, actual);
         stats.add(ref, actual, tips);
         if (t >= cruiseFrom && t <= cruiseTo) cruise.add(ref, actual, tips);
-        for (int i = 0; i < kAxisCount; ++i) {
-            const size_t a = static_cast<size_t>(i);
-            const double u = plant[a].step(pid[a].step(ref[i] - actual[i]));
-            stats.addTorqueFraction(std::fabs(u) / plant[a].torqueLimit());
-        }
+        // Optional gravity compensation at the measured pose (off by default, as in the seed).
+        if (spec.gravity_feedforward) plant.gravityTorques(actual, gravity);
+        for (int i = 0; i < kAxisCount; ++i)
+            torque[i] = pid[static_cast<size_t>(i)].step(ref[i] - actual[i]) + gravity[i];
+        plant.step(torque, applied);
+        for (int i = 0; i < kAxisCount; ++i)
+            stats.addTorqueFraction(std::fabs(applied[i]) / plant.torqueLimit(i));
     }
     stats.fill(report);
     cruise.fillCruise(report);

@@ -5,9 +5,15 @@
 #include "core/machines/pipe_robot/cut_planner.h"
 #include "core/sim/tracking_stats.h"
 
+#include <functional>
+
 namespace cutcell {
 
 // Simulated time: the longer of sim.duration_s and the cut itself.
 TrackingReport simulateCut(const Job& job, const CutPlan& plan);
+// The same, calling onSample(t, commanded, actual) every cycle after the axes are sampled.
+using CutSampleObserver =
+    std::function<void(double t, const JointVector& commanded, const JointVector& actual)>;
+TrackingReport simulateCut(const Job& job, const CutPlan& plan, const CutSampleObserver& onSample);
 
 } // namespace cutcell

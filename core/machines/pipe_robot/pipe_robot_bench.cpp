@@ -1,9 +1,12 @@
 // The pipe robot's figures for `cutcell-cli bench` (the default job at 1 kHz): the time of one
-// IK solve, and planning plus the offline simulation of the cut against the time it simulates.
+// IK solve, planning plus the offline simulation of the cut against the time it simulates, the
+// simulation alone on each plant model, and one forward dynamics of the arm.
 #include "core/machines/pipe_robot/cut_simulation.h"
+#include "core/machines/pipe_robot/pipe_robot_mechanics.h"
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <random>
 #include <vector>
@@ -40,6 +43,50 @@ double benchIk(const Job& job, int poses, int repeats) {
     return seconds(t0, t1) * 1e9 / (static_cast<double>(poses) * repeats);
 }
 
+// Simulated seconds per wall second of simulateCut alone (the plan made once) on a plant model,
+// best of `runs`.
+double benchSimulate(Job job, PlantModel model, int runs) {
+    pipeRobotSpec(job).plant_model = model;
+    const CutPlan plan = planCut(job);
+    double best = 1e300, simulated = 0;
+    for (int run = 0; run < runs; ++run) {
+        const auto t0 = Clock::now();
+        simulated = simulateCut(job, plan).simulated_s;
+        best = std::min(best, seconds(t0, Clock::now()));
+    }
+    return simulated / best;
+}
+
+// Mean time (us) of one ChainDynamics::forwardDynamics of the job's arm at random states, best
+// of five batches.
+double benchForwardDynamics(const Job& job, int repeats) {
+    const ChainDynamics arm = pipeRobotArmDynamics(pipeRobotSpec(job));
+    using V = ChainDynamics::Vector;
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-1, 1);
+    constexpr int kStates = 256;
+    std::vector<std::array<V, 3>> states(kStates);
+    for (auto& s : states)
+        for (V& v : s) {
+            v.setZero();
+            for (int i = 0; i < arm.size(); ++i)
+                v[i] = 3 * u(rng);
+        }
+    V qdd;
+    volatile double sink = 0;
+    double best = 1e300;
+    for (int batch = 0; batch < 5; ++batch) {
+        const auto t0 = Clock::now();
+        for (int r = 0; r < repeats; ++r)
+            for (const auto& s : states) {
+                arm.forwardDynamics(s[0], s[1], s[2], qdd);
+                sink = sink + qdd[0];
+            }
+        best = std::min(best, seconds(t0, Clock::now()));
+    }
+    return best * 1e6 / (static_cast<double>(kStates) * repeats);
+}
+
 } // namespace
 
 void PipeRobotModule::addBenchFigures(bool quick, json::Object& out) const {
@@ -59,6 +106,12 @@ void PipeRobotModule::addBenchFigures(bool quick, json::Object& out) const {
     out.emplace_back("simulate_seconds", best);
     out.emplace_back("simulated_seconds", report.simulated_s);
     out.emplace_back("simulate_realtime_factor", report.simulated_s / best);
+    // The simulation alone (plan made once) on each plant model, and the arm's dynamics.
+    out.emplace_back("simulate_realtime_factor_rigid_body",
+                     benchSimulate(job, PlantModel::RigidBody, quick ? 1 : 5));
+    out.emplace_back("simulate_realtime_factor_linear",
+                     benchSimulate(job, PlantModel::Linear, quick ? 1 : 5));
+    out.emplace_back("forward_dynamics_us", benchForwardDynamics(job, quick ? 40 : 400));
 }
 
 } // namespace cutcell

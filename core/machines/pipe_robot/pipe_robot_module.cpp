@@ -8,6 +8,7 @@
 #include "core/job/issue_checker.h"
 #include "core/machine/pipe_joint_section.h"
 #include "core/machines/pipe_robot/cut_simulation.h"
+#include "core/machines/pipe_robot/pipe_robot_mechanics.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/machines/pipe_robot/plan_csv.h"
 #include "core/sim/tracking_stats.h"
@@ -68,9 +69,25 @@ void PipeRobotModule::readSection(const json::Value& section, Job& job) const {
         "method",
         {{"static_pipe", CutMethod::StaticPipe}, {"rotating_pipe", CutMethod::RotatingPipe}},
         CutMethod::RotatingPipe);
+    spec.plant_model = m.choice<PlantModel>(
+        "plant_model", {{"rigid_body", PlantModel::RigidBody}, {"linear", PlantModel::Linear}},
+        PlantModel::RigidBody);
+    spec.gravity_feedforward = m.boolean("gravity_feedforward", false);
     if (m.has("robot")) {
         SectionReader robot = m.child("robot");
         if (robot.has("dh")) readAxisRows(robot, "dh", dhRowFields(), spec.dh);
+        if (robot.has("links"))
+            readRows(requiredRows(robot, "links", kArmJointCount, "links 1..5 of the arm"),
+                     robot.key("links"), armLinkFields(), std::span<ArmLinkRow>(spec.links));
+        if (robot.has("drives")) readAxisRows(robot, "drives", driveTrainFields(), spec.drives);
+        if (robot.has("chuck")) {
+            SectionReader chuck = robot.child("chuck");
+            spec.chuck.inertia_kg_m2 =
+                chuck.number("inertia_kg_m2", "kg m^2", spec.chuck.inertia_kg_m2);
+            spec.chuck.pipe_density_kg_m3 =
+                chuck.number("pipe_density_kg_m3", "kg/m^3", spec.chuck.pipe_density_kg_m3);
+            chuck.finish();
+        }
         robot.finish();
     }
     readAxisRows(m, "controller", pidGainFields(), spec.controller);
@@ -84,7 +101,15 @@ json::Value PipeRobotModule::writeSection(const Job& job) const {
     json::Object s{{"kind", id()}};
     writePipeJoint(job, s, kCutKeys);
     s.emplace_back("method", toString(spec.method));
-    s.emplace_back("robot", json::Object{{"dh", writeRows<DhRow>(dhRowFields(), spec.dh)}});
+    s.emplace_back("plant_model", toString(spec.plant_model));
+    s.emplace_back("gravity_feedforward", spec.gravity_feedforward);
+    s.emplace_back(
+        "robot", json::Object{{"dh", writeRows<DhRow>(dhRowFields(), spec.dh)},
+                              {"links", writeRows<ArmLinkRow>(armLinkFields(), spec.links)},
+                              {"drives", writeRows<DriveTrainRow>(driveTrainFields(), spec.drives)},
+                              {"chuck", json::Object{{"inertia_kg_m2", spec.chuck.inertia_kg_m2},
+                                                     {"pipe_density_kg_m3",
+                                                      spec.chuck.pipe_density_kg_m3}}}});
     s.emplace_back("controller", writeRows<PidGains>(pidGainFields(), spec.controller));
     s.emplace_back("plant", writeRows<JointPlantParams>(jointPlantFields(), spec.plant));
     return s;
@@ -149,6 +174,21 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     if (spec.dh[2].a_mm <= 0 || spec.dh[3].a_mm <= 0)
         c.add("robot.dh[2].a_mm",
               messageC("robot.dh[2].a_mm and robot.dh[3].a_mm must be > 0 mm (arm links)"));
+
+    // The rigid-body plant's mechanics: ranges, and masses that make a mass matrix.
+    checkRows(c, armLinkFields(), "robot.links", std::span<const ArmLinkRow>(spec.links));
+    checkRows(c, driveTrainFields(), "robot.drives", std::span<const DriveTrainRow>(spec.drives));
+    c.range("robot.chuck.inertia_kg_m2", spec.chuck.inertia_kg_m2, 0, 1e4, "kg m^2");
+    c.range("robot.chuck.pipe_density_kg_m3", spec.chuck.pipe_density_kg_m3, 0, 25000, "kg/m^3");
+    for (size_t i = 0; i < spec.links.size(); ++i)
+        if (const std::string why = inertiaTensorProblem(spec.links[i]); !why.empty())
+            c.add(rowKey("robot.links", i) + ".ixx_kg_cm2",
+                  messageC("robot.links[%zu] (link %zu): %s", i, i + 1, why.c_str()));
+    if (spec.plant_model == PlantModel::RigidBody && pipeRobotChuckInertia(job) <= 0)
+        c.add("robot.chuck.inertia_kg_m2",
+              messageC("robot.chuck.inertia_kg_m2 = %.6g kg m^2: the chuck axis has no inertia "
+                       "(chuck, pipe and rotor sum to 0)",
+                       spec.chuck.inertia_kg_m2));
 
     // The drives' physical ranges (core/job/drive_fields.h), axis by axis.
     for (int i = 0; i < kAxisCount; ++i) {
@@ -247,7 +287,7 @@ json::Value PipeRobotModule::runReport(const Job& job, const MachinePlan& plan,
 }
 
 bool PipeRobotModule::isMachineParameter(const std::string& key) const {
-    return keyUnder(key, {"robot", "controller", "plant"});
+    return keyUnder(key, {"robot", "controller", "plant", "plant_model", "gravity_feedforward"});
 }
 
 } // namespace cutcell

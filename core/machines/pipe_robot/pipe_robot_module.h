@@ -29,6 +29,8 @@ class PipeRobotModule : public MachineModule {
     MachinePlan plan(const Job& job, const std::string& jobText,
                      const PlanOptions& options) const override;
     Outcome setVariant(Job& job, const std::string& variant) const override;
+    // Both methods, static and rotating pipe (method_comparison.cpp, seed 000 Fig. 11-14).
+    Outcome compareMethods(const Job& job, MethodComparisonFiles* out) const override;
     std::vector<ExportInfo> exports() const override;
     std::string exportFile(const std::string& exportId, const Job& job,
                            const MachinePlan& plan) const override;
@@ -36,7 +38,8 @@ class PipeRobotModule : public MachineModule {
                           std::string* text) const override;
     json::Value runReport(const Job& job, const MachinePlan& plan,
                           const TrackingReport& report) const override;
-    // ik_ns_per_solve, simulate_seconds, simulated_seconds, simulate_realtime_factor.
+    // ik_ns_per_solve, simulate_seconds, simulated_seconds, simulate_realtime_factor,
+    // simulate_realtime_factor_rigid_body, simulate_realtime_factor_linear, forward_dynamics_us.
     void addBenchFigures(bool quick, json::Object& out) const override;
     // Arm "arm": theta1..theta5 (deg, optionally theta0 first) -> torch; a pose -> every branch.
     Outcome forwardKinematics(const Job& job, const std::string& arm,
@@ -44,6 +47,8 @@ class PipeRobotModule : public MachineModule {
                               json::Value* out) const override;
     Outcome inverseKinematics(const Job& job, const std::string& arm,
                               const std::vector<double>& pose, json::Value* out) const override;
+    // SIMC gains for the six PID drives (pipe_robot_tuning.h; defined in pipe_robot_tuning.cpp).
+    Outcome tuneControllers(Job& job, const TuneOptions& options, std::string* text) const override;
 };
 
 } // namespace cutcell

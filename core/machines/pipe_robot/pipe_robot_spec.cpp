@@ -1,5 +1,7 @@
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 
+#include "core/machines/pipe_robot/arm_construction.h"
+
 namespace cutcell {
 namespace {
 
@@ -41,6 +43,18 @@ std::array<DhRow, kAxisCount> seedDhTable() {
 
 std::span<const RowField<DhRow>> dhRowFields() {
     return kDhFields;
+}
+
+std::array<ArmLinkRow, kArmJointCount> PipeRobotSpec::defaultArmLinks() {
+    return derivedArmLinks(seedDhTable());
+}
+
+std::array<DriveTrainRow, kAxisCount> PipeRobotSpec::defaultDrives() {
+    return defaultDriveTrains();
+}
+
+ChuckLoad PipeRobotSpec::defaultChuck() {
+    return defaultChuckLoad();
 }
 
 const PipeRobotSpec& pipeRobotSpec(const Job& job) {

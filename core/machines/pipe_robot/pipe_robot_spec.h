@@ -7,6 +7,7 @@
 #include "core/job/job.h"
 #include "core/job/machine_spec.h"
 #include "core/job/row_table.h"
+#include "core/machines/pipe_robot/arm_dynamics_spec.h"
 
 #include <array>
 #include <span>
@@ -43,6 +44,18 @@ struct PipeRobotSpec : MachineSpecOf<PipeRobotSpec> {
     std::array<DhRow, kAxisCount> dh = seedDhTable();
     std::array<PidGains, kAxisCount> controller{};
     std::array<JointPlantParams, kAxisCount> plant{};
+    // The mechanics the simulated drives run (plant_model) and, for the rigid-body plant, the
+    // arm's links, the axes' drive trains and the chuck (arm_construction.h has the defaults).
+    PlantModel plant_model = PlantModel::RigidBody;
+    bool gravity_feedforward = false;
+    std::array<ArmLinkRow, kArmJointCount> links = defaultArmLinks();
+    std::array<DriveTrainRow, kAxisCount> drives = defaultDrives();
+    ChuckLoad chuck = defaultChuck();
+
+  private:
+    static std::array<ArmLinkRow, kArmJointCount> defaultArmLinks();
+    static std::array<DriveTrainRow, kAxisCount> defaultDrives();
+    static ChuckLoad defaultChuck();
 };
 
 // The robot's section of a job. A job that holds no section yet (one being built in code,

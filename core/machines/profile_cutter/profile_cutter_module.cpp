@@ -106,7 +106,8 @@ void ProfileCutterModule::migrateSchema1(json::Object& section) const {
     // Schema 1 made every job carry the robot's keys; this machine never read them.
     std::erase_if(section, [](const auto& kv) {
         return kv.first == "method" || kv.first == "robot" || kv.first == "controller" ||
-               kv.first == "plant";
+               kv.first == "plant" || kv.first == "plant_model" ||
+               kv.first == "gravity_feedforward";
     });
     for (auto& [k, v] : section) {
         if (k == "cut" && v.isObject())

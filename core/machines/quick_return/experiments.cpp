@@ -64,6 +64,11 @@ TrackingResult runTracking(const ExperimentSetup& setup, ControllerKind controll
     const int n = static_cast<int>(std::llround(end / T));
     double sum = 0;
     int count = 0;
+    if (s.keep_errors) {
+        r.error.reserve(static_cast<size_t>(n));
+        r.error_rate.reserve(static_cast<size_t>(n));
+        r.crank.reserve(static_cast<size_t>(n));
+    }
     for (int i = 0; i < n; ++i) {
         const double t = i * T;
         const double tau = sim.cycle(t);
@@ -71,6 +76,11 @@ TrackingResult runTracking(const ExperimentSetup& setup, ControllerKind controll
         r.max_torque = std::max(r.max_torque, std::fabs(tau));
         // The error of the state this command acts on (the true slider position).
         const double e = q.y_d - sim.plant.sliderPosition();
+        if (s.keep_errors) {
+            r.error.push_back(e);
+            r.error_rate.push_back(q.dy_d - sim.plant.sliderVelocity());
+            r.crank.push_back(sim.plant.state().q);
+        }
         if (t >= end - s.mse_window) {
             sum += (s.mse_scale * e) * (s.mse_scale * e);
             ++count;

@@ -21,9 +21,10 @@ struct ExperimentSetup {
     double scale_resolution = 8.4667e-5; // m (300 counts per inch)
     double disturbance_amplitude = 0.2;  // N m, sinusoidal torque on the crank
     double disturbance_hz = 3;
-    double mse_window = 2;  // s
-    double mse_scale = 100; // L
-    int trace_every = 10;   // samples kept for plots (every n-th)
+    double mse_window = 2;    // s
+    double mse_scale = 100;   // L
+    int trace_every = 10;     // samples kept for plots (every n-th)
+    bool keep_errors = false; // runTracking: the true errors of every sample (limit cycles)
 };
 
 struct TracePoint {
@@ -37,6 +38,9 @@ struct TrackingResult {
     double max_abs_error = 0; // m, over the same window
     double max_torque = 0;    // N m
     std::vector<TracePoint> trace;
+    // With ExperimentSetup::keep_errors, every sample's e = y_d - y and e' = y_d' - y' of the
+    // true slider (the plant's, not the scale's), as the MSE takes them, and the crank (rad).
+    std::vector<double> error, error_rate, crank;
 };
 
 struct CuttingResult {

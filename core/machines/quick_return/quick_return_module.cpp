@@ -73,7 +73,8 @@ void QuickReturnModule::migrateSchema1(json::Object& section) const {
         if (k == "cut") return !isCrankCut(kv.second);
         return k == "main_pipe" || k == "branch_pipe" || k == "angle_deg" ||
                k == "eccentricity_mm" || k == "method" || k == "robot" || k == "controller" ||
-               k == "plant" || k == "other_branches" || k == "profile_cutter";
+               k == "plant" || k == "plant_model" || k == "gravity_feedforward" ||
+               k == "other_branches" || k == "profile_cutter";
     });
 }
 
@@ -186,7 +187,14 @@ Outcome QuickReturnModule::offlineReport(const Job& job, const MachinePlan& plan
     const QuickReturnSpec& spec = quickReturnSpec(job);
     if (const std::string over = offlineWorkProblem(spec, data->setup); !over.empty())
         return Outcome::refuse(over);
-    *json = json::write(quickReturnReport(spec, data->setup, text));
+    json::Value report = quickReturnReport(spec, data->setup, text);
+    // A job of experiment 1 gets its study: limit cycles and the OSMC's k2 sweep.
+    if (spec.experiment == Experiment::Tracking) {
+        const Experiment1Study st = studyExperiment1(data->setup, {}, kMaxOfflineSamples);
+        *text += experiment1StudyText(st, data->setup);
+        report.set("experiment1_study", experiment1StudyJson(st, data->setup));
+    }
+    *json = json::write(report);
     return Outcome::done();
 }
 

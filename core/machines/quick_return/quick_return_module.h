@@ -2,9 +2,12 @@
 // The quick-return (inverted Whitworth) cutter of seed 004: one crank in torque mode run by a
 // task-space control law on the slider's linear scale (quick_return_law.h). Job section:
 // quick_return_spec.h. `cutcell-cli simulate` runs both experiments offline for the four
-// controllers (experiments.h); `cutcell-cli run` runs the job's experiment and controller in
-// the engine on the simulated mechanism (devices/machines/quick_return/quick_return_sim_rig.cpp).
+// controllers (experiments.h), and for a job of experiment 1 ("tracking") its study
+// (paper_parameters.h: limit cycles, the OSMC's k2 sweep); `cutcell-cli run` runs the job's
+// experiment and controller in the engine on the simulated mechanism
+// (devices/machines/quick_return/quick_return_sim_rig.cpp).
 #include "core/machine/machine_module.h"
+#include "core/machines/quick_return/paper_parameters.h"
 #include "core/machines/quick_return/quick_return_spec.h"
 
 namespace cutcell {
@@ -17,6 +20,12 @@ struct QuickReturnPlanData {
 // Both experiments for all four controllers as the report's JSON and a text table.
 json::Value quickReturnReport(const QuickReturnSpec& spec, const quick_return::ExperimentSetup& s,
                               std::string* table);
+
+// The experiment-1 study (paper_parameters.h) as lines for the terminal and as JSON.
+std::string experiment1StudyText(const quick_return::Experiment1Study& st,
+                                 const quick_return::ExperimentSetup& s);
+json::Value experiment1StudyJson(const quick_return::Experiment1Study& st,
+                                 const quick_return::ExperimentSetup& s);
 
 class QuickReturnModule : public MachineModule {
   public:

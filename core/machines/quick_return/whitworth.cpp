@@ -1,5 +1,7 @@
 #include "core/machines/quick_return/whitworth.h"
 
+#include "core/common/bisect.h"
+
 #include "core/common/c_format.h"
 
 #include <cmath>
@@ -21,20 +23,6 @@ double margin(const WhitworthDims& d, double q) {
     return 1 - std::fabs(forwardKinematics(d, q).c);
 }
 
-// Bisection of f's sign change between a and b (f(a), f(b) of opposite signs).
-template <class F> double bisect(F f, double a, double b) {
-    double fa = f(a);
-    for (int i = 0; i < 60; ++i) {
-        const double m = 0.5 * (a + b), fm = f(m);
-        if ((fm < 0) == (fa < 0)) {
-            a = m;
-            fa = fm;
-        } else {
-            b = m;
-        }
-    }
-    return 0.5 * (a + b);
-}
 } // namespace
 
 WhitworthDims seedPrintedDims() {

@@ -1,6 +1,7 @@
-// The pipe robot's simulated cell: six simulated drives (the job's PID and joint plant) and a
-// simulated torch.
+// The pipe robot's simulated cell: six simulated drives (the job's PID) sharing the job's
+// mechanics (pipe_robot_shared_mechanics.h: the plant simulateCut() runs), and a simulated torch.
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "devices/machines/pipe_robot/pipe_robot_shared_mechanics.h"
 #include "devices/machines/sim_rigs.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
@@ -14,12 +15,16 @@ class PipeRobotSimRig : public MachineSimRig {
   public:
     PipeRobotSimRig(const Job& job, const MotionProgram& program) : job_(job) {
         const PipeRobotSpec& spec = pipeRobotSpec(job);
+        const auto mechanics =
+            makePipeRobotSharedMechanics(job, job.sim.period_s, program.reference);
         for (size_t i = 0; i < drives_.size(); ++i) {
             SimulatedDriveConfig dc;
             dc.gains = spec.controller[i];
             dc.plant = spec.plant[i];
             dc.period_s = job.sim.period_s;
             dc.initial_position = program.reference[static_cast<int>(i)];
+            dc.mechanics = mechanics;
+            dc.axis = static_cast<int>(i);
             drives_[i] = std::make_unique<SimulatedDrive>(dc);
         }
     }
@@ -30,7 +35,10 @@ class PipeRobotSimRig : public MachineSimRig {
         d.torch = &torch_;
         return d;
     }
-    void configure(EngineConfig& config) const override { config.period_s = job_.sim.period_s; }
+    void configure(EngineConfig& config) const override {
+        config.period_s = job_.sim.period_s;
+        config.in_position_window = pipeRobotInPositionWindow(job_, config.in_position_window);
+    }
     std::string description() const override { return "Simulated cell: 6 drives + torch"; }
 
   private:

@@ -1,9 +1,10 @@
 #pragma once
 // The pipe-cutting robot of seed 000 in the operator station: a 5-DOF arm over a rotating pipe
 // chuck (six rotary axes). Pages: Method, Robot (DH table with joint limits), Controller (PID
-// and joint plant per axis); plots: six joint errors in deg and the torch tip's x/y/z error in
-// the robot base frame; exports: the wrap-around cutting templates (no G-code: the robot runs
-// joint trajectories, not an NC program).
+// and joint plant per axis), Compare (both methods side by side: method_comparison_page.h);
+// plots: six joint errors in deg and the torch tip's x/y/z error in the robot base frame;
+// exports: the wrap-around cutting templates (no G-code: the robot runs joint trajectories, not
+// an NC program).
 #include "core/machines/pipe_robot/pipe_robot_module.h"
 #include "ui/machine/machine_ui.h"
 

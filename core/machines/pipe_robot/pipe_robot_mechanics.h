@@ -1,0 +1,80 @@
+#pragma once
+// The mechanics of the seed-000 cell behind its six drives: either six linear joint plants (the
+// job's plant[] rows) or the arm as coupled rigid bodies (core/dynamics/chain_dynamics.h) and the
+// chuck turning the pipe, with each joint's gear, rotor inertia, viscous and Coulomb friction and
+// torque limit (robot.links[], robot.drives[], robot.chuck). The offline simulation, the
+// simulated drives of the operator station and the drive simulator on CAN all run this one.
+//
+// Rigid body: the state is integrated by classical Runge-Kutta (RK4) over each control period
+// with the torques held (zero-order hold), in `substeps` equal steps; Coulomb friction is applied
+// after each step as an impulse that can stop a joint but never reverse it (time stepping as in
+// Moreau's method), so that friction needs no smoothing and no stiff step. Gravity is -Z0.
+#include "core/control/coupled_mechanics.h"
+#include "core/control/joint_plant.h"
+#include "core/dynamics/chain_dynamics.h"
+#include "core/job/job.h"
+#include "core/machines/pipe_robot/arm_dynamics_spec.h"
+#include "core/machines/pipe_robot/pipe_robot_spec.h"
+
+#include <array>
+#include <string>
+
+namespace cutcell {
+
+inline constexpr double kStandardGravity = 9.80665;
+
+// The arm's chain (joints 1..5) as the dynamics see it, from a job's robot section.
+ChainDynamics pipeRobotArmDynamics(const PipeRobotSpec& spec);
+// The chuck axis's inertia about the pipe axis (kg m^2): chuck, pipe in it, reflected rotor.
+double pipeRobotChuckInertia(const Job& job);
+
+// Why a link's inertia tensor is not one of a real body ("" if it is): its principal moments
+// must be >= 0 and each at most the sum of the other two.
+std::string inertiaTensorProblem(const ArmLinkRow& link);
+
+class PipeRobotMechanics : public CoupledMechanics {
+  public:
+    PipeRobotMechanics() = default;
+    PipeRobotMechanics(const Job& job, double period_s, int substeps = 1) {
+        configure(job, period_s, substeps);
+    }
+    void configure(const Job& job, double period_s, int substeps = 1);
+    // Positions (rad), at rest.
+    void setState(const JointVector& q);
+    void setState(const JointVector& q, const JointVector& qd);
+
+    PlantModel model() const { return model_; }
+    int axisCount() const override { return kAxisCount; }
+    double position(int axis) const override { return q_[axis]; }
+    double velocity(int axis) const override { return v_[axis]; }
+    double torqueLimit(int axis) const override { return limit_[static_cast<size_t>(axis)]; }
+    void step(const JointVector& torque, JointVector& applied) override;
+    void setHeld(int axis, bool held) override { held_[static_cast<size_t>(axis)] = held; }
+    double holdingTorque(int axis) const override;
+    // g(q) of the six axes at positions q (0 for the chuck and for the linear plant).
+    void gravityTorques(const JointVector& q, JointVector& tau) const;
+
+    const ChainDynamics& arm() const { return arm_; }
+    double chuckInertia() const { return chuckInertia_; }
+    // Total mechanical energy (kinetic + potential, J) of the rigid-body state.
+    double energy() const;
+
+  private:
+    using Vec = ChainDynamics::Vector;
+    // q'' of all six axes for a state and held torques (friction: viscous only).
+    void acceleration(const JointVector& q, const JointVector& v, const JointVector& tau,
+                      JointVector& a, double* armMassDiagonal) const;
+    void rigidStep(const JointVector& tau, double h);
+
+    PlantModel model_ = PlantModel::Linear;
+    double period_ = 0.001;
+    int substeps_ = 1;
+    std::array<JointPlant, kAxisCount> linear_{};
+    ChainDynamics arm_;
+    double chuckInertia_ = 0;
+    std::array<double, kAxisCount> limit_{}, viscous_{}, coulomb_{};
+    std::array<bool, kAxisCount> held_{};
+    JointVector q_ = JointVector::Zero(), v_ = JointVector::Zero();
+};
+
+} // namespace cutcell
