@@ -5,6 +5,7 @@
 #include "core/json/json.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "core/machines/pipe_robot/pipe_robot_tuning.h"
+#include "tests/support/run_cli.h"
 
 #include <gtest/gtest.h>
 
@@ -21,22 +22,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int code;
-    std::string output; // stdout + stderr
-};
-
-Result runCli(const std::string& args, bool withStderr = true) {
-    const std::string cmd =
-        std::string(CUTCELL_CLI) + " " + args + (withStderr ? " 2>&1" : " 2>/dev/null");
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    while (p && fgets(buf, sizeof buf, p))
-        out += buf;
-    const int status = p ? pclose(p) : -1;
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using Result = test::CliResult;
+using test::runCli;
 
 fs::path tempDir(const std::string& name) {
     const fs::path d = fs::temp_directory_path() / ("cutcell_cli_" + name);
