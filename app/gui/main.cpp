@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption pressOpt(
         "press",
         "With --screenshot: click the push button of this object name first (e.g. "
-        "compareMethods on the robot's Compare page) and take the shot once it is enabled "
+        "compareMethods on the robot's Method page) and take the shot once it is enabled "
         "again.",
         "NAME");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,

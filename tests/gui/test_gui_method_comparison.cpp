@@ -28,7 +28,7 @@ class TestGuiMethodComparison : public QObject {
         MainWindow w(nullptr);
         w.editor()->setJob(cutcell::defaultJob());
         auto* page = w.findChild<MethodComparisonForm*>();
-        QVERIFY2(page, "the robot's parameter tabs have a Compare page");
+        QVERIFY2(page, "the robot's Method page holds the comparison");
         QCOMPARE(page->compareButton()->text(), QStringLiteral("Compare methods"));
 
         // The GUI thread keeps serving its event loop while the comparison runs.

@@ -71,8 +71,8 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
         owners_.push_back(owner);
         titles_ << title;
     };
-    // Common pages first, then every machine's own parameter pages (shown while the job is for
-    // that machine), then the cycle and devices, then the machines' result pages.
+    // Common pages first, then every machine's own pages (shown while the job is for that
+    // machine), then the cycle and devices.
     // The Pipes and Cut pages describe a pipe joint: a machine that uses none of their fields
     // (unusedCommonFields) does not show them (applyMachine).
     add(new JobInfoForm(editor), tr("Job"), nullptr);
@@ -80,11 +80,8 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     add(new CutForm(editor), tr("Cut"), nullptr);
     for (const MachineUi* machine : machineUis())
         for (const FormPage& page : machine->formPages())
-            if (!page.results) add(page.make(editor), page.title, machine);
+            add(page.make(editor), page.title, machine);
     add(new CycleDevicesForm(editor), tr("Cycle && devices"), nullptr);
-    for (const MachineUi* machine : machineUis())
-        for (const FormPage& page : machine->formPages())
-            if (page.results) add(page.make(editor), page.title, machine);
     connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyMachine);
     connect(editor, &JobEditor::edited, this, &ParameterTabs::applyMachine);
     connect(editor, &JobEditor::jobReset, this, &ParameterTabs::applyAccess);

@@ -59,9 +59,6 @@ enum class TipErrorPlot {
 struct FormPage {
     QString title; // the tab title, translated, '&&' for '&'
     std::function<JobForm*(JobEditor*)> make;
-    // A page of results rather than parameters (a comparison, a study): it goes after the
-    // common Cycle & devices page, so the parameter pages stay in reach on a narrow tab bar.
-    bool results = false;
 };
 
 enum class ExportKind { Gcode, TemplateSvg, TemplatePdf };

@@ -1,6 +1,9 @@
 #include "ui/machines/pipe_robot/method_form.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "ui/forms/edited_spec.h"
+#ifdef CUTCELL_HAVE_PLOTS
+#include "ui/machines/pipe_robot/method_comparison_page.h"
+#endif
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -55,6 +58,11 @@ MethodForm::MethodForm(JobEditor* editor, QWidget* parent) : JobForm(editor, par
     connect(editor, &JobEditor::edited, this, refresh);
     refresh();
     mainLayout()->addWidget(box);
+#ifdef CUTCELL_HAVE_PLOTS
+    // Both methods side by side (seed 000, Fig. 11-14) where the method is chosen: a tab of
+    // its own pushed "Cycle & devices" off the tab bar at 1280x720.
+    mainLayout()->addWidget(new MethodComparisonForm(editor, this));
+#endif
     mainLayout()->addStretch(1);
 }
 

@@ -3,7 +3,6 @@
 
 #include "core/job/default_job.h"
 #include "ui/machines/pipe_robot/controller_form.h"
-#include "ui/machines/pipe_robot/method_comparison_page.h"
 #include "ui/machines/pipe_robot/method_form.h"
 #include "ui/machines/pipe_robot/robot_dh_table_form.h"
 
@@ -30,10 +29,6 @@ std::vector<FormPage> PipeRobotUi::formPages() const {
         {QObject::tr("Method"), [](JobEditor* e) -> JobForm* { return new MethodForm(e); }},
         {QObject::tr("Robot"), [](JobEditor* e) -> JobForm* { return new RobotDhTableForm(e); }},
         {QObject::tr("Controller"), [](JobEditor* e) -> JobForm* { return new ControllerForm(e); }},
-#ifdef CUTCELL_HAVE_PLOTS
-        {QObject::tr("Compare"),
-         [](JobEditor* e) -> JobForm* { return new MethodComparisonForm(e); }, true},
-#endif
     };
 }
 
