@@ -306,7 +306,9 @@ TEST(ChainDynamics, MassMatrixMatchesKdlChainDynParam) {
 // ---------------------------------------------------------------------------------------------
 // c. Energy: without friction and torque the plant's total energy stays put.
 
-TEST(PipeRobotMechanics, ConservesEnergyWithoutFrictionOrTorque) {
+class EnergyWithoutFriction : public ::testing::TestWithParam<RigidIntegrator> {};
+
+TEST_P(EnergyWithoutFriction, IsConservedWithoutTorque) {
     Job job = defaultJob();
     PipeRobotSpec& spec = pipeRobotSpec(job);
     ASSERT_EQ(spec.plant_model, PlantModel::RigidBody);
@@ -315,7 +317,8 @@ TEST(PipeRobotMechanics, ConservesEnergyWithoutFrictionOrTorque) {
         d.coulomb_nm = 0;
     }
     const double T = 0.001;
-    PipeRobotMechanics plant(job, T);
+    PipeRobotMechanics plant(job, T, 1, GetParam());
+    ASSERT_EQ(plant.integrator(), GetParam());
     JointVector q = JointVector::Zero(), qd = JointVector::Zero();
     q.head(kAxisCount) << 0.3, 0.4, 0.9, -0.6, 0.8, -0.5;
     qd.head(kAxisCount) << 1.0, 0.8, -1.2, 1.5, -2.0, 3.0;
@@ -339,12 +342,16 @@ TEST(PipeRobotMechanics, ConservesEnergyWithoutFrictionOrTorque) {
         maxKinetic = std::max(maxKinetic, kinetic());
         maxDrift = std::max(maxDrift, std::fabs(plant.energy() - e0));
     }
-    std::printf("energy, 10 s at 1 ms without friction: max |E - E0| = %.3g J, max kinetic "
+    std::printf("energy, 10 s at 1 ms without friction (%s): max |E - E0| = %.3g J, max kinetic "
                 "%.4g J, relative %.3g\n",
-                maxDrift, maxKinetic, maxDrift / maxKinetic);
+                integratorName(GetParam()), maxDrift, maxKinetic, maxDrift / maxKinetic);
     EXPECT_GT(maxKinetic, 1.0); // the arm does swing
     EXPECT_LE(maxDrift, 1e-6 * maxKinetic);
 }
+
+INSTANTIATE_TEST_SUITE_P(PipeRobotMechanics, EnergyWithoutFriction,
+                         ::testing::Values(RigidIntegrator::AdamsNystrom4,
+                                           RigidIntegrator::RungeKutta4));
 
 // ---------------------------------------------------------------------------------------------
 // d. Gravity at the home pose, by hand.
@@ -420,12 +427,14 @@ struct ClosedLoopRun {
     std::array<double, kAxisCount> maxErr{}; // max |ref - actual| per axis (rad)
 };
 
-// simulateCut's loop (cut_simulation.cpp) with the plant's substeps as a parameter.
-ClosedLoopRun runClosedLoop(const Job& job, const CutPlan& plan, int substeps) {
+// simulateCut's loop (cut_simulation.cpp) with the plant's substeps and integrator as
+// parameters.
+ClosedLoopRun runClosedLoop(const Job& job, const CutPlan& plan, int substeps,
+                            RigidIntegrator integrator) {
     const PipeRobotSpec& spec = pipeRobotSpec(job);
     const double T = job.sim.period_s;
     std::array<PidFilter, kAxisCount> pid;
-    PipeRobotMechanics plant(job, T, substeps);
+    PipeRobotMechanics plant(job, T, substeps, integrator);
     plant.setState(plan.spline.evaluate(0).q);
     for (int i = 0; i < kAxisCount; ++i) {
         pid[static_cast<size_t>(i)].configure(spec.controller[static_cast<size_t>(i)], T);
@@ -454,36 +463,112 @@ ClosedLoopRun runClosedLoop(const Job& job, const CutPlan& plan, int substeps) {
     return run;
 }
 
-TEST(PipeRobotMechanics, OneRk4StepPerPeriodAgainst32Substeps) {
-    const Job job = defaultJob();
-    ASSERT_EQ(pipeRobotSpec(job).plant_model, PlantModel::RigidBody);
-    const CutPlan plan = planCut(job);
-    ASSERT_TRUE(plan.reachable) << plan.problem;
-    const ClosedLoopRun one = runClosedLoop(job, plan, 1);
-    const ClosedLoopRun ref = runClosedLoop(job, plan, 32);
-    // The loop here is simulateCut's: its joint errors are the report's.
-    const TrackingReport report = simulateCut(job, plan);
-    for (int i = 0; i < kAxisCount; ++i)
-        EXPECT_NEAR(rad2deg(one.maxErr[static_cast<size_t>(i)]), report.maxAbs(i),
-                    1e-12 + 1e-9 * report.maxAbs(i))
-            << "axis " << i;
-    ASSERT_EQ(one.q.size(), ref.q.size());
+// The largest joint difference (rad, per axis) between two runs sample by sample.
+std::array<double, kAxisCount> maxDifference(const ClosedLoopRun& a, const ClosedLoopRun& b) {
     std::array<double, kAxisCount> diff{};
-    for (size_t k = 0; k < one.q.size(); ++k)
+    for (size_t k = 0; k < a.q.size(); ++k)
         for (int i = 0; i < kAxisCount; ++i)
             diff[static_cast<size_t>(i)] =
-                std::max(diff[static_cast<size_t>(i)], std::fabs(one.q[k][i] - ref.q[k][i]));
+                std::max(diff[static_cast<size_t>(i)], std::fabs(a.q[k][i] - b.q[k][i]));
+    return diff;
+}
+
+// Each integrator at one step per period against RK4 at 32 substeps, on the default job (with
+// friction) and on its frictionless variant (where the integrators' order shows undisturbed).
+struct IntegratorCase {
+    RigidIntegrator integrator;
+    bool friction;
+    double boundDeg; // measured figure x ~1.5 (printed below)
+};
+
+class IntegratorError : public ::testing::TestWithParam<IntegratorCase> {};
+
+TEST_P(IntegratorError, OneStepPerPeriodAgainst32Rk4Substeps) {
+    const IntegratorCase c = GetParam();
+    Job job = defaultJob();
+    ASSERT_EQ(pipeRobotSpec(job).plant_model, PlantModel::RigidBody);
+    if (!c.friction)
+        for (DriveTrainRow& d : pipeRobotSpec(job).drives)
+            d.coulomb_nm = 0;
+    const CutPlan plan = planCut(job);
+    ASSERT_TRUE(plan.reachable) << plan.problem;
+    const ClosedLoopRun one = runClosedLoop(job, plan, 1, c.integrator);
+    const ClosedLoopRun ref = runClosedLoop(job, plan, 32, RigidIntegrator::RungeKutta4);
+    ASSERT_EQ(one.q.size(), ref.q.size());
+    const std::array<double, kAxisCount> diff = maxDifference(one, ref);
     const double worst = rad2deg(*std::max_element(diff.begin(), diff.end()));
-    std::printf("1 vs 32 RK4 substeps, default cut (%zu samples): max joint difference (deg)",
-                one.q.size());
+    std::printf("%s, 1 step per period vs RK4 x 32, default cut %s friction (%zu samples): max "
+                "joint difference (deg)",
+                integratorName(c.integrator), c.friction ? "with" : "without", one.q.size());
     for (double d : diff)
         std::printf(" %.3g", rad2deg(d));
     std::printf("; worst %.3g deg; tracking error max (deg)", worst);
     for (int i = 0; i < kAxisCount; ++i)
-        std::printf(" %.3g", report.maxAbs(i));
+        std::printf(" %.3g", rad2deg(one.maxErr[static_cast<size_t>(i)]));
     std::printf("\n");
-    // Measured: 2.06e-4 deg (joint 4) on the default job with its SIMC gains.
-    EXPECT_LE(worst, 3e-4);
+    EXPECT_LE(worst, c.boundDeg);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    PipeRobotMechanics, IntegratorError,
+    // Measured (deg): 2.06e-4, 9.79e-6, 2.42e-13, 5.69e-9. Without friction the differences
+    // are the methods' truncation errors; with it they come from the Coulomb impulse applied
+    // once per period instead of 32 times (RK4 1 vs 32 differs by 1e-13 without it).
+    ::testing::Values(IntegratorCase{RigidIntegrator::RungeKutta4, true, 3e-4},
+                      IntegratorCase{RigidIntegrator::AdamsNystrom4, true, 1.5e-5},
+                      IntegratorCase{RigidIntegrator::RungeKutta4, false, 4e-13},
+                      IntegratorCase{RigidIntegrator::AdamsNystrom4, false, 1e-8}));
+
+// simulateCut runs the plant as this test's loop does, with the integrator Auto picks.
+TEST(PipeRobotMechanics, SimulateCutRunsTheAutoIntegrator) {
+    const Job job = defaultJob();
+    const CutPlan plan = planCut(job);
+    ASSERT_TRUE(plan.reachable) << plan.problem;
+    const double T = job.sim.period_s;
+    EXPECT_EQ(PipeRobotMechanics(job, T).integrator(), RigidIntegrator::AdamsNystrom4);
+    const ClosedLoopRun run = runClosedLoop(job, plan, 1, RigidIntegrator::Auto);
+    const TrackingReport report = simulateCut(job, plan);
+    for (int i = 0; i < kAxisCount; ++i)
+        EXPECT_NEAR(rad2deg(run.maxErr[static_cast<size_t>(i)]), report.maxAbs(i),
+                    1e-12 + 1e-9 * report.maxAbs(i))
+            << "axis " << i;
+}
+
+// Auto falls back to RK4 where viscous friction is too stiff for the multistep method.
+TEST(PipeRobotMechanics, AutoTakesRk4ForStiffViscousFriction) {
+    Job job = defaultJob();
+    const double T = job.sim.period_s;
+    DriveTrainRow& wrist = pipeRobotSpec(job).drives[5];
+    const double J = wrist.gear_ratio * wrist.gear_ratio * wrist.rotor_inertia_g_cm2 * 1e-7;
+    wrist.viscous_nm_s_per_rad = 0.09 * J / T; // h b / J = 0.09: inside the margin
+    EXPECT_EQ(PipeRobotMechanics(job, T).integrator(), RigidIntegrator::AdamsNystrom4);
+    wrist.viscous_nm_s_per_rad = 0.11 * J / T;
+    EXPECT_EQ(PipeRobotMechanics(job, T).integrator(), RigidIntegrator::RungeKutta4);
+    // Why: beyond its stability interval (h b / J = 0.3 for a lone joint) the multistep method
+    // amplifies a decaying motion; RK4 (stable to 2.78) damps it. The wrist alone moves, the
+    // other joints are braked.
+    wrist.viscous_nm_s_per_rad = 0.6 * J / T;
+    for (DriveTrainRow& d : pipeRobotSpec(job).drives)
+        d.coulomb_nm = 0;
+    auto finalSpeed = [&](RigidIntegrator integrator) {
+        PipeRobotMechanics plant(job, T, 1, integrator);
+        for (int i = 0; i < kAxisCount - 1; ++i)
+            plant.setHeld(i, true);
+        JointVector v = JointVector::Zero();
+        v[kAxisCount - 1] = 1.0;
+        plant.setState(JointVector::Zero(), v);
+        JointVector applied;
+        for (int k = 0; k < 200; ++k)
+            plant.step(JointVector::Zero(), applied);
+        return std::fabs(plant.velocity(kAxisCount - 1));
+    };
+    const double multistep = finalSpeed(RigidIntegrator::AdamsNystrom4);
+    const double rungeKutta = finalSpeed(RigidIntegrator::RungeKutta4);
+    std::printf("wrist at h b / J = 0.6 (above the link's own inertia), |v| after 0.2 s from 1 "
+                "rad/s: Adams-Nystrom %.3g, RK4 %.3g\n",
+                multistep, rungeKutta);
+    EXPECT_GT(multistep, 1.0);
+    EXPECT_LT(rungeKutta, 1.0);
 }
 
 // ---------------------------------------------------------------------------------------------

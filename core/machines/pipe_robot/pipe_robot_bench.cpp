@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -55,6 +56,30 @@ double benchSimulate(Job job, PlantModel model, int runs) {
         best = std::min(best, seconds(t0, Clock::now()));
     }
     return simulated / best;
+}
+
+// Mean time (us) of one step of the rigid-body plant (a control period) with an integrator, the
+// arm swinging under torques around its holding torques, best of five batches of 2 s.
+double benchPlantStep(const Job& job, RigidIntegrator integrator) {
+    const double T = 0.001;
+    PipeRobotMechanics plant(job, T, 1, integrator);
+    JointVector q0 = JointVector::Zero();
+    q0.head(kAxisCount) << 0, 0.3, 0.5, -0.4, 0.6, 0;
+    JointVector hold, torque, applied;
+    plant.gravityTorques(q0, hold);
+    constexpr int kSteps = 2000;
+    double best = 1e300;
+    for (int batch = 0; batch < 5; ++batch) {
+        plant.setState(q0);
+        const auto t0 = Clock::now();
+        for (int k = 0; k < kSteps; ++k) {
+            for (int i = 0; i < kAxisCount; ++i)
+                torque[i] = hold[i] + 2.0 * std::sin(0.01 * k + i);
+            plant.step(torque, applied);
+        }
+        best = std::min(best, seconds(t0, Clock::now()));
+    }
+    return best * 1e6 / kSteps;
 }
 
 // Mean time (us) of one ChainDynamics::forwardDynamics of the job's arm at random states, best
@@ -112,6 +137,10 @@ void PipeRobotModule::addBenchFigures(bool quick, json::Object& out) const {
     out.emplace_back("simulate_realtime_factor_linear",
                      benchSimulate(job, PlantModel::Linear, quick ? 1 : 5));
     out.emplace_back("forward_dynamics_us", benchForwardDynamics(job, quick ? 40 : 400));
+    out.emplace_back("rigid_body_step_us_adams_nystrom",
+                     benchPlantStep(job, RigidIntegrator::AdamsNystrom4));
+    out.emplace_back("rigid_body_step_us_runge_kutta",
+                     benchPlantStep(job, RigidIntegrator::RungeKutta4));
 }
 
 } // namespace cutcell

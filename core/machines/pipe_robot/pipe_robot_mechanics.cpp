@@ -28,6 +28,18 @@ LinkInertia toInertia(const ArmLinkRow& r) {
 
 } // namespace
 
+const char* integratorName(RigidIntegrator integrator) {
+    switch (integrator) {
+    case RigidIntegrator::Auto:
+        return "auto";
+    case RigidIntegrator::RungeKutta4:
+        return "Runge-Kutta 4";
+    case RigidIntegrator::AdamsNystrom4:
+        return "Adams-Nystrom 4";
+    }
+    return "?";
+}
+
 std::string inertiaTensorProblem(const ArmLinkRow& link) {
     const Mat3 I = toInertia(link).inertia_kg_m2 / kKgCm2;
     const Eigen::SelfAdjointEigenSolver<Mat3> eig(I, Eigen::EigenvaluesOnly);
@@ -67,7 +79,8 @@ double pipeRobotChuckInertia(const Job& job) {
            reflectedRotor(spec.drives[0]);
 }
 
-void PipeRobotMechanics::configure(const Job& job, double period_s, int substeps) {
+void PipeRobotMechanics::configure(const Job& job, double period_s, int substeps,
+                                   RigidIntegrator integrator) {
     const PipeRobotSpec& spec = pipeRobotSpec(job);
     model_ = spec.plant_model;
     period_ = period_s;
@@ -83,7 +96,26 @@ void PipeRobotMechanics::configure(const Job& job, double period_s, int substeps
     }
     arm_ = pipeRobotArmDynamics(spec);
     chuckInertia_ = pipeRobotChuckInertia(job);
+    integrator_ = integrator;
+    if (integrator_ == RigidIntegrator::Auto) {
+        // The fastest viscous decay rate b / J each axis can have: J is at least the chuck's
+        // inertia, or the joint's reflected rotor inertia (M >= diag(N^2 J_rotor)).
+        const double h = period_ / substeps_;
+        bool stable = true;
+        for (int i = 0; i < kAxisCount; ++i) {
+            const double b = viscous_[static_cast<size_t>(i)];
+            const double J = i == 0 ? chuckInertia_ : arm_.joint(i - 1).rotor_inertia_kg_m2;
+            if (b > 0 && !(J > 0 && h * b / J <= 0.1)) stable = false;
+        }
+        integrator_ = stable ? RigidIntegrator::AdamsNystrom4 : RigidIntegrator::RungeKutta4;
+    }
     setState(JointVector::Zero());
+}
+
+void PipeRobotMechanics::setHeld(int axis, bool held) {
+    bool& h = held_[static_cast<size_t>(axis)];
+    if (h != held) clearHistory(); // the stored accelerations were for the other constraint
+    h = held;
 }
 
 void PipeRobotMechanics::setState(const JointVector& q) {
@@ -93,16 +125,17 @@ void PipeRobotMechanics::setState(const JointVector& q) {
 void PipeRobotMechanics::setState(const JointVector& q, const JointVector& qd) {
     q_ = q;
     v_ = qd;
+    clearHistory();
     for (int i = 0; i < kAxisCount; ++i)
         linear_[static_cast<size_t>(i)].setState(q[i], qd[i]);
 }
 
 void PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v,
                                       const JointVector& tau, JointVector& a,
-                                      double* armMassDiagonal) const {
+                                      double* armMassDiagonal, Factor* armCholesky) const {
     a.setZero();
     a[0] = held_[0] ? 0.0 : (tau[0] - viscous_[0] * v[0]) / chuckInertia_;
-    Vec qa = Vec::Zero(), va = Vec::Zero(), ta = Vec::Zero(), aa = Vec::Zero();
+    Vec qa = Vec::Zero(), va = Vec::Zero(), ta = Vec::Zero(), aa;
     for (int i = 0; i < kArmJointCount; ++i) {
         qa[i] = q[i + 1];
         va[i] = v[i + 1];
@@ -113,6 +146,7 @@ void PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v
         if (held_[static_cast<size_t>(i + 1)]) options.held_mask |= 1u << i;
     Vec diagonal;
     if (armMassDiagonal) options.mass_diagonal = &diagonal;
+    options.cholesky = armCholesky;
     arm_.forwardDynamics(qa, va, ta, aa, options);
     if (armMassDiagonal)
         for (int i = 0; i < kArmJointCount; ++i)
@@ -122,19 +156,73 @@ void PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v
 }
 
 void PipeRobotMechanics::rigidStep(const JointVector& tau, double h) {
-    // Classical RK4 on (q, v) with tau held.
-    JointVector k1v, k2v, k3v, k4v, k1a, k2a, k3a, k4a;
+    // This step's acceleration goes straight into the ring's free slot (no copy of the factor).
+    const int slot = (historyHead_ + 1) % kRing;
+    PastStep& now = history_[static_cast<size_t>(slot)];
     double mass[kArmJointCount] = {};
-    k1v = v_;
-    acceleration(q_, v_, tau, k1a, mass);
+    acceleration(q_, v_, tau, now.a, mass, &now.cholesky);
+    now.tau = tau;
+    if (integrator_ == RigidIntegrator::AdamsNystrom4 && historySize_ == kHistory)
+        adamsNystromStep(tau, h, now.a);
+    else
+        rungeKuttaStep(tau, h, now.a);
+    historyHead_ = slot;
+    historySize_ = std::min(historySize_ + 1, kHistory);
+    applyCoulomb(h, mass);
+}
+
+void PipeRobotMechanics::rungeKuttaStep(const JointVector& tau, double h, const JointVector& a0) {
+    // Classical RK4 on (q, v) with tau held.
+    JointVector k2v, k3v, k4v, k2a, k3a, k4a;
+    const JointVector& k1v = v_;
+    const JointVector& k1a = a0;
     k2v = v_ + 0.5 * h * k1a;
-    acceleration(q_ + 0.5 * h * k1v, k2v, tau, k2a, nullptr);
+    acceleration(q_ + 0.5 * h * k1v, k2v, tau, k2a, nullptr, nullptr);
     k3v = v_ + 0.5 * h * k2a;
-    acceleration(q_ + 0.5 * h * k2v, k3v, tau, k3a, nullptr);
+    acceleration(q_ + 0.5 * h * k2v, k3v, tau, k3a, nullptr, nullptr);
     k4v = v_ + h * k3a;
-    acceleration(q_ + h * k3v, k4v, tau, k4a, nullptr);
+    acceleration(q_ + h * k3v, k4v, tau, k4a, nullptr, nullptr);
     q_ += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
     v_ += h / 6 * (k1a + 2 * k2a + 2 * k3a + k4a);
+}
+
+void PipeRobotMechanics::addPastAcceleration(int back, const JointVector& tau, double weightV,
+                                             double weightQ, JointVector& sumV,
+                                             JointVector& sumQ) const {
+    const PastStep& p = history_[static_cast<size_t>((historyHead_ - back + 1 + kRing) % kRing)];
+    // a_j brought to the torque tau: a_j + M_j^-1 (tau - tau_j).
+    JointVector a = p.a;
+    if (!held_[0]) a[0] += (tau[0] - p.tau[0]) / chuckInertia_;
+    Vec dtau = Vec::Zero();
+    bool changed = false;
+    for (int i = 0; i < kArmJointCount; ++i)
+        if (!held_[static_cast<size_t>(i + 1)] && tau[i + 1] != p.tau[i + 1]) {
+            dtau[i] = tau[i + 1] - p.tau[i + 1];
+            changed = true;
+        }
+    if (changed) {
+        Vec da;
+        arm_.solveFactored(p.cholesky, dtau, da);
+        for (int i = 0; i < kArmJointCount; ++i)
+            a[i + 1] += da[i];
+    }
+    sumV += weightV * a;
+    sumQ += weightQ * a;
+}
+
+void PipeRobotMechanics::adamsNystromStep(const JointVector& tau, double h, const JointVector& a0) {
+    // Explicit 4-step Adams for v' = a and its Nystrom form for q'' = a: the integrals over the
+    // step of the cubic through a_k .. a_k-3, weights 55 -59 37 -9 / 24 for v and, with the
+    // kernel (1 - s) for q, 323 -264 159 -38 / 360.
+    JointVector sumV = 55 * a0, sumQ = 323 * a0;
+    addPastAcceleration(1, tau, -59, -264, sumV, sumQ);
+    addPastAcceleration(2, tau, 37, 159, sumV, sumQ);
+    addPastAcceleration(3, tau, -9, -38, sumV, sumQ);
+    q_ += h * v_ + (h * h / 360) * sumQ;
+    v_ += (h / 24) * sumV;
+}
+
+void PipeRobotMechanics::applyCoulomb(double h, const double* armMassDiagonal) {
     // Coulomb friction as an impulse over the step: it can stop a joint, never reverse it.
     for (int i = 0; i < kAxisCount; ++i) {
         const auto s = static_cast<size_t>(i);
@@ -142,7 +230,7 @@ void PipeRobotMechanics::rigidStep(const JointVector& tau, double h) {
             v_[i] = 0;
             continue;
         }
-        const double inertia = i == 0 ? chuckInertia_ : mass[i - 1];
+        const double inertia = i == 0 ? chuckInertia_ : armMassDiagonal[i - 1];
         if (coulomb_[s] <= 0 || inertia <= 0) continue;
         const double budget = coulomb_[s] * h / inertia;
         const double dv = -std::copysign(std::min(std::fabs(v_[i]), budget), v_[i]);
