@@ -20,18 +20,19 @@ int runPlan(const PlanOptions& o);
 int runSimulate(const SimulateOptions& o);
 int runBench(const BenchOptions& o);
 int runExport(const ExportOptions& o);
-int runMachines(const MachinesOptions& o); // machines_command.cpp
-int runUpgrade(const UpgradeOptions& o);   // machines_command.cpp
-int runTune(const TuneCommandOptions& o);  // tune_command.cpp
-int runFk(const KinematicsOptions& o);     // kinematics_command.cpp
-int runCompare(const CompareOptions& o);   // compare_command.cpp
-int runIk(const KinematicsOptions& o);     // kinematics_command.cpp
-int runImport(const ImportOptions& o);     // import_command.cpp
-int runRun(const RunOptions& o);           // run_command.cpp (needs CutCell::devices)
-int runDriveSim(const DriveSimOptions& o); // drivesim_command.cpp
-int runHistory(const HistoryOptions& o);   // history_command.cpp (needs CutCell::devices)
-int runUsers(const UsersOptions& o);       // users_command.cpp (needs CutCell::devices)
-int runAudit(const AuditOptions& o);       // users_command.cpp (needs CutCell::devices)
+int runMachines(const MachinesOptions& o);   // machines_command.cpp
+int runUpgrade(const UpgradeOptions& o);     // machines_command.cpp
+int runTune(const TuneCommandOptions& o);    // tune_command.cpp
+int runMaterials(const MaterialsOptions& o); // materials_command.cpp
+int runFk(const KinematicsOptions& o);       // kinematics_command.cpp
+int runCompare(const CompareOptions& o);     // compare_command.cpp
+int runIk(const KinematicsOptions& o);       // kinematics_command.cpp
+int runImport(const ImportOptions& o);       // import_command.cpp
+int runRun(const RunOptions& o);             // run_command.cpp (needs CutCell::devices)
+int runDriveSim(const DriveSimOptions& o);   // drivesim_command.cpp
+int runHistory(const HistoryOptions& o);     // history_command.cpp (needs CutCell::devices)
+int runUsers(const UsersOptions& o);         // users_command.cpp (needs CutCell::devices)
+int runAudit(const AuditOptions& o);         // users_command.cpp (needs CutCell::devices)
 // simulate --devices canopen: the program through the engine on the machine's CAN cell.
 int runSimulateCan(const Job& job, const MachineModule& module, const MachinePlan& plan,
                    const SimulateOptions& o); // can_run.cpp

@@ -74,6 +74,14 @@ struct TuneCommandOptions {
     double tau_c_ms = 0;
 };
 
+// cutcell-cli materials: the cut-chart table (the shipped one, or --file), listed or one row
+// picked for a process, material, consumable set and thickness.
+struct MaterialsOptions {
+    std::string file;
+    bool json = false;
+    std::vector<std::string> pick; // PROCESS MATERIAL CONSUMABLE THICKNESS_MM
+};
+
 struct UpgradeOptions {
     std::string job; // the old (schema 1) job file
     std::string out; // the schema-2 file, written atomically

@@ -34,6 +34,7 @@ struct AllOptions {
     MachinesOptions machines;
     UpgradeOptions upgrade;
     TuneCommandOptions tune;
+    MaterialsOptions materials;
     KinematicsOptions fk, ik;
     CompareOptions compare;
     std::deque<ImportOptions> imports; // one per importer (stable addresses for CLI11)
@@ -202,6 +203,22 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     addNumber(*tune, "--tau-c-ms", o.tune.tau_c_ms, {0.01, 10000, "ms"},
               "desired closed-loop time constant tau_c (default: SIMC's tight tuning, tau_c = "
               "the effective delay theta)");
+
+    CLI::App* materials =
+        add("materials",
+            "the cut charts (process, material, consumable set: kerf, speed, heights, delays by "
+            "thickness) and where their figures come from; --pick one row",
+            [&] { return runMaterials(o.materials); });
+    materials
+        ->add_option("--file", o.materials.file, "a cut-chart table (default: the shipped one)")
+        ->type_name("FILE");
+    materials->add_flag("--json", o.materials.json, "print as JSON");
+    materials
+        ->add_option("--pick", o.materials.pick,
+                     "the row for a thickness, interpolated between the chart's rows: PROCESS "
+                     "(plasma, oxy_fuel, laser) MATERIAL CONSUMABLE THICKNESS_MM")
+        ->expected(4)
+        ->type_name("P M C T");
 
     CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
                             [&] { return runUpgrade(o.upgrade); });

@@ -5,6 +5,7 @@
 #include "core/json/json.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "core/machines/pipe_robot/pipe_robot_tuning.h"
+#include "core/process/cut_chart.h"
 #include "tests/support/run_cli.h"
 
 #include <gtest/gtest.h>
@@ -350,4 +351,52 @@ TEST(Cli, TunePrintsTheGainsAndWritesOnlyWhereTold) {
                               (dir / "far_tuned.json").string());
     EXPECT_EQ(far.code, 3) << far.output;
     EXPECT_FALSE(fs::exists(dir / "far_tuned.json"));
+}
+
+// cutcell-cli materials: the table listed, a row picked as the library picks it, a thickness
+// outside the chart refused with the chart's range, a thickness with a decimal comma refused.
+TEST(Cli, MaterialsListsTheChartsAndPicksARow) {
+    const CutChartSet& set = shippedCutCharts();
+    ASSERT_FALSE(set.charts.empty());
+    const Result list = runCli("materials");
+    EXPECT_EQ(list.code, 0) << list.output;
+    for (const CutChart& c : set.charts)
+        EXPECT_NE(list.output.find(c.name()), std::string::npos) << c.name();
+
+    const CutChart& chart = set.charts.front();
+    const double t =
+        0.5 * (chart.rows[0].thicknessMm() + chart.rows[1].thicknessMm()); // between rows
+    const std::string args =
+        formatC("materials --json --pick %s %s '%s' %.17g", toString(chart.process),
+                chart.material.c_str(), chart.consumable.c_str(), t);
+    const Result picked = runCli(args, false);
+    ASSERT_EQ(picked.code, 0) << picked.output;
+    const json::Value doc = json::parse(picked.output);
+    const CutPick expected = pickCutRow(chart, t);
+    ASSERT_TRUE(expected.ok());
+    for (CutFigure f : chart.columns) {
+        const auto v = expected.row.get(f);
+        ASSERT_TRUE(v.has_value());
+        const json::Value* row = doc.find("row");
+        ASSERT_NE(row, nullptr) << picked.output;
+        const json::Value* value = row->find(cutFigureInfo(f).key);
+        ASSERT_NE(value, nullptr) << cutFigureInfo(f).key;
+        EXPECT_EQ(value->asNumber(), *v) << cutFigureInfo(f).key;
+    }
+
+    const double beyond = chart.rows.back().thicknessMm() + 1;
+    const Result refused =
+        runCli(formatC("materials --pick %s %s '%s' %g", toString(chart.process),
+                       chart.material.c_str(), chart.consumable.c_str(), beyond));
+    EXPECT_EQ(refused.code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("process.thickness_mm"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find(formatC("%g .. %g mm", chart.rows.front().thicknessMm(),
+                                          chart.rows.back().thicknessMm())),
+              std::string::npos)
+        << refused.output;
+
+    const Result comma = runCli(formatC("materials --pick %s %s '%s' 2,5", toString(chart.process),
+                                        chart.material.c_str(), chart.consumable.c_str()));
+    EXPECT_EQ(comma.code, 64) << comma.output;
+    EXPECT_EQ(runCli("materials --file /nonexistent/charts.json").code, 2);
 }
