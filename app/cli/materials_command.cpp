@@ -55,6 +55,13 @@ void printRow(const CutChart& chart, const CutRow& row) {
 }
 
 int pick(const CutChartSet& set, const MaterialsOptions& o) {
+    if (o.pick.size() != 4) {
+        std::fprintf(stderr,
+                     "cutcell-cli materials: --pick takes 4 values (PROCESS MATERIAL CONSUMABLE "
+                     "THICKNESS_MM), got %zu\n",
+                     o.pick.size());
+        return kUsage;
+    }
     const auto process = cutProcessFromString(o.pick[0]);
     if (!process) {
         std::fprintf(stderr,
@@ -94,6 +101,9 @@ int runMaterials(const MaterialsOptions& o) {
     CutChartSet set;
     try {
         set = o.file.empty() ? shippedCutCharts() : loadCutChartsFile(o.file);
+    } catch (const CutChartFileError& e) {
+        std::fprintf(stderr, "cutcell-cli materials: %s\n", e.what());
+        return kFailure;
     } catch (const CutChartError& e) {
         std::fprintf(stderr, "cutcell-cli materials: %s\n", e.what());
         return kInvalidJob;

@@ -3,6 +3,7 @@
 #include "core/process/cut_chart.h"
 
 #include "core/common/c_format.h"
+#include "core/job/job_io.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -257,12 +258,13 @@ void checkChart(const CutChart& c, std::size_t i) {
 }
 
 std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("cannot read the cut charts " + path + ": " + std::strerror(errno));
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) fail("cannot read the cut charts " + path + ": read error");
-    return ss.str();
+    try {
+        return readTextFile(path); // a folder or a missing file: JobFileError; too big: JobError
+    } catch (const JobFileError& e) {
+        throw CutChartFileError(std::string("cut charts: ") + e.what());
+    } catch (const JobError& e) {
+        fail(e.what());
+    }
 }
 
 } // namespace

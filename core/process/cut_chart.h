@@ -107,6 +107,11 @@ inline constexpr int kCutChartVersion = 1;
 struct CutChartError : std::runtime_error {
     explicit CutChartError(const std::string& msg) : std::runtime_error(msg) {}
 };
+// The file cannot be read at all (missing, a folder, no permission): an I/O error, not an
+// invalid table (the CLI's exit 1, not 2).
+struct CutChartFileError : CutChartError {
+    using CutChartError::CutChartError;
+};
 
 CutChartSet parseCutCharts(const std::string& text);
 CutChartSet readCutCharts(const json::Value& doc);

@@ -398,5 +398,11 @@ TEST(Cli, MaterialsListsTheChartsAndPicksARow) {
     const Result comma = runCli(formatC("materials --pick %s %s '%s' 2,5", toString(chart.process),
                                         chart.material.c_str(), chart.consumable.c_str()));
     EXPECT_EQ(comma.code, 64) << comma.output;
-    EXPECT_EQ(runCli("materials --file /nonexistent/charts.json").code, 2);
+    const Result short_ = runCli("materials --pick plasma mild_steel");
+    EXPECT_EQ(short_.code, 64) << short_.output;
+    EXPECT_NE(short_.output.find("takes 4 values"), std::string::npos) << short_.output;
+    EXPECT_EQ(runCli("materials --file /nonexistent/charts.json").code, 1);
+    const Result folder = runCli("materials --file " + std::string(CUTCELL_SOURCE_DIR));
+    EXPECT_EQ(folder.code, 1) << folder.output;
+    EXPECT_NE(folder.output.find("it is a folder"), std::string::npos) << folder.output;
 }
