@@ -28,7 +28,7 @@
 // - k finite and >= 0 mm;
 // - k/2 <= 0.1 x the pipe radius: the construction treats the cut surface as its tangent plane
 //   at p; over 0.1 R the pipe's own curvature bends the skin (k/2)^2 / 2R = 0.05 k/2 away from
-//   it, and kerfs (cut charts: 0.05 - 10 mm) stay far below it on real pipes;
+//   it (a 2 mm kerf needs R >= 10 mm, the cut charts' widest, 10 mm, R >= 50 mm);
 // - on a path, k/2 <= 0.5 x the edge's radius of curvature toward the scrap side (curvature
 //   vector . n, from neighbouring points): at 1.0 the torch path would collapse to a cusp, at
 //   0.5 its radius of curvature is still half the edge's;

@@ -329,6 +329,14 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%s.min_deg = %.6g deg must be below max_deg = %.6g deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "park_deg[%zu] = %.6g deg is outside %s [%.6g, %.6g] deg"),
     QT_TRANSLATE_NOOP("CoreMessage", "drives[%zu].tau_f_s = %.6g s must be >= half the control period (%.6g s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the kerf %.6g mm is not a finite number"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the kerf %.6g mm is negative: it must be 0 mm or more"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the kerf %.6g mm is too wide for a pipe of radius %.6g mm: at most %.6g mm (0.2 x the radius)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the torch axis is %.6g deg from the edge's tangent: at least %.6g deg is needed for a cut surface"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the cut surface is %.6g deg from the pipe surface: at least %.6g deg is needed to tell its sides"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the torch line %.6g mm off the edge misses the pipe surface of radius %.6g mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "at %.6g mm along the cut: %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the kerf %.6g mm is too wide for the edge at %.6g mm along the cut: its radius of curvature toward the scrap side is %.6g mm, the kerf may be at most %.6g mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "tool"),
     QT_TRANSLATE_NOOP("CoreMessage", "Simulated flying saw: line encoder, carriage, turntable, 2 feeds + saw"),
     QT_TRANSLATE_NOOP("CoreMessage", "Simulated cell: 6 drives + torch"),
@@ -534,6 +542,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 524;
+const int kCoreMessageCount = 532;
 
 } // namespace CutCell::ui

@@ -1294,7 +1294,47 @@
         <translation>piece.quantity = %d Stück liegt außerhalb von [1, %d] Stück</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+6"/>
+        <source>the kerf %.6g mm is not a finite number</source>
+        <translation>die Schnittfuge %.6g mm ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the kerf %.6g mm is negative: it must be 0 mm or more</source>
+        <translation>die Schnittfuge %.6g mm ist negativ: sie muss 0 mm oder mehr sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the kerf %.6g mm is too wide for a pipe of radius %.6g mm: at most %.6g mm (0.2 x the radius)</source>
+        <translation>die Schnittfuge %.6g mm ist zu breit für ein Rohr mit Radius %.6g mm: höchstens %.6g mm (0,2 x Radius)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the torch axis is %.6g deg from the edge&apos;s tangent: at least %.6g deg is needed for a cut surface</source>
+        <translation>die Brennerachse liegt %.6g° von der Tangente der Kante: für eine Schnittfläche sind mindestens %.6g° nötig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cut surface is %.6g deg from the pipe surface: at least %.6g deg is needed to tell its sides</source>
+        <translation>die Schnittfläche liegt %.6g° von der Rohroberfläche: mindestens %.6g° sind nötig, um ihre Seiten zu unterscheiden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the torch line %.6g mm off the edge misses the pipe surface of radius %.6g mm</source>
+        <translation>die Brennerlinie %.6g mm neben der Kante verfehlt die Rohroberfläche mit Radius %.6g mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at %.6g mm along the cut: %s</source>
+        <translation>bei %.6g mm entlang des Schnitts: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the kerf %.6g mm is too wide for the edge at %.6g mm along the cut: its radius of curvature toward the scrap side is %.6g mm, the kerf may be at most %.6g mm</source>
+        <translation>die Schnittfuge %.6g mm ist zu breit für die Kante bei %.6g mm entlang des Schnitts: ihr Krümmungsradius zur Abfallseite ist %.6g mm, die Schnittfuge darf höchstens %.6g mm sein</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
         <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
     </message>
@@ -2264,7 +2304,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-273"/>
+        <location line="-281"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2574,7 +2614,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+95"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -4713,7 +4753,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::MethodForm</name>
     <message>
-        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="+30"/>
+        <location filename="../../ui/machines/pipe_robot/method_form.cpp" line="+33"/>
         <source>Cutting method</source>
         <translation>Schneidverfahren</translation>
     </message>
@@ -6313,7 +6353,7 @@ letzte %1 s</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+82"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="+77"/>
         <location filename="../../ui/machines/profile_cutter/profile_cutter_ui.cpp" line="+99"/>
         <location filename="../../ui/machines/quick_return/quick_return_ui.cpp" line="+49"/>
         <location filename="../../ui/machines/section_steel/section_steel_ui.cpp" line="+47"/>
@@ -6331,7 +6371,7 @@ letzte %1 s</translation>
         <translation>Drehendes Rohr: das Futter dreht das Rohr so, dass der Schnittpunkt oben bleibt; der Brenner fährt auf einer kurzen Geraden.</translation>
     </message>
     <message>
-        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-63"/>
+        <location filename="../../ui/machines/pipe_robot/pipe_robot_ui.cpp" line="-59"/>
         <source>Pipe-cutting robot: 5-DOF arm + pipe chuck (6 axes)</source>
         <translation>Rohrschneidroboter: 5-achsiger Arm + Rohrfutter (6 Achsen)</translation>
     </message>
@@ -6352,12 +6392,7 @@ letzte %1 s</translation>
         <translation>Regler</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Compare</source>
-        <translation>Vergleich</translation>
-    </message>
-    <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>Planned %1 points, %2 mm in %3 s (max. torch tilt %4 deg).</source>
         <translation>%1 Punkte geplant, %2 mm in %3 s (max. Brennerneigung %4 deg).</translation>
     </message>
