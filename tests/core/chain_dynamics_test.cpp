@@ -534,6 +534,36 @@ TEST(PipeRobotMechanics, SimulateCutRunsTheAutoIntegrator) {
             << "axis " << i;
 }
 
+// A joint without any inertia (the job allows zero mass, tensor and rotor) makes M singular: the
+// forward dynamics refuses (the arm's q'' = 0) and the multistep method must not use the
+// unfinished factor of such a step: the plant then runs as RK4 does, bit for bit.
+TEST(PipeRobotMechanics, ASingularMassMatrixNeverEntersTheHistory) {
+    Job job = defaultJob();
+    PipeRobotSpec& spec = pipeRobotSpec(job);
+    spec.links[4] = ArmLinkRow{}; // the torch link: no mass, no inertia
+    spec.drives[5].rotor_inertia_g_cm2 = 0;
+    for (DriveTrainRow& d : spec.drives)
+        d.viscous_nm_s_per_rad = 0; // Auto then takes the multistep method
+    PipeRobotMechanics plant(job, 0.001), rk4(job, 0.001, 1, RigidIntegrator::RungeKutta4);
+    ASSERT_EQ(plant.integrator(), RigidIntegrator::AdamsNystrom4);
+    JointVector q = JointVector::Zero();
+    q.head(kAxisCount) << 0.1, 0.3, 0.5, -0.4, 0.6, 0.2;
+    plant.setState(q);
+    rk4.setState(q);
+    JointVector torque = JointVector::Zero(), applied;
+    for (int k = 0; k < 50; ++k) {
+        for (int i = 0; i < kAxisCount; ++i)
+            torque[i] = std::sin(0.1 * k + i);
+        plant.step(torque, applied);
+        rk4.step(torque, applied);
+        for (int i = 0; i < kAxisCount; ++i) {
+            ASSERT_TRUE(std::isfinite(plant.position(i))) << "step " << k << " axis " << i;
+            ASSERT_EQ(plant.position(i), rk4.position(i)) << "step " << k << " axis " << i;
+            ASSERT_EQ(plant.velocity(i), rk4.velocity(i)) << "step " << k << " axis " << i;
+        }
+    }
+}
+
 // Auto falls back to RK4 where viscous friction is too stiff for the multistep method.
 TEST(PipeRobotMechanics, AutoTakesRk4ForStiffViscousFriction) {
     Job job = defaultJob();

@@ -130,7 +130,7 @@ void PipeRobotMechanics::setState(const JointVector& q, const JointVector& qd) {
         linear_[static_cast<size_t>(i)].setState(q[i], qd[i]);
 }
 
-void PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v,
+bool PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v,
                                       const JointVector& tau, JointVector& a,
                                       double* armMassDiagonal, Factor* armCholesky) const {
     a.setZero();
@@ -147,12 +147,13 @@ void PipeRobotMechanics::acceleration(const JointVector& q, const JointVector& v
     Vec diagonal;
     if (armMassDiagonal) options.mass_diagonal = &diagonal;
     options.cholesky = armCholesky;
-    arm_.forwardDynamics(qa, va, ta, aa, options);
+    const bool factored = arm_.forwardDynamics(qa, va, ta, aa, options);
     if (armMassDiagonal)
         for (int i = 0; i < kArmJointCount; ++i)
             armMassDiagonal[i] = diagonal[i];
     for (int i = 0; i < kArmJointCount; ++i)
         a[i + 1] = aa[i];
+    return factored;
 }
 
 void PipeRobotMechanics::rigidStep(const JointVector& tau, double h) {
@@ -160,14 +161,16 @@ void PipeRobotMechanics::rigidStep(const JointVector& tau, double h) {
     const int slot = (historyHead_ + 1) % kRing;
     PastStep& now = history_[static_cast<size_t>(slot)];
     double mass[kArmJointCount] = {};
-    acceleration(q_, v_, tau, now.a, mass, &now.cholesky);
+    // A singular M (a joint without inertia) leaves the arm's q'' = 0 and an unfinished factor:
+    // such a step never enters the history.
+    const bool factored = acceleration(q_, v_, tau, now.a, mass, &now.cholesky);
     now.tau = tau;
-    if (integrator_ == RigidIntegrator::AdamsNystrom4 && historySize_ == kHistory)
+    if (factored && integrator_ == RigidIntegrator::AdamsNystrom4 && historySize_ == kHistory)
         adamsNystromStep(tau, h, now.a);
     else
         rungeKuttaStep(tau, h, now.a);
     historyHead_ = slot;
-    historySize_ = std::min(historySize_ + 1, kHistory);
+    historySize_ = factored ? std::min(historySize_ + 1, kHistory) : 0;
     applyCoulomb(h, mass);
 }
 

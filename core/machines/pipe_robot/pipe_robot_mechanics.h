@@ -82,8 +82,9 @@ class PipeRobotMechanics : public CoupledMechanics {
     using Vec = ChainDynamics::Vector;
     using Factor = ChainDynamics::CholeskyFactor;
     // q'' of all six axes for a state and held torques (friction: viscous only); optionally the
-    // arm's mass-matrix diagonal and Cholesky factor at q.
-    void acceleration(const JointVector& q, const JointVector& v, const JointVector& tau,
+    // arm's mass-matrix diagonal and Cholesky factor at q. False where M is singular (the arm's
+    // q'' is then 0 and the factor unfinished).
+    bool acceleration(const JointVector& q, const JointVector& v, const JointVector& tau,
                       JointVector& a, double* armMassDiagonal, Factor* armCholesky) const;
     void rigidStep(const JointVector& tau, double h);
     // One step of each integrator from (q_, v_); a0 = q'' at (q_, v_, tau).
