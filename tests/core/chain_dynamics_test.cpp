@@ -351,7 +351,12 @@ TEST_P(EnergyWithoutFriction, IsConservedWithoutTorque) {
 
 INSTANTIATE_TEST_SUITE_P(PipeRobotMechanics, EnergyWithoutFriction,
                          ::testing::Values(RigidIntegrator::AdamsNystrom4,
-                                           RigidIntegrator::RungeKutta4));
+                                           RigidIntegrator::RungeKutta4),
+                         [](const ::testing::TestParamInfo<RigidIntegrator>& param) {
+                             return std::string(param.param == RigidIntegrator::RungeKutta4
+                                                    ? "RungeKutta4"
+                                                    : "AdamsNystrom4");
+                         });
 
 // ---------------------------------------------------------------------------------------------
 // d. Gravity at the home pose, by hand.
@@ -517,7 +522,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(IntegratorCase{RigidIntegrator::RungeKutta4, true, 3e-4},
                       IntegratorCase{RigidIntegrator::AdamsNystrom4, true, 1.5e-5},
                       IntegratorCase{RigidIntegrator::RungeKutta4, false, 4e-13},
-                      IntegratorCase{RigidIntegrator::AdamsNystrom4, false, 1e-8}));
+                      IntegratorCase{RigidIntegrator::AdamsNystrom4, false, 1e-8}),
+    [](const ::testing::TestParamInfo<IntegratorCase>& param) {
+        return std::string(param.param.integrator == RigidIntegrator::RungeKutta4
+                               ? "RungeKutta4"
+                               : "AdamsNystrom4") +
+               (param.param.friction ? "WithFriction" : "WithoutFriction");
+    });
 
 // simulateCut runs the plant as this test's loop does, with the integrator Auto picks.
 TEST(PipeRobotMechanics, SimulateCutRunsTheAutoIntegrator) {
