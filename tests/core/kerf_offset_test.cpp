@@ -113,9 +113,9 @@ TEST(KerfOffset, HalfKerfAcrossTheCutSurface) {
         const Job job = randomJob(rng, c % 2 ? CutTarget::Main : CutTarget::Branch);
         const CutGeometry g(job);
         const double k = randomKerf(rng, job);
-        const KerfPath torch = offsetCutPath(kerfPathSpecFor(job, g), g.sampleByPhi(90), k);
-        ASSERT_TRUE(torch.outcome.ok()) << torch.outcome.message;
         const auto edge = g.sampleByPhi(90);
+        const KerfPath torch = offsetCutPath(kerfPathSpecFor(job, g), edge, k);
+        ASSERT_TRUE(torch.outcome.ok()) << torch.outcome.message;
         for (size_t i = 0; i < edge.size(); ++i) {
             const Vec3& p = edge[i].p_work;
             const auto plane = Eigen::Hyperplane<double, 3>::Through(p, p + edge[i].tangent_work,
