@@ -26,6 +26,7 @@ packages=(
   nlohmann-json3-dev locales
   libsqlite3-dev sqlite3 libsodium-dev libpq-dev postgresql
   liborocos-kdl-dev
+  mosquitto libmosquitto-dev libprotobuf-dev protobuf-compiler openssl
 )
 # npm: Debian's package, unless an npm came with another nodejs build (e.g. NodeSource's).
 command -v npm >/dev/null || packages+=(npm)

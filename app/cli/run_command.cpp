@@ -7,6 +7,7 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
+#include "devices/record/consumable_run_sink.h"
 #include "devices/record/run_record_store.h"
 
 #include <cstdio>
@@ -56,7 +57,12 @@ int runRun(const RunOptions& o) {
                              "run: production record %s: %d run(s) of a killed program "
                              "closed as interrupted\n",
                              record->where().c_str(), record->interruptedAtOpen());
-            setup.record = std::move(record);
+            // The consumables are counted in the same record (issue 24).
+            const std::string where = record->where();
+            setup.record =
+                openConsumableRunSink(std::move(record), where, [](const std::string& m) {
+                    std::fprintf(stderr, "run: %s\n", m.c_str());
+                });
         } catch (const RecordError& e) {
             std::fprintf(stderr, "run: %s\n", e.what());
             return kFailure;

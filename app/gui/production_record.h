@@ -10,7 +10,8 @@
 
 namespace cutcell {
 class RunRecordStore;
-}
+class ConsumableLedger;
+} // namespace cutcell
 
 namespace cutcell::app {
 
@@ -22,5 +23,7 @@ std::string openProductionRecord(const std::string& where);
 std::shared_ptr<RunRecordSink> productionRecord();
 // The same as the file it is (the operator it names follows the log-in); null when none.
 RunRecordStore* productionRecordFile();
+// The consumable statistics kept in the record (null when none is kept).
+ConsumableLedger* consumableLedger();
 
 } // namespace cutcell::app

@@ -10,6 +10,7 @@
 #include "ui/forms/job_editor.h"
 #include "ui/forms/parameter_tabs.h"
 #include "ui/main_window.h"
+#include "ui/panels/consumables_panel.h"
 #include "ui/panels/control_panel.h"
 #include "ui/panels/history_panel.h"
 #include "ui/panels/login_panel.h"
@@ -82,6 +83,10 @@ void attachStationAccess(CutCell::ui::MainWindow& window) {
     window.addStatusPanel(new LoginPanel(access, &window));
     window.addBottomTab(new HistoryPanel(productionRecordFile(), &window),
                         HistoryPanel::tr("History"));
+    window.addBottomTab(
+        new ConsumablesPanel(
+            consumableLedger(), window.editor(), [access] { return access->user(); }, &window),
+        ConsumablesPanel::tr("Consumables"));
     JobEditor* editor = window.editor();
     editor->setGate([access, editor](const std::string& key) {
         return access->lockReason(key, findMachine(editor->job().machine));

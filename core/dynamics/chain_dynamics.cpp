@@ -1,4 +1,5 @@
 #include "core/dynamics/chain_dynamics.h"
+#include "core/common/sin_cos.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -114,7 +115,8 @@ void ChainDynamics::kinematics(const Vector& q, Kinematics& k) const {
         const auto s = static_cast<size_t>(i);
         const ChainJoint& j = joints_[s];
         const double th = q[i] + j.theta_offset_rad;
-        const double st = std::sin(th), ct = std::cos(th);
+        double st, ct;
+        sinCos(th, st, ct);
         const double sa = sinAlpha_[s], ca = cosAlpha_[s];
         k.axis[s] = Z;
         const V3 Xn = ct * X + st * Y;

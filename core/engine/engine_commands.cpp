@@ -156,6 +156,7 @@ void MotionEngine::Impl::disableAll() {
 void MotionEngine::Impl::stopDevices(StopCategory category, Halt reason) {
     torchCommand = false;
     if (dev.torch) dev.torch->setOn(false); // at once, not at the cycle's write
+    if (torchWritten) toolSwitched(false);
     torchWritten = false;
     const bool moving = traj == TrajectoryKind::Source
                             ? !sourceAtRest
@@ -220,7 +221,35 @@ RunStopPoint MotionEngine::Impl::currentPoint() const {
     p.point_count =
         runProgress.points ? runProgress.points : static_cast<std::uint32_t>(program->point_count);
     p.made = runProgress.made;
+    p.tool_starts = toolStarts;
+    p.tool_on_s = static_cast<double>(toolOnCycles) * T;
     return p;
+}
+
+void MotionEngine::Impl::toolSwitched(bool on) {
+    if (!runActive || !program) return;
+    const double length = runProgress.progress * program->length_mm;
+    if (on) {
+        ++toolStarts;
+        cutOnCycles = 0;
+        cutStartLength = length;
+        return;
+    }
+    // One cut ended (its arc off): the consumables count it (RunRecordSink::cutEnded).
+    EngineEvent e;
+    e.time_s = now;
+    e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                    std::chrono::system_clock::now().time_since_epoch())
+                    .count();
+    e.from = e.to = state;
+    e.kind = EventKind::CutEnded;
+    e.run_id = runId;
+    e.cut_tool_on_s = static_cast<double>(cutOnCycles) * T;
+    e.cut_length_mm = program->terms.path_length ? std::max(0.0, length - cutStartLength) : 0.0;
+    snprintfC(e.text.data(), e.text.size(), "%s off after %.3f s, %.1f mm", toolName(),
+              e.cut_tool_on_s, e.cut_length_mm);
+    if (!events.push(e)) eventsDropped.fetch_add(1, std::memory_order_relaxed);
+    if (!logEvents.push(e)) logDropped.fetch_add(1, std::memory_order_relaxed);
 }
 
 void MotionEngine::Impl::captureStop() {
@@ -305,6 +334,9 @@ void MotionEngine::Impl::beginCut() {
     ++runId;
     runActive = true;
     runStartTime = now;
+    toolStarts = 0;
+    toolOnCycles = 0;
+    cutOnCycles = 0;
     runProgramSeq.store(currentProgramSeq.load(std::memory_order_relaxed),
                         std::memory_order_release);
     samples = 0;

@@ -161,6 +161,11 @@ void MotionEngine::Impl::writeDevices() {
     if (dev.torch && torchCommand != torchWritten) {
         dev.torch->setOn(torchCommand);
         torchWritten = torchCommand;
+        toolSwitched(torchCommand);
+    }
+    if (runActive && torchWritten) {
+        ++toolOnCycles;
+        ++cutOnCycles;
     }
 }
 

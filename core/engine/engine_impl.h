@@ -140,6 +140,11 @@ struct MotionEngine::Impl {
     double enableDeadline = 0;
     bool homed = false;
     bool torchCommand = false;
+    // The tool in the current run: starts, cycles on, and the cut under way (consumables).
+    std::uint32_t toolStarts = 0;
+    std::uint64_t toolOnCycles = 0, cutOnCycles = 0;
+    double cutStartLength = 0;
+    void toolSwitched(bool on); // the torch was just written on or off
     double overrideTarget = 1;
     Halt halt = Halt::None;
     // A controlled stop (abort, category 1) is bringing the motion to rest.

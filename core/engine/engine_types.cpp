@@ -75,6 +75,8 @@ const char* toString(EventKind k) {
         return "run-started";
     case EventKind::RunEnded:
         return "run-ended";
+    case EventKind::CutEnded:
+        return "cut-ended";
     }
     return "?";
 }

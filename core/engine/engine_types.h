@@ -52,6 +52,7 @@ enum class EventKind : std::uint8_t {
     Fault,      // a device or tracking fault (also a transition to Fault)
     RunStarted, // Start accepted: a new run begins
     RunEnded,   // the run ended (Completed, aborted, fault, emergency stop): report ready
+    CutEnded,   // the tool went off in a run: one cut (pierce to arc off), its figures below
 };
 const char* toString(EventKind k);
 
@@ -64,6 +65,9 @@ struct EngineEvent {
     std::array<char, 240> text{}; // NUL-terminated, e.g. "Start refused: drives not enabled"
     EventKind kind = EventKind::Info;
     std::uint32_t run_id = 0; // the run this event belongs to (0 = before the first Start)
+    // CutEnded: the cut's tool-on time and the path length it covered.
+    double cut_tool_on_s = 0;
+    double cut_length_mm = 0;
 };
 
 // One cycle's view of the machine. Per axis i < axis_count: set-point, actual, error in the
@@ -108,6 +112,9 @@ struct RunStopPoint {
     // Units of work this run finished up to here (pierces, pieces, strokes: the program's
     // terms.counts).
     std::uint32_t made = 0;
+    // The tool in this run: how often it went on (pierces, saw cuts) and how long it was on.
+    std::uint32_t tool_starts = 0;
+    double tool_on_s = 0;
 };
 
 // Cycle timing measured by the engine thread itself.

@@ -103,6 +103,10 @@ void RunLog::beginRunFolder(std::uint32_t runId, const std::string& jobText) {
 }
 
 void RunLog::event(const EngineEvent& e) {
+    if (recordOpen_ && e.kind == EventKind::CutEnded)
+        tellRecord([&](RunRecordSink& r) {
+            r.cutEnded({e.wall_ms, e.cut_tool_on_s, e.cut_length_mm});
+        });
     if (recordOpen_ && e.severity != Severity::Info)
         tellRecord([&](RunRecordSink& r) {
             r.alarm({e.wall_ms,
@@ -181,6 +185,8 @@ void RunLog::endRun(const std::string& outcome, const TrackingReport& report, co
         // The run's time on the engine's clock, from Start to its end (the cycle time).
         top.emplace_back("elapsed_s", end.elapsed_s);
         top.emplace_back("made", madeToJson(terms_, end));
+        top.emplace_back("tool", json::Object{{"starts", static_cast<double>(end.tool_starts)},
+                                              {"on_s", end.tool_on_s}});
     }
     const json::Value doc(std::move(top));
     const std::string summary = json::write(doc);

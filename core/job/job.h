@@ -3,6 +3,7 @@
 // named in their JSON keys (mm, deg, s, mm/s); see resources/jobs/default_job.json.
 #include "core/common/types.h"
 #include "core/job/machine_spec.h"
+#include "core/process/process_spec_data.h"
 
 #include <array>
 #include <string>
@@ -113,6 +114,9 @@ struct Job {
     double angle_deg = 90;
     double eccentricity_mm = 0;
     CutSpec cut;
+    // The cutting process of a torch machine (core/process/process_spec.h): the cut chart's
+    // entry and the operator's overrides; unused (process.used false) on the other machines.
+    ProcessSpec process;
     SimSpec sim;
     EngineSpec engine;
     DeviceSpec devices;

@@ -1,4 +1,5 @@
 #include "core/kinematics/dh_chain.h"
+#include "core/common/sin_cos.h"
 
 #include <cmath>
 
@@ -6,7 +7,8 @@ namespace cutcell {
 
 Pose dhTransform(const DhLink& l, double theta) {
     const double th = theta + l.theta_offset_rad;
-    const double ct = std::cos(th), st = std::sin(th);
+    double ct, st;
+    sinCos(th, st, ct);
     const double ca = std::cos(l.alpha_rad), sa = std::sin(l.alpha_rad);
     Pose T = Pose::Identity();
     T.linear() << ct, -st * ca, st * sa, st, ct * ca, -ct * sa, 0, sa, ca;

@@ -1,4 +1,5 @@
 #include "core/machine/pipe_joint_section.h"
+#include "core/process/process_spec.h"
 
 #include "core/common/c_format.h"
 #include "core/common/types.h"
@@ -39,11 +40,19 @@ void readPipeJoint(SectionReader& m, Job& job, const CutKeys& keys) {
     job.branch_pipe = readPipe(m.child("branch_pipe"), 300);
     job.angle_deg = m.number("angle_deg", "deg");
     job.eccentricity_mm = m.number("eccentricity_mm", "mm", 0);
+    readProcess(m, job.process);
     SectionReader cut = m.child("cut");
     job.cut.target = cut.choice<CutTarget>(
         "target", {{"branch", CutTarget::Branch}, {"main", CutTarget::Main}}, CutTarget::Main);
     if (keys.bevel) job.cut.bevel_deg = cut.number("bevel_deg", "deg", 0);
-    job.cut.speed_mm_s = cut.number("speed_mm_s", "mm/s");
+    // With a process section the cut chart gives the speed: a second speed in the file would
+    // contradict it (the override is where an operator sets another).
+    if (!job.process.used)
+        job.cut.speed_mm_s = cut.number("speed_mm_s", "mm/s");
+    else if (cut.has("speed_mm_s"))
+        throw JobError(cut.key("speed_mm_s") +
+                       " is given by the cut chart when the job has a process section; set "
+                       "process.override.cut_speed_mm_min to cut at another speed");
     job.cut.ramp_s = cut.number("ramp_s", "s", job.cut.ramp_s);
     if (keys.direction_deviation)
         job.cut.max_direction_deviation_deg =
@@ -56,6 +65,17 @@ void readPipeJoint(SectionReader& m, Job& job, const CutKeys& keys) {
         job.cut.start_phi_deg = cut.number("start_phi_deg", "deg", 0);
     }
     cut.finish();
+    syncProcessSpeed(job);
+}
+
+double cutPartWallMm(const Job& job) {
+    return job.cut.target == CutTarget::Main ? job.main_pipe.wall_mm : job.branch_pipe.wall_mm;
+}
+
+void syncProcessSpeed(Job& job) {
+    if (!job.process.used) return;
+    const ProcessSettings s = resolveProcess(job.process, cutPartWallMm(job));
+    job.cut.speed_mm_s = s.ok() ? s.cutSpeedMmS() : 0.0;
 }
 
 void writePipeJoint(const Job& job, json::Object& s, const CutKeys& keys) {
@@ -63,9 +83,10 @@ void writePipeJoint(const Job& job, json::Object& s, const CutKeys& keys) {
     s.emplace_back("branch_pipe", pipeJson(job.branch_pipe));
     s.emplace_back("angle_deg", job.angle_deg);
     s.emplace_back("eccentricity_mm", job.eccentricity_mm);
+    writeProcess(job.process, s);
     json::Object cut{{"target", toString(job.cut.target)}};
     if (keys.bevel) cut.emplace_back("bevel_deg", job.cut.bevel_deg);
-    cut.emplace_back("speed_mm_s", job.cut.speed_mm_s);
+    if (!job.process.used) cut.emplace_back("speed_mm_s", job.cut.speed_mm_s);
     cut.emplace_back("ramp_s", job.cut.ramp_s);
     if (keys.direction_deviation)
         cut.emplace_back("max_direction_deviation_deg", job.cut.max_direction_deviation_deg);
@@ -94,8 +115,15 @@ void checkPipeJoint(IssueChecker& c, const Job& job, const CutKeys& keys) {
                        r, fit, R));
 
     if (keys.bevel) c.range("cut.bevel_deg", job.cut.bevel_deg, -60, 60, "deg");
-    // 0.1 mm/s: slower than any torch cuts; with 500 mm/s the upper bound of the machines.
-    c.positive("cut.speed_mm_s", job.cut.speed_mm_s, 0.1, 500, "mm/s");
+    // 0.1 mm/s: slower than any torch cuts; with 500 mm/s the upper bound of the machines. With
+    // a process section the speed is the chart's (or its override): its issues are process.*.
+    checkProcess(c, job.process, cutPartWallMm(job));
+    if (!job.process.used)
+        c.positive("cut.speed_mm_s", job.cut.speed_mm_s, 0.1, 500, "mm/s");
+    else if (!c.has("process.thickness_mm") && !c.has("process.material") &&
+             !c.has("process.consumable") && !c.has("process.override.cut_speed_mm_min"))
+        c.positive("process.override.cut_speed_mm_min", job.cut.speed_mm_s * 60, 6, 30000,
+                   "mm/min");
     c.range("cut.ramp_s", job.cut.ramp_s, 0.01, 10, "s");
     if (keys.direction_deviation)
         c.range("cut.max_direction_deviation_deg", job.cut.max_direction_deviation_deg, 0, 90,

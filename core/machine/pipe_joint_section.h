@@ -25,6 +25,14 @@ void writePipeJoint(const Job& job, json::Object& section, const CutKeys& keys);
 // number of samples at the control period) and the pipe lengths that must contain the cut.
 void checkPipeJoint(IssueChecker& c, const Job& job, const CutKeys& keys);
 
+// The wall of the pipe being cut (the main pipe for its hole, the branch for its end): the
+// thickness that picks the cut chart's row unless process.thickness_mm is given.
+double cutPartWallMm(const Job& job);
+// With a process section, cut.speed_mm_s becomes the chart's speed (or its override) for the
+// part's wall, 0 when the chart refuses it (validation then says why). Reading the section calls
+// it; so must whoever edits the pipes, the target or the process afterwards (the forms).
+void syncProcessSpeed(Job& job);
+
 // Longest cut accepted (s): a cut longer than an hour is refused with the figures.
 inline constexpr double kMaxCutTime_s = 3600;
 // Most samples of a plan at the control period (joints.csv rows, engine steps).

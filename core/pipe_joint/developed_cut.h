@@ -32,6 +32,9 @@ struct ProfilePoint {
     double x_mm = 0;     // X axis
     double a_deg = 0;    // A axis (continuous, not wrapped)
     int pipe = 0;        // the pipe that sets the point: 0 = main, k = other_branches[k-1]
+    // Kerf compensation only (profile_kerf.h): the edge's unit tangent on the work pipe, kept
+    // with the torch point so that the edge comes back exactly; zero on an edge.
+    Vec3 edge_tangent = Vec3::Zero();
 };
 
 struct ProfileCut {
@@ -40,6 +43,10 @@ struct ProfileCut {
     double a_per_turn_deg = 360;      // A travel over the closed cut: 360 (branch end) or 0 (hole)
     std::vector<ProfilePoint> points; // n points, one turn, the first not repeated at the end
     std::vector<double> increments_x_mm; // the seed's N' (X increments, closing one included)
+    // Kerf compensation (core/machines/profile_cutter/profile_kerf.h): the points are the torch
+    // centre's, kerf_mm / 2 off the part's edge toward the scrap side; 0 = the edge itself.
+    double kerf_mm = 0;
+    std::string kerf_problem; // the job asked for a kerf that could not be compensated: why
     // Developed (surface) length of the closed polyline through the points.
     double developedLength() const;
     // Point i with i in [0, n]: i = n is the first point one turn later (A + a_per_turn_deg).

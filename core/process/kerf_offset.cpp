@@ -160,6 +160,18 @@ KerfPath offsetCutPath(const KerfPathSpec& spec, const std::vector<CutPoint>& ed
     return shiftPath(spec, edge, kerf_mm, +1);
 }
 
+KerfPoint offsetCutPoint(const KerfPathSpec& spec, CutPoint& c, double kerf_mm) {
+    KerfPoint k;
+    k.outcome = checkKerf(kerf_mm, spec.work_radius_mm);
+    if (!k.outcome.ok()) return k;
+    const PipeSurface pipe{Vec3::Zero(), Vec3::UnitZ(), spec.work_radius_mm};
+    k = shift(pipe, c.p_work, c.tangent_work, c.approach_work, spec.scrap, kerf_mm, +1);
+    if (!k.outcome.ok()) return k;
+    c.p_work = k.point;
+    c.p_main = spec.main_from_work * k.point;
+    return k;
+}
+
 KerfPath edgeFromTorchPath(const KerfPathSpec& spec, const std::vector<CutPoint>& torch,
                            double kerf_mm) {
     return shiftPath(spec, torch, kerf_mm, -1);

@@ -87,6 +87,9 @@ struct KerfPath {
 };
 // Torch-centre path from the theoretical edge; refuses with the first point that fails.
 KerfPath offsetCutPath(const KerfPathSpec& spec, const std::vector<CutPoint>& edge, double kerf_mm);
+// One point of such a path moved to the torch centre (p_work, p_main; the rest kept), without
+// the path's curvature check (offsetCutPath on the sampled edge does that once).
+KerfPoint offsetCutPoint(const KerfPathSpec& spec, CutPoint& point, double kerf_mm);
 // Edge from a torch-centre path made by offsetCutPath.
 KerfPath edgeFromTorchPath(const KerfPathSpec& spec, const std::vector<CutPoint>& torch,
                            double kerf_mm);

@@ -29,11 +29,21 @@ struct RunClosing {
     std::string summary_json; // the run's summary.json: figures, stop point, what was made
 };
 
+// One cut of a run ended: its tool went off (pierce to arc off), however the cut ended.
+struct RunCutNote {
+    std::int64_t unix_ms = 0;
+    double tool_on_s = 0; // this cut's arc-on (tool-on) time
+    double length_mm = 0; // the path it covered (0 for a program without a path length)
+};
+
 class RunRecordSink {
   public:
     virtual ~RunRecordSink() = default;
     virtual void opened(const RunOpening& run) = 0;
     virtual void alarm(const RunAlarmNote& alarm) = 0;
+    // Told at each cut's end, while the run is open (consumable statistics count it then, so a
+    // program killed mid-run loses only the cut under way). Ignored by default.
+    virtual void cutEnded(const RunCutNote& /*cut*/) {}
     virtual void closed(const RunClosing& run) = 0;
 };
 

@@ -57,6 +57,24 @@ const char* const kTables[] = {
     "CREATE INDEX audit_time ON audit(time_ms);"
     "CREATE TABLE audit_state (archiving $INT NOT NULL);"
     "INSERT INTO audit_state VALUES (0);",
+    // 2 -> 3: consumable sets, one row per installation in a station's torch with its counters
+    // (ConsumableLedgerStore); removed_ms stays NULL while the set is in the torch, and the
+    // partial index allows one such row per station, process and consumable.
+    "CREATE TABLE consumable_sets ("
+    " id $ID,"
+    " station TEXT NOT NULL,"
+    " process TEXT NOT NULL,"
+    " consumable TEXT NOT NULL,"
+    " installed_ms $INT NOT NULL,"
+    " removed_ms $INT,"
+    " removed_by TEXT NOT NULL DEFAULT '',"
+    " removal_reason TEXT NOT NULL DEFAULT '',"
+    " cuts $INT NOT NULL DEFAULT 0,"
+    " pierces $INT NOT NULL DEFAULT 0,"
+    " arc_on_ms $INT NOT NULL DEFAULT 0,"
+    " cut_length_mm $REAL NOT NULL DEFAULT 0);"
+    "CREATE UNIQUE INDEX consumable_sets_current ON consumable_sets(station, process, consumable)"
+    " WHERE removed_ms IS NULL;",
 };
 static_assert(std::size(kTables) == kProductionDbSchema);
 
@@ -71,6 +89,7 @@ const char* const kSqliteRules[] = {
     "CREATE TRIGGER audit_no_delete BEFORE DELETE ON audit"
     " WHEN (SELECT archiving FROM audit_state) = 0 BEGIN"
     " SELECT RAISE(ABORT, '" CUTCELL_ONLY_INTO_ARCHIVE "'); END;",
+    "",
 };
 
 // One PL/pgSQL function guards UPDATE, DELETE and TRUNCATE (which SQLite does not have).
@@ -85,6 +104,7 @@ const char* const kPostgresRules[] = {
     " EXECUTE FUNCTION cutcell_audit_append_only();"
     "CREATE TRIGGER audit_no_truncate BEFORE TRUNCATE ON audit FOR EACH STATEMENT"
     " EXECUTE FUNCTION cutcell_audit_append_only();",
+    "",
 };
 static_assert(std::size(kSqliteRules) == kProductionDbSchema &&
               std::size(kPostgresRules) == kProductionDbSchema);

@@ -8,7 +8,7 @@
 
 namespace cutcell {
 
-inline constexpr int kProductionDbSchema = 2;
+inline constexpr int kProductionDbSchema = 3;
 
 enum class SqlDialect { Sqlite, Postgres };
 

@@ -15,18 +15,6 @@
 namespace cutcell {
 namespace {
 
-// The host a run's program ran on: its name and its machine id (cells cloned from one image
-// share a name, never a machine id; a shared server's record tells them apart).
-std::string hostName() {
-    char name[256] = {};
-    std::string host = gethostname(name, sizeof name - 1) == 0 ? name : "unknown";
-    std::ifstream id("/etc/machine-id");
-    std::string machineId;
-    if (std::getline(id, machineId) && machineId.size() >= 12)
-        host += " (" + machineId.substr(0, 12) + ")";
-    return host;
-}
-
 // Whether a process of this host still runs (kill(pid, 0) fails with ESRCH once it is gone).
 bool processAlive(std::int64_t pid) {
     return pid > 0 && (kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
@@ -44,6 +32,16 @@ std::string summaryMember(const std::string& summary, const char* key) {
 
 } // namespace
 
+std::string recordHostName() {
+    char name[256] = {};
+    std::string host = gethostname(name, sizeof name - 1) == 0 ? name : "unknown";
+    std::ifstream id("/etc/machine-id");
+    std::string machineId;
+    if (std::getline(id, machineId) && machineId.size() >= 12)
+        host += " (" + machineId.substr(0, 12) + ")";
+    return host;
+}
+
 RunRecordStore::RunRecordStore(const std::string& where, std::string operatorName)
     : operator_(std::move(operatorName)), desktopOperator_(operator_), db_(openRecordDb(where)) {
     try {
@@ -60,8 +58,8 @@ RunRecordStore::~RunRecordStore() = default;
 // runs are that host's to close.
 void RunRecordStore::closeInterrupted() {
     std::vector<std::int64_t> dead;
-    for (const SqlRow& open :
-         db_->query("SELECT id, pid FROM runs WHERE ended_ms IS NULL AND host = ?1", {hostName()}))
+    for (const SqlRow& open : db_->query(
+             "SELECT id, pid FROM runs WHERE ended_ms IS NULL AND host = ?1", {recordHostName()}))
         if (!processAlive(open.integer(1))) dead.push_back(open.integer(0));
     for (const std::int64_t id : dead)
         db_->query("UPDATE runs SET outcome = 'interrupted', ended_ms = ?2, "
@@ -87,7 +85,7 @@ void RunRecordStore::opened(const RunOpening& run) {
         "operator, run_dir, host, pid, started_ms) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, "
         "?10) RETURNING id",
         {static_cast<std::int64_t>(run.engine_run_id), machineOfJob(run.job_text), run.job_name,
-         jobFingerprint(run.job_text), run.job_text, operator_, run.run_dir, hostName(),
+         jobFingerprint(run.job_text), run.job_text, operator_, run.run_dir, recordHostName(),
          static_cast<std::int64_t>(getpid()), run.unix_ms});
     openRun_ = id.empty() ? 0 : id[0].integer(0);
 }

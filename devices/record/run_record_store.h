@@ -20,6 +20,11 @@
 
 namespace cutcell {
 
+// The host a program runs on, as the record names it: its name and its machine id's first 12
+// hex digits (cells cloned from one image share a name, never a machine id; a shared server's
+// record tells them apart).
+std::string recordHostName();
+
 class RunRecordStore final : public RunRecordSink, public RunHistory {
   public:
     static constexpr int kSchemaVersion = kProductionDbSchema;

@@ -11,6 +11,7 @@ extern const int kCoreMessageCount;
 const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%s refused: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "Run %u ended: %s (%ld samples)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s off after %.3f s, %.1f mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "Emergency stop (%s, from %s): %s off, drives %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "disabled"),
     QT_TRANSLATE_NOOP("CoreMessage", "stopping along the path, then disabled"),
@@ -337,6 +338,15 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "the torch line %.6g mm off the edge misses the pipe surface of radius %.6g mm"),
     QT_TRANSLATE_NOOP("CoreMessage", "at %.6g mm along the cut: %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "the kerf %.6g mm is too wide for the edge at %.6g mm along the cut: its radius of curvature toward the scrap side is %.6g mm, the kerf may be at most %.6g mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "radius_mm = %.6g mm is not valid: the pipe radius must be more than 0 mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "ovality_mm = %.6g mm is outside 0 .. %.6g mm (10 %% of the diameter %.6g mm)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "runout_mm = %.6g mm is outside 0 .. %.6g mm (a tenth of the radius %.6g mm)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "taper_mm_per_m = %.6g mm/m is outside -%.6g .. %.6g mm/m"),
+    QT_TRANSLATE_NOOP("CoreMessage", "major_axis_deg = %.6g deg is not a finite number"),
+    QT_TRANSLATE_NOOP("CoreMessage", "runout_deg = %.6g deg is not a finite number"),
+    QT_TRANSLATE_NOOP("CoreMessage", "process.override.%s = %.6g %s is outside its range: above %.6g %s and at most %.6g %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "process.override.%s = %.6g %s is outside [%.6g, %.6g] %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g %s is outside (%.6g, %.6g] %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "tool"),
     QT_TRANSLATE_NOOP("CoreMessage", "Simulated flying saw: line encoder, carriage, turntable, 2 feeds + saw"),
     QT_TRANSLATE_NOOP("CoreMessage", "Simulated cell: 6 drives + torch"),
@@ -542,6 +552,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 532;
+const int kCoreMessageCount = 542;
 
 } // namespace CutCell::ui

@@ -14,7 +14,7 @@
         <translation>Lauf %u beendet: %s (%ld Abtastwerte)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Emergency stop (%s, from %s): %s off, drives %s</source>
         <translation>NOT-HALT (%s, aus %s): %s aus, Antriebe %s</translation>
     </message>
@@ -914,7 +914,12 @@
         <translation>Auftrag geladen: %s (%s, %.2f s)</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="-36"/>
+        <source>%s off after %.3f s, %.1f mm</source>
+        <translation>%s aus nach %.3f s, %.1f mm</translation>
+    </message>
+    <message>
+        <location line="+181"/>
         <source>strokes</source>
         <translation>Hübe</translation>
     </message>
@@ -1332,6 +1337,52 @@
         <location line="+1"/>
         <source>the kerf %.6g mm is too wide for the edge at %.6g mm along the cut: its radius of curvature toward the scrap side is %.6g mm, the kerf may be at most %.6g mm</source>
         <translation>die Schnittfuge %.6g mm ist zu breit für die Kante bei %.6g mm entlang des Schnitts: ihr Krümmungsradius zur Abfallseite ist %.6g mm, die Schnittfuge darf höchstens %.6g mm sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radius_mm = %.6g mm is not valid: the pipe radius must be more than 0 mm</source>
+        <translation>radius_mm = %.6g mm ist ungültig: der Rohrradius muss größer als 0 mm sein</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ovality_mm = %.6g mm is outside 0 .. %.6g mm (10 %% of the diameter %.6g mm)</source>
+        <translation>ovality_mm = %.6g mm liegt außerhalb 0 .. %.6g mm (10 %% des Durchmessers %.6g mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>runout_mm = %.6g mm is outside 0 .. %.6g mm (a tenth of the radius %.6g mm)</source>
+        <translation>runout_mm = %.6g mm liegt außerhalb 0 .. %.6g mm (ein Zehntel des Radius %.6g mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>taper_mm_per_m = %.6g mm/m is outside -%.6g .. %.6g mm/m</source>
+        <translation>taper_mm_per_m = %.6g mm/m liegt außerhalb -%.6g .. %.6g mm/m</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>major_axis_deg = %.6g deg is not a finite number</source>
+        <translation>major_axis_deg = %.6g deg ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>runout_deg = %.6g deg is not a finite number</source>
+        <translation>runout_deg = %.6g deg ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.override.%s = %.6g %s is outside its range: above %.6g %s and at most %.6g %s</source>
+        <oldsource>process.override.%s = %.6g %s is outside (%.6g, %.6g] %s: above %.6g %s and at most %.6g %s</oldsource>
+        <translation>process.override.%s = %.6g %s liegt außerhalb des Bereichs: über %.6g %s und höchstens %.6g %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.override.%s = %.6g %s is outside [%.6g, %.6g] %s</source>
+        <translation>process.override.%s = %.6g %s liegt außerhalb [%.6g, %.6g] %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%s = %.6g %s is outside (%.6g, %.6g] %s</source>
+        <translation>%s = %.6g %s liegt außerhalb (%.6g, %.6g] %s</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -2304,7 +2355,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-290"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2614,7 +2665,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+104"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -2938,6 +2989,129 @@
         <location filename="../../ui/panels/monitor_views.cpp" line="+30"/>
         <source>3D view not built in this configuration.</source>
         <translation>3D-Ansicht in dieser Konfiguration nicht verfügbar.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ConsumablesPanel</name>
+    <message>
+        <location filename="../../ui/panels/consumables_panel.cpp" line="+40"/>
+        <source>New consumables fitted...</source>
+        <translation>Neue Verschleißteile eingesetzt...</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Fitted</source>
+        <translation>Eingesetzt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Removed</source>
+        <translation>Entnommen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cuts</source>
+        <translation>Schnitte</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Pierces</source>
+        <translation>Einstiche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc-on [min]</source>
+        <translation>Lichtbogen an [min]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cut length [m]</source>
+        <translation>Schnittlänge [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Removed by, why</source>
+        <translation>Entnommen von, Grund</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>New consumables fitted</source>
+        <translation>Neue Verschleißteile eingesetzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Why were they changed (worn nozzle, electrode pit depth, cut quality)?</source>
+        <translation>Warum wurden sie gewechselt (Düse verschlissen, Elektrodenabbrand, Schnittqualität)?</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>No production record: consumables are not counted (--record off, or the record could not be opened).</source>
+        <translation>Kein Produktionsprotokoll: Verschleißteile werden nicht gezählt (--record off, oder das Protokoll ließ sich nicht öffnen).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The job cuts without a cut chart (Process page): no consumable set to count.</source>
+        <translation>Der Auftrag schneidet ohne Schneidtabelle (Seite Prozess): kein Verschleißteilsatz zu zählen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Consumable set: %1 (fitted %2)</source>
+        <translation>Verschleißteilsatz: %1 (eingesetzt %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 cuts, %2 pierces, arc-on %3 min, cut length %4 m</source>
+        <translation>%1 Schnitte, %2 Einstiche, Lichtbogen an %3 min, Schnittlänge %4 m</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>ALARM: expected life reached, change the consumables (%1)</source>
+        <translation>ALARM: erwartete Standzeit erreicht, Verschleißteile wechseln (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Warning: 90 % of the expected life used (%1)</source>
+        <translation>Warnung: 90 % der erwarteten Standzeit verbraucht (%1)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>in the torch</source>
+        <translation>im Brenner</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>All sets: %1 installations, %2 cuts, %3 pierces, arc-on %4 min, %5 m</source>
+        <translation>Alle Sätze: %1 Einsätze, %2 Schnitte, %3 Einstiche, Lichtbogen an %4 min, %5 m</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The consumable statistics cannot be read: %1</source>
+        <translation>Die Verschleißteilstatistik kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>No consumable set to replace (no record, or no cut chart in the job).</source>
+        <translation>Kein Verschleißteilsatz zu ersetzen (kein Protokoll oder keine Schneidtabelle im Auftrag).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Say why the consumables were changed: the record keeps it.</source>
+        <translation>Geben Sie an, warum die Verschleißteile gewechselt wurden: das Protokoll hält es fest.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not recorded: %1</source>
+        <translation>Nicht erfasst: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>New consumables recorded: the counts start from zero.</source>
+        <translation>Neue Verschleißteile erfasst: die Zähler beginnen bei null.</translation>
+    </message>
+    <message>
+        <location filename="../../app/gui/station_access.cpp" line="+89"/>
+        <source>Consumables</source>
+        <translation>Verschleißteile</translation>
     </message>
 </context>
 <context>
@@ -3277,7 +3451,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::CutForm</name>
     <message>
-        <location filename="../../ui/forms/cut_form.cpp" line="+16"/>
+        <location filename="../../ui/forms/cut_form.cpp" line="+17"/>
         <source>Target and bevel</source>
         <translation>Ziel und Fase</translation>
     </message>
@@ -3307,12 +3481,17 @@ entriegeln</translation>
         <translation>Drehzahl</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Cutting speed</source>
         <translation>Schnittgeschw.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
+        <source>From the cut chart (Process page); set an override there to cut at another speed.</source>
+        <translation>Aus der Schneidtabelle (Seite Prozess); dort einen Abweichwert setzen, um mit anderer Geschwindigkeit zu schneiden.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Start / stop ramp</source>
         <translation>Start-/Stopp-Rampe</translation>
     </message>
@@ -4168,7 +4347,7 @@ entriegeln</translation>
         <translation>Schichtbericht</translation>
     </message>
     <message>
-        <location filename="../../app/gui/station_access.cpp" line="+84"/>
+        <location filename="../../app/gui/station_access.cpp" line="-4"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
@@ -4781,7 +4960,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ParameterTabs</name>
     <message>
-        <location filename="../../ui/forms/parameter_tabs.cpp" line="+78"/>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+79"/>
         <source>Job</source>
         <translation>Auftrag</translation>
     </message>
@@ -4794,6 +4973,11 @@ entriegeln</translation>
         <location line="+1"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Process</source>
+        <translation>Prozess</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -4881,6 +5065,191 @@ entriegeln</translation>
         <location line="+10"/>
         <source>plots not built</source>
         <translation>Diagramme nicht enthalten</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::ProcessForm</name>
+    <message>
+        <location filename="../../ui/forms/process_form.cpp" line="+31"/>
+        <source>Plasma</source>
+        <translation>Plasma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Oxy-fuel</source>
+        <translation>Autogen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Laser</source>
+        <translation>Laser</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+66"/>
+        <source>Thickness</source>
+        <translation>Dicke</translation>
+    </message>
+    <message>
+        <location line="-64"/>
+        <source>Kerf width</source>
+        <translation>Schnittfugenbreite</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cut speed</source>
+        <translation>Schneidgeschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pierce height</source>
+        <translation>Einstechhöhe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pierce delay</source>
+        <translation>Einstechzeit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cut height</source>
+        <translation>Schneidhöhe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Arc voltage</source>
+        <translation>Lichtbogenspannung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Preheat</source>
+        <translation>Vorwärmen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Cut chart</source>
+        <translation>Schneidtabelle</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>use a cut chart</source>
+        <translation>Schneidtabelle verwenden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Process data</source>
+        <translation>Prozessdaten</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Process</source>
+        <translation>Prozess</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Material</source>
+        <translation>Werkstoff</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Consumable set</source>
+        <translation>Verschleißteilsatz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the part&apos;s wall</source>
+        <translation>Wand des Werkstücks</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Thickness from</source>
+        <translation>Dicke aus</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Figures at this thickness</source>
+        <translation>Werte bei dieser Dicke</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Figure</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Chart</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Override</source>
+        <translation>Abweichend</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Used</source>
+        <translation>Verwendet</translation>
+    </message>
+    <message>
+        <location line="+187"/>
+        <source>not in the chart</source>
+        <translation>nicht in der Tabelle</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Override: saved with the job in place of the chart&apos;s figure.</source>
+        <translation>Abweichwert: wird mit dem Auftrag statt des Tabellenwerts gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The chart&apos;s figure; tick Override to set another.</source>
+        <translation>Der Tabellenwert; Abweichend ankreuzen, um einen anderen zu setzen.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No cut chart: the cut runs at the Cut page&apos;s speed, without kerf compensation.</source>
+        <translation>Keine Schneidtabelle: der Schnitt läuft mit der Geschwindigkeit der Seite Schnitt, ohne Schnittfugenkorrektur.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not usable: %1</source>
+        <translation>Nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Chart: %1 at %2 mm%3.</source>
+        <translation>Tabelle: %1 bei %2 mm%3.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (the part&apos;s wall)</source>
+        <translation> (Wand des Werkstücks)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Source: %1%2.</source>
+        <translation>Quelle: %1%2.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> (typical values)</source>
+        <translation> (typische Werte)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Expected consumable life: %1 pierces, %2 min arc-on.</source>
+        <translation>Erwartete Standzeit der Verschleißteile: %1 Einstiche, %2 min Lichtbogen an.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No kerf width: the torch runs on the part&apos;s edge (tick Override on Kerf width to compensate).</source>
+        <translation>Keine Schnittfugenbreite: der Brenner fährt auf der Werkstückkante (bei Schnittfugenbreite Abweichend ankreuzen, um zu korrigieren).</translation>
     </message>
 </context>
 <context>

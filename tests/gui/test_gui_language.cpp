@@ -148,10 +148,15 @@ bool readsAsEnglish(const QString& text) {
         "System", "Experiment", "CutCell", "Pitch", "Status", "Name", "Info", "Heartbeat", "Alarm",
         "Pause", "json", "alpha", "beta", "Offset", "Amplitude", "kbit", "SYNC", "inverse", "RPDO",
         "TPDO", "eventfd", "EMCY",
+        // cutting processes German names alike
+        "Plasma", "Laser",
         // limits.conf's keyword (the real-time line's advice names it)
         "rtprio",
         // CiA 301 NMT states, named so in German manuals too
         "Operational", "Boot"};
+    // Identifiers from a data file (a cut chart's material "mild_steel") are shown as written.
+    static const QRegularExpression identifier(QStringLiteral("^[a-z0-9]+(_[a-z0-9]+)+$"));
+    if (identifier.match(text).hasMatch()) return false;
     // The machines' axis names are names ("chuck (theta0)", "groove θ2"), as in the papers.
     if (text.contains(QStringLiteral("theta")) || text.contains(QChar(0x03B8))) return false;
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));

@@ -16,21 +16,9 @@
 namespace cutcell {
 namespace {
 
-std::string run(const std::string& cmd, int* status) {
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return out;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
-        out.append(buf.data(), n);
-    *status = ::pclose(p);
-    return out;
-}
-
 std::string findRs274() {
     int status = 0;
-    std::string path = run("command -v rs274 2>/dev/null", &status);
+    std::string path = test::runCommand("command -v rs274 2>/dev/null", &status);
     while (!path.empty() && (path.back() == '\n' || path.back() == ' '))
         path.pop_back();
     return status == 0 ? path : std::string();
@@ -117,7 +105,8 @@ TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
         const auto file = dir / ("job" + std::to_string(k) + ".ngc");
         writeFileAtomically(file.string(), profileGcode(job, cut));
         int status = 0;
-        const std::string canon = run(rs274 + " -g " + file.string() + " 2>&1", &status);
+        const std::string canon =
+            test::runCommand(rs274 + " -g " + file.string() + " 2>&1", &status);
         ASSERT_EQ(status, 0) << canon;
         std::vector<std::pair<double, double>> feeds;
         std::istringstream in(canon);

@@ -3,10 +3,25 @@
 #include "core/job/job_io.h"
 #include "core/machines/profile_cutter/profile_cutter_spec.h"
 
+#include <array>
+#include <cstdio>
 #include <random>
 #include <string>
 
 namespace cutcell::test {
+
+// A shell command's standard output, and its wait status in *status (rs274, pdftotext, ...).
+inline std::string runCommand(const std::string& cmd, int* status) {
+    std::string out;
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) return out;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
+        out.append(buf.data(), n);
+    *status = ::pclose(p);
+    return out;
+}
 
 inline Job exampleProfileJob() {
     return loadJobFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json");

@@ -169,22 +169,11 @@ TEST(Template, TooLargeForAPdfPageIsRefused) {
     EXPECT_THROW(templatePdf(d), std::runtime_error);
 }
 
-std::string run(const std::string& cmd, int* status) {
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return out;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0)
-        out.append(buf.data(), n);
-    *status = ::pclose(p);
-    return out;
-}
-
 // Poppler (Debian's poppler-utils) reads the file, reports the 1:1 page size and renders it.
 TEST(Template, PopplerReadsAndRendersThePdf) {
     int status = 0;
-    run("command -v pdfinfo >/dev/null 2>&1 && command -v pdftoppm >/dev/null 2>&1", &status);
+    test::runCommand("command -v pdfinfo >/dev/null 2>&1 && command -v pdftoppm >/dev/null 2>&1",
+                     &status);
     if (status != 0)
         GTEST_SKIP() << "pdfinfo/pdftoppm (Debian package poppler-utils) are not installed";
     const auto dir =
@@ -194,7 +183,7 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
         buildTemplate(test::exampleProfileJob(), jointExtrasOf(test::exampleProfileJob()));
     const std::string file = (dir / "template.pdf").string();
     writeFileAtomically(file, templatePdf(d));
-    const std::string info = run("pdfinfo " + file + " 2>&1", &status);
+    const std::string info = test::runCommand("pdfinfo " + file + " 2>&1", &status);
     ASSERT_EQ(status, 0) << info;
     double w = 0, h = 0;
     const size_t size = info.find("Page size:");
@@ -202,8 +191,8 @@ TEST(Template, PopplerReadsAndRendersThePdf) {
     ASSERT_EQ(std::sscanf(info.c_str() + size, "Page size: %lf x %lf pts", &w, &h), 2) << info;
     EXPECT_NEAR(w / kPtPerMm, d.width_mm, 0.01);
     EXPECT_NEAR(h / kPtPerMm, d.height_mm, 0.01);
-    const std::string err =
-        run("pdftoppm -r 20 -png " + file + " " + (dir / "page").string() + " 2>&1", &status);
+    const std::string err = test::runCommand(
+        "pdftoppm -r 20 -png " + file + " " + (dir / "page").string() + " 2>&1", &status);
     EXPECT_EQ(status, 0) << err;
     EXPECT_TRUE(err.empty()) << err; // poppler prints syntax warnings here
     EXPECT_GT(std::filesystem::file_size(dir / "page-1.png"), 1000u);

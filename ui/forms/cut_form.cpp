@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 namespace CutCell::ui {
@@ -28,9 +29,21 @@ CutForm::CutForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
 
     auto* speed = new QGroupBox(tr("Speed"), this);
     auto* s = new QFormLayout(speed);
-    addRow(s, tr("Cutting speed"),
-           bindDouble("cut.speed_mm_s", 3, [](Job& j) -> double& { return j.cut.speed_mm_s; }),
-           "mm/s");
+    auto* cutSpeed =
+        bindDouble("cut.speed_mm_s", 3, [](Job& j) -> double& { return j.cut.speed_mm_s; });
+    addRow(s, tr("Cutting speed"), cutSpeed, "mm/s");
+    // With a cut chart the speed is the chart's (or its override on the Process page).
+    const auto showSpeedSource = [cutSpeed, editor] {
+        const bool chart = editor->job().process.used;
+        const QSignalBlocker block(cutSpeed);
+        cutSpeed->setValue(editor->job().cut.speed_mm_s);
+        cutSpeed->setReadOnly(chart);
+        cutSpeed->setToolTip(chart ? tr("From the cut chart (Process page); set an override "
+                                        "there to cut at another speed.")
+                                   : QString());
+    };
+    connect(editor, &JobEditor::jobReset, cutSpeed, showSpeedSource);
+    connect(editor, &JobEditor::edited, cutSpeed, showSpeedSource);
     addRow(s, tr("Start / stop ramp"),
            bindDouble("cut.ramp_s", 3, [](Job& j) -> double& { return j.cut.ramp_s; }), "s");
     mainLayout()->addWidget(speed);

@@ -1,5 +1,7 @@
 #include "ui/forms/job_editor.h"
 
+#include "core/machine/pipe_joint_section.h"
+
 namespace CutCell::ui {
 
 JobEditor::JobEditor(QObject* parent) : QObject(parent) {
@@ -22,6 +24,8 @@ void JobEditor::setJob(const cutcell::Job& job) {
 
 void JobEditor::edit(const std::function<void(cutcell::Job&)>& change) {
     change(job_);
+    // The cut chart's speed follows the pipes, the target and the process.
+    cutcell::syncProcessSpeed(job_);
     revalidate();
     emit edited();
     emit issuesChanged();

@@ -1,5 +1,8 @@
 #include "core/machines/pipe_robot/cut_planner.h"
 #include "core/common/c_format.h"
+#include "core/machine/pipe_joint_section.h"
+#include "core/process/kerf_offset.h"
+#include "core/process/process_spec.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +36,25 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
     plan.knot_dt_s = plan.cut_time_s / intervals;
     plan.knots.resize(static_cast<size_t>(intervals) + 1);
 
+    // Kerf compensation: the whole edge is checked once (the kerf against its curvature, the
+    // torch against its tangent), then each knot's point moves to the torch centre.
+    KerfPathSpec kerfSpec;
+    std::string kerfProblem;
+    if (job.process.used) {
+        const ProcessSettings process = resolveProcess(job.process, cutPartWallMm(job));
+        plan.kerf_mm = process.ok() ? process.kerfMm() : 0.0;
+    }
+    if (plan.kerf_mm > 0) {
+        kerfSpec = kerfPathSpecFor(job, geo);
+        const KerfPath check = offsetCutPath(
+            kerfSpec, geo.sampleEqualArcLength(job.cut.knot_spacing_mm), plan.kerf_mm);
+        // Planned on the edge then (the view shows it), but refused.
+        if (!check.outcome.ok()) {
+            kerfProblem = "kerf compensation: " + check.outcome.message;
+            plan.kerf_mm = 0;
+        }
+    }
+
     // Pass 1: the cut points and, for the rotating method, the chuck angle that brings each
     // point to the top of the pipe (s0 x + c0 y = r, -c0 x + s0 y = 0), unwrapped.
     double previousChuck = deg2rad(job.cut.static_chuck_deg);
@@ -40,6 +62,7 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         PlannedPoint& p = plan.knots[k];
         p.t_s = plan.knot_dt_s * static_cast<double>(k);
         p.cut = geo.atArcLength(profile.distance(p.t_s));
+        if (plan.kerf_mm > 0) offsetCutPoint(kerfSpec, p.cut, plan.kerf_mm);
         double chuck = deg2rad(job.cut.static_chuck_deg);
         if (spec.method == CutMethod::RotatingPipe) {
             chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
@@ -90,7 +113,10 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
             approach.normalize();
         }
         p.approach_base = approach;
-        p.deviation_deg = rad2deg(std::acos(std::clamp(desired.dot(approach), -1.0, 1.0)));
+        // atan2 of the cross and dot products: exact near 0, where acos of a dot rounded to 1
+        // is not (acos(1 - 1e-16) is 1.5e-8 rad of nothing).
+        p.deviation_deg =
+            rad2deg(std::atan2(desired.cross(approach).norm(), desired.dot(approach)));
         plan.max_deviation_deg = std::max(plan.max_deviation_deg, p.deviation_deg);
 
         p.ik = robot.solve(p.tip_base, approach, 0.0, havePrevious ? &previous : nullptr);
@@ -123,6 +149,10 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         }
     }
     plan.spline = JointSpline(std::move(q), plan.knot_dt_s);
+    if (!kerfProblem.empty()) {
+        plan.reachable = false;
+        plan.problem = kerfProblem;
+    }
     if (options.progress) options.progress(1.0);
     return plan;
 }

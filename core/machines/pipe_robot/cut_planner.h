@@ -49,6 +49,9 @@ struct CutPlan {
     std::string problem; // one sentence naming the point, the joint and the limit
     double max_deviation_deg = 0;
     bool cancelled = false;
+    // Kerf compensation (process section): the torch centre runs kerf_mm / 2 off the theoretical
+    // edge toward the scrap side (core/process/kerf_offset.h); 0 = the torch on the edge.
+    double kerf_mm = 0;
 };
 
 CutPlan planCut(const Job& job, const PlanOptions& options = {});

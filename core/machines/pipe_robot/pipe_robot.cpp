@@ -1,5 +1,6 @@
 #include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/common/c_format.h"
+#include "core/common/sin_cos.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,7 +77,8 @@ bool PipeRobot::withinLimits(int axis, double q) const {
 
 Pose PipeRobot::baseFromWork(double theta0) const {
     const double th = theta0 + offset_[0];
-    const double c = std::cos(th), s = std::sin(th);
+    double c, s;
+    sinCos(th, s, c);
     Pose T = Pose::Identity();
     T.linear() << 0, 0, -1, -c, s, 0, s, c, 0;
     T.translation() << d0_, 0, 0;
@@ -86,7 +88,8 @@ Pose PipeRobot::baseFromWork(double theta0) const {
 Vec3 PipeRobot::workFromBase(double theta0, const Vec3& p) const {
     // baseFromWork: R = [0 0 -1; -c s 0; s c 0], t = (d0, 0, 0).
     const double th = theta0 + offset_[0];
-    const double c = std::cos(th), s = std::sin(th);
+    double c, s;
+    sinCos(th, s, c);
     const double vx = p.x() - d0_, vy = p.y(), vz = p.z();
     return Vec3(-c * vy + s * vz, s * vy + c * vz, -vx);
 }
@@ -159,8 +162,7 @@ Vec3 PipeRobot::tip(const ArmVector& q) const {
         link_.data(), kArmJointCount,
         [&](int i, double& c, double& s) {
             const double th = q[i] + link_[static_cast<size_t>(i)].offset;
-            c = std::cos(th);
-            s = std::sin(th);
+            sinCos(th, s, c);
         },
         p);
     return Vec3(p[0], p[1], p[2]);
@@ -173,8 +175,11 @@ void PipeRobot::tipPair(const ArmVector& qa, const ArmVector& qb, Vec3& a, Vec3&
         [&](int i, Lanes2& c, Lanes2& s) {
             const double offset = link_[static_cast<size_t>(i)].offset;
             const double tha = qa[i] + offset, thb = qb[i] + offset;
-            c = Lanes2{std::cos(tha), std::cos(thb)};
-            s = Lanes2{std::sin(tha), std::sin(thb)};
+            double ca, sa, cb, sb;
+            sinCos(tha, sa, ca);
+            sinCos(thb, sb, cb);
+            c = Lanes2{ca, cb};
+            s = Lanes2{sa, sb};
         },
         p);
     a = Vec3(p[0][0], p[1][0], p[2][0]);

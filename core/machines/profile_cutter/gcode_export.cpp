@@ -58,6 +58,14 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
                 "pierce %.2f s",
                 v, cut.work_radius_mm, static_cast<double>(profileCutterSpec(job).steps_per_rev_a),
                 profileCutterSpec(job).pierce_s));
+    // The compensation is in the coordinates, not in the controller (G40 stays): the program
+    // runs the same on a control without cutter-radius compensation on a rotary axis.
+    if (cut.kerf_mm > 0)
+        comment(fmt("kerf compensation: X/A below are the torch centre's, %.3f mm [half the kerf "
+                    "%.3f mm] off the part edge toward the scrap side; G40, none in the control",
+                    cut.kerf_mm / 2, cut.kerf_mm));
+    else
+        comment("no kerf compensation: X/A below are the part edge");
     line("G21 G90 G17 G40 G94");
     const ProfilePoint first = cut.points.front();
     line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));

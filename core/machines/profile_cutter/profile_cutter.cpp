@@ -1,11 +1,29 @@
 #include "core/machines/profile_cutter/profile_cutter.h"
 
 #include "core/common/c_format.h"
+#include "core/machine/pipe_joint_section.h"
+#include "core/machines/profile_cutter/profile_kerf.h"
+#include "core/process/process_spec.h"
 
 namespace cutcell {
 
-ProfileCut computeProfileCut(const Job& job, int n) {
+ProfileCut computeProfileEdge(const Job& job, int n) {
     return computeProfileCut(job, jointExtrasOf(job), n);
+}
+
+double profileKerfMm(const Job& job) {
+    if (!job.process.used) return 0;
+    const ProcessSettings s = resolveProcess(job.process, cutPartWallMm(job));
+    return s.ok() ? s.kerfMm() : 0.0;
+}
+
+ProfileCut computeProfileCut(const Job& job, int n) {
+    ProfileCut cut = computeProfileEdge(job, n);
+    const double kerf = profileKerfMm(job);
+    if (kerf > 0)
+        if (const Outcome o = compensateProfileKerf(cut, kerf); !o.ok())
+            cut.kerf_problem = "kerf compensation: " + o.message;
+    return cut;
 }
 
 ProfileCut computeProfileCut(const Job& job) {

@@ -185,6 +185,13 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
                 toString(job.cut.target), data->cut.points.size(), sch.developed_length_mm,
                 job.cut.speed_mm_s, sch.total_time_s, sch.max_x_rate_hz, sch.max_a_rate_hz,
                 profileCutterSpec(job).max_pulse_rate_hz);
+    if (data->cut.kerf_mm > 0)
+        out.summary += formatC("; kerf %.2f mm compensated (torch %.2f mm off the edge)",
+                               data->cut.kerf_mm, data->cut.kerf_mm / 2);
+    if (!data->cut.kerf_problem.empty()) {
+        out.outcome = Outcome::refuse(data->cut.kerf_problem, "process.override.kerf_mm");
+        return out;
+    }
     if (!sch.problem.empty()) {
         out.outcome = Outcome::refuse(messageC("not feasible: %s", sch.problem.c_str()));
         return out;

@@ -1,0 +1,132 @@
+#include "core/process/process_spec.h"
+
+#include "core/common/c_format.h"
+
+#include <cmath>
+#include <memory>
+
+namespace cutcell {
+namespace {
+
+std::shared_ptr<const CutChartSet>& activeSlot() {
+    static std::shared_ptr<const CutChartSet> slot;
+    return slot;
+}
+
+// An override value outside its figure's range: "" when inside.
+std::string overrideProblem(CutFigure f, double v) {
+    const CutFigureInfo& info = cutFigureInfo(f);
+    const bool aboveLo = info.loOpen ? v > info.lo : v >= info.lo;
+    if (std::isfinite(v) && aboveLo && v <= info.hi) return {};
+    if (info.loOpen)
+        return messageC("process.override.%s = %.6g %s is outside its range: above %.6g %s and "
+                        "at most %.6g %s",
+                        info.key, v, info.unit, info.lo, info.unit, info.hi, info.unit);
+    return messageC("process.override.%s = %.6g %s is outside [%.6g, %.6g] %s", info.key, v,
+                    info.unit, info.lo, info.hi, info.unit);
+}
+
+} // namespace
+
+const CutChartSet& activeCutCharts() {
+    const auto& slot = activeSlot();
+    return slot ? *slot : shippedCutCharts();
+}
+
+void setActiveCutCharts(CutChartSet set) {
+    checkCutCharts(set);
+    activeSlot() = std::make_shared<const CutChartSet>(std::move(set));
+}
+
+void readProcess(SectionReader& section, ProcessSpec& spec) {
+    spec = ProcessSpec{};
+    if (!section.has("process")) return;
+    SectionReader p = section.child("process");
+    spec.used = true;
+    spec.process = p.choice<CutProcess>("process",
+                                        {{"plasma", CutProcess::Plasma},
+                                         {"oxy_fuel", CutProcess::OxyFuel},
+                                         {"laser", CutProcess::Laser}},
+                                        CutProcess::Plasma);
+    spec.material = p.string("material", "");
+    spec.consumable = p.string("consumable", "");
+    if (spec.material.empty())
+        throw JobError(p.key("material") + " is required (a chart's material)");
+    if (spec.consumable.empty())
+        throw JobError(p.key("consumable") + " is required (a chart's consumable set)");
+    if (p.has("thickness_mm")) spec.thickness_mm = p.number("thickness_mm", "mm");
+    if (p.has("override")) {
+        SectionReader o = p.child("override");
+        for (std::size_t k = 0; k < kCutFigureCount; ++k) {
+            const auto f = static_cast<CutFigure>(k);
+            const CutFigureInfo& info = cutFigureInfo(f);
+            if (f == CutFigure::ThicknessMm || !o.has(info.key)) continue;
+            if (!cutFigureApplies(f, spec.process))
+                throw JobError(o.key(info.key) + " does not apply to " + toString(spec.process));
+            spec.override.set(f, o.number(info.key, info.unit));
+        }
+        o.finish();
+    }
+    p.finish();
+}
+
+void writeProcess(const ProcessSpec& spec, json::Object& section) {
+    if (!spec.used) return;
+    json::Object p{{"process", toString(spec.process)},
+                   {"material", spec.material},
+                   {"consumable", spec.consumable}};
+    if (spec.thickness_mm) p.emplace_back("thickness_mm", *spec.thickness_mm);
+    json::Object o;
+    for (std::size_t k = 0; k < kCutFigureCount; ++k)
+        if (const auto v = spec.override.figures[k])
+            o.emplace_back(cutFigureInfo(static_cast<CutFigure>(k)).key, *v);
+    if (!o.empty()) p.emplace_back("override", std::move(o));
+    section.emplace_back("process", std::move(p));
+}
+
+ProcessSettings resolveProcess(const ProcessSpec& spec, double partWall_mm,
+                               const CutChartSet& charts) {
+    ProcessSettings s;
+    s.thickness_from_part = !spec.thickness_mm.has_value();
+    s.thickness_mm = spec.thickness_mm.value_or(partWall_mm);
+    const CutPick pick =
+        pickCutRow(charts, spec.process, spec.material, spec.consumable, s.thickness_mm);
+    if (pick.chart) {
+        s.chart_name = pick.chart->name();
+        s.chart_source = pick.chart->source;
+        s.typical_values = pick.chart->typical_values;
+        s.life_pierces = pick.chart->life_pierces;
+        s.life_arc_minutes = pick.chart->life_arc_minutes;
+        s.volts_per_mm = pick.chart->volts_per_mm;
+    }
+    if (!pick.ok()) {
+        s.outcome = pick.outcome;
+        // The part's wall picked the row: say so, the operator may not have typed a thickness.
+        if (s.thickness_from_part && s.outcome.key == "process.thickness_mm")
+            s.outcome.message = "the part's wall " + s.outcome.message +
+                                " (set process.thickness_mm to cut another row)";
+        return s;
+    }
+    s.chart_row = pick.row;
+    s.effective = pick.row;
+    for (std::size_t k = 0; k < kCutFigureCount; ++k)
+        if (const auto v = spec.override.figures[k]) s.effective.figures[k] = *v;
+    return s;
+}
+
+void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm) {
+    if (!spec.used) return;
+    if (spec.thickness_mm) c.positive("process.thickness_mm", *spec.thickness_mm, 0.1, 300, "mm");
+    for (std::size_t k = 0; k < kCutFigureCount; ++k)
+        if (const auto v = spec.override.figures[k]) {
+            const auto f = static_cast<CutFigure>(k);
+            const std::string problem = overrideProblem(f, *v);
+            if (!problem.empty())
+                c.add(std::string("process.override.") + cutFigureInfo(f).key, problem);
+        }
+    if (c.has("process.thickness_mm")) return;
+    const ProcessSettings s = resolveProcess(spec, partWall_mm);
+    if (!s.ok()) c.add(s.outcome.key, s.outcome.message);
+}
+
+} // namespace cutcell

@@ -1,0 +1,64 @@
+#pragma once
+// The job's process section (issue 24): which cut-chart entry a torch machine cuts with, and the
+// figures the operator set over the chart's. In a torch machine's section:
+//
+//   "process": { "process": "plasma", "material": "mild_steel", "consumable": "65A shielded",
+//                "thickness_mm": 6,                     (optional: the wall of the part cut)
+//                "override": { "kerf_mm": 1.7, "cut_speed_mm_min": 2200 } }   (optional)
+//
+// The thickness picks the chart's row (interpolated between rows, refused outside the chart
+// with its range: pickCutRow). An override replaces one figure of the row, is saved with the
+// job and is reported as an override wherever the figure is shown. A job without the section
+// cuts at its own cut.speed_mm_s without kerf compensation, as before the cut charts.
+//
+// The charts come from the active library: the shipped table unless the application installed
+// the user's library at start-up (setActiveCutCharts, before any job is read).
+#include "core/job/issue_checker.h"
+#include "core/job/section_reader.h"
+#include "core/process/cut_chart.h"
+#include "core/process/process_spec_data.h"
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace cutcell {
+
+// What a job cuts with: the chart's row, and the figures after the overrides.
+struct ProcessSettings {
+    Outcome outcome; // Refused: no such chart, or the thickness is outside it
+    std::string chart_name;
+    std::string chart_source;
+    bool typical_values = true;
+    double thickness_mm = 0;
+    bool thickness_from_part = true; // the part's wall (no process.thickness_mm)
+    CutRow chart_row;                // as the chart gives it at the thickness
+    CutRow effective;                // chart_row with the overrides applied
+    std::optional<int> life_pierces;
+    std::optional<double> life_arc_minutes;
+    std::optional<double> volts_per_mm;
+
+    bool ok() const { return outcome.ok(); }
+    bool overridden(CutFigure f) const { return effective.get(f) != chart_row.get(f); }
+    // The kerf to compensate (0 when neither the chart nor an override gives one).
+    double kerfMm() const { return effective.get(CutFigure::KerfMm).value_or(0.0); }
+    double cutSpeedMmS() const { return effective.cutSpeedMmMin() / 60.0; }
+};
+
+const CutChartSet& activeCutCharts();
+// Installs a library (the user's) for every later resolution; checked first (CutChartError).
+// Call at start-up, before jobs are read: readers hold no lock.
+void setActiveCutCharts(CutChartSet set);
+
+// Reads the optional "process" member of a machine section (unknown keys refused, overrides in
+// their figures' ranges, a process the figure does not apply to refused).
+void readProcess(SectionReader& section, ProcessSpec& spec);
+void writeProcess(const ProcessSpec& spec, json::Object& section);
+// The settings for a part with wall `partWall_mm` (used when the job gives no thickness).
+ProcessSettings resolveProcess(const ProcessSpec& spec, double partWall_mm,
+                               const CutChartSet& charts = activeCutCharts());
+// The section's issues (keys process.*): an unknown chart entry, a thickness outside the chart,
+// an override outside its range.
+void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm);
+
+} // namespace cutcell

@@ -1,0 +1,45 @@
+#pragma once
+// The cutting process (issue 24): the cut chart's entry the torch cuts with (process, material,
+// consumable set, thickness: the part's wall unless given), the chart's row at that thickness,
+// and an override per figure, saved with the job and shown as such. The charts are the active
+// library (core/process/process_spec.h). Keys process.*.
+#include "ui/forms/job_form.h"
+
+#include <array>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QTableWidget;
+
+namespace CutCell::ui {
+
+class ProcessForm : public JobForm {
+    Q_OBJECT
+  public:
+    explicit ProcessForm(JobEditor* editor, QWidget* parent = nullptr);
+
+  protected:
+    void reloadExtra(const cutcell::Job& job) override;
+
+  private:
+    void buildFigureRows();
+    void setUsed(bool on);
+    void setFigureOverridden(int figure, bool on);
+    void setFigureValue(int figure, double v);
+
+    QCheckBox* used_ = nullptr;
+    QComboBox* process_ = nullptr;
+    QComboBox* material_ = nullptr;
+    QComboBox* consumable_ = nullptr;
+    QCheckBox* partWall_ = nullptr;
+    QDoubleSpinBox* thickness_ = nullptr;
+    QTableWidget* figures_ = nullptr;
+    QLabel* chart_ = nullptr;
+    std::array<QCheckBox*, 8> overrideBox_{};
+    std::array<QDoubleSpinBox*, 8> valueBox_{};
+    bool refreshing_ = false;
+};
+
+} // namespace CutCell::ui
