@@ -29,6 +29,7 @@ int runCompare(const CompareOptions& o);     // compare_command.cpp
 int runIk(const KinematicsOptions& o);       // kinematics_command.cpp
 int runImport(const ImportOptions& o);       // import_command.cpp
 int runRun(const RunOptions& o);             // run_command.cpp (needs CutCell::devices)
+int runShopfloor(const ShopfloorOptions& o); // shopfloor_command.cpp (needs CutCell::shopfloor)
 int runDriveSim(const DriveSimOptions& o);   // drivesim_command.cpp
 int runHistory(const HistoryOptions& o);     // history_command.cpp (needs CutCell::devices)
 int runUsers(const UsersOptions& o);         // users_command.cpp (needs CutCell::devices)

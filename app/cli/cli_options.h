@@ -82,6 +82,15 @@ struct MaterialsOptions {
     std::vector<std::string> pick; // PROCESS MATERIAL CONSUMABLE THICKNESS_MM
 };
 
+// cutcell-cli shopfloor: the edge node headless (issue 26).
+struct ShopfloorOptions {
+    std::string config;    // the shop-floor configuration file
+    std::string run;       // a job to run on the simulated rig while publishing ("": idle cell)
+    bool realtime = false; // the run paced by the wall clock (else as fast as it computes)
+    bool quiet = false;
+    double linger_s = 0; // stay connected this long after the run (idle: 0 = until a signal)
+};
+
 struct UpgradeOptions {
     std::string job; // the old (schema 1) job file
     std::string out; // the schema-2 file, written atomically

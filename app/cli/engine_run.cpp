@@ -38,6 +38,7 @@ bool latched(EngineState s) {
 struct Pace {
     bool realtime = false;
     CanEngineDevices* lockStepBus = nullptr;
+    const std::function<void(MotionEngine&, const TelemetrySample&)>* on_telemetry = nullptr;
 };
 
 // Runs the engine (on this thread, or waits for its thread) until it reaches `target`; gives
@@ -73,8 +74,8 @@ bool runUntil(MotionEngine& engine, const Pace& pace, EngineState target, double
         }
         first = false;
         TelemetrySample t;
-        while (engine.popTelemetry(t)) {
-        }
+        while (engine.popTelemetry(t))
+            if (pace.on_telemetry && *pace.on_telemetry) (*pace.on_telemetry)(engine, t);
         printEvents(engine, quiet);
         if (!pace.realtime) engine.flushRunLog();          // the thread mode has its own logger
         if (SafeShutdown::requestedSignal()) return false; // the safe stop has run: end
@@ -173,7 +174,7 @@ EngineRunResult runOnEngine(const Job& job, const MachineModule& module, const M
     if (realtime) engine.startThread();
     // Generous bound per step: approach, settling and the cut.
     const double budget_s = 60 + 2 * program->cut_time_s;
-    const Pace pace{realtime, setup.over_can && !realtime ? &can : nullptr};
+    const Pace pace{realtime, setup.over_can && !realtime ? &can : nullptr, &setup.on_telemetry};
     std::string stopped;
     const auto step = [&](EngineState target) {
         return runUntil(engine, pace, target, budget_s, setup.quiet, &stopped);

@@ -17,8 +17,13 @@
 #include "core/record/run_record.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+
+namespace cutcell {
+class MotionEngine;
+}
 
 namespace cutcell::cli {
 
@@ -30,6 +35,9 @@ struct EngineRunSetup {
     bool quiet = false;          // events of severity Info not printed
     RealtimeSettings rt;         // the engine thread's set-up (real-time clock only)
     std::shared_ptr<RunRecordSink> record; // the production record (null: none)
+    // Each telemetry sample as it is drained (~30 Hz batches, on this thread): the shop-floor
+    // link publishes from it; it may command the engine (a remote feed hold).
+    std::function<void(MotionEngine&, const TelemetrySample&)> on_telemetry;
 };
 
 struct EngineRunResult {

@@ -33,6 +33,7 @@ struct AllOptions {
     AuditOptions audit;
     MachinesOptions machines;
     UpgradeOptions upgrade;
+    ShopfloorOptions shopfloor;
     TuneCommandOptions tune;
     MaterialsOptions materials;
     KinematicsOptions fk, ik;
@@ -245,6 +246,26 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
                     "~/.local/share/cutcell/production.db) or a PostgreSQL connection string "
                     "(postgresql://user@host:port/db)")
         ->type_name("FILE|URL");
+
+    CLI::App* shopfloor =
+        add("shopfloor",
+            "the cell's Sparkplug B edge node on an MQTT broker (TLS): publishes the cell, idle or "
+            "running --run JOB on the simulated rig; takes queued jobs and feed hold from the "
+            "network",
+            [&] { return runShopfloor(o.shopfloor); });
+    shopfloor
+        ->add_option("--config", o.shopfloor.config,
+                     "the shop-floor configuration (broker, TLS files, user, password file, "
+                     "group and edge node ids; devices/shopfloor/README.md)")
+        ->type_name("FILE")
+        ->required();
+    shopfloor->add_option("--run", o.shopfloor.run, "run this job while publishing")
+        ->type_name("JOB");
+    shopfloor->add_flag("--realtime", o.shopfloor.realtime, "pace the run by the wall clock");
+    shopfloor->add_flag("--quiet", o.shopfloor.quiet, "print warnings and faults only");
+    addNumber(*shopfloor, "--linger-s", o.shopfloor.linger_s, {0, 86400, "s"},
+              "stay connected this long after the run (without --run: 0 = until Ctrl-C or "
+              "SIGTERM)");
 
     CLI::App* history =
         add("history", "list the runs of the production record (SQLite or PostgreSQL)",

@@ -1244,3 +1244,104 @@ TEST_F(ShopfloorBroker, AnIndependentHostReadsBirthDataRebirthCommandsAndTheWill
     EXPECT_TRUE(death.find("seq")->isNull());
     host.signal(SIGTERM);
 }
+
+#ifdef CUTCELL_CLI
+// cutcell-cli shopfloor runs a job on the simulated rig while it publishes: the independent host
+// sees the cell's birth, the run (state Running, progress rising to 1), the run's figures equal
+// to the report the command printed, and the clean NDEATH at the end.
+TEST_F(ShopfloorBroker, TheCliRunsAJobAndAnIndependentHostReadsItsFigures) {
+    const std::string node = findProgram("node", "CUTCELL_NODE");
+    if (node.empty() || ::access((kPeerDir + "/node_modules/sparkplug-payload").c_str(), R_OK))
+        GTEST_SKIP() << "needs Node.js and tests/peer/sparkplug's packages "
+                        "(tools/sparkplug_peer_deps.sh)";
+    Child host;
+    ASSERT_TRUE(host.start({node, "sparkplug_listen.js", "--host", "127.0.0.1", "--port",
+                            std::to_string(port_), "--ca", dir_ + "/ca.crt", "--user", "host",
+                            "--group", "shop", "--listen"},
+                           kPeerDir, {{"SPARKPLUG_PASSWORD", "host-secret"}}));
+    std::vector<cutcell::json::Value> seen; // this edge node's messages, in order
+    bool subscribed = false;
+    auto drain = [&](int ms) {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
+        while (std::chrono::steady_clock::now() < until)
+            if (const auto line = host.line(100)) {
+                const cutcell::json::Value v = parsed(*line);
+                if (text(v, "event") == "subscribed") subscribed = true;
+                if (text(v, "edge") == "cell-cli") seen.push_back(v);
+            }
+    };
+    for (int i = 0; i < 100 && !subscribed; ++i)
+        drain(100);
+    ASSERT_TRUE(subscribed);
+
+    ShopfloorConfig c = config("cell-cli");
+    c.password_file = dir_ + "/cell.pw";
+    c.tls.ca_file = dir_ + "/ca.crt";
+    saveShopfloorConfig(c, dir_ + "/cell-cli.json");
+    // The default job without a run log folder.
+    cutcell::json::Value job = cutcell::json::parse(
+        cutcell::readTextFile(CUTCELL_SOURCE_DIR "/resources/jobs/default_job.json"));
+    cutcell::json::Value engine = *job.find("engine");
+    engine.set("runs_dir", "");
+    job.set("engine", engine);
+    std::ofstream(dir_ + "/job.json") << cutcell::json::write(job);
+
+    Child cli;
+    ASSERT_TRUE(cli.start({CUTCELL_CLI, "shopfloor", "--config", dir_ + "/cell-cli.json", "--run",
+                           dir_ + "/job.json", "--linger-s", "1", "--quiet"}));
+    std::string report;
+    while (const auto line = cli.line(120000))
+        report += *line + "\n";
+    ASSERT_EQ(cli.wait(), 0) << report;
+    const cutcell::json::Value r = cutcell::json::parse(report);
+    double wantMax = 0, wantRms = 0;
+    for (const auto& j : r.find("joints")->asArray()) {
+        wantMax = std::max(wantMax, number(j, "max_abs_error_deg"));
+        wantRms = std::max(wantRms, number(j, "rms_error_deg"));
+    }
+    drain(3000);
+
+    ASSERT_FALSE(seen.empty());
+    const cutcell::json::Value& birth = seen.front();
+    ASSERT_EQ(text(birth, "kind"), "NBIRTH");
+    EXPECT_EQ(text(*metricNamed(birth, "Machine/Id"), "value"), "pipe_robot_6axis");
+    const double stateAlias = number(*metricNamed(birth, "Machine/State"), "alias");
+    const double progressAlias = number(*metricNamed(birth, "Job/Progress"), "alias");
+    const double maxAlias = number(*metricNamed(birth, "Last Run/Tracking Max"), "alias");
+    const double rmsAlias = number(*metricNamed(birth, "Last Run/Tracking RMS"), "alias");
+    const double outcomeAlias = number(*metricNamed(birth, "Last Run/Outcome"), "alias");
+    bool running = false, death = false;
+    double progress = -1, gotMax = -1, gotRms = -1, seq = 0;
+    std::string outcome;
+    for (std::size_t i = 1; i < seen.size(); ++i) {
+        const cutcell::json::Value& m = seen[i];
+        if (text(m, "kind") == "NDEATH") {
+            death = true;
+            EXPECT_EQ(number(m, "bdSeq"), number(birth, "bdSeq"));
+            continue;
+        }
+        ASSERT_EQ(text(m, "kind"), "NDATA");
+        seq = std::fmod(seq + 1, 256);
+        EXPECT_EQ(number(m, "seq"), seq);
+        if (const auto* s = metricNamed(m, "", stateAlias); s && text(*s, "value") == "Running")
+            running = true;
+        if (const auto* p = metricNamed(m, "", progressAlias)) {
+            EXPECT_GE(number(*p, "value"), progress);
+            progress = number(*p, "value");
+        }
+        if (const auto* x = metricNamed(m, "", maxAlias)) gotMax = number(*x, "value");
+        if (const auto* x = metricNamed(m, "", rmsAlias)) gotRms = number(*x, "value");
+        if (const auto* x = metricNamed(m, "", outcomeAlias)) outcome = text(*x, "value");
+    }
+    std::printf("cli run through the broker: %zu messages, progress to %.3f, tracking max %.6g "
+                "deg (report %.6g), rms %.6g (report %.6g)\n",
+                seen.size(), progress, gotMax, wantMax, gotRms, wantRms);
+    EXPECT_TRUE(running);
+    EXPECT_EQ(progress, 1.0);
+    EXPECT_EQ(gotMax, wantMax); // a double through protobuf: the same bits
+    EXPECT_EQ(gotRms, wantRms);
+    EXPECT_EQ(outcome, "completed");
+    EXPECT_TRUE(death) << "no NDEATH after the command ended";
+    host.signal(SIGTERM);
+}
+#endif
