@@ -118,7 +118,8 @@ ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, p
     figures_->verticalHeader()->hide();
     figures_->setTabKeyNavigation(false); // Tab leaves the table for the next field
     figures_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    figures_->horizontalHeader()->setStretchLastSection(true);
+    figures_->horizontalHeader()->setSectionResizeMode(3, QHeaderView::Stretch);
+    figures_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     r->addWidget(figures_);
     chart_ = new QLabel(row);
     chart_->setObjectName("processChart");
@@ -214,6 +215,7 @@ void ProcessForm::buildFigureRows() {
         value->setButtonSymbols(QAbstractSpinBox::NoButtons);
         value->setAlignment(Qt::AlignRight);
         value->setObjectName(QStringLiteral("value_%1").arg(info.key));
+        value->setMinimumWidth(64);
         valueBox_[k] = value;
         figures_->setCellWidget(row, 3, value);
         alsoMark(overrideKey(f), value);
@@ -300,14 +302,18 @@ void ProcessForm::reloadExtra(const Job& job) {
         const bool applies = cutcell::cutFigureApplies(f, p.process);
         figures_->setRowHidden(row, !applies);
         const auto chartValue = s.chart_row.get(f);
+        // A dash keeps the column narrow (the page is narrow); the tooltip says what it means.
         figures_->item(row, 1)->setText(chartValue ? number(*chartValue, decimalsOf(f))
-                                                   : tr("not in the chart"));
+                                                   : QStringLiteral("\u2014"));
+        figures_->item(row, 1)->setToolTip(chartValue ? QString() : tr("not in the chart"));
         const auto over = p.override.get(f);
         overrideBox_[k]->setChecked(over.has_value());
         const auto used = s.effective.get(f);
-        valueBox_[k]->setValue(over ? *over : used.value_or(0.0));
+        // A figure neither the chart nor an override gives shows a dash, not a made-up 0.
+        const bool none = !over && !used;
+        valueBox_[k]->setSpecialValueText(none ? QStringLiteral("\u2014") : QString());
+        valueBox_[k]->setValue(over ? *over : none ? valueBox_[k]->minimum() : *used);
         valueBox_[k]->setEnabled(p.used && over.has_value());
-        valueBox_[k]->setSpecialValueText(QString());
         valueBox_[k]->setToolTip(over ? tr("Override: saved with the job in place of the chart's "
                                            "figure.")
                                       : tr("The chart's figure; tick Override to set another."));
