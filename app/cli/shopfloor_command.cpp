@@ -34,7 +34,9 @@ class HeadlessCell final : public shopfloor::ShopfloorCommandSink {
         try {
             const Job job = parseJob(text);
             const std::vector<JobIssue> issues = validateJob(job);
-            if (!issues.empty()) return issues.front().key + ": " + issues.front().message;
+            if (!issues.empty())
+                return issues.front()
+                    .message; // it names the key, the value, the unit and the limit
             std::lock_guard lock(mutex_);
             queue_.push_back({job.name, source});
             std::fprintf(stderr,

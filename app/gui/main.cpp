@@ -1,6 +1,7 @@
 // cutcell: the operator station of the cutting cell (Qt Widgets).
 #include "gui_run.h"
 #include "production_record.h"
+#include "shopfloor_station.h"
 #include "sim_rig.h"
 #include "station_access.h"
 #include "ui/access_control.h"
@@ -122,8 +123,13 @@ int main(int argc, char** argv) {
         "compareMethods on the robot's Method page) and take the shot once it is enabled "
         "again.",
         "NAME");
+    const QCommandLineOption shopfloorOpt(
+        "shopfloor",
+        "The shop-floor link's configuration (Sparkplug B over MQTT; devices/shopfloor/README.md), "
+        "or off (default: $XDG_CONFIG_HOME/cutcell/shopfloor.json when it exists).",
+        "FILE");
     cli.addOptions({jobOpt, runOpt, realTimeOpt, shotOpt, sizeOpt, timeoutOpt, benchOpt, tabOpt,
-                    languageOpt, viewOpt, recordOpt, pressOpt});
+                    languageOpt, viewOpt, recordOpt, pressOpt, shopfloorOpt});
     cli.addPositionalArgument("FILE", "The job to open, as with --job (one at most).", "[FILE]");
     cli.process(app);
 
@@ -173,11 +179,17 @@ int main(int argc, char** argv) {
     QObject::connect(&app, &QCoreApplication::aboutToQuit, [] {
         if (auto* access = cutcell::app::stationAccess()) access->logOut("the station closed");
     });
+    std::fprintf(stderr, "cutcell: %s\n",
+                 cutcell::app::openShopfloor(cli.value(shopfloorOpt).toStdString()).c_str());
+    QObject::connect(&app, &QCoreApplication::aboutToQuit, [] { cutcell::app::closeShopfloor(); });
     CutCell::ui::WindowHost host(&cutcell::app::makeRig);
     cutcell::app::attachStationAccess(*host.window());
-    QObject::connect(
-        &host, &CutCell::ui::WindowHost::windowRebuilt,
-        [](CutCell::ui::MainWindow* rebuilt) { cutcell::app::attachStationAccess(*rebuilt); });
+    cutcell::app::attachShopfloor(*host.window());
+    QObject::connect(&host, &CutCell::ui::WindowHost::windowRebuilt,
+                     [](CutCell::ui::MainWindow* rebuilt) {
+                         cutcell::app::attachStationAccess(*rebuilt);
+                         cutcell::app::attachShopfloor(*rebuilt);
+                     });
     CutCell::ui::MainWindow& window = *host.window();
     // Without --size the window fits the screen it opens on (MainWindow::fitToScreen): a fixed
     // 1440x900 put the E-STOP column off a 1280x720 panel.

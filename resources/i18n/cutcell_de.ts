@@ -3050,8 +3050,8 @@
     </message>
     <message>
         <location line="+8"/>
-        <source>The job cuts without a cut chart (Process page): no consumable set to count.</source>
-        <translation>Der Auftrag schneidet ohne Schneidtabelle (Seite Prozess): kein Verschleißteilsatz zu zählen.</translation>
+        <source>The job cuts without a cut chart (Cut page): no consumable set to count.</source>
+        <translation>Der Auftrag schneidet ohne Schneidtabelle (Seite Schnitt): kein Verschleißteilsatz zu zählen.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -3451,7 +3451,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::CutForm</name>
     <message>
-        <location filename="../../ui/forms/cut_form.cpp" line="+17"/>
+        <location filename="../../ui/forms/cut_form.cpp" line="+18"/>
         <source>Target and bevel</source>
         <translation>Ziel und Fase</translation>
     </message>
@@ -3487,8 +3487,8 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>From the cut chart (Process page); set an override there to cut at another speed.</source>
-        <translation>Aus der Schneidtabelle (Seite Prozess); dort einen Abweichwert setzen, um mit anderer Geschwindigkeit zu schneiden.</translation>
+        <source>From the cut chart (above on this page); set an override there to cut at another speed.</source>
+        <translation>Aus der Schneidtabelle (oben auf dieser Seite); dort einen Abweichwert setzen, um mit anderer Geschwindigkeit zu schneiden.</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -4378,7 +4378,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::JobForm</name>
     <message>
-        <location filename="../../ui/forms/job_form.cpp" line="+259"/>
+        <location filename="../../ui/forms/job_form.cpp" line="+273"/>
         <source>Range %1 to %2 %3</source>
         <translation>Bereich %1 bis %2 %3</translation>
     </message>
@@ -4399,6 +4399,79 @@ entriegeln</translation>
         <location line="+3"/>
         <source>Description</source>
         <translation>Beschreibung</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::JobQueuePanel</name>
+    <message>
+        <location filename="../../ui/panels/job_queue_panel.cpp" line="+18"/>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Received</source>
+        <translation>Empfangen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Make the selected job the one being edited; check it and press Start.</source>
+        <translation>Den gewählten Auftrag zum bearbeiteten machen; prüfen und Start drücken.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Shop floor: off (no configuration; cutcell --shopfloor FILE)</source>
+        <translation>Fertigungsleitebene: aus (keine Konfiguration; cutcell --shopfloor DATEI)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Select a queued job first.</source>
+        <translation>Zuerst einen Auftrag in der Warteschlange wählen.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Not opened: %1</source>
+        <translation>Nicht geöffnet: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Opened &apos;%1&apos; from %2: check it, then press Start.</source>
+        <translation>&apos;%1&apos; von %2 geöffnet: prüfen, dann Start drücken.</translation>
+    </message>
+    <message>
+        <location filename="../../app/gui/shopfloor_station.cpp" line="+160"/>
+        <source>Job queue</source>
+        <translation>Auftragswarteschlange</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Shop floor: off</source>
+        <translation>Fertigungsleitebene: aus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shop floor: %1</source>
+        <translation>Fertigungsleitebene: %1</translation>
     </message>
 </context>
 <context>
@@ -4960,7 +5033,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ParameterTabs</name>
     <message>
-        <location filename="../../ui/forms/parameter_tabs.cpp" line="+79"/>
+        <location filename="../../ui/forms/parameter_tabs.cpp" line="+78"/>
         <source>Job</source>
         <translation>Auftrag</translation>
     </message>
@@ -4973,11 +5046,6 @@ entriegeln</translation>
         <location line="+1"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Process</source>
-        <translation>Prozess</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -5191,12 +5259,12 @@ entriegeln</translation>
         <translation>Verwendet</translation>
     </message>
     <message>
-        <location line="+187"/>
+        <location line="+191"/>
         <source>not in the chart</source>
         <translation>nicht in der Tabelle</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Override: saved with the job in place of the chart&apos;s figure.</source>
         <translation>Abweichwert: wird mit dem Auftrag statt des Tabellenwerts gespeichert.</translation>
     </message>
@@ -6871,7 +6939,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+203"/>
+        <location filename="../../app/gui/main.cpp" line="+215"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>

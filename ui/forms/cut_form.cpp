@@ -1,4 +1,5 @@
 #include "ui/forms/cut_form.h"
+#include "ui/forms/process_form.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -32,13 +33,13 @@ CutForm::CutForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
     auto* cutSpeed =
         bindDouble("cut.speed_mm_s", 3, [](Job& j) -> double& { return j.cut.speed_mm_s; });
     addRow(s, tr("Cutting speed"), cutSpeed, "mm/s");
-    // With a cut chart the speed is the chart's (or its override on the Process page).
+    // With a cut chart the speed is the chart's (or its override).
     const auto showSpeedSource = [cutSpeed, editor] {
         const bool chart = editor->job().process.used;
         const QSignalBlocker block(cutSpeed);
         cutSpeed->setValue(editor->job().cut.speed_mm_s);
         cutSpeed->setReadOnly(chart);
-        cutSpeed->setToolTip(chart ? tr("From the cut chart (Process page); set an override "
+        cutSpeed->setToolTip(chart ? tr("From the cut chart (above on this page); set an override "
                                         "there to cut at another speed.")
                                    : QString());
     };
@@ -68,6 +69,9 @@ CutForm::CutForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
     connect(editor, &JobEditor::jobReset, phi,
             [phi, editor] { phi->setEnabled(!editor->job().cut.start_phi_auto); });
     mainLayout()->addWidget(path);
+    // The cut chart (issue 24) first on this page, not a tab of its own: at 1280x720 one more
+    // tab pushed "Cycle & devices" off the tab bar.
+    addSubForm(new ProcessForm(editor, this), 0);
     mainLayout()->addStretch(1);
 }
 

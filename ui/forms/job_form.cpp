@@ -89,18 +89,32 @@ JobForm::JobForm(JobEditor* editor, QWidget* parent)
 
 QWidget* JobForm::fieldFor(const std::string& key) const {
     auto it = fields_.find(key);
-    return it == fields_.end() ? nullptr : it->second;
+    if (it != fields_.end()) return it->second;
+    for (const JobForm* sub : subForms_)
+        if (QWidget* w = sub->fieldFor(key)) return w;
+    return nullptr;
 }
 
 std::vector<std::string> JobForm::keys() const {
     std::vector<std::string> out;
     for (const auto& [k, w] : fields_)
         if (out.empty() || out.back() != k) out.push_back(k);
+    for (const JobForm* sub : subForms_)
+        for (const std::string& k : sub->keys())
+            out.push_back(k);
     return out;
 }
 
 int JobForm::markedCount() const {
-    return marked_;
+    int n = marked_;
+    for (const JobForm* sub : subForms_)
+        n += sub->markedCount();
+    return n;
+}
+
+void JobForm::addSubForm(JobForm* form, int index) {
+    subForms_.push_back(form);
+    layout_->insertWidget(index, form);
 }
 
 void JobForm::registerField(const std::string& key, QWidget* w) {
@@ -295,6 +309,8 @@ void JobForm::commit(const std::string& key, const QString& oldValue, const QStr
 void JobForm::applyAccess() {
     for (const auto& [key, w] : fields_)
         setLocked(w, editor_->lockReason(key));
+    for (JobForm* sub : subForms_)
+        sub->applyAccess();
 }
 
 void JobForm::reload() {

@@ -67,6 +67,10 @@ class JobForm : public QWidget {
                           std::function<void(cutcell::Job&, int)> set);
     // Registers an extra key shown on an existing widget (e.g. a group of fields).
     void alsoMark(const std::string& key, QWidget* w);
+    // Another form shown inside this one at `index` of its layout (-1: below its fields; the
+    // Cut page's cut chart): its keys count as this page's (fieldFor, keys, markedCount,
+    // applyAccess).
+    void addSubForm(JobForm* form, int index = -1);
 
     // Adds "label [field] unit" to a form layout.
     static void addRow(QFormLayout* form, const QString& label, QWidget* field,
@@ -153,6 +157,7 @@ class JobForm : public QWidget {
     QLabel* issuesLabel_;
     std::vector<Binding> bindings_;
     std::multimap<std::string, QWidget*> fields_;
+    std::vector<JobForm*> subForms_;
     bool loading_ = false;
     int marked_ = 0;
 };

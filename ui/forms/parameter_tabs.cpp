@@ -1,7 +1,6 @@
 #include "ui/forms/parameter_tabs.h"
 
 #include "ui/forms/cut_form.h"
-#include "ui/forms/process_form.h"
 #include "ui/forms/cycle_devices_form.h"
 #include "ui/forms/issue_text.h"
 #include "ui/forms/job_info_form.h"
@@ -79,7 +78,6 @@ ParameterTabs::ParameterTabs(JobEditor* editor, QWidget* parent)
     add(new JobInfoForm(editor), tr("Job"), nullptr);
     add(new PipesForm(editor), tr("Pipes"), nullptr);
     add(new CutForm(editor), tr("Cut"), nullptr);
-    add(new ProcessForm(editor), tr("Process"), nullptr);
     for (const MachineUi* machine : machineUis())
         for (const FormPage& page : machine->formPages())
             add(page.make(editor), page.title, machine);

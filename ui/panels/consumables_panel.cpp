@@ -129,7 +129,7 @@ void ConsumablesPanel::refresh() {
         return;
     }
     if (!set) {
-        set_->setText(tr("The job cuts without a cut chart (Process page): no consumable set to "
+        set_->setText(tr("The job cuts without a cut chart (Cut page): no consumable set to "
                          "count."));
         counts_->clear();
         wearText_->clear();
