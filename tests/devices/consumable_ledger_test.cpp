@@ -4,6 +4,8 @@
 // the old set as history and is in the audit trail, bad figures are refused; the wear levels at
 // 89.9 / 90 / 100 % and an unknown life that never warns; and the acceptance test: a writer
 // killed with SIGKILL at random moments loses no cut beyond the one it was committing.
+#include "core/job/job_io.h"
+#include "core/json/json.h"
 #include "core/process/consumable_counters.h"
 #include "devices/record/audit_trail.h"
 #include "devices/record/consumable_ledger_store.h"
@@ -17,6 +19,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -304,3 +307,50 @@ TEST(ConsumableLedger, AWriterKilledAtARandomMomentLosesNoCompletedCut) {
 
 } // namespace
 } // namespace cutcell
+
+#ifdef CUTCELL_CLI
+namespace cutcell {
+namespace {
+
+// The whole path: cutcell-cli runs a plasma job on the simulated cell with this record; the
+// engine tells the record at each cut's end, and the ledger counts it for the job's consumable
+// set. Two runs, two cuts: pierces, arc-on time (the torch's time on: the cut and its pierce)
+// and length from the run's own report.
+TEST(ConsumableLedger, RunsOfAPlasmaJobCountTheirCutsInTheRecord) {
+    const std::string db = test::freshRecord("consumable_runs");
+    char tmpl[] = "/tmp/cutcell-consumable-run-XXXXXX";
+    const std::string dir = ::mkdtemp(tmpl);
+    json::Value job =
+        json::parse(readTextFile(CUTCELL_SOURCE_DIR "/resources/jobs/plasma_hole_job.json"));
+    json::Value engine = *job.find("engine");
+    engine.set("runs_dir", ""); // no run log folder
+    job.set("engine", engine);
+    writeFileAtomically(dir + "/job.json", json::write(job));
+    double cutTime = 0, length = 0;
+    for (int run = 0; run < 2; ++run) {
+        const std::string cmd = std::string(CUTCELL_CLI) + " run " + dir +
+                                "/job.json --quiet --record '" + db + "' --report " + dir +
+                                "/report.json >/dev/null 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+        const json::Value report = json::parse(readTextFile(dir + "/report.json"));
+        cutTime = report.find("cut_time_s")->asNumber();
+        length = report.find("length_mm")->asNumber();
+    }
+    NoAudit audit;
+    const ConsumableLedgerStore ledger(db, audit); // this host's station, as the CLI's
+    const ConsumableCounters c = ledger.current({CutProcess::Plasma, "Powermax65/85 65A shielded"});
+    std::printf("two runs: %lld cuts, %lld pierces, arc-on %.3f s, %.3f mm (a cut: %.3f s, %.3f "
+                "mm)\n",
+                static_cast<long long>(c.cuts), static_cast<long long>(c.pierces), c.arcOnS(),
+                c.cut_length_mm, cutTime, length);
+    EXPECT_EQ(c.cuts, 2);
+    EXPECT_EQ(c.pierces, 2);
+    EXPECT_GE(c.arcOnS(), 2 * cutTime - 0.002);
+    EXPECT_LE(c.arcOnS(), 2 * cutTime + 0.1); // the cut, its start on the path and the arc off
+    EXPECT_NEAR(c.cut_length_mm, 2 * length, 1e-6);
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace cutcell
+#endif
