@@ -63,17 +63,26 @@ const char* MotionEngine::Impl::axisName(int i) const {
 
 void MotionEngine::Impl::emit(EventKind kind, Severity sev, EngineState from, EngineState to,
                               const char* fmt, va_list ap) {
+    EngineEvent e = newEvent(kind);
+    e.severity = sev;
+    e.from = from;
+    e.to = to;
+    vsnprintfC(e.text.data(), e.text.size(), fmt, ap);
+    pushEvent(e);
+}
+
+EngineEvent MotionEngine::Impl::newEvent(EventKind kind) const {
     EngineEvent e;
     e.time_s = now;
     e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
                     std::chrono::system_clock::now().time_since_epoch())
                     .count();
-    e.severity = sev;
-    e.from = from;
-    e.to = to;
     e.kind = kind;
     e.run_id = runId;
-    vsnprintfC(e.text.data(), e.text.size(), fmt, ap);
+    return e;
+}
+
+void MotionEngine::Impl::pushEvent(const EngineEvent& e) {
     if (!events.push(e)) eventsDropped.fetch_add(1, std::memory_order_relaxed);
     if (!logEvents.push(e)) logDropped.fetch_add(1, std::memory_order_relaxed);
 }
@@ -236,20 +245,13 @@ void MotionEngine::Impl::toolSwitched(bool on) {
         return;
     }
     // One cut ended (its arc off): the consumables count it (RunRecordSink::cutEnded).
-    EngineEvent e;
-    e.time_s = now;
-    e.wall_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
-                    std::chrono::system_clock::now().time_since_epoch())
-                    .count();
+    EngineEvent e = newEvent(EventKind::CutEnded);
     e.from = e.to = state;
-    e.kind = EventKind::CutEnded;
-    e.run_id = runId;
     e.cut_tool_on_s = static_cast<double>(cutOnCycles) * T;
     e.cut_length_mm = program->terms.path_length ? std::max(0.0, length - cutStartLength) : 0.0;
     snprintfC(e.text.data(), e.text.size(), "%s off after %.3f s, %.1f mm", toolName(),
               e.cut_tool_on_s, e.cut_length_mm);
-    if (!events.push(e)) eventsDropped.fetch_add(1, std::memory_order_relaxed);
-    if (!logEvents.push(e)) logDropped.fetch_add(1, std::memory_order_relaxed);
+    pushEvent(e);
 }
 
 void MotionEngine::Impl::captureStop() {

@@ -266,6 +266,10 @@ struct MotionEngine::Impl {
         __attribute__((format(printf, 4, 5)));
     void emit(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt,
               va_list ap);
+    // An event of this cycle (time, wall clock, run) and its way to the GUI's and the logger's
+    // rings (a full ring counts a drop).
+    EngineEvent newEvent(EventKind kind) const;
+    void pushEvent(const EngineEvent& e);
     void emitf(EventKind kind, Severity sev, EngineState from, EngineState to, const char* fmt, ...)
         __attribute__((format(printf, 6, 7)));
     void note(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
