@@ -38,18 +38,6 @@ using namespace cutcell::shopfloor;
 namespace sp = cutcell::sparkplug;
 using namespace cutcell::shopfloor::test;
 
-// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer) / (thread_sanitizer).
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define CUTCELL_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define CUTCELL_SANITIZED 1
-#endif
-#endif
-#ifndef CUTCELL_SANITIZED
-#define CUTCELL_SANITIZED 0
-#endif
-
 namespace {
 
 struct Sent {

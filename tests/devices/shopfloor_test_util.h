@@ -11,6 +11,19 @@
 #include <variant>
 #include <vector>
 
+// Whether this build runs under a sanitizer (timing figures are then printed, not checked).
+// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer) / (thread_sanitizer).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define CUTCELL_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define CUTCELL_SANITIZED 1
+#endif
+#endif
+#ifndef CUTCELL_SANITIZED
+#define CUTCELL_SANITIZED 0
+#endif
+
 namespace cutcell::shopfloor::test {
 
 namespace sp = cutcell::sparkplug;
