@@ -30,10 +30,11 @@ int runIk(const KinematicsOptions& o);       // kinematics_command.cpp
 int runImport(const ImportOptions& o);       // import_command.cpp
 int runRun(const RunOptions& o);             // run_command.cpp (needs CutCell::devices)
 int runShopfloor(const ShopfloorOptions& o); // shopfloor_command.cpp (needs CutCell::shopfloor)
-int runDriveSim(const DriveSimOptions& o);   // drivesim_command.cpp
-int runHistory(const HistoryOptions& o);     // history_command.cpp (needs CutCell::devices)
-int runUsers(const UsersOptions& o);         // users_command.cpp (needs CutCell::devices)
-int runAudit(const AuditOptions& o);         // users_command.cpp (needs CutCell::devices)
+int runBenchShopfloor(const BenchShopfloorOptions& o); // bench_shopfloor.cpp (needs a broker)
+int runDriveSim(const DriveSimOptions& o);             // drivesim_command.cpp
+int runHistory(const HistoryOptions& o); // history_command.cpp (needs CutCell::devices)
+int runUsers(const UsersOptions& o);     // users_command.cpp (needs CutCell::devices)
+int runAudit(const AuditOptions& o);     // users_command.cpp (needs CutCell::devices)
 // simulate --devices canopen: the program through the engine on the machine's CAN cell.
 int runSimulateCan(const Job& job, const MachineModule& module, const MachinePlan& plan,
                    const SimulateOptions& o); // can_run.cpp

@@ -91,6 +91,15 @@ struct ShopfloorOptions {
     double linger_s = 0; // stay connected this long after the run (idle: 0 = until a signal)
 };
 
+// cutcell-cli bench-shopfloor: the link's figures against a local broker (issue 26).
+struct BenchShopfloorOptions {
+    std::optional<int> cells; // simulated cells, each its own edge node (default 1)
+    double seconds = 30;      // the measuring window
+    bool outage = false;      // the engine's run with the broker killed and restarted instead
+    std::string job;          // --outage: the job run (default: the default job)
+    bool json = false;
+};
+
 struct UpgradeOptions {
     std::string job; // the old (schema 1) job file
     std::string out; // the schema-2 file, written atomically

@@ -34,6 +34,7 @@ struct AllOptions {
     MachinesOptions machines;
     UpgradeOptions upgrade;
     ShopfloorOptions shopfloor;
+    BenchShopfloorOptions bench_shopfloor;
     TuneCommandOptions tune;
     MaterialsOptions materials;
     KinematicsOptions fk, ik;
@@ -266,6 +267,26 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     addNumber(*shopfloor, "--linger-s", o.shopfloor.linger_s, {0, 86400, "s"},
               "stay connected this long after the run (without --run: 0 = until Ctrl-C or "
               "SIGTERM)");
+
+    CLI::App* benchShopfloor =
+        add("bench-shopfloor",
+            "measure the shop-floor link against a local Mosquitto broker (TLS): N simulated "
+            "cells' messages, bytes, latency and CPU (the broker's too), or --outage: the engine's "
+            "timing with the broker killed mid-run and what arrives when it returns",
+            [&] { return runBenchShopfloor(o.bench_shopfloor); });
+    addInteger(*benchShopfloor, "--cells", o.bench_shopfloor.cells, {1, 1000, ""},
+               "simulated cells, each its own edge node (default 1)");
+    addNumber(*benchShopfloor, "--seconds", o.bench_shopfloor.seconds, {1, 3600, "s"},
+              "the measuring window (default 30)");
+    benchShopfloor->add_flag("--outage", o.bench_shopfloor.outage,
+                             "run the job three times in real time: without the link, with it, "
+                             "and with the broker killed a third in and back at two thirds");
+    benchShopfloor
+        ->add_option("--job", o.bench_shopfloor.job,
+                     "--outage: the job (default: the "
+                     "default job)")
+        ->type_name("JOB");
+    benchShopfloor->add_flag("--json", o.bench_shopfloor.json, "print the figures as JSON");
 
     CLI::App* history =
         add("history", "list the runs of the production record (SQLite or PostgreSQL)",

@@ -10,6 +10,7 @@
 #include "core/engine/motion_engine.h"
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
+#include "core/shopfloor/telemetry_snapshot.h"
 #include "devices/process/safe_shutdown.h"
 #include "devices/shopfloor/mosquitto_link.h"
 
@@ -144,13 +145,7 @@ int runShopfloor(const ShopfloorOptions& o) {
     }
 
     shopfloor::CellSnapshot snap;
-    if (module) {
-        snap.machine_id = module->id();
-        snap.machine_name = module->title();
-        snap.job_name = job.name;
-        for (const AxisInfo& a : module->axes(job))
-            snap.axes.push_back({a.name, unitSymbol(a.unit), 0, 0});
-    }
+    if (module) snap = shopfloor::cellSnapshotOf(job, *module);
     snap.state = "Idle";
     const auto publish = [&] {
         snap.queue_length = cell.queueLength();
@@ -171,14 +166,7 @@ int runShopfloor(const ShopfloorOptions& o) {
             const auto now = SteadyClock::now();
             if (now - last < std::chrono::milliseconds(50)) return;
             last = now;
-            snap.state = toString(t.state);
-            snap.progress = t.progress;
-            for (std::size_t i = 0; i < snap.axes.size() && i < t.axis_count; ++i) {
-                const bool linear = t.units[i] != AxisUnit::Rotary;
-                const double k = linear ? 1.0 : 180.0 / 3.14159265358979323846;
-                snap.axes[i].position = t.actual[static_cast<int>(i)] * k;
-                snap.axes[i].following_error = t.error[static_cast<int>(i)] * k;
-            }
+            shopfloor::applyTelemetry(snap, t);
             publish();
         };
         const EngineRunResult r = runOnEngine(job, *module, plan, setup);

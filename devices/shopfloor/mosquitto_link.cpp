@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <poll.h>
 #include <unistd.h>
 
 namespace cutcell::shopfloor {
@@ -300,6 +301,17 @@ bool MosquittoLink::pause(double seconds) {
                            [&] { return stopping_.load(); });
 }
 
+namespace {
+
+// Whether the socket of a CONNECT under way is already gone (hung up: refused, reset).
+bool socketHungUp(int fd) {
+    if (fd < 0) return false;
+    pollfd p{fd, POLLOUT, 0};
+    return ::poll(&p, 1, 0) == 1 && (p.revents & (POLLHUP | POLLERR)) != 0;
+}
+
+} // namespace
+
 void MosquittoLink::sessionEnded(int rc, int err) {
     withNode([&] { node_.disconnected(); }); // after on_disconnect this changes nothing
     if (stopping_) return;
@@ -331,13 +343,31 @@ void MosquittoLink::run() {
         tls_error_.clear();
         setStatus(LinkState::Connecting,
                   "connecting to " + where() + " (attempt " + std::to_string(attempt_) + ")");
+        const auto began = std::chrono::steady_clock::now();
+        errno = 0;
         int rc =
             mosquitto_connect_async(mosq_, config_.host.c_str(), config_.port, config_.keepalive_s);
+        const int connect_errno = errno; // EINPROGRESS/EAGAIN, or why the connect failed
+        int err = connect_errno;
         while (rc == MOSQ_ERR_SUCCESS && !stopping_) {
             rc = mosquitto_loop(mosq_, 100, 1); // also sends the keep-alive pings
-            withNode([&] { node_.poll(); });    // what the axis rate held back
+            err = errno;
+            withNode([&] { node_.poll(); }); // what the axis rate held back
+            if (rc != MOSQ_ERR_SUCCESS || accepted_) continue;
+            // Still no CONNACK. Under TLS libmosquitto 2.0.11 takes a refused TCP connect for a
+            // handshake under way: mosquitto_loop() returns at once, again and again, until 1.5
+            // keep-alives have passed (45 s by default: a busy loop, and a broker back after an
+            // outage reached that much later). A hung-up socket says it at once; an attempt
+            // without an answer ends after kConnectTimeoutS.
+            if (socketHungUp(mosquitto_socket(mosq_))) {
+                rc = MOSQ_ERR_ERRNO;
+                err = connect_errno == ECONNREFUSED ? ECONNREFUSED : ECONNRESET;
+            } else if (std::chrono::steady_clock::now() - began >
+                       std::chrono::duration<double>(kConnectTimeoutS)) {
+                rc = MOSQ_ERR_ERRNO;
+                err = ETIMEDOUT;
+            }
         }
-        const int err = errno;
         if (stopping_) break;
         if (rc == MOSQ_ERR_TLS && tls_error_.empty()) tls_error_ = "handshake failed";
         mosquitto_disconnect(mosq_); // close whatever is left of the socket

@@ -46,6 +46,10 @@ struct LinkStatus {
     int attempt = 0;  // CONNECT attempts since the last accepted one
 };
 
+// A CONNECT attempt that has no CONNACK after this long is given up (and retried after the
+// back-off): a broker that takes longer to answer a TLS handshake is not usable anyway.
+inline constexpr double kConnectTimeoutS = 10;
+
 struct MosquittoLinkOptions {
     double reconnect_min_s = 1;  // the first retry's delay, doubled each failure ...
     double reconnect_max_s = 30; // ... up to this

@@ -1,0 +1,185 @@
+#include "devices/shopfloor/local_broker.h"
+
+#include <arpa/inet.h>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <netinet/in.h>
+#include <pwd.h>
+#include <sstream>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace cutcell::shopfloor {
+namespace {
+
+// A port on 127.0.0.1 nothing is bound to now, chosen by the kernel (0: none to give).
+int freeLoopbackPort() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) return 0;
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof a;
+    int port = 0;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 &&
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) == 0)
+        port = ntohs(a.sin_port);
+    ::close(fd);
+    return port;
+}
+
+bool portAccepts(int port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(static_cast<std::uint16_t>(port));
+    const bool ok = ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+    ::close(fd);
+    return ok;
+}
+
+} // namespace
+
+std::string findProgram(const std::string& name, const char* env) {
+    if (const char* e = env ? std::getenv(env) : nullptr; e && *e)
+        return ::access(e, X_OK) == 0 ? e : "";
+    std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+    path += ":/usr/sbin:/usr/local/sbin";
+    for (std::size_t at = 0; at <= path.size();) {
+        const std::size_t end = std::min(path.find(':', at), path.size());
+        const std::string candidate = path.substr(at, end - at) + "/" + name;
+        if (end > at && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+        at = end + 1;
+    }
+    return "";
+}
+
+LocalBroker::~LocalBroker() {
+    stop(false);
+    if (!dir_.empty() && !keep_) {
+        std::error_code ignored;
+        std::filesystem::remove_all(dir_, ignored);
+    }
+}
+
+bool LocalBroker::run(const std::string& command) const {
+    return std::system(("cd '" + dir_ + "' && (" + command + ") >>setup.log 2>&1").c_str()) == 0;
+}
+
+std::string LocalBroker::start(const std::vector<BrokerUser>& users, int sys_interval_s) {
+    mosquitto_ = findProgram("mosquitto", "CUTCELL_MOSQUITTO");
+    const std::string openssl = findProgram("openssl"), pwtool = findProgram("mosquitto_passwd");
+    if (mosquitto_.empty() || pwtool.empty())
+        return "needs mosquitto and mosquitto_passwd (apt-get install mosquitto)";
+    if (openssl.empty()) return "needs openssl (apt-get install openssl)";
+    char tmpl[] = "/tmp/cutcell-broker-XXXXXX";
+    if (!::mkdtemp(tmpl)) return "cannot make a folder in /tmp";
+    dir_ = tmpl;
+    port_ = freeLoopbackPort();
+    if (port_ == 0) return "no loopback port to listen on";
+    const std::string ec = " -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes";
+    bool made =
+        run(openssl + " req -x509" + ec +
+            " -keyout ca.key -out ca.crt -days 2 -subj '/CN=Test CA'") &&
+        run(openssl + " req" + ec + " -keyout server.key -out server.csr -subj '/CN=localhost'") &&
+        run("printf 'subjectAltName=IP:127.0.0.1,DNS:localhost\\n' > san.cnf") &&
+        run(openssl + " x509 -req -in server.csr -CA ca.crt -CAkey ca.key -CAcreateserial"
+                      " -out server.crt -days 2 -extfile san.cnf") &&
+        run(openssl + " req -x509" + ec +
+            " -keyout other.key -out other.crt -days 2 -subj '/CN=Other CA'") &&
+        run("touch passwd");
+    for (const BrokerUser& u : users)
+        made = made && run(pwtool + " -b passwd '" + u.name + "' '" + u.password + "'") &&
+               run("printf '%s\\n' '" + u.password + "' > '" + u.name + ".pw' && chmod 600 '" +
+                   u.name + ".pw'");
+    if (!made) return "the broker's set-up failed (see " + dir_ + "/setup.log)";
+    const passwd* me = ::getpwuid(::geteuid());
+    std::ofstream(dir_ + "/mosquitto.conf")
+        << "listener " << port_ << " 127.0.0.1\n"
+        << "cafile " << dir_ << "/ca.crt\ncertfile " << dir_ << "/server.crt\nkeyfile " << dir_
+        << "/server.key\nallow_anonymous false\npassword_file " << dir_ << "/passwd\n"
+        << "persistence true\npersistence_location " << dir_ << "/\nautosave_interval 1\n"
+        << "queue_qos0_messages true\nmax_queued_messages 100000\n"
+        << "sys_interval " << sys_interval_s << "\n"
+        << "log_dest file " << dir_ << "/mosquitto.log\n"
+        << "user " << (me ? me->pw_name : "root") << "\n";
+    if (!launch()) return "the broker did not start (see " + dir_ + "/mosquitto.log)";
+    return {};
+}
+
+bool LocalBroker::launch() {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // never outlive the program that started it
+        const std::string out = dir_ + "/mosquitto.out";
+        if (FILE* f = std::freopen(out.c_str(), "a", stdout)) (void)f;
+        if (FILE* f = std::freopen(out.c_str(), "a", stderr)) (void)f;
+        const std::string conf = dir_ + "/mosquitto.conf";
+        ::execl(mosquitto_.c_str(), mosquitto_.c_str(), "-c", conf.c_str(),
+                static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    if (pid_ < 0) return false;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!portAccepts(port_)) {
+        int status = 0;
+        if (::waitpid(pid_, &status, WNOHANG) == pid_ || std::chrono::steady_clock::now() > until) {
+            stop(false);
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
+}
+
+bool LocalBroker::restart() {
+    if (running()) return true;
+    return launch();
+}
+
+void LocalBroker::stop(bool clean) {
+    if (pid_ <= 0) return;
+    ::kill(pid_, clean ? SIGTERM : SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+}
+
+double LocalBroker::cpuSeconds() const {
+    if (pid_ <= 0) return 0;
+    std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+    const std::string all((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t paren = all.rfind(')');
+    if (paren == std::string::npos) return 0;
+    std::istringstream rest(all.substr(paren + 2));
+    std::string field;
+    double ticks = 0;
+    for (int i = 3; i <= 15 && rest >> field; ++i)
+        if (i == 14 || i == 15) ticks += std::stod(field); // utime, stime
+    return ticks / static_cast<double>(::sysconf(_SC_CLK_TCK));
+}
+
+ShopfloorConfig LocalBroker::cellConfig(const std::string& group, const std::string& edge,
+                                        const std::string& user) const {
+    ShopfloorConfig c;
+    c.enabled = true;
+    c.host = "127.0.0.1";
+    c.port = port_;
+    c.group_id = group;
+    c.edge_node_id = edge;
+    c.username = user;
+    c.password_file = user + ".pw";
+    c.tls.ca_file = "ca.crt";
+    c.base_dir = dir_;
+    return c;
+}
+
+} // namespace cutcell::shopfloor
