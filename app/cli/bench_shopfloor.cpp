@@ -33,6 +33,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <poll.h>
 #include <pthread.h>
 #include <sys/resource.h>
 #include <thread>
@@ -94,16 +95,35 @@ class BenchHost {
             mosquitto_subscribe(m, nullptr, "$SYS/broker/#", 0);
             static_cast<BenchHost*>(self)->connected_ = true;
         });
+        mosquitto_disconnect_callback_set(m_, [](mosquitto*, void* self, int) {
+            static_cast<BenchHost*>(self)->connected_ = false;
+        });
         mosquitto_message_callback_set(m_,
                                        [](mosquitto*, void* self, const mosquitto_message* msg) {
                                            static_cast<BenchHost*>(self)->received(msg);
                                        });
         mosquitto_connect_async(m_, "127.0.0.1", broker.port(), 30);
-        thread_ = std::thread([this] { mosquitto_loop_forever(m_, 1000, 1); });
+        // Our own loop: mosquitto_loop_forever() gives up for good on the TLS error a killed
+        // broker leaves, and a refused connect under TLS is only seen as a hung-up socket (see
+        // MosquittoLink::run).
+        thread_ = std::thread([this] {
+            while (!stop_) {
+                int rc = mosquitto_loop(m_, 100, 1);
+                pollfd p{mosquitto_socket(m_), POLLOUT, 0};
+                if (rc == MOSQ_ERR_SUCCESS && !connected_ && p.fd >= 0 && ::poll(&p, 1, 0) == 1 &&
+                    (p.revents & (POLLHUP | POLLERR)))
+                    rc = MOSQ_ERR_CONN_LOST;
+                if (rc == MOSQ_ERR_SUCCESS || stop_) continue;
+                connected_ = false;
+                std::this_thread::sleep_for(std::chrono::milliseconds(500));
+                mosquitto_reconnect_async(m_);
+            }
+        });
     }
     ~BenchHost() {
-        mosquitto_disconnect(m_);
+        stop_ = true;
         if (thread_.joinable()) thread_.join();
+        mosquitto_disconnect(m_);
         mosquitto_destroy(m_);
     }
     bool waitConnected(int seconds) {
@@ -174,7 +194,7 @@ class BenchHost {
 
     mosquitto* m_ = nullptr;
     std::thread thread_;
-    std::atomic<bool> connected_{false};
+    std::atomic<bool> connected_{false}, stop_{false};
     std::mutex mutex_;
     std::map<std::string, NodeTally> nodes_;
     std::map<std::string, std::string> sys_;
@@ -335,78 +355,72 @@ int benchCells(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, j
     return kOk;
 }
 
-void putCycles(json::Object& out, const std::string& run, const CycleStats& c) {
-    const auto key = [&](const char* what) { return "engine_" + run + "_" + what; };
-    out.emplace_back(key("jitter_us_p50"), c.jitter_us_p50);
-    out.emplace_back(key("jitter_us_p99"), c.jitter_us_p99);
-    out.emplace_back(key("jitter_us_max"), c.jitter_us_max);
-    out.emplace_back(key("work_us_max"), c.work_us_max);
-    out.emplace_back(key("overruns"), static_cast<double>(c.overruns));
-    out.emplace_back(key("missed_deadlines"), static_cast<double>(c.missed_deadlines));
-    out.emplace_back(key("telemetry_dropped"), static_cast<double>(c.telemetry_dropped));
+// The engine's timing figures of one variant over the rounds: median, min and max of each.
+void putCycles(json::Object& out, const std::string& variant, const std::vector<CycleStats>& runs) {
+    const auto put3 = [&](const char* what, auto field) {
+        std::vector<double> v;
+        for (const CycleStats& c : runs)
+            v.push_back(static_cast<double>(field(c)));
+        const std::string key = "engine_" + variant + "_" + what;
+        out.emplace_back(key, percentile(v, 0.5));
+        if (runs.size() > 1) {
+            out.emplace_back(key + "_min", percentile(v, 0));
+            out.emplace_back(key + "_max", percentile(v, 1));
+        }
+    };
+    put3("jitter_us_p50", [](const CycleStats& c) { return c.jitter_us_p50; });
+    put3("jitter_us_p99", [](const CycleStats& c) { return c.jitter_us_p99; });
+    put3("jitter_us_max", [](const CycleStats& c) { return c.jitter_us_max; });
+    put3("work_us_max", [](const CycleStats& c) { return c.work_us_max; });
+    put3("overruns", [](const CycleStats& c) { return c.overruns; });
+    put3("missed_deadlines", [](const CycleStats& c) { return c.missed_deadlines; });
+    put3("telemetry_dropped", [](const CycleStats& c) { return c.telemetry_dropped; });
 }
 
-int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, json::Object& out) {
-    Job job;
-    int code = kOk;
-    if (o.job.empty())
-        job = defaultJob();
-    else if (!loadJobArg(o.job, job, &code))
-        return code;
-    const MachineModule& module = machineFor(job);
-    const MachinePlan plan = module.plan(job, {});
-    if (!plan.ok()) {
-        std::fprintf(stderr, "bench-shopfloor: %s\n", plan.outcome.message.c_str());
-        return kUnreachable;
-    }
-    job.engine.runs_dir.clear(); // no run logs from a benchmark
-    EngineRunSetup setup;
-    setup.command = "bench-shopfloor";
-    setup.realtime = true;
-    setup.quiet = true;
+// What one run with the link left at the host.
+struct OutageTally {
+    std::uint64_t stored = 0, dropped = 0, historical = 0, out_of_order = 0, seq_errors = 0;
+    std::uint64_t sessions = 0;
+    bool restarted = true;
+};
 
-    // 1. Without the link.
-    const EngineRunResult alone = runOnEngine(job, module, plan, setup);
-    if (alone.code != kOk) return alone.code;
-    putCycles(out, "without_link", alone.cycles);
-
-    BenchHost host(broker, true); // persistent: the broker keeps what arrives while it is away
-    if (!host.waitConnected(20)) return kFailure;
+// One run of the job with a link of its own (edge node `edge`); with `outage_s` > 0 the broker is
+// killed that long into the run and started again as long after.
+EngineRunResult linkedRun(const Job& job, const MachineModule& module, const MachinePlan& plan,
+                          shopfloor::LocalBroker& broker, BenchHost& host, const std::string& edge,
+                          double outage_s, OutageTally& tally) {
     shopfloor::MosquittoLinkOptions options = quietLink();
     options.log = [](const std::string& line) { // a few lines: the link's sessions
         std::fprintf(stderr, "bench-shopfloor: link: %s\n", line.c_str());
     };
-    shopfloor::MosquittoLink link(broker.cellConfig(kGroup, "cell-outage", "cell"), nullptr,
-                                  options);
+    shopfloor::MosquittoLink link(broker.cellConfig(kGroup, edge, "cell"), nullptr, options);
     shopfloor::CellSnapshot snap = shopfloor::cellSnapshotOf(job, module);
     link.submit(snap);
     std::string error;
     if (!link.start(&error)) {
         std::fprintf(stderr, "bench-shopfloor: %s\n", error.c_str());
-        return kFailure;
+        return {};
     }
-    std::uint64_t most_queued = 0;
+    EngineRunSetup setup;
+    setup.command = "bench-shopfloor";
+    setup.realtime = true;
+    setup.quiet = true;
     auto last = Clock::now();
     setup.on_telemetry = [&](MotionEngine&, const TelemetrySample& t) {
         shopfloor::applyTelemetry(snap, t);
         if (Clock::now() - last < std::chrono::milliseconds(50)) return;
         last = Clock::now();
         link.submit(snap);
-        most_queued = std::max(most_queued, link.stats().queued);
+        tally.stored = std::max(tally.stored, link.stats().queued);
     };
-    // 2. With the link, the broker up.
-    const EngineRunResult linked = runOnEngine(job, module, plan, setup);
-    putCycles(out, "with_link", linked.cycles);
-
-    // 3. The broker killed a third into the run, started again at two thirds.
-    const double third = alone.wall_s / 3;
     // The thread that starts the broker again must outlive it (its death signal follows that
     // thread): it waits for `done` before it ends.
-    std::atomic<bool> restarted{false}, done{false};
+    std::atomic<bool> restarted{outage_s <= 0}, done{false};
     std::thread outage([&] {
-        std::this_thread::sleep_for(std::chrono::duration<double>(third));
+        if (outage_s <= 0) return;
+        std::this_thread::sleep_for(std::chrono::duration<double>(outage_s));
         broker.stop(false);
-        std::this_thread::sleep_for(std::chrono::duration<double>(third));
+        std::this_thread::sleep_for(std::chrono::duration<double>(outage_s));
         restarted = broker.restart();
         while (!done)
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -419,31 +433,84 @@ int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, 
             thread.join();
         }
     } join_at_end{done, outage};
-    const EngineRunResult lost = runOnEngine(job, module, plan, setup);
+    const EngineRunResult run = runOnEngine(job, module, plan, setup);
     for (int i = 0; i < 1200 && !restarted; ++i) // the run may end before the broker is back
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    putCycles(out, "broker_lost", lost.cycles);
-    put(out, "outage_s", third);
-    put(out, "outage_broker_restarted", restarted ? 1 : 0);
-
-    // What the host has once the node flushed its queue.
+    // What the host has once the node sent its queue.
     snap.state = "Completed";
     link.submit(snap);
     const auto until = Clock::now() + std::chrono::seconds(30);
-    while (Clock::now() < until &&
-           !(link.stats().online && link.stats().queued == 0 &&
-             host.tallies()["cell-outage"].historical >= most_queued - std::min(most_queued, 1ul)))
+    while (Clock::now() < until && !(link.stats().online && link.stats().queued == 0 &&
+                                     host.tallies()[edge].historical >= tally.stored))
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    std::this_thread::sleep_for(std::chrono::seconds(1));
-    const shopfloor::EdgeNodeStats stats = link.stats();
-    const NodeTally n = host.tallies()["cell-outage"];
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const NodeTally n = host.tallies()[edge];
+    tally.dropped = link.stats().dropped;
+    tally.sessions = link.stats().sessions;
+    tally.historical = n.historical;
+    tally.out_of_order = n.out_of_order;
+    tally.seq_errors = n.seq_errors;
+    tally.restarted = restarted;
     link.stop();
-    put(out, "outage_messages_stored", static_cast<double>(most_queued));
-    put(out, "outage_messages_dropped", static_cast<double>(stats.dropped));
-    put(out, "outage_historical_received", static_cast<double>(n.historical));
-    put(out, "outage_historical_out_of_order", static_cast<double>(n.out_of_order));
-    put(out, "outage_seq_errors", static_cast<double>(n.seq_errors));
-    put(out, "outage_sessions", static_cast<double>(stats.sessions));
+    return run;
+}
+
+int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, json::Object& out) {
+    Job job;
+    int code = kOk;
+    if (o.job.empty())
+        job = defaultJob();
+    else if (!loadJobArg(o.job, job, &code))
+        return code;
+    job.engine.runs_dir.clear(); // no run logs from a benchmark
+    const MachineModule& module = machineFor(job);
+    const MachinePlan plan = module.plan(job, {});
+    if (!plan.ok()) {
+        std::fprintf(stderr, "bench-shopfloor: %s\n", plan.outcome.message.c_str());
+        return kUnreachable;
+    }
+    BenchHost host(broker, true); // persistent: the broker keeps what arrives while it is away
+    if (!host.waitConnected(20)) return kFailure;
+    // Rounds of three runs - without the link, with it, with the broker lost - interleaved so
+    // that the machine's changing load falls on all three alike.
+    std::vector<CycleStats> alone, linked, lost;
+    std::vector<OutageTally> outages;
+    const int rounds = o.rounds.value_or(1);
+    for (int r = 1; r <= rounds; ++r) {
+        EngineRunSetup setup;
+        setup.command = "bench-shopfloor";
+        setup.realtime = true;
+        setup.quiet = true;
+        const EngineRunResult a = runOnEngine(job, module, plan, setup);
+        if (a.code != kOk) return a.code;
+        alone.push_back(a.cycles);
+        OutageTally ignored, tally;
+        const std::string round = std::to_string(r);
+        const EngineRunResult b =
+            linkedRun(job, module, plan, broker, host, "cell-link-" + round, 0, ignored);
+        if (b.code != kOk) return b.code;
+        linked.push_back(b.cycles);
+        const EngineRunResult c =
+            linkedRun(job, module, plan, broker, host, "cell-outage-" + round, a.wall_s / 3, tally);
+        if (c.code != kOk) return c.code;
+        lost.push_back(c.cycles);
+        outages.push_back(tally);
+        put(out, ("outage_" + round + "_s").c_str(), a.wall_s / 3);
+    }
+    putCycles(out, "without_link", alone);
+    putCycles(out, "with_link", linked);
+    putCycles(out, "broker_lost", lost);
+    for (std::size_t i = 0; i < outages.size(); ++i) {
+        const OutageTally& t = outages[i];
+        const std::string k = "outage_" + std::to_string(i + 1) + "_";
+        out.emplace_back(k + "broker_restarted", t.restarted ? 1.0 : 0.0);
+        out.emplace_back(k + "messages_stored", static_cast<double>(t.stored));
+        out.emplace_back(k + "messages_dropped", static_cast<double>(t.dropped));
+        out.emplace_back(k + "historical_received", static_cast<double>(t.historical));
+        out.emplace_back(k + "historical_out_of_order", static_cast<double>(t.out_of_order));
+        out.emplace_back(k + "seq_errors", static_cast<double>(t.seq_errors));
+        out.emplace_back(k + "sessions", static_cast<double>(t.sessions));
+    }
     return kOk;
 }
 

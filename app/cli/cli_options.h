@@ -74,12 +74,17 @@ struct TuneCommandOptions {
     double tau_c_ms = 0;
 };
 
-// cutcell-cli materials: the cut-chart table (the shipped one, or --file), listed or one row
-// picked for a process, material, consumable set and thickness.
+// cutcell-cli materials: the cut-chart table in use (the user's, else the shipped one; or
+// --file), listed or one row picked for a process, material, consumable set and thickness; or
+// one edit of it (--set, --add-row, --remove-row), written back atomically to the user's table
+// (or --file).
 struct MaterialsOptions {
     std::string file;
     bool json = false;
-    std::vector<std::string> pick; // PROCESS MATERIAL CONSUMABLE THICKNESS_MM
+    std::vector<std::string> pick;       // PROCESS MATERIAL CONSUMABLE THICKNESS_MM
+    std::vector<std::string> set;        // PROCESS MATERIAL CONSUMABLE THICKNESS_MM FIGURE VALUE
+    std::vector<std::string> add_row;    // PROCESS MATERIAL CONSUMABLE THICKNESS_MM FIGURE=VALUE...
+    std::vector<std::string> remove_row; // PROCESS MATERIAL CONSUMABLE THICKNESS_MM
 };
 
 // cutcell-cli shopfloor: the edge node headless (issue 26).
@@ -93,10 +98,11 @@ struct ShopfloorOptions {
 
 // cutcell-cli bench-shopfloor: the link's figures against a local broker (issue 26).
 struct BenchShopfloorOptions {
-    std::optional<int> cells; // simulated cells, each its own edge node (default 1)
-    double seconds = 30;      // the measuring window
-    bool outage = false;      // the engine's run with the broker killed and restarted instead
-    std::string job;          // --outage: the job run (default: the default job)
+    std::optional<int> cells;  // simulated cells, each its own edge node (default 1)
+    double seconds = 30;       // the measuring window
+    bool outage = false;       // the engine's run with the broker killed and restarted instead
+    std::optional<int> rounds; // --outage: rounds of the three runs, interleaved (default 1)
+    std::string job;           // --outage: the job run (default: the default job)
     bool json = false;
 };
 

@@ -209,18 +209,48 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     CLI::App* materials =
         add("materials",
             "the cut charts (process, material, consumable set: kerf, speed, heights, delays by "
-            "thickness) and where their figures come from; --pick one row",
+            "thickness) and where their figures come from; --pick one row; --set, --add-row, "
+            "--remove-row edit the user's table ($XDG_DATA_HOME/cutcell/cut_charts.json, "
+            "a copy of the shipped one at the first edit), which is used instead of the "
+            "shipped one when it exists",
             [&] { return runMaterials(o.materials); });
     materials
-        ->add_option("--file", o.materials.file, "a cut-chart table (default: the shipped one)")
+        ->add_option("--file", o.materials.file,
+                     "a cut-chart table to read or edit (default: the user's table when it "
+                     "exists, else the shipped one; edits go to the user's table)")
         ->type_name("FILE");
     materials->add_flag("--json", o.materials.json, "print as JSON");
-    materials
-        ->add_option("--pick", o.materials.pick,
-                     "the row for a thickness, interpolated between the chart's rows: PROCESS "
-                     "(plasma, oxy_fuel, laser) MATERIAL CONSUMABLE THICKNESS_MM")
-        ->expected(4)
-        ->type_name("P M C T");
+    CLI::Option* pick =
+        materials
+            ->add_option("--pick", o.materials.pick,
+                         "the row for a thickness, interpolated between the chart's rows: PROCESS "
+                         "(plasma, oxy_fuel, laser) MATERIAL CONSUMABLE THICKNESS_MM")
+            ->expected(4)
+            ->type_name("P M C T");
+    CLI::Option* setFigure =
+        materials
+            ->add_option("--set", o.materials.set,
+                         "set one figure of the row at THICKNESS_MM: PROCESS MATERIAL CONSUMABLE "
+                         "THICKNESS_MM FIGURE (kerf_mm, cut_speed_mm_min, ...) VALUE (C notation: "
+                         "2.5)")
+            ->expected(6)
+            ->type_name("P M C T F V");
+    CLI::Option* addRow =
+        materials
+            ->add_option("--add-row", o.materials.add_row,
+                         "add a row: PROCESS MATERIAL CONSUMABLE THICKNESS_MM and FIGURE=VALUE for "
+                         "every other column of the chart (cut_speed_mm_min=2500 ...)")
+            ->expected(5, -1)
+            ->type_name("P M C T F=V...");
+    CLI::Option* removeRow =
+        materials
+            ->add_option("--remove-row", o.materials.remove_row,
+                         "remove the row at THICKNESS_MM: PROCESS MATERIAL CONSUMABLE THICKNESS_MM")
+            ->expected(4)
+            ->type_name("P M C T");
+    setFigure->excludes(pick)->excludes(addRow)->excludes(removeRow);
+    addRow->excludes(pick)->excludes(removeRow);
+    removeRow->excludes(pick);
 
     CLI::App* upgrade = add("upgrade", "rewrite a schema-1 job file as schema 2",
                             [&] { return runUpgrade(o.upgrade); });
@@ -281,10 +311,10 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
     benchShopfloor->add_flag("--outage", o.bench_shopfloor.outage,
                              "run the job three times in real time: without the link, with it, "
                              "and with the broker killed a third in and back at two thirds");
+    addInteger(*benchShopfloor, "--rounds", o.bench_shopfloor.rounds, {1, 100, ""},
+               "--outage: rounds of the three runs, interleaved (default 1; medians printed)");
     benchShopfloor
-        ->add_option("--job", o.bench_shopfloor.job,
-                     "--outage: the job (default: the "
-                     "default job)")
+        ->add_option("--job", o.bench_shopfloor.job, "--outage: the job (default: the default job)")
         ->type_name("JOB");
     benchShopfloor->add_flag("--json", o.bench_shopfloor.json, "print the figures as JSON");
 

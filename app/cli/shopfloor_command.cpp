@@ -72,29 +72,6 @@ class HeadlessCell final : public shopfloor::ShopfloorCommandSink {
     std::atomic<bool> hold_{false};
 };
 
-// The run's figures from its report: the largest and the RMS joint error (deg on rotary axes,
-// mm on linear ones: the report's own keys say which).
-shopfloor::LastRunFigures figuresOf(const json::Value& report, double cycle_s) {
-    shopfloor::LastRunFigures f;
-    f.cycle_time_s = cycle_s;
-    f.outcome = "completed";
-    const json::Value* joints = report.find("joints");
-    if (!joints || !joints->isArray()) return f;
-    for (const json::Value& j : joints->asArray()) {
-        for (const char* unit : {"deg", "mm"}) {
-            const json::Value* mx = j.find(std::string("max_abs_error_") + unit);
-            const json::Value* rms = j.find(std::string("rms_error_") + unit);
-            if (!mx || !rms || !mx->isNumber() || !rms->isNumber()) continue;
-            if (mx->asNumber() > f.tracking_max) {
-                f.tracking_max = mx->asNumber();
-                f.error_unit = unit;
-            }
-            f.tracking_rms = std::max(f.tracking_rms, rms->asNumber());
-        }
-    }
-    return f;
-}
-
 } // namespace
 
 int runShopfloor(const ShopfloorOptions& o) {
@@ -175,7 +152,8 @@ int runShopfloor(const ShopfloorOptions& o) {
         snap.progress = code == kOk ? 1.0 : snap.progress;
         if (code == kOk) {
             const json::Value* sim = r.report.find("simulated_s");
-            snap.last_run = figuresOf(r.report, sim && sim->isNumber() ? sim->asNumber() : 0.0);
+            snap.last_run = shopfloor::lastRunFiguresOf(
+                r.report, sim && sim->isNumber() ? sim->asNumber() : 0.0, "completed");
             std::printf("%s\n", json::write(r.report).c_str());
         }
         publish();

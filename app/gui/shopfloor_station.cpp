@@ -1,16 +1,21 @@
 #include "shopfloor_station.h"
 
 #include "production_record.h"
+#include "shopfloor_settings.h"
+#include "station_access.h"
 
 #include "core/job/job_io.h"
 #include "core/machine/machine_registry.h"
 #include "core/process/consumable_counters.h"
+#include "core/shopfloor/telemetry_snapshot.h"
 #include "devices/shopfloor/mosquitto_link.h"
+#include "ui/access_control.h"
 #include "ui/engine_bridge.h"
 #include "ui/forms/job_editor.h"
 #include "ui/job_document.h"
 #include "ui/job_queue.h"
 #include "ui/main_window.h"
+#include "ui/panels/alarm_panel.h"
 #include "ui/panels/job_queue_panel.h"
 #include "ui/run_controller.h"
 
@@ -32,6 +37,7 @@ struct Shopfloor {
     StationCommands commands;
     std::unique_ptr<shopfloor::MosquittoLink> link;
     QPointer<CutCell::ui::MainWindow> window; // the window the commands act on
+    std::string given;                        // openShopfloor's argument ("", "off" or a file)
 };
 
 Shopfloor& station() {
@@ -47,29 +53,22 @@ std::string defaultConfigPath() {
 }
 
 // The window's state now, as the shop floor sees it.
-shopfloor::CellSnapshot snapshotOf(CutCell::ui::MainWindow& w) {
+} // namespace
+
+shopfloor::CellSnapshot stationSnapshot(CutCell::ui::MainWindow& w) {
     shopfloor::CellSnapshot s;
     const Job& job = w.editor()->job();
-    const MachineModule* module = findMachine(job.machine);
-    if (module) {
-        s.machine_id = module->id();
-        s.machine_name = module->title();
-    }
+    if (const MachineModule* module = findMachine(job.machine))
+        s = shopfloor::cellSnapshotOf(job, *module);
     s.job_name = job.name;
     CutCell::ui::EngineBridge* bridge = w.run()->bridge();
+    if (bridge->hasSample()) shopfloor::applyTelemetry(s, bridge->last());
     s.state = toString(bridge->state());
-    if (module)
-        for (const AxisInfo& a : module->axes(job))
-            s.axes.push_back({a.name, unitSymbol(a.unit), 0, 0});
-    if (bridge->hasSample()) {
-        const TelemetrySample& t = bridge->last();
-        s.progress = t.progress;
-        for (std::size_t i = 0; i < s.axes.size() && i < t.axis_count; ++i) {
-            const double k = t.units[i] == AxisUnit::Rotary ? 180.0 / kPi : 1.0;
-            s.axes[i].position = t.actual[static_cast<int>(i)] * k;
-            s.axes[i].following_error = t.error[static_cast<int>(i)] * k;
-        }
-    }
+    s.pieces_made = static_cast<std::uint64_t>(std::max(0, w.run()->partsCompleted()));
+    s.made = std::to_string(s.pieces_made) + " completed since the job was opened";
+    for (const CutCell::ui::Alarm& a : w.alarms()->alarms())
+        if (a.active) s.alarms.push_back((a.source + ": " + a.logged).toStdString());
+    s.last_run = lastRunFigures();
     s.queue_length = static_cast<std::uint32_t>(stationJobQueue()->size());
     if (job.process.used)
         if (ConsumableLedger* ledger = consumableLedger()) try {
@@ -81,6 +80,36 @@ shopfloor::CellSnapshot snapshotOf(CutCell::ui::MainWindow& w) {
                 // The record cannot be read now: the counters are left out, not guessed.
             }
     return s;
+}
+
+namespace {
+
+// The link closed and opened again as it was given (a saved file takes effect; "off" stays off).
+std::string restartShopfloor() {
+    closeShopfloor();
+    return openShopfloor(station().given);
+}
+
+// "Link settings…": allowed by the station's users (re-checked at each log-in and log-out),
+// opens the settings of the file the station uses.
+void wireLinkSettings(CutCell::ui::JobQueuePanel* panel, CutCell::ui::MainWindow& window) {
+    const auto recheck = [panel] {
+        const QString why = shopfloorSettingsLockReason(stationAccess());
+        panel->setSettingsAllowed(why.isEmpty(), why);
+    };
+    if (CutCell::ui::AccessControl* access = stationAccess())
+        QObject::connect(access, &CutCell::ui::AccessControl::changed, panel, recheck);
+    recheck();
+    QObject::connect(panel, &CutCell::ui::JobQueuePanel::settingsRequested, &window,
+                     [panel, &window] {
+                         if (!shopfloorSettingsLockReason(stationAccess()).isEmpty()) return;
+                         auto* dialog = new ShopfloorSettingsDialog(
+                             shopfloorSettingsPath(), stationAccess(), &restartShopfloor, &window);
+                         dialog->setAttribute(Qt::WA_DeleteOnClose);
+                         QObject::connect(dialog, &ShopfloorSettingsDialog::saved, panel,
+                                          &CutCell::ui::JobQueuePanel::setLinkText);
+                         dialog->open();
+                     });
 }
 
 } // namespace
@@ -126,6 +155,7 @@ void StationCommands::clearQueue() {
 std::string openShopfloor(const std::string& configPath) {
     Shopfloor& s = station();
     stationJobQueue(); // made on the GUI thread, before the link's thread can post to it
+    s.given = configPath;
     if (configPath == "off") return "shop floor: off (--shopfloor off)";
     const std::string path = configPath.empty() ? defaultConfigPath() : configPath;
     if (configPath.empty() && !std::filesystem::exists(path))
@@ -153,11 +183,17 @@ void closeShopfloor() {
     s.link.reset();
 }
 
+std::string shopfloorSettingsPath() {
+    const std::string& given = station().given;
+    return given.empty() || given == "off" ? defaultConfigPath() : given;
+}
+
 void attachShopfloor(CutCell::ui::MainWindow& window) {
     Shopfloor& s = station();
     s.window = &window;
     auto* panel = new CutCell::ui::JobQueuePanel(stationJobQueue(), window.document(), &window);
     window.addBottomTab(panel, CutCell::ui::JobQueuePanel::tr("Job queue"));
+    wireLinkSettings(panel, window);
     auto* linkLabel = new QLabel(&window);
     linkLabel->setObjectName("shopfloorLink");
     window.statusBar()->addPermanentWidget(linkLabel);
@@ -169,7 +205,7 @@ void attachShopfloor(CutCell::ui::MainWindow& window) {
             linkLabel->setText(CutCell::ui::JobQueuePanel::tr("Shop floor: off"));
             return;
         }
-        st.link->submit(snapshotOf(window)); // returns at once (the node diffs and queues)
+        st.link->submit(stationSnapshot(window)); // returns at once (the node diffs and queues)
         const QString text = CutCell::ui::JobQueuePanel::tr("Shop floor: %1")
                                  .arg(QString::fromStdString(st.link->status().text));
         linkLabel->setText(text);

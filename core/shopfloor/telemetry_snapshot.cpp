@@ -2,6 +2,10 @@
 
 #include "core/common/types.h"
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 namespace cutcell::shopfloor {
 
 CellSnapshot cellSnapshotOf(const Job& job, const MachineModule& module) {
@@ -24,6 +28,35 @@ void applyTelemetry(CellSnapshot& s, const TelemetrySample& t) {
         s.axes[i].position = t.actual[static_cast<int>(i)] * k;
         s.axes[i].following_error = t.error[static_cast<int>(i)] * k;
     }
+}
+
+LastRunFigures lastRunFiguresOf(const json::Value& tracking, double cycle_time_s,
+                                std::string outcome) {
+    LastRunFigures f;
+    f.cycle_time_s = cycle_time_s;
+    f.outcome = std::move(outcome);
+    const json::Value* joints = tracking.isObject() ? tracking.find("joints") : nullptr;
+    if (!joints || !joints->isArray()) return f;
+    struct AxisFigures {
+        std::string unit;
+        double max, rms;
+    };
+    std::vector<AxisFigures> axes;
+    for (const json::Value& j : joints->asArray())
+        for (const char* unit : {"deg", "mm"}) {
+            const json::Value* mx = j.find(std::string("max_abs_error_") + unit);
+            const json::Value* rms = j.find(std::string("rms_error_") + unit);
+            if (mx && rms && mx->isNumber() && rms->isNumber())
+                axes.push_back({unit, mx->asNumber(), rms->asNumber()});
+        }
+    for (const AxisFigures& a : axes)
+        if (f.error_unit.empty() || a.max > f.tracking_max) {
+            f.tracking_max = a.max;
+            f.error_unit = a.unit;
+        }
+    for (const AxisFigures& a : axes) // RMS of the same unit only (deg and mm do not compare)
+        if (a.unit == f.error_unit) f.tracking_rms = std::max(f.tracking_rms, a.rms);
+    return f;
 }
 
 } // namespace cutcell::shopfloor

@@ -4,6 +4,7 @@
 // made is the run model's to say (the engine counts path points on some machines, not pieces).
 // The station (GUI), `cutcell-cli shopfloor` and `bench-shopfloor` fill it the same way.
 #include "core/engine/engine_types.h"
+#include "core/json/json.h"
 #include "core/machine/machine_module.h"
 #include "core/shopfloor/cell_snapshot.h"
 
@@ -13,5 +14,11 @@ namespace cutcell::shopfloor {
 CellSnapshot cellSnapshotOf(const Job& job, const MachineModule& module);
 // What a telemetry sample says (axes beyond the snapshot's list are left out).
 void applyTelemetry(CellSnapshot& snapshot, const TelemetrySample& t);
+
+// A run's figures from its tracking report (a run report's top level, or summary.json's
+// "tracking"): the largest joint error over the axes and its unit (deg on rotary axes, mm on
+// linear ones, as the report's keys say), and the largest RMS among the axes of that unit.
+LastRunFigures lastRunFiguresOf(const json::Value& tracking, double cycle_time_s,
+                                std::string outcome);
 
 } // namespace cutcell::shopfloor

@@ -16,7 +16,8 @@ namespace CutCell::ui {
 JobQueuePanel::JobQueuePanel(JobQueue* queue, JobDocument* document, QWidget* parent)
     : QWidget(parent), queue_(queue), document_(document), link_(new QLabel(this)),
       table_(new QTableWidget(this)), open_(new QPushButton(tr("Open"), this)),
-      remove_(new QPushButton(tr("Remove"), this)), message_(new QLabel(this)) {
+      remove_(new QPushButton(tr("Remove"), this)),
+      settings_(new QPushButton(tr("Link settings…"), this)), message_(new QLabel(this)) {
     setObjectName("jobQueuePanel");
     auto* v = new QVBoxLayout(this);
     link_->setObjectName("jobQueueLink");
@@ -39,6 +40,8 @@ JobQueuePanel::JobQueuePanel(JobQueue* queue, JobDocument* document, QWidget* pa
     buttons->addWidget(open_);
     buttons->addWidget(remove_);
     buttons->addStretch(1);
+    settings_->setObjectName("jobQueueLinkSettings");
+    buttons->addWidget(settings_);
     v->addLayout(buttons);
     message_->setObjectName("jobQueueMessage");
     message_->setWordWrap(true);
@@ -51,11 +54,19 @@ JobQueuePanel::JobQueuePanel(JobQueue* queue, JobDocument* document, QWidget* pa
         if (!openQueued(table_->currentRow(), &why)) message_->setText(why);
     });
     connect(remove_, &QPushButton::clicked, this, [this] { queue_->remove(table_->currentRow()); });
+    connect(settings_, &QPushButton::clicked, this, &JobQueuePanel::settingsRequested);
     connect(table_, &QTableWidget::currentCellChanged, this, [this] {
         open_->setEnabled(table_->currentRow() >= 0);
         remove_->setEnabled(table_->currentRow() >= 0);
     });
+    setSettingsAllowed(true, {});
     refresh();
+}
+
+void JobQueuePanel::setSettingsAllowed(bool allowed, const QString& why) {
+    settings_->setEnabled(allowed);
+    settings_->setToolTip(allowed ? tr("The shop-floor link's broker, identity and TLS files")
+                                  : why);
 }
 
 void JobQueuePanel::setLinkText(const QString& text) {
