@@ -28,6 +28,14 @@ QString userLevelText(cutcell::UserLevel level) {
     return {};
 }
 
+namespace {
+AccessControl* g_current = nullptr;
+} // namespace
+
+AccessControl* AccessControl::current() {
+    return g_current;
+}
+
 AccessControl::AccessControl(cutcell::UserAuthenticator* users, cutcell::AuditSink* audit,
                              QString desktopUser, QObject* parent)
     : QObject(parent), users_(users), audit_(audit), desktopUser_(std::move(desktopUser)),
@@ -39,9 +47,11 @@ AccessControl::AccessControl(cutcell::UserAuthenticator* users, cutcell::AuditSi
             [this] { logOut(QStringLiteral("idle for %1 s").arg(idleTimeoutS_)); });
     if (QCoreApplication::instance()) QCoreApplication::instance()->installEventFilter(this);
     refreshUsers();
+    g_current = this;
 }
 
 AccessControl::~AccessControl() {
+    if (g_current == this) g_current = nullptr;
     if (QCoreApplication::instance()) QCoreApplication::instance()->removeEventFilter(this);
 }
 

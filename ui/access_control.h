@@ -32,6 +32,10 @@ class AccessControl : public QObject {
     AccessControl(cutcell::UserAuthenticator* users, cutcell::AuditSink* audit, QString desktopUser,
                   QObject* parent = nullptr);
     ~AccessControl() override;
+    // The station's access control: the one made last and still alive (null when there is none:
+    // no user levels, every edit allowed). For windows that are not given it (the cut-chart
+    // editor opened from a form).
+    static AccessControl* current();
 
     bool singleUser() const;
     bool loggedIn() const { return level_.has_value(); }

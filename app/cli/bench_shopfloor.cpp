@@ -28,6 +28,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <ctime>
 #include <map>
@@ -384,11 +385,53 @@ struct OutageTally {
     bool restarted = true;
 };
 
+// Kills and restarts the broker on a thread of its own that lives as long as the benchmark: the
+// broker's death signal follows the thread that started it (local_broker.h), so a restart made
+// by a short-lived thread would end with that thread.
+class BrokerKeeper {
+  public:
+    explicit BrokerKeeper(shopfloor::LocalBroker& broker)
+        : broker_(broker), thread_([this] { serve(); }) {}
+    ~BrokerKeeper() {
+        ask(Quit);
+        thread_.join();
+    }
+    void kill() { ask(Kill); }
+    bool restart() { return ask(Restart); }
+
+  private:
+    enum Request { None, Kill, Restart, Quit };
+    bool ask(Request r) {
+        std::unique_lock lock(mutex_);
+        request_ = r;
+        wake_.notify_all();
+        wake_.wait(lock, [this] { return request_ == None || request_ == Quit; });
+        return ok_;
+    }
+    void serve() {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [this] { return request_ != None; });
+            if (request_ == Quit) return;
+            if (request_ == Kill) broker_.stop(false);
+            if (request_ == Restart) ok_ = broker_.restart();
+            request_ = None;
+            wake_.notify_all();
+        }
+    }
+    shopfloor::LocalBroker& broker_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    Request request_ = None;
+    bool ok_ = true;
+    std::thread thread_;
+};
+
 // One run of the job with a link of its own (edge node `edge`); with `outage_s` > 0 the broker is
 // killed that long into the run and started again as long after.
 EngineRunResult linkedRun(const Job& job, const MachineModule& module, const MachinePlan& plan,
-                          shopfloor::LocalBroker& broker, BenchHost& host, const std::string& edge,
-                          double outage_s, OutageTally& tally) {
+                          shopfloor::LocalBroker& broker, BrokerKeeper& keeper, BenchHost& host,
+                          const std::string& edge, double outage_s, OutageTally& tally) {
     shopfloor::MosquittoLinkOptions options = quietLink();
     options.log = [](const std::string& line) { // a few lines: the link's sessions
         std::fprintf(stderr, "bench-shopfloor: link: %s\n", line.c_str());
@@ -413,26 +456,18 @@ EngineRunResult linkedRun(const Job& job, const MachineModule& module, const Mac
         link.submit(snap);
         tally.stored = std::max(tally.stored, link.stats().queued);
     };
-    // The thread that starts the broker again must outlive it (its death signal follows that
-    // thread): it waits for `done` before it ends.
-    std::atomic<bool> restarted{outage_s <= 0}, done{false};
+    std::atomic<bool> restarted{outage_s <= 0};
     std::thread outage([&] {
         if (outage_s <= 0) return;
         std::this_thread::sleep_for(std::chrono::duration<double>(outage_s));
-        broker.stop(false);
+        keeper.kill();
         std::this_thread::sleep_for(std::chrono::duration<double>(outage_s));
-        restarted = broker.restart();
-        while (!done)
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        restarted = keeper.restart();
     });
     struct JoinAtEnd {
-        std::atomic<bool>& done;
         std::thread& thread;
-        ~JoinAtEnd() {
-            done = true;
-            thread.join();
-        }
-    } join_at_end{done, outage};
+        ~JoinAtEnd() { thread.join(); }
+    } join_at_end{outage};
     const EngineRunResult run = runOnEngine(job, module, plan, setup);
     for (int i = 0; i < 1200 && !restarted; ++i) // the run may end before the broker is back
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -471,6 +506,7 @@ int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, 
     }
     BenchHost host(broker, true); // persistent: the broker keeps what arrives while it is away
     if (!host.waitConnected(20)) return kFailure;
+    BrokerKeeper keeper(broker);
     // Rounds of three runs - without the link, with it, with the broker lost - interleaved so
     // that the machine's changing load falls on all three alike.
     std::vector<CycleStats> alone, linked, lost;
@@ -487,11 +523,11 @@ int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, 
         OutageTally ignored, tally;
         const std::string round = std::to_string(r);
         const EngineRunResult b =
-            linkedRun(job, module, plan, broker, host, "cell-link-" + round, 0, ignored);
+            linkedRun(job, module, plan, broker, keeper, host, "cell-link-" + round, 0, ignored);
         if (b.code != kOk) return b.code;
         linked.push_back(b.cycles);
-        const EngineRunResult c =
-            linkedRun(job, module, plan, broker, host, "cell-outage-" + round, a.wall_s / 3, tally);
+        const EngineRunResult c = linkedRun(job, module, plan, broker, keeper, host,
+                                            "cell-outage-" + round, a.wall_s / 3, tally);
         if (c.code != kOk) return c.code;
         lost.push_back(c.cycles);
         outages.push_back(tally);

@@ -4,12 +4,25 @@
 #include "core/job/job_io.h"
 #include "core/json/json.h"
 #include "core/machine/machine_registry.h"
+#include "core/process/cut_chart_library.h"
+#include "core/process/process_spec.h"
 
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 namespace cutcell::cli {
+
+void installUserCutCharts() {
+    try {
+        CutChartsInUse inUse = loadCutChartsInUse(defaultDataHome());
+        if (inUse.user) setActiveCutCharts(std::move(inUse.set));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr,
+                     "cutcell-cli: the user's cut charts are not used (the shipped ones are): %s\n",
+                     e.what());
+    }
+}
 
 bool loadJobArg(const std::string& file, Job& job, int* code) {
     try {

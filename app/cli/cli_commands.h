@@ -39,6 +39,11 @@ int runAudit(const AuditOptions& o);     // users_command.cpp (needs CutCell::de
 int runSimulateCan(const Job& job, const MachineModule& module, const MachinePlan& plan,
                    const SimulateOptions& o); // can_run.cpp
 
+// The user's cut-chart table ($XDG_DATA_HOME/cutcell/cut_charts.json) becomes the one every job
+// is planned with, as in the GUI; one that cannot be used is said on stderr and the shipped
+// table stays in use.
+void installUserCutCharts();
+
 // Loads the job file; on failure prints the reason and sets *code (kInvalidJob: a bad job
 // file, kFailure: it cannot be read).
 bool loadJobArg(const std::string& file, Job& job, int* code);

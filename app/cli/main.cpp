@@ -476,6 +476,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return usageError(app, e);
     }
+    installUserCutCharts();
     for (const Command& c : commands)
         if (c.cmd->parsed()) return c.run();
     return kUsage;

@@ -2,9 +2,12 @@
 #include "gui_run.h"
 #include "production_record.h"
 #include "shopfloor_station.h"
+
+#include "core/process/cut_chart_library.h"
 #include "sim_rig.h"
 #include "station_access.h"
 #include "ui/access_control.h"
+#include "ui/panels/cut_charts_dialog.h"
 
 #include "devices/process/safe_shutdown.h"
 #include "ui/forms/parameter_tabs.h"
@@ -73,6 +76,10 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("CutCell"));
     QApplication::setApplicationName(QStringLiteral("cutcell"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    // The user's cut-chart table before any job is read (a job's cut speed comes from it).
+    if (const QString why = CutCell::ui::installCutChartsInUse(cutcell::defaultDataHome());
+        !why.isEmpty())
+        std::fprintf(stderr, "cutcell: the user's cut charts are not used: %s\n", qPrintable(why));
 
     QCommandLineParser cli;
     cli.setApplicationDescription(

@@ -15,12 +15,18 @@ constexpr double kMaxHalfKerfOverCurvature = 0.5; // k/2 <= 0.5 / curvature towa
 constexpr double kMinTorchTangentDeg = 10;        // torch axis vs tangent
 constexpr double kMinCutToSurfaceDeg = 1;         // cut surface vs pipe surface
 
-Outcome checkKerf(double kerf_mm, double radius_mm) {
+// The kerf as a number: finite and >= 0 mm.
+Outcome checkKerfValue(double kerf_mm) {
     if (!std::isfinite(kerf_mm))
         return Outcome::refuse(messageC("the kerf %.6g mm is not a finite number", kerf_mm));
     if (kerf_mm < 0)
         return Outcome::refuse(
             messageC("the kerf %.6g mm is negative: it must be 0 mm or more", kerf_mm));
+    return Outcome::done();
+}
+
+Outcome checkKerf(double kerf_mm, double radius_mm) {
+    if (Outcome o = checkKerfValue(kerf_mm); !o.ok()) return o;
     const double limit = 2 * kMaxHalfKerfOverRadius * radius_mm;
     if (kerf_mm > limit)
         return Outcome::refuse(messageC("the kerf %.6g mm is too wide for a pipe of radius %.6g "
@@ -46,6 +52,21 @@ std::optional<double> surfaceCrossing(const PipeSurface& c, const Vec3& x0, cons
     return std::fabs(s1) < std::fabs(s2) ? s1 : s2;
 }
 
+// The cut surface's unit normal *n (the plane of the unit edge tangent t and the torch axis d),
+// or the refusal when the torch is too close to the tangent to make a surface.
+Outcome cutSurfaceNormal(const Vec3& t, const Vec3& dIn, Vec3* n) {
+    const Vec3 txd = t.cross(dIn.normalized());
+    // |t x d| = sin of the angle between them (NaN for a zero vector: refused as well).
+    const double sinTd = txd.norm();
+    if (!(sinTd >= std::sin(deg2rad(kMinTorchTangentDeg))))
+        return Outcome::refuse(messageC("the torch axis is %.6g deg from the edge's tangent: "
+                                        "at least %.6g deg is needed for a cut surface",
+                                        rad2deg(std::asin(std::min(1.0, sinTd))),
+                                        kMinTorchTangentDeg));
+    *n = txd / sinTd;
+    return {};
+}
+
 // Offset p by `across` (signed, along n toward scrap) within p's cross-section plane, onto the
 // surface. The one construction for both directions.
 KerfPoint shift(const PipeSurface& pipe, const Vec3& p, const Vec3& tIn, const Vec3& dIn,
@@ -53,16 +74,9 @@ KerfPoint shift(const PipeSurface& pipe, const Vec3& p, const Vec3& tIn, const V
     KerfPoint r;
     r.outcome = checkKerf(kerf_mm, pipe.radius_mm);
     if (!r.outcome.ok()) return r;
-    const Vec3 t = tIn.normalized(), d = dIn.normalized();
-    const Vec3 txd = t.cross(d);
-    // |t x d| = sin of the angle between them (NaN for a zero vector: refused as well).
-    const double sinTd = txd.norm();
-    if (!(sinTd >= std::sin(deg2rad(kMinTorchTangentDeg))))
-        return {Outcome::refuse(messageC("the torch axis is %.6g deg from the edge's tangent: "
-                                         "at least %.6g deg is needed for a cut surface",
-                                         rad2deg(std::asin(std::min(1.0, sinTd))),
-                                         kMinTorchTangentDeg))};
-    Vec3 n = txd / sinTd;
+    const Vec3 t = tIn.normalized();
+    Vec3 n;
+    if (Outcome o = cutSurfaceNormal(t, dIn, &n); !o.ok()) return {o};
     // The pipe's outward normal at p and the across direction on the surface toward scrap;
     // n . across = sin of the angle between the cut surface and the pipe surface.
     const Vec3 w = p - pipe.axis_point;
@@ -83,6 +97,39 @@ KerfPoint shift(const PipeSurface& pipe, const Vec3& p, const Vec3& tIn, const V
                                          "surface of radius %.6g mm",
                                          kerf_mm / 2, pipe.radius_mm))};
     r.point = x0 + *s * m;
+    r.across = n;
+    r.along_surface_mm = (r.point - p).norm();
+    return r;
+}
+
+constexpr double kMaxCutNormalToLinesDeg = 80; // prism: n . lines >= cos 80 deg (header)
+
+// offsetOnPrism / edgeOnPrism: the point moved by sign k/2 across the cut surface along the lines.
+KerfPoint shiftOnPrism(const Vec3& p, const Vec3& tIn, const Vec3& dIn, const Vec3& linesIn,
+                       const Vec3& towardScrap, double kerf_mm, double sign) {
+    KerfPoint r;
+    r.outcome = checkKerfValue(kerf_mm);
+    if (!r.outcome.ok()) return r;
+    const Vec3 t = tIn.normalized(), lines = linesIn.normalized();
+    Vec3 n;
+    if (Outcome o = cutSurfaceNormal(t, dIn, &n); !o.ok()) return {o};
+    const double side = n.dot(towardScrap.normalized());
+    if (!(std::fabs(side) >= std::sin(deg2rad(kMinCutToSurfaceDeg))))
+        return {Outcome::refuse(messageC("the cut surface is %.6g deg from the direction of the "
+                                         "scrap side: at least %.6g deg is needed to tell its "
+                                         "sides",
+                                         rad2deg(std::asin(std::min(1.0, std::fabs(side)))),
+                                         kMinCutToSurfaceDeg))};
+    if (side < 0) n = -n;
+    const double across = n.dot(lines);
+    if (!(std::fabs(across) >= std::cos(deg2rad(kMaxCutNormalToLinesDeg))))
+        return {Outcome::refuse(messageC("the cut surface's normal is %.6g deg from the surface's "
+                                         "lines (the bar axis): at most %.6g deg, else the torch "
+                                         "runs more than %.3g x k/2 along them",
+                                         rad2deg(std::acos(std::min(1.0, std::fabs(across)))),
+                                         kMaxCutNormalToLinesDeg,
+                                         1 / std::cos(deg2rad(kMaxCutNormalToLinesDeg))))};
+    r.point = p + sign * kerf_mm / 2 / across * lines;
     r.across = n;
     r.along_surface_mm = (r.point - p).norm();
     return r;
@@ -153,6 +200,16 @@ KerfPoint offsetEdgePoint(const PipeSurface& pipe, const Vec3& p, const Vec3& t,
 KerfPoint edgeFromTorchPoint(const PipeSurface& pipe, const Vec3& q, const Vec3& t, const Vec3& d,
                              ScrapSide scrap, double kerf_mm) {
     return shift(pipe, q, t, d, scrap, kerf_mm, -1);
+}
+
+KerfPoint offsetOnPrism(const Vec3& p, const Vec3& t, const Vec3& d, const Vec3& lines,
+                        const Vec3& towardScrap, double kerf_mm) {
+    return shiftOnPrism(p, t, d, lines, towardScrap, kerf_mm, +1);
+}
+
+KerfPoint edgeOnPrism(const Vec3& q, const Vec3& t, const Vec3& d, const Vec3& lines,
+                      const Vec3& towardScrap, double kerf_mm) {
+    return shiftOnPrism(q, t, d, lines, towardScrap, kerf_mm, -1);
 }
 
 KerfPath offsetCutPath(const KerfPathSpec& spec, const std::vector<CutPoint>& edge,

@@ -94,6 +94,32 @@ KerfPoint offsetCutPoint(const KerfPathSpec& spec, CutPoint& point, double kerf_
 KerfPath edgeFromTorchPath(const KerfPathSpec& spec, const std::vector<CutPoint>& torch,
                            double kerf_mm);
 
+// Kerf on a prism (the section steel's end cut): a surface made of straight lines parallel to
+// the unit vector `lines` - a section's faces, root fillets, toe radii and corners all run along
+// the bar. The cut surface at the edge point p is again the plane spanned by the edge's tangent t
+// and the torch axis d, its unit normal n turned toward `toward_scrap`. The torch centre moves
+// along the prism's line through p: q = p + (k/2) / (n . lines) lines, so that
+// - q lies on the prism exactly, whatever its cross-section there (flat face, fillet of any
+//   radius, the corner the torch turns about): no radius limit, no first-order step;
+// - (q - p) . n = k/2, and the torch axis through q (d . n = 0) lies in the plane k/2 off the cut
+//   surface at every depth: where the cut surface is a plane (a square or mitred cut, a bevel of
+//   constant angle) the slot's near face is that plane.
+// Along the prism |q - p| = (k/2) / (n . lines): for a square cut k/2, for a bevel beta on a
+// square end (k/2) / cos(beta), the "bevel taken into account".
+// The move has a component along the edge where the cut surface is not square to the lines (a
+// mitre): it stays in the offset plane, so a planar pass stays planar (its arm's plane moves by
+// (k/2) / (m . lines) along the lines, m the plane's normal).
+// Limits (refused with an Outcome naming value, unit and limit): k finite and >= 0 mm; the torch
+// axis at least 10 deg from the tangent (as on a pipe); the cut surface's normal within 80 deg of
+// the lines (n . lines >= cos 80 deg: else the torch would run more than 2.9 k along the bar
+// for k/2 across, and the lines nearly lie in the cut surface); the cut surface at least 1 deg
+// from `toward_scrap`'s normal plane (else it has no scrap side).
+KerfPoint offsetOnPrism(const Vec3& p, const Vec3& t, const Vec3& d, const Vec3& lines,
+                        const Vec3& toward_scrap, double kerf_mm);
+// Edge point for the torch centre q made by offsetOnPrism, with the same t, d, lines and side.
+KerfPoint edgeOnPrism(const Vec3& q, const Vec3& t, const Vec3& d, const Vec3& lines,
+                      const Vec3& toward_scrap, double kerf_mm);
+
 // The spec for a job's cut. Scrap is what lies inside the other pipe (hole: inside the branch
 // bore; branch end: the off-cut inside the main pipe): the side toward the other pipe's axis,
 // summed over the cut so that near-tangent stretches do not decide it.

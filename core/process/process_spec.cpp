@@ -4,12 +4,23 @@
 
 #include <cmath>
 #include <memory>
+#include <mutex>
+#include <vector>
 
 namespace cutcell {
 namespace {
 
-std::shared_ptr<const CutChartSet>& activeSlot() {
-    static std::shared_ptr<const CutChartSet> slot;
+// The installed library and every one it replaced: a reference handed out by
+// activeCutCharts() (a plan on the worker thread) stays valid when the GUI's editor installs a
+// new table; a replaced table is a few kilobytes and is kept until the program ends.
+struct ActiveSlot {
+    std::mutex mutex;
+    std::shared_ptr<const CutChartSet> now;
+    std::vector<std::shared_ptr<const CutChartSet>> replaced;
+};
+
+ActiveSlot& activeSlot() {
+    static ActiveSlot slot;
     return slot;
 }
 
@@ -29,13 +40,18 @@ std::string overrideProblem(CutFigure f, double v) {
 } // namespace
 
 const CutChartSet& activeCutCharts() {
-    const auto& slot = activeSlot();
-    return slot ? *slot : shippedCutCharts();
+    ActiveSlot& slot = activeSlot();
+    const std::lock_guard lock(slot.mutex);
+    return slot.now ? *slot.now : shippedCutCharts();
 }
 
 void setActiveCutCharts(CutChartSet set) {
     checkCutCharts(set);
-    activeSlot() = std::make_shared<const CutChartSet>(std::move(set));
+    auto next = std::make_shared<const CutChartSet>(std::move(set));
+    ActiveSlot& slot = activeSlot();
+    const std::lock_guard lock(slot.mutex);
+    if (slot.now) slot.replaced.push_back(std::move(slot.now));
+    slot.now = std::move(next);
 }
 
 void readProcess(SectionReader& section, ProcessSpec& spec) {

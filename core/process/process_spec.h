@@ -46,8 +46,10 @@ struct ProcessSettings {
 };
 
 const CutChartSet& activeCutCharts();
-// Installs a library (the user's) for every later resolution; checked first (CutChartError).
-// Call at start-up, before jobs are read: readers hold no lock.
+// Installs a library (the user's: cut_chart_library.h) for every later resolution; checked
+// first (CutChartError). At start-up, and again when the editor saved the user's table: a
+// reference from activeCutCharts() stays valid (a plan on another thread may hold one); the
+// forms show the new table when they are next reloaded.
 void setActiveCutCharts(CutChartSet set);
 
 // Reads the optional "process" member of a machine section (unknown keys refused, overrides in

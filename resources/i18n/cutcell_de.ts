@@ -1289,7 +1289,27 @@
         <translation>tracking.amplitude_m = %.6g m um tracking.offset_m = %.6g m: die Führungsgröße überstreicht [%.6g, %.6g] m; sie muss innerhalb des Hubs (%.4f, %.4f) m bleiben</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+9"/>
+        <source>pass %s (%s, s = %.1f mm%s)</source>
+        <translation>Durchgang %s (%s, s = %.1f mm%s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at %s: %s</source>
+        <translation>bei %s: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the kerf %.6g mm is too wide for the %s bevel of %s (%s.angle_deg = %.6g deg) at %s: the bevel takes a strip %.6g mm wide off the face (along the bar), and the torch centre, k/2 across the bevel surface, would run %.6g mm into it - beyond the bar&apos;s end; the kerf may be at most %.6g mm here (k &lt;= 2 x strip x cos of the bevel surface to the bar)</source>
+        <translation>die Schnittfuge %.6g mm ist zu breit für die %s-Fase von %s (%s.angle_deg = %.6g deg) bei %s: die Fase nimmt einen Streifen von %.6g mm von der Fläche (längs des Stabs), und die Brennermitte, k/2 quer zur Fasenfläche, liefe %.6g mm hinein - über das Stabende hinaus; die Schnittfuge darf hier höchstens %.6g mm sein (k &lt;= 2 x Streifen x cos der Fasenfläche zum Stab)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>process.override.cut_speed_mm_min = %.6g mm/min is not used by the section-steel cutter: it cuts at motion.speed_mm_s = %.6g mm/s (its process section gives the kerf); set the speed there</source>
+        <translation>process.override.cut_speed_mm_min = %.6g mm/min wird von der Profilstahl-Schneidanlage nicht verwendet: sie schneidet mit motion.speed_mm_s = %.6g mm/s (ihr Prozessabschnitt gibt die Schnittfuge); die Geschwindigkeit dort einstellen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%s has %zu bytes: at most %d</source>
         <translation>%s hat %zu Bytes: höchstens %d</translation>
     </message>
@@ -1327,6 +1347,16 @@
         <location line="+1"/>
         <source>the torch line %.6g mm off the edge misses the pipe surface of radius %.6g mm</source>
         <translation>die Brennerlinie %.6g mm neben der Kante verfehlt die Rohroberfläche mit Radius %.6g mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cut surface is %.6g deg from the direction of the scrap side: at least %.6g deg is needed to tell its sides</source>
+        <translation>die Schnittfläche liegt %.6g deg von der Richtung der Restseite: mindestens %.6g deg sind nötig, um ihre Seiten zu unterscheiden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the cut surface&apos;s normal is %.6g deg from the surface&apos;s lines (the bar axis): at most %.6g deg, else the torch runs more than %.3g x k/2 along them</source>
+        <translation>die Normale der Schnittfläche liegt %.6g deg von den Mantellinien (der Stabachse): höchstens %.6g deg, sonst läuft der Brenner mehr als %.3g x k/2 entlang</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2355,7 +2385,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-290"/>
+        <location line="-296"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2535,7 +2565,7 @@
         <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>%s.%s = %.6g mm is outside [%.6g, %.6g] mm</source>
         <translation>%s.%s = %.6g mm liegt außerhalb von [%.6g, %.6g] mm</translation>
     </message>
@@ -2560,7 +2590,7 @@
         <translation>%s.r_mm = %.6g mm passt nicht auf den senkrechten Schenkel (%.6g mm)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%s (and %zu more points)</source>
         <translation>%s (und %zu weitere Punkte)</translation>
     </message>
@@ -2645,7 +2675,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-92"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2665,7 +2695,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+110"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -2738,7 +2768,7 @@
         <translation>Administrator</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+81"/>
         <source>The user list cannot be read (%1): the fields stay locked</source>
         <translation>Die Benutzerliste kann nicht gelesen werden (%1): die Felder bleiben gesperrt</translation>
     </message>
@@ -3446,6 +3476,106 @@ entriegeln</translation>
         <location line="+1"/>
         <source>SIMC gains written (%1): tau_c = theta = %2 ms, gain margin %3 or more.</source>
         <translation>SIMC-Verstärkungen eingetragen (%1): tau_c = theta = %2 ms, Amplitudenreserve %3 oder mehr.</translation>
+    </message>
+</context>
+<context>
+    <name>CutCell::ui::CutChartsDialog</name>
+    <message>
+        <location filename="../../ui/panels/cut_charts_dialog.cpp" line="+53"/>
+        <source>Log in to edit the cut charts (needs the %1 level).</source>
+        <translation>Zum Bearbeiten der Schneidtabellen anmelden (erfordert die Stufe %1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Editing the cut charts needs the %1 level (%2 is logged in as %3).</source>
+        <translation>Das Bearbeiten der Schneidtabellen erfordert die Stufe %1 (%2 ist als %3 angemeldet).</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Add row</source>
+        <translation>Zeile hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove row</source>
+        <translation>Zeile entfernen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+359"/>
+        <source>Cut charts</source>
+        <translation>Schneidtabellen</translation>
+    </message>
+    <message>
+        <location line="-355"/>
+        <location line="+345"/>
+        <source>The user&apos;s table: %1</source>
+        <translation>Die Tabelle des Benutzers: %1</translation>
+    </message>
+    <message>
+        <location line="-344"/>
+        <source>The shipped table (a save writes the user&apos;s table %1, used from then on).</source>
+        <translation>Die mitgelieferte Tabelle (Speichern schreibt die Tabelle des Benutzers %1, die ab dann gilt).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The user&apos;s table %1 cannot be read (%2); fix or remove it. The shipped table is shown.</source>
+        <translation>Die Tabelle des Benutzers %1 ist nicht lesbar (%2); korrigieren oder entfernen. Angezeigt wird die mitgelieferte Tabelle.</translation>
+    </message>
+    <message>
+        <location line="+174"/>
+        <source>Source: %1</source>
+        <translation>Quelle: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No chart for this choice.</source>
+        <translation>Keine Schneidtabelle für diese Auswahl.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Read-only: %1</source>
+        <translation>Nur lesen: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Changed; Save writes the user&apos;s table.</source>
+        <translation>Geändert; Speichern schreibt die Tabelle des Benutzers.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 = &apos;%2&apos; is not a number of %3%4</source>
+        <translation>%1 = &apos;%2&apos; ist keine Zahl in %3%4</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>Select the row to remove.</source>
+        <translation>Die zu entfernende Zeile auswählen.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Saved to %1.</source>
+        <translation>Gespeichert in %1.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The cut charts have unsaved changes. Save them?</source>
+        <translation>Die Schneidtabellen haben ungespeicherte Änderungen. Speichern?</translation>
     </message>
 </context>
 <context>
@@ -4414,6 +4544,11 @@ entriegeln</translation>
         <translation>Entfernen</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Link settings…</source>
+        <translation>Verbindung einstellen…</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Job</source>
         <translation>Auftrag</translation>
@@ -4439,12 +4574,17 @@ entriegeln</translation>
         <translation>Den gewählten Auftrag zum bearbeiteten machen; prüfen und Start drücken.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Shop floor: off (no configuration; cutcell --shopfloor FILE)</source>
         <translation>Fertigungsleitebene: aus (keine Konfiguration; cutcell --shopfloor DATEI)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
+        <source>The shop-floor link&apos;s broker, identity and TLS files</source>
+        <translation>Broker, Kennung und TLS-Dateien der Werkstattverbindung</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Select a queued job first.</source>
         <translation>Zuerst einen Auftrag in der Warteschlange wählen.</translation>
     </message>
@@ -4459,12 +4599,12 @@ entriegeln</translation>
         <translation>&apos;%1&apos; von %2 geöffnet: prüfen, dann Start drücken.</translation>
     </message>
     <message>
-        <location filename="../../app/gui/shopfloor_station.cpp" line="+160"/>
+        <location filename="../../app/gui/shopfloor_station.cpp" line="+195"/>
         <source>Job queue</source>
         <translation>Auftragswarteschlange</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Shop floor: off</source>
         <translation>Fertigungsleitebene: aus</translation>
     </message>
@@ -5138,7 +5278,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ProcessForm</name>
     <message>
-        <location filename="../../ui/forms/process_form.cpp" line="+31"/>
+        <location filename="../../ui/forms/process_form.cpp" line="+40"/>
         <source>Plasma</source>
         <translation>Plasma</translation>
     </message>
@@ -5153,13 +5293,13 @@ entriegeln</translation>
         <translation>Laser</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+66"/>
+        <location line="+15"/>
+        <location line="+79"/>
         <source>Thickness</source>
         <translation>Dicke</translation>
     </message>
     <message>
-        <location line="-64"/>
+        <location line="-77"/>
         <source>Kerf width</source>
         <translation>Schnittfugenbreite</translation>
     </message>
@@ -5194,7 +5334,7 @@ entriegeln</translation>
         <translation>Vorwärmen</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>Cut chart</source>
         <translation>Schneidtabelle</translation>
     </message>
@@ -5204,22 +5344,35 @@ entriegeln</translation>
         <translation>Schneidtabelle verwenden</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Cut charts…</source>
+        <translation>Schneidtabellen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View and edit the cut-chart library (the user&apos;s table; the setter level and above may edit it).</source>
+        <translation>Schneidtabellen ansehen und bearbeiten (die Tabelle des Benutzers; bearbeiten ab der Stufe Einrichter).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Process data</source>
         <translation>Prozessdaten</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../../ui/panels/cut_charts_dialog.cpp" line="-306"/>
         <source>Process</source>
         <translation>Prozess</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../../ui/panels/cut_charts_dialog.cpp" line="+1"/>
         <source>Material</source>
         <translation>Werkstoff</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../../ui/panels/cut_charts_dialog.cpp" line="+1"/>
         <source>Consumable set</source>
         <translation>Verschleißteilsatz</translation>
     </message>
@@ -5259,7 +5412,7 @@ entriegeln</translation>
         <translation>Verwendet</translation>
     </message>
     <message>
-        <location line="+191"/>
+        <location line="+202"/>
         <source>not in the chart</source>
         <translation>nicht in der Tabelle</translation>
     </message>
@@ -5318,6 +5471,11 @@ entriegeln</translation>
         <location line="+2"/>
         <source>No kerf width: the torch runs on the part&apos;s edge (tick Override on Kerf width to compensate).</source>
         <translation>Keine Schnittfugenbreite: der Brenner fährt auf der Werkstückkante (bei Schnittfugenbreite Abweichend ankreuzen, um zu korrigieren).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The user&apos;s cut charts are not used: %1</source>
+        <translation>Die Schneidtabellen des Benutzers werden nicht verwendet: %1</translation>
     </message>
 </context>
 <context>
@@ -6939,7 +7097,7 @@ letzte %1 s</translation>
         <translation>gegangen</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="+215"/>
+        <location filename="../../app/gui/main.cpp" line="+222"/>
         <source>Cannot open the job</source>
         <translation>Auftrag kann nicht geöffnet werden</translation>
     </message>
@@ -7908,6 +8066,146 @@ letzte %1 s</translation>
         <location line="+1"/>
         <source>strokes</source>
         <translation>Hübe</translation>
+    </message>
+</context>
+<context>
+    <name>cutcell::app::ShopfloorSettingsDialog</name>
+    <message>
+        <location filename="../../app/gui/shopfloor_settings.cpp" line="+69"/>
+        <source>Log in to change the shop-floor link&apos;s settings (needs the %1 level)</source>
+        <translation>Zum Ändern der Werkstattverbindung anmelden (erfordert die Stufe %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The shop-floor link&apos;s settings need the %1 level (%2 is logged in as %3)</source>
+        <translation>Die Einstellungen der Werkstattverbindung erfordern die Stufe %1 (%2 ist als %3 angemeldet)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Link on: publish the cell&apos;s state, take jobs from the network</source>
+        <translation>Verbindung an: Zustand der Zelle veröffentlichen, Aufträge aus dem Netz annehmen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Shop-floor link</source>
+        <translation>Werkstattverbindung</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Key in the file: %1</source>
+        <translation>Schlüssel in der Datei: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>messages</source>
+        <translation>Nachrichten</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Broker host</source>
+        <translation>Broker-Rechner</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Broker port</source>
+        <translation>Broker-Port</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sparkplug group id</source>
+        <translation>Sparkplug-Gruppenkennung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edge node id (this cell)</source>
+        <translation>Edge-Node-Kennung (diese Zelle)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>User name</source>
+        <translation>Benutzername</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Password file</source>
+        <translation>Passwortdatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CA certificate file</source>
+        <translation>CA-Zertifikatsdatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Client certificate file</source>
+        <translation>Client-Zertifikatsdatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Client key file</source>
+        <translation>Client-Schlüsseldatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Axis positions rate</source>
+        <translation>Rate der Achspositionen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Store-and-forward capacity</source>
+        <translation>Zwischenspeicher (Store and Forward)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep-alive</source>
+        <translation>Keep-alive</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The password itself is never stored here: the password file&apos;s first line is the password (readable by its owner only, chmod 600). Relative file names are read from the folder of %1.</source>
+        <translation>Das Passwort selbst wird hier nie gespeichert: Die erste Zeile der Passwortdatei ist das Passwort (nur für ihren Besitzer lesbar, chmod 600). Relative Dateinamen gelten im Ordner von %1.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check, write %1 and restart the link with it</source>
+        <translation>Prüfen, %1 schreiben und die Verbindung damit neu starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The file cannot be read (%1): the fields show the defaults; Save replaces it.</source>
+        <translation>Die Datei ist nicht lesbar (%1): Die Felder zeigen die Vorgaben; Speichern ersetzt sie.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the file</source>
+        <translation>Datei wählen</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <location line="+7"/>
+        <location line="+18"/>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Saved to %1. %2</source>
+        <translation>Gespeichert in %1. %2</translation>
     </message>
 </context>
 <context>

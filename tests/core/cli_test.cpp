@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -405,4 +406,109 @@ TEST(Cli, MaterialsListsTheChartsAndPicksARow) {
     const Result folder = runCli("materials --file " + std::string(CUTCELL_SOURCE_DIR));
     EXPECT_EQ(folder.code, 1) << folder.output;
     EXPECT_NE(folder.output.find("it is a folder"), std::string::npos) << folder.output;
+}
+
+// cutcell-cli materials edits the user's table ($XDG_DATA_HOME/cutcell/cut_charts.json, a copy
+// of the shipped one at the first edit, used from then on) or --file, numbers in C notation
+// under a decimal-comma locale; a refused edit names the chart, row, field, value, unit and
+// limit (exit 2) and leaves the file alone; a number with a comma is a usage error (exit 64).
+TEST(Cli, MaterialsEditsTheUserTableUnderADecimalCommaLocale) {
+    const fs::path dir = tempDir("materials_edit");
+    struct Env {
+        std::string name, was;
+        bool had;
+        Env(const char* n, const std::string& value) : name(n) {
+            const char* v = std::getenv(n);
+            had = v != nullptr;
+            was = v ? v : "";
+            ::setenv(n, value.c_str(), 1);
+        }
+        ~Env() {
+            if (had)
+                ::setenv(name.c_str(), was.c_str(), 1);
+            else
+                ::unsetenv(name.c_str());
+        }
+    };
+    const Env xdg("XDG_DATA_HOME", dir.string());
+    const Env lc("LC_ALL", "de_DE.UTF-8");
+    const fs::path user = dir / "cutcell" / "cut_charts.json";
+    const CutChart& chart = shippedCutCharts().charts.front();
+    const std::string c = formatC("%s %s '%s'", toString(chart.process), chart.material.c_str(),
+                                  chart.consumable.c_str());
+    const double t = chart.rows[1].thicknessMm();
+    const std::string at = c + formatC(" %g", t);
+
+    const Result list = runCli("materials");
+    EXPECT_EQ(list.code, 0) << list.output;
+    EXPECT_NE(list.output.find("the shipped table"), std::string::npos) << list.output;
+    EXPECT_FALSE(fs::exists(user));
+
+    const Result set = runCli("materials --set " + at + " cut_speed_mm_min 1234.5");
+    ASSERT_EQ(set.code, 0) << set.output;
+    EXPECT_NE(set.output.find(user.string()), std::string::npos) << set.output;
+    CutChartSet expected = shippedCutCharts();
+    expected.charts[0].rows[1].set(CutFigure::CutSpeedMmMin, 1234.5);
+    EXPECT_EQ(loadCutChartsFile(user.string()), expected);
+    // The user's table is the one in use now.
+    const Result picked = runCli("materials --json --pick " + at, false);
+    ASSERT_EQ(picked.code, 0) << picked.output;
+    EXPECT_EQ(json::parse(picked.output).find("row")->find("cut_speed_mm_min")->asNumber(), 1234.5);
+
+    // Refused: out of range (named), a comma, an unknown figure, a row that is not there.
+    const std::string before = [&] {
+        std::ifstream in(user);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    }();
+    const Result far = runCli("materials --set " + at + " cut_speed_mm_min 200000");
+    EXPECT_EQ(far.code, 2) << far.output;
+    EXPECT_NE(far.output.find("(charts[0]) rows[1]: cut_speed_mm_min = 200000 mm/min is outside "
+                              "(0, 100000] mm/min"),
+              std::string::npos)
+        << far.output;
+    EXPECT_EQ(runCli("materials --set " + at + " cut_speed_mm_min 1234,5").code, 64);
+    EXPECT_EQ(runCli("materials --set " + at + " speed 1").code, 64);
+    const Result none = runCli("materials --set " + c + " 0.77 cut_speed_mm_min 1");
+    EXPECT_EQ(none.code, 2) << none.output;
+    EXPECT_NE(none.output.find("no row at thickness_mm = 0.77 mm"), std::string::npos)
+        << none.output;
+    std::ifstream again(user);
+    std::stringstream now;
+    now << again.rdbuf();
+    EXPECT_EQ(now.str(), before);
+
+    // Add a row between the first two (every column), then remove it.
+    const double mid = 0.5 * (chart.rows[0].thicknessMm() + t);
+    std::string figures;
+    for (CutFigure f : chart.columns)
+        if (f != CutFigure::ThicknessMm)
+            figures += formatC(" %s=%g", cutFigureInfo(f).key, *chart.rows[0].get(f));
+    const Result added = runCli("materials --add-row " + c + formatC(" %g", mid) + figures);
+    ASSERT_EQ(added.code, 0) << added.output;
+    CutChartSet withRow = loadCutChartsFile(user.string());
+    ASSERT_EQ(withRow.charts[0].rows.size(), chart.rows.size() + 1);
+    EXPECT_EQ(withRow.charts[0].rows[1].thicknessMm(), mid);
+    const Result twice = runCli("materials --add-row " + c + formatC(" %g", mid) + figures);
+    EXPECT_EQ(twice.code, 2) << twice.output;
+    EXPECT_NE(twice.output.find("has a row already"), std::string::npos) << twice.output;
+    const Result removed = runCli("materials --remove-row " + c + formatC(" %g", mid));
+    ASSERT_EQ(removed.code, 0) << removed.output;
+    EXPECT_EQ(loadCutChartsFile(user.string()), expected);
+    // No temporary file beside the table.
+    for (const auto& e : fs::directory_iterator(user.parent_path()))
+        EXPECT_EQ(e.path().filename(), "cut_charts.json") << e.path();
+
+    // --file edits that file and leaves the user's table alone.
+    const fs::path other = dir / "other.json";
+    std::ofstream(other) << writeCutCharts(shippedCutCharts());
+    const Result file =
+        runCli("materials --file " + other.string() + " --set " + at + " cut_speed_mm_min 999.5");
+    ASSERT_EQ(file.code, 0) << file.output;
+    EXPECT_EQ(*loadCutChartsFile(other.string()).charts[0].rows[1].get(CutFigure::CutSpeedMmMin),
+              999.5);
+    EXPECT_EQ(loadCutChartsFile(user.string()), expected);
+    EXPECT_EQ(runCli("materials --pick " + at + " --set " + at + " kerf_mm 1").code, 64);
+    fs::remove_all(dir);
 }

@@ -43,6 +43,17 @@ bool JobEditor::editKey(const std::string& key, const QString& oldValue, const Q
     return true;
 }
 
+void JobEditor::cutChartsChanged() {
+    cutcell::Job synced = job_;
+    cutcell::syncProcessSpeed(synced);
+    if (synced.cut.speed_mm_s != job_.cut.speed_mm_s) {
+        edit([](cutcell::Job&) {}); // edit() takes the new chart's speed
+        return;
+    }
+    revalidate();
+    emit issuesChanged();
+}
+
 void JobEditor::revalidate() {
     issues_ = cutcell::validateJob(job_);
 }

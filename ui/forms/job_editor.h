@@ -46,6 +46,10 @@ class JobEditor : public QObject {
     QString openLockReason(const cutcell::Job& to) const {
         return openGate_ ? openGate_(job_, to) : QString();
     }
+    // The active cut-chart library was replaced (the cut-chart editor saved the user's table):
+    // the cut speed follows the new chart (an edit, when it changes it) and the job is checked
+    // again against the new charts (issuesChanged).
+    void cutChartsChanged();
     // Why `key` may not be changed now ("" when it may).
     QString lockReason(const std::string& key) const { return gate_ ? gate_(key) : QString(); }
 

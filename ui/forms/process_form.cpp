@@ -1,15 +1,20 @@
 #include "ui/forms/process_form.h"
 
 #include "core/machine/pipe_joint_section.h"
+#include "core/process/cut_chart_library.h"
 #include "core/process/process_spec.h"
+#include "ui/access_control.h"
 #include "ui/forms/number_fields.h"
+#include "ui/panels/cut_charts_dialog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -25,7 +30,11 @@ namespace {
 constexpr std::array<CutProcess, 3> kProcesses{CutProcess::Plasma, CutProcess::OxyFuel,
                                                CutProcess::Laser};
 
-QString processTitle(CutProcess p) {
+QString figureTitle(CutFigure f);
+
+} // namespace
+
+QString ProcessForm::processTitle(CutProcess p) {
     switch (p) {
     case CutProcess::Plasma:
         return ProcessForm::tr("Plasma");
@@ -36,6 +45,13 @@ QString processTitle(CutProcess p) {
     }
     return {};
 }
+
+QString ProcessForm::figureHeader(CutFigure f) {
+    return figureTitle(f) + QStringLiteral(" [") + displayUnit(cutcell::cutFigureInfo(f).unit) +
+           QStringLiteral("]");
+}
+
+namespace {
 
 QString figureTitle(CutFigure f) {
     switch (f) {
@@ -74,12 +90,25 @@ int decimalsOf(CutFigure f) {
 } // namespace
 
 ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
+    // The user's cut charts, when there are any, once per program (the first window).
+    installCutChartsInUse(cutcell::defaultDataHome());
     auto* entry = new QGroupBox(tr("Cut chart"), this);
     auto* f = new QFormLayout(entry);
     used_ = new QCheckBox(tr("use a cut chart"), entry);
     used_->setObjectName("processUsed");
     alsoMark("process.used", used_);
-    f->addRow(tr("Process data"), used_);
+    // The library's editor beside the chart's choice (the page stays within its 424 px).
+    editCharts_ = new QPushButton(tr("Cut charts…"), entry);
+    editCharts_->setObjectName("processEditCharts");
+    editCharts_->setToolTip(tr("View and edit the cut-chart library (the user's table; the "
+                               "setter level and above may edit it)."));
+    connect(editCharts_, &QPushButton::clicked, this, &ProcessForm::openCutCharts);
+    auto* usedRow = new QHBoxLayout;
+    usedRow->setContentsMargins(0, 0, 0, 0);
+    usedRow->addWidget(used_);
+    usedRow->addStretch(1);
+    usedRow->addWidget(editCharts_);
+    f->addRow(tr("Process data"), usedRow);
     process_ = new QComboBox(entry);
     process_->setObjectName("processKind");
     for (const CutProcess p : kProcesses)
@@ -190,14 +219,25 @@ ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, p
     connect(editor, &JobEditor::edited, this, [this] { reloadExtra(JobForm::editor()->job()); });
 }
 
+void ProcessForm::openCutCharts() {
+    auto* dialog = new CutChartsDialog(cutcell::defaultDataHome(), AccessControl::current(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    const cutcell::ProcessSpec& p = JobForm::editor()->job().process;
+    if (p.used) dialog->showChart(p.process, p.material, p.consumable);
+    connect(dialog, &CutChartsDialog::saved, this, [this] {
+        JobForm::editor()->cutChartsChanged();
+        reloadExtra(JobForm::editor()->job());
+    });
+    dialog->open();
+}
+
 void ProcessForm::buildFigureRows() {
     figures_->setRowCount(static_cast<int>(cutcell::kCutFigureCount) - 1);
     for (std::size_t k = 1; k < cutcell::kCutFigureCount; ++k) {
         const auto f = static_cast<CutFigure>(k);
         const int row = static_cast<int>(k) - 1;
         const auto& info = cutcell::cutFigureInfo(f);
-        auto* name = new QTableWidgetItem(figureTitle(f) + QStringLiteral(" [") +
-                                          displayUnit(info.unit) + QStringLiteral("]"));
+        auto* name = new QTableWidgetItem(figureHeader(f));
         name->setFlags(Qt::ItemIsEnabled);
         figures_->setItem(row, 0, name);
         auto* chart = new QTableWidgetItem;
@@ -341,6 +381,9 @@ void ProcessForm::reloadExtra(const Job& job) {
             text += QLatin1Char(' ') + tr("No kerf width: the torch runs on the part's edge "
                                           "(tick Override on Kerf width to compensate).");
     }
+    if (const QString problem = installCutChartsInUse(cutcell::defaultDataHome());
+        !problem.isEmpty())
+        text += QLatin1Char(' ') + tr("The user's cut charts are not used: %1").arg(problem);
     chart_->setText(text);
     refreshing_ = false;
 }

@@ -3,6 +3,7 @@
 // consumable set, thickness: the part's wall unless given), the chart's row at that thickness,
 // and an override per figure, saved with the job and shown as such. The charts are the active
 // library (core/process/process_spec.h). Keys process.*.
+#include "core/process/cut_chart.h"
 #include "ui/forms/job_form.h"
 
 #include <array>
@@ -11,6 +12,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace CutCell::ui {
@@ -19,6 +21,14 @@ class ProcessForm : public JobForm {
     Q_OBJECT
   public:
     explicit ProcessForm(JobEditor* editor, QWidget* parent = nullptr);
+
+    // A process and a figure as the form shows them ("Plasma", "Kerf width [mm]"); the
+    // cut-chart editor (ui/panels/cut_charts_dialog.h) names its columns alike.
+    static QString processTitle(cutcell::CutProcess p);
+    static QString figureHeader(cutcell::CutFigure f);
+    // Opens the cut-chart editor on the job's chart ("Cut charts..."); after a save the form
+    // shows the new table.
+    void openCutCharts();
 
   protected:
     void reloadExtra(const cutcell::Job& job) override;
@@ -37,6 +47,7 @@ class ProcessForm : public JobForm {
     QDoubleSpinBox* thickness_ = nullptr;
     QTableWidget* figures_ = nullptr;
     QLabel* chart_ = nullptr;
+    QPushButton* editCharts_ = nullptr;
     std::array<QCheckBox*, 8> overrideBox_{};
     std::array<QDoubleSpinBox*, 8> valueBox_{};
     bool refreshing_ = false;

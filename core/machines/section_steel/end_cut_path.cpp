@@ -169,6 +169,7 @@ TorchTarget EndCut::target(const OutlinePoint& o, double s, bool groovePass) con
         if (w.dot(m) < 0) w = -w;
         t.p -= depth * std::tan(t.tilt_rad) / w.dot(m) * w;
     }
+    t.edge_p = t.p; // the kerf compensation moves p only (section_kerf.h)
     return t;
 }
 

@@ -18,7 +18,8 @@
 namespace cutcell::section_steel {
 
 struct TorchTarget {
-    Vec3 p{0, 0, 0};      // tip, world (mm)
+    Vec3 p{0, 0, 0};      // tip, world (mm): the torch centre (kerf compensated, section_kerf.h)
+    Vec3 edge_p{0, 0, 0}; // the theoretical edge's point: p without the kerf compensation
     Vec3 t{0, 0, 0};      // torch direction into the material, world (unit)
     Vec3 edge{0, 0, 0};   // cut edge direction (unit), world
     Vec3 t0{0, 0, 0};     // the untilted direction (in the cut plane, normal to the edge)

@@ -7,10 +7,14 @@
 #include "core/job/issue_checker.h"
 #include "core/machines/section_steel/dstv/dstv_import.h"
 #include "core/machines/section_steel/end_cut_path.h"
+#include "core/machines/section_steel/section_kerf.h"
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_program.h"
 #include "core/machines/section_steel/section_steel_section.h"
+#include "core/process/process_spec.h"
 #include "core/sim/tracking_stats.h"
+
+#include <algorithm>
 
 namespace cutcell {
 
@@ -64,18 +68,39 @@ void SectionSteelModule::readSection(const json::Value& section, Job& job) const
     SectionReader m(section, "machine");
     m.get("kind");
     job.machine_spec.set(readSteelSection(m));
+    // The torch's process (cut chart entry, overrides), as the pipe machines read it: here it
+    // gives the kerf to compensate (section_kerf.h); the speed stays motion.speed_mm_s.
+    readProcess(m, job.process);
     m.finish();
 }
 
 json::Value SectionSteelModule::writeSection(const Job& job) const {
     json::Object s{{"kind", id()}};
     writeSteelSection(specOf(job), s);
+    // The process section after the section and its piece marks (what is cut, and with what).
+    json::Object process;
+    writeProcess(job.process, process);
+    if (!process.empty()) {
+        const auto at = std::find_if(s.begin(), s.end(), [](const auto& member) {
+            return member.first != "kind" && member.first != "section" && member.first != "piece";
+        });
+        s.insert(at, std::move(process.front()));
+    }
     return s;
 }
 
 std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     IssueChecker c;
-    checkSteelSpec(c, specOf(job), job.sim.period_s);
+    const SectionSteelSpec& s = specOf(job);
+    checkSteelSpec(c, s, job.sim.period_s);
+    checkProcess(c, job.process, steelPartThicknessMm(s));
+    // The cut chart gives this machine its kerf only: an operator's speed there would be ignored.
+    if (const auto v = job.process.override.get(CutFigure::CutSpeedMmMin); job.process.used && v)
+        c.add("process.override.cut_speed_mm_min",
+              messageC("process.override.cut_speed_mm_min = %.6g mm/min is not used by the "
+                       "section-steel cutter: it cuts at motion.speed_mm_s = %.6g mm/s (its "
+                       "process section gives the kerf); set the speed there",
+                       *v, s.speed_mm_s));
     return c.issues;
 }
 
@@ -92,7 +117,7 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
         out.summary = why;
         return out;
     }
-    auto plan = std::make_shared<SteelPlan>(planEndCut(s));
+    auto plan = std::make_shared<SteelPlan>(planEndCut(s, steelKerfMm(job)));
     out.data = plan;
     const std::string name = s.section.designation.empty()
                                  ? std::string("user-defined ") + toString(s.section.family)
@@ -117,6 +142,15 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
                               "underside of the %s on top; mitres in the cell %.1f/%.1f deg): ",
                               plate, -s.cut.mitre_vertical_deg, -s.cut.mitre_horizontal_deg) +
                       out.summary;
+    if (plan->kerf_mm > 0)
+        out.summary += formatC("; kerf %.2f mm compensated (the torch centre %.3f mm across the "
+                               "cut surface off the edge; the arms' frame %.3f mm along the bar "
+                               "toward the off-cut)",
+                               plan->kerf_mm, plan->kerf_mm / 2, plan->frame_shift_mm);
+    if (!plan->kerf_problem.empty()) {
+        out.outcome = Outcome::refuse(plan->kerf_problem, "process.override.kerf_mm");
+        return out;
+    }
     if (!plan->ok) {
         out.outcome = Outcome::refuse(plan->failed_points > 1
                                           ? messageC("%s (and %zu more points)",

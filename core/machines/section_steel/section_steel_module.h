@@ -2,7 +2,9 @@
 // The section-steel cutting cell of seed 001: a 3R cutting-path arm (axes 0..2) and a 5-DOF
 // groove arm (axes 3..7), all rotary, position-commanded (CSP) joints behind PID drives; the
 // program is a joint spline (MotionSourceKind::JointSpline). Its `machine` section: section
-// (designation or dimensions), end_cut (mitres, grooves of flanges and web), motion, path_arm,
+// (designation or dimensions), the optional process (core/process/process_spec.h: the cut chart
+// entry and overrides, read as the pipe machines read it; it gives the kerf, compensated by the
+// plan: section_kerf.h), end_cut (mitres, grooves of flanges and web), motion, path_arm,
 // groove_arm, park_deg[8], drives[8]. See README "Section-steel cutter".
 #include "core/machine/machine_module.h"
 

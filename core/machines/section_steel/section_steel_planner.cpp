@@ -2,6 +2,7 @@
 
 #include "core/common/c_format.h"
 #include "core/common/outcome.h"
+#include "core/machines/section_steel/section_kerf.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +107,9 @@ bool grooveStartBranch(const SteelCell& cell, const SectionSteelSpec& spec, cons
 
 } // namespace
 
-SteelCell::SteelCell(const SectionSteelSpec& s)
+SteelCell::SteelCell(const SectionSteelSpec& s) : SteelCell(s, 0.0) {}
+
+SteelCell::SteelCell(const SectionSteelSpec& s, double kerf_mm)
     : path(s.path_links_mm[0], s.path_links_mm[1], s.path_links_mm[2]) {
     path_base_y = s.path_base_y_mm;
     path_base_z = s.path_base_z_mm;
@@ -130,6 +133,12 @@ SteelCell::SteelCell(const SectionSteelSpec& s)
     square.linear() = R;
     square.translation() = Vec3(s.groove_base_x_mm, s.groove_base_y_mm, s.groove_base_z_mm);
     groove_base = mitre * square;
+    // Kerf compensation: the frame along the bar (none at k = 0: the poses stay bit for bit).
+    if (kerf_mm != 0) {
+        frame_shift_mm = squarePassShiftMm(EndCut(s), kerf_mm);
+        path_frame.translation().x() += frame_shift_mm;
+        groove_base.translation().x() += frame_shift_mm;
+    }
 }
 
 void SteelCell::pathTorch(const std::array<double, 3>& q, Vec3& p, Vec3& t) const {
@@ -162,11 +171,25 @@ std::string pointProblem(const EndCut& cut, const CutPass& pass, size_t k, const
 }
 
 SteelPlan planEndCut(const SectionSteelSpec& spec) {
+    return planEndCut(spec, 0.0);
+}
+
+SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm) {
     SteelPlan plan;
     const EndCut cut(spec);
-    const SteelCell cell(spec);
     plan.dt = spec.knot_spacing_mm / spec.speed_mm_s;
     plan.passes = cut.passes(plan.dt);
+    // Kerf compensation: every target moves to the torch centre, the arms' frame with the square
+    // pass's plane. Refused: planned on the edge (the view shows it), the plan refused.
+    if (kerf_mm != 0) {
+        if (const Outcome o = compensateSteelKerf(cut, plan.passes, kerf_mm); o.ok())
+            plan.kerf_mm = kerf_mm;
+        else
+            plan.kerf_problem = "kerf compensation: " + o.message;
+    }
+    const SteelCell cell(spec, plan.kerf_mm);
+    plan.frame_shift_mm = cell.frame_shift_mm;
+    plan.problem = plan.kerf_problem; // the first problem: later points add to failed_points
     JointVector park = JointVector::Zero();
     for (int i = 0; i < kSteelAxes; ++i)
         park[i] = deg2rad(spec.park_deg[static_cast<size_t>(i)]);
@@ -280,7 +303,7 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
         if (!knots.empty()) cur = knots.back();
         plan.length_mm += pass.length_mm;
     }
-    plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2;
+    plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2 && plan.kerf_problem.empty();
     if (plan.knots.size() < 2 && plan.problem.empty()) {
         plan.problem = setupTwoProblem(spec);
         if (plan.problem.empty()) plan.problem = messageC("the cut has no path");

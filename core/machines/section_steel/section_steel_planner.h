@@ -15,6 +15,11 @@ namespace cutcell::section_steel {
 // The two arms placed in the cell (frames as in section_steel_spec.h).
 struct SteelCell {
     explicit SteelCell(const SectionSteelSpec& spec);
+    // For a cut with kerf compensation (section_kerf.h): the mitre frame, both arms on it, stands
+    // frame_shift_mm = (k/2) / (x . m) along the bar toward the off-cut, so that the path arm's
+    // plane is the square / mitre pass's, k/2 off the cut plane.
+    SteelCell(const SectionSteelSpec& spec, double kerf_mm);
+    double frame_shift_mm = 0; // along world x
     PathArm path;
     GrooveArm groove;
     // Both arms stand on a mitre frame that turns the square layout about the section's
@@ -47,9 +52,19 @@ struct SteelPlan {
     JointSpline spline;
     double dt = 0, cut_time_s = 0, length_mm = 0;
     double max_torch_error_mm = 0; // FK of the chosen joints against the targets
+    // Kerf compensation (the job's process section; section_kerf.h): the passes' targets are the
+    // torch centres, k/2 across the cut surface toward the scrap side (TorchTarget::edge_p keeps
+    // the theoretical edge), the arms' frame moved by frame_shift_mm (SteelCell). 0: on the edge.
+    double kerf_mm = 0;
+    double frame_shift_mm = 0;
+    // Why the kerf could not be compensated ("" when it was, or k = 0): the plan is then made on
+    // the theoretical edge (kerf_mm = 0) for the view, and refused (ok false, problem = this).
+    std::string kerf_problem;
 };
 
 SteelPlan planEndCut(const SectionSteelSpec& spec);
+// With the kerf `kerf_mm` compensated (0: as planEndCut(spec), bit for bit).
+SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm);
 
 // A description of the point for messages: "point 37 of pass groove (top flange, upper face,
 // s = 120.0 mm)".

@@ -56,7 +56,7 @@ std::shared_ptr<const MotionProgram> buildSectionSteelProgram(const Job& job,
         p->min_position[static_cast<int>(3 + i)] = deg2rad(spec.groove_limits[i].min_deg);
         p->max_position[static_cast<int>(3 + i)] = deg2rad(spec.groove_limits[i].max_deg);
     }
-    p->tip_model = std::make_shared<SteelTipModel>(spec, park);
+    p->tip_model = std::make_shared<SteelTipModel>(spec, park, plan.kerf_mm);
     p->min_run_s = job.sim.duration_s;
     p->cruise_from_s = spec.ramp_s;
     p->cruise_to_s = plan.cut_time_s - spec.ramp_s;
@@ -73,6 +73,8 @@ std::string steelPathCsv(const SectionSteelSpec& spec, const SteelPlan& plan) {
                                      "groove_q4_deg", "groove_q5_deg"};
     for (const char* n : names)
         out += std::string(",") + n;
+    const bool kerf = plan.kerf_mm > 0;
+    if (kerf) out += ",edge_x_mm,edge_y_mm,edge_z_mm";
     out += "\n";
     for (size_t k = 0; k < plan.knots.size(); ++k) {
         const KnotInfo& info = plan.info[k];
@@ -89,6 +91,7 @@ std::string steelPathCsv(const SectionSteelSpec& spec, const SteelPlan& plan) {
                        t.t.y(), t.t.z(), rad2deg(t.tilt_rad));
         for (int i = 0; i < kSteelAxes; ++i)
             out += formatC(",%.6f", rad2deg(plan.knots[k][i]));
+        if (kerf) out += formatC(",%.4f,%.4f,%.4f", t.edge_p.x(), t.edge_p.y(), t.edge_p.z());
         out += "\n";
     }
     return out;

@@ -15,13 +15,18 @@ std::shared_ptr<const MotionProgram> buildSectionSteelProgram(const Job& job,
                                                               const SteelPlan& plan,
                                                               const std::string& jobText);
 
-// CSV of the planned points: pass, point, face, s, tip, torch direction, tilt, joints.
+// CSV of the planned points: pass, point, face, s, tip, torch direction, tilt, joints. The tip
+// is the torch centre; with kerf compensation (plan.kerf_mm > 0) three more columns give the
+// theoretical edge's point (edge_x_mm, edge_y_mm, edge_z_mm).
 std::string steelPathCsv(const SectionSteelSpec& spec, const SteelPlan& plan);
 
 class SteelTipModel : public TipModel {
   public:
     SteelTipModel(const SectionSteelSpec& spec, const JointVector& park)
         : cell_(spec), park_(park) {}
+    // The cell of a plan with kerf compensation (SteelPlan::kerf_mm): the tip is the torch centre.
+    SteelTipModel(const SectionSteelSpec& spec, const JointVector& park, double kerf_mm)
+        : cell_(spec, kerf_mm), park_(park) {}
     Vec3 tip(const JointVector& q) const override;
 
   private:

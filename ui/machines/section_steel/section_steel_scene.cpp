@@ -113,7 +113,7 @@ SceneModel buildSectionSteelScene(const Job& job, const SteelPlan* plan) {
     if (!specPtr) throw std::invalid_argument("the job holds no section-steel machine section");
     const SectionSteelSpec spec = *specPtr;
     const section_steel::SectionDims& d = spec.section;
-    const SteelCell cell(spec);
+    const SteelCell cell(spec, plan ? plan->kerf_mm : 0.0); // the arms where the kerf puts them
 
     SceneModel m;
     const auto words = [](const QString& shown) { return shown.toStdString(); };
