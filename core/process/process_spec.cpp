@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace cutcell {
@@ -37,7 +38,51 @@ std::string overrideProblem(CutFigure f, double v) {
                     info.unit, info.lo, info.hi, info.unit);
 }
 
+// process.lead_in / process.lead_out: kind, length_mm (required unless "none"), overlap_mm
+// (lead-out only, optional).
+LeadSpec readLead(SectionReader& p, const char* name, bool out) {
+    LeadSpec lead;
+    SectionReader l = p.child(name);
+    lead.kind = l.choice<LeadKind>(
+        "kind", {{"none", LeadKind::None}, {"line", LeadKind::Line}, {"arc", LeadKind::Arc}},
+        LeadKind::None);
+    if (!l.has("kind"))
+        throw JobError(l.key("kind") + " is required (\"line\", \"arc\" or \"none\")");
+    if (lead.used())
+        lead.length_mm = l.number("length_mm", "mm");
+    else
+        l.get("length_mm");
+    if (out) lead.overlap_mm = l.number("overlap_mm", "mm", 0);
+    l.finish();
+    return lead;
+}
+
+void writeLead(const LeadSpec& lead, const char* name, bool out, json::Object& p) {
+    if (!lead.used() && lead.overlap_mm == 0) return;
+    json::Object l{{"kind", toString(lead.kind)}};
+    if (lead.used()) l.emplace_back("length_mm", lead.length_mm);
+    if (out && lead.overlap_mm != 0) l.emplace_back("overlap_mm", lead.overlap_mm);
+    p.emplace_back(name, std::move(l));
+}
+
+void checkLead(IssueChecker& c, const LeadSpec& lead, const std::string& key) {
+    if (lead.used()) c.positive(key + ".length_mm", lead.length_mm, 0.1, 100, "mm");
+    c.range(key + ".overlap_mm", lead.overlap_mm, 0, 50, "mm");
+}
+
 } // namespace
+
+const char* toString(LeadKind k) {
+    switch (k) {
+    case LeadKind::Line:
+        return "line";
+    case LeadKind::Arc:
+        return "arc";
+    case LeadKind::None:
+        break;
+    }
+    return "none";
+}
 
 const CutChartSet& activeCutCharts() {
     ActiveSlot& slot = activeSlot();
@@ -83,6 +128,8 @@ void readProcess(SectionReader& section, ProcessSpec& spec) {
         }
         o.finish();
     }
+    if (p.has("lead_in")) spec.lead_in = readLead(p, "lead_in", false);
+    if (p.has("lead_out")) spec.lead_out = readLead(p, "lead_out", true);
     p.finish();
 }
 
@@ -97,6 +144,8 @@ void writeProcess(const ProcessSpec& spec, json::Object& section) {
         if (const auto v = spec.override.figures[k])
             o.emplace_back(cutFigureInfo(static_cast<CutFigure>(k)).key, *v);
     if (!o.empty()) p.emplace_back("override", std::move(o));
+    writeLead(spec.lead_in, "lead_in", false, p);
+    writeLead(spec.lead_out, "lead_out", true, p);
     section.emplace_back("process", std::move(p));
 }
 
@@ -140,9 +189,47 @@ void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm) 
             if (!problem.empty())
                 c.add(std::string("process.override.") + cutFigureInfo(f).key, problem);
         }
+    checkLead(c, spec.lead_in, "process.lead_in");
+    checkLead(c, spec.lead_out, "process.lead_out");
     if (c.has("process.thickness_mm")) return;
     const ProcessSettings s = resolveProcess(spec, partWall_mm);
     if (!s.ok()) c.add(s.outcome.key, s.outcome.message);
+    if (s.ok()) {
+        const std::string problem = leadHeightProblem(spec, s);
+        if (!problem.empty()) c.add(leadHeightKey(spec, s), problem);
+    }
+}
+
+std::string leadHeightKey(const ProcessSpec& spec, const ProcessSettings& s) {
+    if (!spec.lead_in.used() && !spec.lead_out.used()) return {};
+    if (!s.effective.get(CutFigure::PierceHeightMm)) return "process.override.pierce_height_mm";
+    if (!s.effective.get(CutFigure::CutHeightMm)) return "process.override.cut_height_mm";
+    return {};
+}
+
+std::string leadHeightProblem(const ProcessSpec& spec, const ProcessSettings& s) {
+    const std::string key = leadHeightKey(spec, s);
+    if (key.empty()) return {};
+    const bool pierce = key == "process.override.pierce_height_mm";
+    const CutFigureInfo& info =
+        cutFigureInfo(pierce ? CutFigure::PierceHeightMm : CutFigure::CutHeightMm);
+    const bool in = spec.lead_in.used();
+    return messageC("process.%s.kind = \"%s\" needs the %s height: the chart '%s' gives no %s; "
+                    "set %s (%s, [%.6g, %.6g] %s)",
+                    in ? "lead_in" : "lead_out",
+                    toString(in ? spec.lead_in.kind : spec.lead_out.kind),
+                    pierce ? "pierce" : "cut", s.chart_name.c_str(), info.key, key.c_str(),
+                    info.unit, info.lo, info.hi, info.unit);
+}
+
+void checkNoLeads(IssueChecker& c, const ProcessSpec& spec, const char* machine) {
+    for (const auto& [key, lead] :
+         {std::pair{"lead_in", &spec.lead_in}, {"lead_out", &spec.lead_out}})
+        if (lead->used())
+            c.add(std::string("process.") + key + ".kind",
+                  messageC("process.%s.kind = \"%s\": the %s does not plan leads yet (the "
+                           "profile cutter does); set \"none\" or remove it",
+                           key, toString(lead->kind), machine));
 }
 
 } // namespace cutcell

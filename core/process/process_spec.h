@@ -4,7 +4,9 @@
 //
 //   "process": { "process": "plasma", "material": "mild_steel", "consumable": "65A shielded",
 //                "thickness_mm": 6,                     (optional: the wall of the part cut)
-//                "override": { "kerf_mm": 1.7, "cut_speed_mm_min": 2200 } }   (optional)
+//                "override": { "kerf_mm": 1.7, "cut_speed_mm_min": 2200 },   (optional)
+//                "lead_in": { "kind": "arc", "length_mm": 5 },                 (optional)
+//                "lead_out": { "kind": "line", "length_mm": 3, "overlap_mm": 1 } }  (optional)
 //
 // The thickness picks the chart's row (interpolated between rows, refused outside the chart
 // with its range: pickCutRow). An override replaces one figure of the row, is saved with the
@@ -62,5 +64,14 @@ ProcessSettings resolveProcess(const ProcessSpec& spec, double partWall_mm,
 // The section's issues (keys process.*): an unknown chart entry, a thickness outside the chart,
 // an override outside its range.
 void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm);
+
+// Lead-in / lead-out (process.lead_in, process.lead_out: { "kind": "line" | "arc" | "none",
+// "length_mm": 5, "overlap_mm": 2 (lead-out only) }): a torch machine that pierces off the cut
+// needs the pierce height and the cut height (chart or override). "" when the settings give
+// both or no lead is asked for; else the key to set and one sentence naming it.
+std::string leadHeightKey(const ProcessSpec& spec, const ProcessSettings& s);
+std::string leadHeightProblem(const ProcessSpec& spec, const ProcessSettings& s);
+// For a machine that does not plan leads yet: a lead asked for is an issue (never ignored).
+void checkNoLeads(IssueChecker& c, const ProcessSpec& spec, const char* machine);
 
 } // namespace cutcell

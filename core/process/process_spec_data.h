@@ -3,10 +3,25 @@
 // checks it): the cut chart's entry a torch machine cuts with and the operator's overrides.
 #include "core/process/cut_chart.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 namespace cutcell {
+
+// A lead-in or lead-out of a closed cut (process.lead_in, process.lead_out): none, a straight
+// line or a quarter arc, length_mm along the lead on the developed surface, on the scrap side.
+// overlap_mm (lead-out only): how far the torch runs on past the cut's start before it leaves.
+enum class LeadKind : std::uint8_t { None, Line, Arc };
+struct LeadSpec {
+    LeadKind kind = LeadKind::None;
+    double length_mm = 0;
+    double overlap_mm = 0;
+    bool used() const { return kind != LeadKind::None; }
+    bool operator==(const LeadSpec&) const = default;
+};
+// "none", "line", "arc".
+const char* toString(LeadKind k);
 
 struct ProcessSpec {
     bool used = false; // the section is in the job
@@ -15,6 +30,8 @@ struct ProcessSpec {
     std::string consumable;
     std::optional<double> thickness_mm; // absent: the wall of the part being cut
     CutRow override;                    // the figures set over the chart's (thickness never)
+    LeadSpec lead_in;                   // absent: none (the cut starts where it pierces)
+    LeadSpec lead_out;                  // absent: none
     bool operator==(const ProcessSpec&) const = default;
 };
 

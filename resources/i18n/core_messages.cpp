@@ -362,6 +362,15 @@ const char* const kCoreMessages[] = {
                       "the profile cutter's A and X steppers are driven by a pulse card, not by "
                       "CANopen drives: use devices.kind = \"simulated\""),
     QT_TRANSLATE_NOOP("CoreMessage", "not feasible: %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the cut has fewer than 3 points"),
+    QT_TRANSLATE_NOOP("CoreMessage", "lead_in"),
+    QT_TRANSLATE_NOOP("CoreMessage", "lead_out"),
+    QT_TRANSLATE_NOOP("CoreMessage",
+                      "process.%s.length_mm = %.6g mm is too long for the %s: the %s would reach "
+                      "the part's edge [it must stay half the kerf, %.6g mm, off it on the scrap "
+                      "side]; the longest that fits is %.3f mm"),
+    QT_TRANSLATE_NOOP("CoreMessage", "the %s needs X = %.3f mm, outside the carriage travel 0 .. "
+                                     "machine.profile_cutter.x_travel_mm = %.3f mm"),
     QT_TRANSLATE_NOOP("CoreMessage",
                       "step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above "
                       "machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s"),
@@ -441,7 +450,8 @@ const char* const kCoreMessages[] = {
         "end_cut.setup = 2 (the section turned over): nothing is left to cut - setup 2 cuts only "
         "the bevel on the underside of the %s (on the conveyor in setup 1) that a K groove on the "
         "flanges needs, and end_cut.flanges.groove = \"%s\"; plan setup 1 (end_cut.setup = 1)"),
-    QT_TRANSLATE_NOOP("CoreMessage", "pass %s (%s, s = %.1f mm%s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "pass %s (%s, s = %.1f mm, turning at the corner)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "pass %s (%s, s = %.1f mm)"),
     QT_TRANSLATE_NOOP("CoreMessage", "at %s: %s"),
     QT_TRANSLATE_NOOP(
         "CoreMessage",
@@ -526,6 +536,10 @@ const char* const kCoreMessages[] = {
         "CoreMessage",
         "process.override.%s = %.6g %s is outside its range: above %.6g %s and at most %.6g %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "process.override.%s = %.6g %s is outside [%.6g, %.6g] %s"),
+    QT_TRANSLATE_NOOP("CoreMessage", "process.%s.kind = \"%s\" needs the %s height: the chart '%s' "
+                                     "gives no %s; set %s (%s, [%.6g, %.6g] %s)"),
+    QT_TRANSLATE_NOOP("CoreMessage", "process.%s.kind = \"%s\": the %s does not plan leads yet "
+                                     "(the profile cutter does); set \"none\" or remove it"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g %s is outside (%.6g, %.6g] %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "tool"),
     QT_TRANSLATE_NOOP("CoreMessage",
@@ -768,6 +782,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 548;
+const int kCoreMessageCount = 556;
 
 } // namespace CutCell::ui

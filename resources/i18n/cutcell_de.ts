@@ -1239,7 +1239,32 @@
         <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+9"/>
+        <source>the cut has fewer than 3 points</source>
+        <translation>der Schnitt hat weniger als 3 Punkte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lead_in</source>
+        <translation>lead_in</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lead_out</source>
+        <translation>lead_out</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.%s.length_mm = %.6g mm is too long for the %s: the %s would reach the part&apos;s edge [it must stay half the kerf, %.6g mm, off it on the scrap side]; the longest that fits is %.3f mm</source>
+        <translation>process.%s.length_mm = %.6g mm ist zu lang für %s: %s würde die Kante des Werkstücks erreichen [sie muss die halbe Schnittfuge, %.6g mm, auf der Restseite davon bleiben]; am längsten passen %.3f mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %s needs X = %.3f mm, outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
+        <translation>%s braucht X = %.3f mm, außerhalb des Schlittenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>too short: %zu samples for a %.3g s window</source>
         <translation>zu kurz: %zu Abtastwerte für ein Fenster von %.3g s</translation>
     </message>
@@ -1290,8 +1315,13 @@
     </message>
     <message>
         <location line="+9"/>
-        <source>pass %s (%s, s = %.1f mm%s)</source>
-        <translation>Durchgang %s (%s, s = %.1f mm%s)</translation>
+        <source>pass %s (%s, s = %.1f mm, turning at the corner)</source>
+        <translation>Durchgang %s (%s, s = %.1f mm, an der Ecke drehend)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pass %s (%s, s = %.1f mm)</source>
+        <translation>Durchgang %s (%s, s = %.1f mm)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1408,6 +1438,16 @@
         <location line="+1"/>
         <source>process.override.%s = %.6g %s is outside [%.6g, %.6g] %s</source>
         <translation>process.override.%s = %.6g %s liegt außerhalb [%.6g, %.6g] %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.%s.kind = &quot;%s&quot; needs the %s height: the chart &apos;%s&apos; gives no %s; set %s (%s, [%.6g, %.6g] %s)</source>
+        <translation>process.%s.kind = &quot;%s&quot; braucht die Höhe %s: die Schneidtabelle &apos;%s&apos; gibt kein %s; %s setzen (%s, [%.6g, %.6g] %s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.%s.kind = &quot;%s&quot;: the %s does not plan leads yet (the profile cutter does); set &quot;none&quot; or remove it</source>
+        <translation>process.%s.kind = &quot;%s&quot;: %s plant noch keine An- und Ausfahrten (der Profilschneider schon); &quot;none&quot; setzen oder entfernen</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2385,7 +2425,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-296"/>
+        <location line="-304"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2425,7 +2465,7 @@
         <translation>nicht ausführbar: %s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>step %zu (beta = %.3f deg) needs %.0f Hz on the %s axis, above machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: lower cut.speed_mm_s</source>
         <translation>Schritt %zu (beta = %.3f deg) braucht %.0f Hz auf der Achse %s, mehr als machine.profile_cutter.max_pulse_rate_hz = %.0f Hz: cut.speed_mm_s senken</translation>
     </message>
@@ -2565,7 +2605,7 @@
         <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%s.%s = %.6g mm is outside [%.6g, %.6g] mm</source>
         <translation>%s.%s = %.6g mm liegt außerhalb von [%.6g, %.6g] mm</translation>
     </message>
@@ -2675,7 +2715,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-98"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2695,7 +2735,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+118"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -5294,12 +5334,12 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+79"/>
+        <location line="+80"/>
         <source>Thickness</source>
         <translation>Dicke</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-78"/>
         <source>Kerf width</source>
         <translation>Schnittfugenbreite</translation>
     </message>
@@ -5354,12 +5394,12 @@ entriegeln</translation>
         <translation>Schneidtabellen ansehen und bearbeiten (die Tabelle des Benutzers; bearbeiten ab der Stufe Einrichter).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
         <source>Process data</source>
         <translation>Prozessdaten</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <location filename="../../ui/panels/cut_charts_dialog.cpp" line="-306"/>
         <source>Process</source>
         <translation>Prozess</translation>

@@ -207,3 +207,15 @@ TEST(ProcessJob, TheRobotCompensatesTheKerfAndTheHoleKeepsItsSize) {
     EXPECT_NEAR(compensated, theoretical, 0.005);
     EXPECT_NEAR(uncompensated - theoretical, k, 0.005);
 }
+
+// Only the profile cutter plans leads: on the robot a lead asked for is an issue, never ignored.
+TEST(ProcessJob, ARobotJobWithALeadInIsRefusedNotIgnored) {
+    Job job = plasmaJob();
+    ASSERT_TRUE(validateJob(job).empty());
+    job.process.lead_in.kind = LeadKind::Arc;
+    job.process.lead_in.length_mm = 5;
+    EXPECT_TRUE(hasIssue(validateJob(job), "process.lead_in.kind",
+                         "the pipe-cutting robot does not plan leads yet"));
+    job.process.lead_in.kind = LeadKind::None;
+    EXPECT_TRUE(validateJob(job).empty());
+}

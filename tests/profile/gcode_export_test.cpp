@@ -16,14 +16,6 @@
 namespace cutcell {
 namespace {
 
-std::string findRs274() {
-    int status = 0;
-    std::string path = test::runCommand("command -v rs274 2>/dev/null", &status);
-    while (!path.empty() && (path.back() == '\n' || path.back() == ' '))
-        path.pop_back();
-    return status == 0 ? path : std::string();
-}
-
 std::vector<Job> jobs() {
     std::vector<Job> out{test::exampleProfileJob()};
     std::mt19937 rng(1234);
@@ -93,7 +85,7 @@ TEST(GcodeExport, CommentsCannotBreakTheProgram) {
 
 // rs274 accepts the program and its canonical moves are the cut's X/A points.
 TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
-    const std::string rs274 = findRs274();
+    const std::string rs274 = test::findRs274();
     if (rs274.empty()) GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
     const auto dir =
         std::filesystem::temp_directory_path() / ("cutcell_gcode_" + std::to_string(::getpid()));

@@ -136,11 +136,8 @@ TEST(ProfileKerf, AKerfTooWideForTheHoleIsRefused) {
 // path, not the edge, and the program says so in a comment.
 TEST(ProfileKerf, Rs274ReadsBackTheCompensatedPath) {
     int status = 0;
-    std::string rs274 = test::runCommand("command -v rs274 2>/dev/null", &status);
-    while (!rs274.empty() && std::isspace(static_cast<unsigned char>(rs274.back())))
-        rs274.pop_back();
-    if (status != 0 || rs274.empty())
-        GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+    const std::string rs274 = test::findRs274();
+    if (rs274.empty()) GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
     const auto dir =
         std::filesystem::temp_directory_path() / ("cutcell_kerf_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);

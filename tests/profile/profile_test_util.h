@@ -4,6 +4,7 @@
 #include "core/machines/profile_cutter/profile_cutter_spec.h"
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -21,6 +22,15 @@ inline std::string runCommand(const std::string& cmd, int* status) {
         out.append(buf.data(), n);
     *status = ::pclose(p);
     return out;
+}
+
+// LinuxCNC's interpreter (Debian linuxcnc-uspace), or "" where it is not installed.
+inline std::string findRs274() {
+    int status = 0;
+    std::string path = runCommand("command -v rs274 2>/dev/null", &status);
+    while (!path.empty() && std::isspace(static_cast<unsigned char>(path.back())))
+        path.pop_back();
+    return status == 0 ? path : std::string();
 }
 
 inline Job exampleProfileJob() {

@@ -97,18 +97,19 @@ ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, p
     used_ = new QCheckBox(tr("use a cut chart"), entry);
     used_->setObjectName("processUsed");
     alsoMark("process.used", used_);
-    // The library's editor beside the chart's choice (the page stays within its 424 px).
+    // The library's editor under the chart's choice (the page stays within its 424 px).
     editCharts_ = new QPushButton(tr("Cut charts…"), entry);
     editCharts_->setObjectName("processEditCharts");
     editCharts_->setToolTip(tr("View and edit the cut-chart library (the user's table; the "
                                "setter level and above may edit it)."));
     connect(editCharts_, &QPushButton::clicked, this, &ProcessForm::openCutCharts);
-    auto* usedRow = new QHBoxLayout;
-    usedRow->setContentsMargins(0, 0, 0, 0);
-    usedRow->addWidget(used_);
-    usedRow->addStretch(1);
-    usedRow->addWidget(editCharts_);
-    f->addRow(tr("Process data"), usedRow);
+    f->addRow(tr("Process data"), used_);
+    // Its own row: beside the check box it made the German page wider than its pane.
+    auto* chartsRow = new QHBoxLayout;
+    chartsRow->setContentsMargins(0, 0, 0, 0);
+    chartsRow->addWidget(editCharts_);
+    chartsRow->addStretch(1);
+    f->addRow(QString(), chartsRow);
     process_ = new QComboBox(entry);
     process_->setObjectName("processKind");
     for (const CutProcess p : kProcesses)

@@ -11,6 +11,7 @@
 #include "core/machines/pipe_robot/pipe_robot_mechanics.h"
 #include "core/machines/pipe_robot/pipe_robot_program.h"
 #include "core/machines/pipe_robot/plan_csv.h"
+#include "core/process/process_spec.h"
 #include "core/sim/tracking_stats.h"
 
 #include <cmath>
@@ -126,6 +127,7 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     const PipeRobotSpec& spec = pipeRobotSpec(job);
     IssueChecker c;
     checkPipeJoint(c, job, kCutKeys);
+    checkNoLeads(c, job.process, "pipe-cutting robot");
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& d = spec.dh[static_cast<size_t>(i)];
         const std::string k = rowKey("robot.dh", static_cast<size_t>(i));

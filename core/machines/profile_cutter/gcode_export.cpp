@@ -29,6 +29,11 @@ double written(double v) {
 } // namespace
 
 std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stats) {
+    return profileGcode(job, cut, ProfileLeads{}, stats);
+}
+
+std::string profileGcode(const Job& job, const ProfileCut& cut, const ProfileLeads& leads,
+                         GcodeStats* stats) {
     std::string g;
     auto line = [&g](const std::string& s) { g += s + "\n"; };
     auto comment = [&line](const std::string& s) { line("(" + commentText(s) + ")"); };
@@ -57,7 +62,7 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
     comment(fmt("cutting speed %.3f mm/s on the pipe surface, work radius %.3f mm, %.0f steps/rev, "
                 "pierce %.2f s",
                 v, cut.work_radius_mm, static_cast<double>(profileCutterSpec(job).steps_per_rev_a),
-                profileCutterSpec(job).pierce_s));
+                leads.used ? leads.pierce_delay_s : profileCutterSpec(job).pierce_s));
     // The compensation is in the coordinates, not in the controller (G40 stays): the program
     // runs the same on a control without cutter-radius compensation on a rotary axis.
     if (cut.kerf_mm > 0)
@@ -66,21 +71,40 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
                     cut.kerf_mm / 2, cut.kerf_mm));
     else
         comment("no kerf compensation: X/A below are the part edge");
+    if (leads.used) {
+        comment(fmt("torch height Z: mm over the pipe surface, a simulated axis [no Z drive]; "
+                    "pierce at %.3f mm, cut at %.3f mm, pierce delay %.2f s",
+                    leads.pierce_height_mm, leads.cut_height_mm, leads.pierce_delay_s));
+        comment(std::string("lead-in: ") + toString(leads.in.kind) +
+                (leads.in.used() ? fmt(" %.3f mm", leads.in.length_mm) : "") +
+                "; lead-out: " + toString(leads.out.kind) +
+                (leads.out.used() ? fmt(" %.3f mm", leads.out.length_mm) : "") +
+                fmt(", overlap %.3f mm; on the scrap side", leads.out.overlap_mm));
+    }
     line("G21 G90 G17 G40 G94");
-    const ProfilePoint first = cut.points.front();
-    line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
+    const ProfilePoint first = leads.lead_in.empty() ? cut.points.front() : leads.lead_in.front();
+    const double pierce = leads.used ? leads.pierce_delay_s : profileCutterSpec(job).pierce_s;
+    if (!leads.used) {
+        line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
+    } else {
+        comment(leads.lead_in.empty() ? "rapid to the cut's start"
+                                      : "rapid to the pierce point, on the scrap side");
+        line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
+        line(fmt("G0 Z%.4f (pierce height)", written(leads.pierce_height_mm)));
+    }
     line("M3 S1 (torch on)");
-    if (profileCutterSpec(job).pierce_s > 0)
-        line(fmt("G4 P%.3f (pierce)", profileCutterSpec(job).pierce_s));
+    if (pierce > 0) line(fmt("G4 P%.3f (pierce)", pierce));
+    if (leads.used)
+        line(
+            fmt("G1 Z%.4f F%.4f (down to the cut height)", written(leads.cut_height_mm), 60.0 * v));
     line("G93 (inverse time feed: F = 1 / minutes per move, constant surface speed)");
 
     GcodeStats st;
     double px = written(first.x_mm), pa = written(first.a_deg);
-    for (size_t i = 1; i <= cut.points.size(); ++i) {
-        const ProfilePoint p = cut.closedAt(i);
+    auto feedTo = [&](const ProfilePoint& p) {
         const double x = written(p.x_mm), a = written(p.a_deg);
         const double ds = std::hypot(x - px, cut.work_radius_mm * deg2rad(a - pa));
-        if (ds <= 0) continue;
+        if (ds <= 0) return;
         const double f = 60.0 * v / ds;
         line(fmt("G1 X%.4f A%.4f F%.4f", x, a, f));
         ++st.moves;
@@ -88,9 +112,24 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, GcodeStats* stat
         st.time_s += 60.0 / f;
         px = x;
         pa = a;
+    };
+    if (!leads.lead_in.empty()) {
+        comment("lead-in");
+        for (size_t i = 1; i < leads.lead_in.size(); ++i)
+            feedTo(leads.lead_in[i]);
+        feedTo(cut.points.front());
+    }
+    if (leads.used) comment("cut");
+    for (size_t i = 1; i <= cut.points.size(); ++i)
+        feedTo(cut.closedAt(i));
+    if (!leads.lead_out.empty()) {
+        comment("lead-out");
+        for (const ProfilePoint& p : leads.lead_out)
+            feedTo(p);
     }
     line("G94");
     line("M5 (torch off)");
+    if (leads.used) line(fmt("G0 Z%.4f (torch up)", written(leads.pierce_height_mm)));
     comment(fmt("%.0f moves, developed length %.3f mm, cutting time %.2f s",
                 static_cast<double>(st.moves), st.length_mm, st.time_s));
     line("M2");

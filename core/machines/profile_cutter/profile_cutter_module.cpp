@@ -192,11 +192,25 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
         out.outcome = Outcome::refuse(data->cut.kerf_problem, "process.override.kerf_mm");
         return out;
     }
+    data->leads = computeProfileLeads(job, data->cut);
+    if (!data->leads.problem.empty()) {
+        out.outcome = Outcome::refuse(data->leads.problem, data->leads.problem_key);
+        return out;
+    }
+    if (data->leads.used)
+        out.summary += formatC("; lead-in %s %.2f mm, lead-out %s %.2f mm; pierce at Z %.2f mm "
+                               "for %.2f s, cut at Z %.2f mm",
+                               toString(data->leads.in.kind), data->leads.in.length_mm,
+                               toString(data->leads.out.kind), data->leads.out.length_mm,
+                               data->leads.pierce_height_mm, data->leads.pierce_delay_s,
+                               data->leads.cut_height_mm);
     if (!sch.problem.empty()) {
         out.outcome = Outcome::refuse(messageC("not feasible: %s", sch.problem.c_str()));
         return out;
     }
-    if (const std::string travel = travelProblem(job, data->cut); !travel.empty()) {
+    std::string travel = travelProblem(job, data->cut);
+    if (travel.empty()) travel = leadTravelProblem(job, data->leads);
+    if (!travel.empty()) {
         out.outcome = Outcome::refuse(messageC("not feasible: %s", travel.c_str()));
         return out;
     }
@@ -243,7 +257,7 @@ std::string ProfileCutterModule::exportFileWith(const std::string& exportId, con
     }
     if (!data) throw std::invalid_argument("the plan has no profile cut");
     if (exportId == "path_csv") return profilePathCsv(data->cut, data->schedule);
-    if (exportId == "gcode") return profileGcode(job, data->cut);
+    if (exportId == "gcode") return profileGcode(job, data->cut, data->leads);
     throw std::invalid_argument("the profile cutter has no export " + json::quote(exportId));
 }
 

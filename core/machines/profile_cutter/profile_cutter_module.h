@@ -8,6 +8,7 @@
 // x_travel_mm, branch_position_mm }.
 #include "core/machine/machine_module.h"
 #include "core/machines/profile_cutter/profile_cutter.h"
+#include "core/machines/profile_cutter/profile_lead.h"
 #include "core/machines/profile_cutter/stepper_schedule.h"
 
 namespace cutcell {
@@ -18,6 +19,7 @@ inline constexpr const char* kProfileCutterId = "profile_cutter_2axis";
 struct ProfileCutterPlanData {
     ProfileCut cut;
     PulseSchedule schedule;
+    ProfileLeads leads; // the lead-in / lead-out and torch heights (unused: none asked for)
 };
 
 class ProfileCutterModule : public MachineModule {

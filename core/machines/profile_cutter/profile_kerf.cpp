@@ -107,6 +107,10 @@ Outcome compensateProfileKerf(ProfileCut& cut, double kerf_mm) {
     return o;
 }
 
+bool profileScrapOnLeft(const ProfileCut& cut) {
+    return scrapSide(cut, workPoints(cut)) == ScrapSide::Left;
+}
+
 Outcome profileEdgeFromTorch(ProfileCut& torch) {
     if (torch.kerf_mm == 0) return Outcome::done();
     const Outcome o = shiftCut(torch, torch.kerf_mm, false);

@@ -17,4 +17,9 @@ Outcome compensateProfileKerf(ProfileCut& cut, double kerf_mm);
 // The edge back from a torch path made by compensateProfileKerf (the inverse, for checks).
 Outcome profileEdgeFromTorch(ProfileCut& torch);
 
+// Whether the scrap lies left of the travel (seen from outside the pipe; on the developed
+// surface (X, R_w A) left of a direction (dX, dU) is (-dU, dX)): the side the kerf offset and
+// the lead-in / lead-out (profile_lead.h) go to. The cut needs >= 3 points.
+bool profileScrapOnLeft(const ProfileCut& cut);
+
 } // namespace cutcell

@@ -13,9 +13,11 @@ namespace {
 // Where a target is, for messages: "pass groove top flange, upper face (top flange, upper face,
 // s = 120.0 mm)".
 std::string where(const EndCut& cut, const CutPass& pass, const TorchTarget& t) {
-    return messageC("pass %s (%s, s = %.1f mm%s)", pass.name.c_str(),
-                    cut.outline().segments()[t.segment].name.c_str(), t.s_mm,
-                    t.turning ? ", turning at the corner" : "");
+    const char* segment = cut.outline().segments()[t.segment].name.c_str();
+    if (t.turning)
+        return messageC("pass %s (%s, s = %.1f mm, turning at the corner)", pass.name.c_str(),
+                        segment, t.s_mm);
+    return messageC("pass %s (%s, s = %.1f mm)", pass.name.c_str(), segment, t.s_mm);
 }
 
 // The groove's key of a bevelled face (grooveOf() maps flanges and legs' horizontal faces to

@@ -94,6 +94,7 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     const SectionSteelSpec& s = specOf(job);
     checkSteelSpec(c, s, job.sim.period_s);
     checkProcess(c, job.process, steelPartThicknessMm(s));
+    checkNoLeads(c, job.process, "section-steel cutter");
     // The cut chart gives this machine its kerf only: an operator's speed there would be ignored.
     if (const auto v = job.process.override.get(CutFigure::CutSpeedMmMin); job.process.used && v)
         c.add("process.override.cut_speed_mm_min",
