@@ -34,7 +34,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <poll.h>
 #include <pthread.h>
 #include <sys/resource.h>
 #include <thread>
@@ -110,9 +109,8 @@ class BenchHost {
         thread_ = std::thread([this] {
             while (!stop_) {
                 int rc = mosquitto_loop(m_, 100, 1);
-                pollfd p{mosquitto_socket(m_), POLLOUT, 0};
-                if (rc == MOSQ_ERR_SUCCESS && !connected_ && p.fd >= 0 && ::poll(&p, 1, 0) == 1 &&
-                    (p.revents & (POLLHUP | POLLERR)))
+                if (rc == MOSQ_ERR_SUCCESS && !connected_ &&
+                    shopfloor::socketHungUp(mosquitto_socket(m_)))
                     rc = MOSQ_ERR_CONN_LOST;
                 if (rc == MOSQ_ERR_SUCCESS || stop_) continue;
                 connected_ = false;
@@ -323,7 +321,7 @@ int benchCells(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, j
         const NodeTally& b = it == before.end() ? zero : it->second;
         data += n.data - b.data;
         bytes += n.bytes - b.bytes;
-        seq_errors += n.seq_errors;
+        seq_errors += n.seq_errors - b.seq_errors;
     }
     const double per_cell = static_cast<double>(data) / window / count;
     put(out, "shopfloor_cells", count);
@@ -332,9 +330,11 @@ int benchCells(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, j
     put(out, "shopfloor_ndata_per_s_per_cell", per_cell);
     put(out, "shopfloor_messages_per_s_all_cells", static_cast<double>(data) / window);
     put(out, "shopfloor_bytes_per_s_per_cell", static_cast<double>(bytes) / window / count);
-    put(out, "shopfloor_latency_ms_p50", percentile(latency, 0.5));
-    put(out, "shopfloor_latency_ms_p99", percentile(latency, 0.99));
-    put(out, "shopfloor_latency_ms_max", percentile(latency, 1.0));
+    if (!latency.empty()) { // none received: no figure rather than a 0 that reads as "fast"
+        put(out, "shopfloor_latency_ms_p50", percentile(latency, 0.5));
+        put(out, "shopfloor_latency_ms_p99", percentile(latency, 0.99));
+        put(out, "shopfloor_latency_ms_max", percentile(latency, 1.0));
+    }
     put(out, "shopfloor_seq_errors", static_cast<double>(seq_errors));
     put(out, "shopfloor_node_cpu_pct_per_cell", 100 * nodes_cpu / window / count);
     put(out, "shopfloor_nodes_cpu_pct_all", 100 * nodes_cpu / window);
@@ -505,7 +505,10 @@ int benchOutage(shopfloor::LocalBroker& broker, const BenchShopfloorOptions& o, 
         return kUnreachable;
     }
     BenchHost host(broker, true); // persistent: the broker keeps what arrives while it is away
-    if (!host.waitConnected(20)) return kFailure;
+    if (!host.waitConnected(20)) {
+        std::fprintf(stderr, "bench-shopfloor: the host did not connect to the local broker\n");
+        return kFailure;
+    }
     BrokerKeeper keeper(broker);
     // Rounds of three runs - without the link, with it, with the broker lost - interleaved so
     // that the machine's changing load falls on all three alike.

@@ -304,18 +304,23 @@ std::vector<Command> declareCommands(CLI::App& app, AllOptions& o) {
             "cells' messages, bytes, latency and CPU (the broker's too), or --outage: the engine's "
             "timing with the broker killed mid-run and what arrives when it returns",
             [&] { return runBenchShopfloor(o.bench_shopfloor); });
-    addInteger(*benchShopfloor, "--cells", o.bench_shopfloor.cells, {1, 1000, ""},
-               "simulated cells, each its own edge node (default 1)");
-    addNumber(*benchShopfloor, "--seconds", o.bench_shopfloor.seconds, {1, 3600, "s"},
-              "the measuring window (default 30)");
-    benchShopfloor->add_flag("--outage", o.bench_shopfloor.outage,
-                             "run the job three times in real time: without the link, with it, "
-                             "and with the broker killed a third in and back at two thirds");
+    CLI::Option* cells =
+        addInteger(*benchShopfloor, "--cells", o.bench_shopfloor.cells, {1, 1000, ""},
+                   "simulated cells, each its own edge node (default 1)");
+    CLI::Option* seconds = addNumber(*benchShopfloor, "--seconds", o.bench_shopfloor.seconds,
+                                     {1, 3600, "s"}, "the measuring window (default 30)");
+    CLI::Option* outage = benchShopfloor->add_flag(
+        "--outage", o.bench_shopfloor.outage,
+        "run the job three times in real time: without the link, with it, and with the broker "
+        "killed a third in and back at two thirds");
+    outage->excludes(cells)->excludes(seconds); // a mode's options are refused in the other
     addInteger(*benchShopfloor, "--rounds", o.bench_shopfloor.rounds, {1, 100, ""},
-               "--outage: rounds of the three runs, interleaved (default 1; medians printed)");
+               "--outage: rounds of the three runs, interleaved (default 1; medians printed)")
+        ->needs(outage);
     benchShopfloor
         ->add_option("--job", o.bench_shopfloor.job, "--outage: the job (default: the default job)")
-        ->type_name("JOB");
+        ->type_name("JOB")
+        ->needs(outage);
     benchShopfloor->add_flag("--json", o.bench_shopfloor.json, "print the figures as JSON");
 
     CLI::App* history =

@@ -116,7 +116,7 @@ ShopfloorSettingsDialog::ShopfloorSettingsDialog(std::string path,
     }
     // Wide ranges: the limits are the checker's (Save names them), not the fields' own.
     port_->setRange(0, 999999);
-    axisRate_->setDecimals(2);
+    axisRate_->setDecimals(3); // 0.125 Hz shown and saved as it is (2 decimals rounded it)
     axisRate_->setRange(0, 1000);
     axisRate_->setSuffix(" Hz");
     capacity_->setRange(0, 99999999);

@@ -50,8 +50,9 @@ LeadSpec readLead(SectionReader& p, const char* name, bool out) {
         throw JobError(l.key("kind") + " is required (\"line\", \"arc\" or \"none\")");
     if (lead.used())
         lead.length_mm = l.number("length_mm", "mm");
-    else
-        l.get("length_mm");
+    else if (l.has("length_mm")) // never read and dropped
+        throw JobError(l.key("length_mm") + " is given but " + l.key("kind") +
+                       " is \"none\": remove it, or choose \"line\" or \"arc\"");
     if (out) lead.overlap_mm = l.number("overlap_mm", "mm", 0);
     l.finish();
     return lead;
@@ -224,12 +225,18 @@ std::string leadHeightProblem(const ProcessSpec& spec, const ProcessSettings& s)
 
 void checkNoLeads(IssueChecker& c, const ProcessSpec& spec, const char* machine) {
     for (const auto& [key, lead] :
-         {std::pair{"lead_in", &spec.lead_in}, {"lead_out", &spec.lead_out}})
+         {std::pair{"lead_in", &spec.lead_in}, {"lead_out", &spec.lead_out}}) {
         if (lead->used())
             c.add(std::string("process.") + key + ".kind",
                   messageC("process.%s.kind = \"%s\": the %s does not plan leads yet (the "
                            "profile cutter does); set \"none\" or remove it",
                            key, toString(lead->kind), machine));
+        else if (lead->overlap_mm > 0)
+            c.add(std::string("process.") + key + ".overlap_mm",
+                  messageC("process.%s.overlap_mm = %.6g mm: the %s does not plan leads yet (the "
+                           "profile cutter does); remove it",
+                           key, lead->overlap_mm, machine));
+    }
 }
 
 } // namespace cutcell

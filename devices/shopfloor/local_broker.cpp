@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <netinet/in.h>
+#include <pthread.h>
 #include <pwd.h>
 #include <sstream>
 #include <sys/prctl.h>
@@ -123,22 +124,38 @@ bool LocalBroker::launch() {
     // The child only makes system calls on prepared data before exec.
     const std::string out = dir_ + "/mosquitto.out", conf = dir_ + "/mosquitto.conf";
     const char* argv[] = {mosquitto_.c_str(), "-c", conf.c_str(), nullptr};
+    // No signal handler of this program may run in the child (it shares our memory until exec):
+    // every signal blocked across vfork, the child resets the handlers before it unblocks them.
+    sigset_t all, before;
+    ::sigfillset(&all);
+    ::pthread_sigmask(SIG_SETMASK, &all, &before);
+    const pid_t parent = ::getpid();
     pid_ = ::vfork();
     if (pid_ == 0) {
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // never outlive the thread that started it
+        for (int sig = 1; sig < NSIG; ++sig)
+            ::signal(sig, SIG_DFL); // the child's own table (vfork shares memory, not handlers)
+        ::sigprocmask(SIG_SETMASK, &before, nullptr);
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);      // never outlive the thread that started it
+        if (::getppid() != parent) ::_exit(127); // that thread died before the line above
         const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0600);
         if (fd >= 0) {
             ::dup2(fd, 1);
             ::dup2(fd, 2);
         }
+        ::close_range(3, ~0U, 0); // our sockets and files are not the broker's
         ::execv(argv[0], const_cast<char* const*>(argv));
         ::_exit(127);
     }
+    ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
     if (pid_ < 0) return false;
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (!portAccepts(port_)) {
         int status = 0;
-        if (::waitpid(pid_, &status, WNOHANG) == pid_ || std::chrono::steady_clock::now() > until) {
+        if (::waitpid(pid_, &status, WNOHANG) == pid_) { // it ended (and is reaped): no kill
+            pid_ = -1;
+            return false;
+        }
+        if (std::chrono::steady_clock::now() > until) {
             stop(false);
             return false;
         }
@@ -148,6 +165,8 @@ bool LocalBroker::launch() {
 }
 
 bool LocalBroker::restart() {
+    int status = 0;
+    if (pid_ > 0 && ::waitpid(pid_, &status, WNOHANG) == pid_) pid_ = -1; // it died on its own
     if (running()) return true;
     return launch();
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <poll.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 namespace cutcell::shopfloor {
@@ -301,16 +302,15 @@ bool MosquittoLink::pause(double seconds) {
                            [&] { return stopping_.load(); });
 }
 
-namespace {
-
-// Whether the socket of a CONNECT under way is already gone (hung up: refused, reset).
-bool socketHungUp(int fd) {
-    if (fd < 0) return false;
+int socketHungUp(int fd) {
+    if (fd < 0) return 0;
     pollfd p{fd, POLLOUT, 0};
-    return ::poll(&p, 1, 0) == 1 && (p.revents & (POLLHUP | POLLERR)) != 0;
+    if (::poll(&p, 1, 0) != 1 || (p.revents & (POLLHUP | POLLERR)) == 0) return 0;
+    int error = 0;
+    socklen_t len = sizeof error;
+    if (::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &len) != 0 || error == 0) error = ECONNRESET;
+    return error;
 }
-
-} // namespace
 
 void MosquittoLink::sessionEnded(int rc, int err) {
     withNode([&] { node_.disconnected(); }); // after on_disconnect this changes nothing
@@ -359,9 +359,11 @@ void MosquittoLink::run() {
             // keep-alives have passed (45 s by default: a busy loop, and a broker back after an
             // outage reached that much later). A hung-up socket says it at once; an attempt
             // without an answer ends after kConnectTimeoutS.
-            if (socketHungUp(mosquitto_socket(mosq_))) {
+            if (const int gone = socketHungUp(mosquitto_socket(mosq_))) {
                 rc = MOSQ_ERR_ERRNO;
-                err = connect_errno == ECONNREFUSED ? ECONNREFUSED : ECONNRESET;
+                // libmosquitto may have taken the socket's error already; a connect refused at
+                // once left it in errno.
+                err = gone == ECONNRESET && connect_errno == ECONNREFUSED ? ECONNREFUSED : gone;
             } else if (std::chrono::steady_clock::now() - began >
                        std::chrono::duration<double>(kConnectTimeoutS)) {
                 rc = MOSQ_ERR_ERRNO;

@@ -50,6 +50,11 @@ struct LinkStatus {
 // back-off): a broker that takes longer to answer a TLS handshake is not usable anyway.
 inline constexpr double kConnectTimeoutS = 10;
 
+// Whether the socket of a CONNECT under way is already gone (refused, reset): its error (the
+// socket's, else ECONNRESET), 0 while it lives. libmosquitto 2.0.11 under TLS does not notice a
+// refused connect itself (see MosquittoLink::run).
+int socketHungUp(int fd);
+
 struct MosquittoLinkOptions {
     double reconnect_min_s = 1;  // the first retry's delay, doubled each failure ...
     double reconnect_max_s = 30; // ... up to this

@@ -473,6 +473,9 @@ const char* const kCoreMessages[] = {
                       "process.override.cut_speed_mm_min = %.6g mm/min is not used by the "
                       "section-steel cutter: it cuts at motion.speed_mm_s = %.6g mm/s (its process "
                       "section gives the kerf); set the speed there"),
+    QT_TRANSLATE_NOOP("CoreMessage",
+                      "process.override.%s = %.6g %s is not used by the section-steel cutter (its "
+                      "process section gives the kerf only); remove it"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s (and %zu more points)"),
     QT_TRANSLATE_NOOP("CoreMessage", "the cut has no path"),
     QT_TRANSLATE_NOOP("CoreMessage",
@@ -540,6 +543,8 @@ const char* const kCoreMessages[] = {
                                      "gives no %s; set %s (%s, [%.6g, %.6g] %s)"),
     QT_TRANSLATE_NOOP("CoreMessage", "process.%s.kind = \"%s\": the %s does not plan leads yet "
                                      "(the profile cutter does); set \"none\" or remove it"),
+    QT_TRANSLATE_NOOP("CoreMessage", "process.%s.overlap_mm = %.6g mm: the %s does not plan leads "
+                                     "yet (the profile cutter does); remove it"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s = %.6g %s is outside (%.6g, %.6g] %s"),
     QT_TRANSLATE_NOOP("CoreMessage", "tool"),
     QT_TRANSLATE_NOOP("CoreMessage",
@@ -782,6 +787,6 @@ const char* const kCoreMessages[] = {
     QT_TRANSLATE_NOOP("CoreMessage", "%d CiA 402 drives (%d CSP, %d CST)"),
     QT_TRANSLATE_NOOP("CoreMessage", "%s + CiA 406 encoder %d (%s)"),
 };
-const int kCoreMessageCount = 556;
+const int kCoreMessageCount = 558;
 
 } // namespace CutCell::ui

@@ -1339,6 +1339,11 @@
         <translation>process.override.cut_speed_mm_min = %.6g mm/min wird von der Profilstahl-Schneidanlage nicht verwendet: sie schneidet mit motion.speed_mm_s = %.6g mm/s (ihr Prozessabschnitt gibt die Schnittfuge); die Geschwindigkeit dort einstellen</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>process.override.%s = %.6g %s is not used by the section-steel cutter (its process section gives the kerf only); remove it</source>
+        <translation>process.override.%s = %.6g %s wird von der Profilstahl-Schneidanlage nicht verwendet (ihr Prozessabschnitt gibt nur die Schnittfuge); entfernen</translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>%s has %zu bytes: at most %d</source>
         <translation>%s hat %zu Bytes: höchstens %d</translation>
@@ -1448,6 +1453,11 @@
         <location line="+1"/>
         <source>process.%s.kind = &quot;%s&quot;: the %s does not plan leads yet (the profile cutter does); set &quot;none&quot; or remove it</source>
         <translation>process.%s.kind = &quot;%s&quot;: %s plant noch keine An- und Ausfahrten (der Profilschneider schon); &quot;none&quot; setzen oder entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.%s.overlap_mm = %.6g mm: the %s does not plan leads yet (the profile cutter does); remove it</source>
+        <translation>process.%s.overlap_mm = %.6g mm: %s plant noch keine An- und Ausfahrten (der Profilschneider schon); entfernen</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2425,7 +2435,7 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-304"/>
+        <location line="-306"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
@@ -2630,7 +2640,7 @@
         <translation>%s.r_mm = %.6g mm passt nicht auf den senkrechten Schenkel (%.6g mm)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%s (and %zu more points)</source>
         <translation>%s (und %zu weitere Punkte)</translation>
     </message>
@@ -2715,7 +2725,7 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-99"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
@@ -2735,7 +2745,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>

@@ -219,3 +219,33 @@ TEST(ProcessJob, ARobotJobWithALeadInIsRefusedNotIgnored) {
     job.process.lead_in.kind = LeadKind::None;
     EXPECT_TRUE(validateJob(job).empty());
 }
+
+// A lead's length without a lead is refused (never read and dropped); an overlap alone is a lead
+// the robot does not plan, so it is an issue there too.
+TEST(ProcessJob, ALeadsFiguresWithoutALeadAreNotDropped) {
+    const std::string good = textOf(plasmaJob());
+    const size_t at = good.find("\"material\"");
+    ASSERT_NE(at, std::string::npos);
+    std::string text = good;
+    text.insert(at, R"("lead_in": {"kind": "none", "length_mm": 5}, )");
+    try {
+        parseJob(text);
+        ADD_FAILURE() << "a length without a lead was accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("lead_in.length_mm is given but"), std::string::npos)
+            << e.what();
+    }
+    text = good;
+    text.insert(at, R"("lead_out": {"kind": "none", "overlap_mm": 3}, )");
+    Job job = plasmaJob();
+    job.process.lead_out.overlap_mm = 3;
+    EXPECT_TRUE(
+        hasIssue(validateJob(job), "process.lead_out.overlap_mm", "does not plan leads yet"));
+    try { // the file says the same (a job is validated as it is read)
+        parseJob(text);
+        ADD_FAILURE() << "an overlap on the robot was accepted";
+    } catch (const JobError& e) {
+        EXPECT_NE(std::string(e.what()).find("lead_out.overlap_mm = 3 mm"), std::string::npos)
+            << e.what();
+    }
+}

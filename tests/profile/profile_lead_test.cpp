@@ -190,7 +190,7 @@ std::vector<Canon> readCanon(const std::string& canon) {
     return out;
 }
 
-// rs274 reads: rapid to the pierce point, Z at the pierce height, torch on, a dwell of the
+// rs274 reads: Z to the pierce height, rapid to the pierce point, torch on, a dwell of the
 // pierce delay, Z down to the cut height, the lead-in moves, then the cut, then the lead-out.
 TEST(ProfileLead, Rs274ReadsPierceDwellLeadInThenCut) {
     int status = 0;
@@ -225,12 +225,13 @@ TEST(ProfileLead, Rs274ReadsPierceDwellLeadInThenCut) {
             static const Canon none{};
             return i < c.size() ? c[i++] : none;
         };
+        // The torch up to the pierce height first (where it stands), then the rapid at it.
+        const Canon& up = next("STRAIGHT_TRAVERSE");
+        EXPECT_NEAR(up.z, 3.8, 1e-9);
         const Canon& rapid = next("STRAIGHT_TRAVERSE");
         EXPECT_NEAR(rapid.x, L.lead_in.front().x_mm, 1e-4);
         EXPECT_NEAR(rapid.a, L.lead_in.front().a_deg, 1e-4);
-        const Canon& up = next("STRAIGHT_TRAVERSE");
-        EXPECT_NEAR(up.z, 3.8, 1e-9);
-        EXPECT_NEAR(up.x, rapid.x, 1e-9);
+        EXPECT_NEAR(rapid.z, 3.8, 1e-9);
         EXPECT_EQ(c[i].name, "START_SPINDLE_CLOCKWISE");
         EXPECT_NEAR(next("DWELL").value, 0.7, 1e-9);
         const Canon& down = next("STRAIGHT_FEED");

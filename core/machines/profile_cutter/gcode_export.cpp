@@ -87,10 +87,11 @@ std::string profileGcode(const Job& job, const ProfileCut& cut, const ProfileLea
     if (!leads.used) {
         line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
     } else {
+        // The torch to its pierce height before it travels (not at whatever height it had).
+        line(fmt("G0 Z%.4f (pierce height)", written(leads.pierce_height_mm)));
         comment(leads.lead_in.empty() ? "rapid to the cut's start"
                                       : "rapid to the pierce point, on the scrap side");
         line(fmt("G0 X%.4f A%.4f", written(first.x_mm), written(first.a_deg)));
-        line(fmt("G0 Z%.4f (pierce height)", written(leads.pierce_height_mm)));
     }
     line("M3 S1 (torch on)");
     if (pierce > 0) line(fmt("G4 P%.3f (pierce)", pierce));

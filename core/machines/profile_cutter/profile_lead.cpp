@@ -162,7 +162,7 @@ ProfileLeads computeProfileLeads(const Job& job, const ProfileCut& cut, const Pr
     if (!job.process.used) return out;
     out.in = job.process.lead_in;
     out.out = job.process.lead_out;
-    out.used = out.in.used() || out.out.used();
+    out.used = out.in.used() || out.out.used() || out.out.overlap_mm > 0; // overlap alone too
     if (!out.used) return out;
     const ProcessSettings s = resolveProcess(job.process, cutPartWallMm(job));
     if (!s.ok()) {

@@ -95,13 +95,24 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     checkSteelSpec(c, s, job.sim.period_s);
     checkProcess(c, job.process, steelPartThicknessMm(s));
     checkNoLeads(c, job.process, "section-steel cutter");
-    // The cut chart gives this machine its kerf only: an operator's speed there would be ignored.
+    // The cut chart gives this machine its kerf only: any other override would be ignored.
     if (const auto v = job.process.override.get(CutFigure::CutSpeedMmMin); job.process.used && v)
         c.add("process.override.cut_speed_mm_min",
               messageC("process.override.cut_speed_mm_min = %.6g mm/min is not used by the "
                        "section-steel cutter: it cuts at motion.speed_mm_s = %.6g mm/s (its "
                        "process section gives the kerf); set the speed there",
                        *v, s.speed_mm_s));
+    for (std::size_t i = 0; i < kCutFigureCount && job.process.used; ++i) {
+        const auto f = static_cast<CutFigure>(i);
+        if (f == CutFigure::KerfMm || f == CutFigure::CutSpeedMmMin) continue;
+        if (const auto v = job.process.override.get(f)) {
+            const CutFigureInfo& info = cutFigureInfo(f);
+            c.add(std::string("process.override.") + info.key,
+                  messageC("process.override.%s = %.6g %s is not used by the section-steel "
+                           "cutter (its process section gives the kerf only); remove it",
+                           info.key, *v, info.unit));
+        }
+    }
     return c.issues;
 }
 
