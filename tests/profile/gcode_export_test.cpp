@@ -97,8 +97,7 @@ TEST(GcodeExport, Rs274ReadsBackTheSamePoints) {
         const auto file = dir / ("job" + std::to_string(k) + ".ngc");
         writeFileAtomically(file.string(), profileGcode(job, cut));
         int status = 0;
-        const std::string canon =
-            test::runCommand(rs274 + " -g " + file.string() + " 2>&1", &status);
+        const std::string canon = test::runRs274(rs274, file.string(), &status);
         ASSERT_EQ(status, 0) << canon;
         std::vector<std::pair<double, double>> feeds;
         std::istringstream in(canon);

@@ -151,8 +151,7 @@ TEST(ProfileKerf, Rs274ReadsBackTheCompensatedPath) {
                   std::string::npos);
         const auto file = dir / ("kerf" + std::to_string(j) + ".ngc");
         writeFileAtomically(file.string(), g);
-        const std::string canon =
-            test::runCommand(rs274 + " -g " + file.string() + " 2>&1", &status);
+        const std::string canon = test::runRs274(rs274, file.string(), &status);
         ASSERT_EQ(status, 0) << canon;
         std::istringstream in(canon);
         std::string line;

@@ -214,7 +214,7 @@ TEST(ProfileLead, Rs274ReadsPierceDwellLeadInThenCut) {
         EXPECT_NE(g.find("G4 P0.700 (pierce)"), std::string::npos);
         const auto file = dir / (std::string("lead_") + toString(target) + ".ngc");
         writeFileAtomically(file.string(), g);
-        const std::string out = test::runCommand(rs274 + " -g " + file.string() + " 2>&1", &status);
+        const std::string out = test::runRs274(rs274, file.string(), &status);
         ASSERT_EQ(status, 0) << out;
         const std::vector<Canon> c = readCanon(out);
         size_t i = 0;

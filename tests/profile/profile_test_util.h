@@ -33,6 +33,14 @@ inline std::string findRs274() {
     return status == 0 ? path : std::string();
 }
 
+// rs274 reading `file`, with HOME set to the file's folder: the interpreter truncates and maps
+// $HOME/.tool.mmap, so two at once under one HOME (ctest -j2 runs three rs274 tests) crashed one
+// with SIGBUS.
+inline std::string runRs274(const std::string& rs274, const std::string& file, int* status) {
+    const std::string folder = file.substr(0, file.rfind('/'));
+    return runCommand("HOME='" + folder + "' '" + rs274 + "' -g '" + file + "' 2>&1", status);
+}
+
 inline Job exampleProfileJob() {
     return loadJobFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json");
 }
