@@ -23,11 +23,7 @@ namespace {
 // A plasma process on the shipped chart with the kerf set by an override (the shipped charts
 // give no kerf), the chart row picked at the thickness given.
 void setKerf(Job& job, double kerf_mm) {
-    job.process.used = true;
-    job.process.process = CutProcess::Plasma;
-    job.process.material = "mild_steel";
-    job.process.consumable = "Powermax65/85 45A shielded";
-    job.process.thickness_mm = 3.0;
+    test::setPlasmaProcess(job);
     job.process.override.set(CutFigure::KerfMm, kerf_mm);
 }
 

@@ -23,11 +23,7 @@ namespace cutcell {
 namespace {
 
 void setProcess(Job& job, double kerf_mm) {
-    job.process.used = true;
-    job.process.process = CutProcess::Plasma;
-    job.process.material = "mild_steel";
-    job.process.consumable = "Powermax65/85 45A shielded";
-    job.process.thickness_mm = 3.0;
+    test::setPlasmaProcess(job);
     if (kerf_mm > 0) job.process.override.set(CutFigure::KerfMm, kerf_mm);
 }
 

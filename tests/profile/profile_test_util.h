@@ -41,6 +41,16 @@ inline std::string runRs274(const std::string& rs274, const std::string& file, i
     return runCommand("HOME='" + folder + "' '" + rs274 + "' -g '" + file + "' 2>&1", status);
 }
 
+// A plasma process on the shipped chart, its row picked at 3 mm (the shipped charts give no kerf:
+// the tests set it as an override).
+inline void setPlasmaProcess(Job& job) {
+    job.process.used = true;
+    job.process.process = CutProcess::Plasma;
+    job.process.material = "mild_steel";
+    job.process.consumable = "Powermax65/85 45A shielded";
+    job.process.thickness_mm = 3.0;
+}
+
 inline Job exampleProfileJob() {
     return loadJobFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/profile_cutter_job.json");
 }
