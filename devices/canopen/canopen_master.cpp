@@ -129,6 +129,7 @@ bool CanOpenMaster::start(std::string* error, int timeout_ms) {
         const std::uint32_t seenResets = m.rt[i].seen_resets;
         m.rt[i] = NodeRuntime{};
         m.rt[i].seen_resets = seenResets;
+        m.rt[i].cleared_resets = s.fault_reset_requests.load(std::memory_order_acquire);
         std::lock_guard lock(m.mutex);
         m.faultText[i].clear();
         m.emcyText[i].clear();
@@ -402,6 +403,8 @@ void CanOpenMaster::Impl::setFault(size_t i, std::uint32_t code, const std::stri
         std::lock_guard lock(mutex);
         faultText[i] = text;
     }
+    // A reset asked before this fault does not clear it (master thread: rt is its own).
+    rt[i].cleared_resets = shared[i].fault_reset_requests.load(std::memory_order_acquire);
     // The event first: whoever reacts to the fault (the engine) finds its reason logged.
     event(cfg.nodes[i].node, true, text);
     shared[i].master_fault.store(code, std::memory_order_release);

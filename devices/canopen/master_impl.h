@@ -33,7 +33,13 @@ struct NodeRuntime { // [master]
     size_t op = 0;
     int retries = 0;
     std::int64_t deadline_ns = 0;
+    // Fault reset requests (NodeShared::fault_reset_requests) have two readers on this
+    // thread, each with its own mark: the controlword's rising edge to the drive (the cycle,
+    // seen_resets) and the clearing of a master-side fault (onWake, cleared_resets). With one
+    // mark, a SYNC due between the request and its wake-up took the request for the
+    // controlword and the master's fault stayed: the drive reset, the axis still in Fault.
     std::uint32_t seen_resets = 0;
+    std::uint32_t cleared_resets = 0;
     int reset_phase = 0; // 1: send bit 7 low, 2: send bit 7 high (the rising edge)
     std::int32_t previous_actual = 0;
     bool was_enabled = false;

@@ -587,15 +587,19 @@ void CanOpenMaster::Impl::onWake() {
     for (size_t i = 0; i < shared.size(); ++i) {
         NodeShared& s = shared[i];
         // A fault reset of a master-side fault: clear it when its cause is gone, else start
-        // the node again (reset communication, SDO configuration).
+        // the node again (reset communication, SDO configuration). A request that finds no
+        // way yet (the bus down, the node starting) waits for the next wake-up.
         const std::uint32_t resets = s.fault_reset_requests.load(std::memory_order_acquire);
         const std::uint32_t fault = s.master_fault.load(std::memory_order_acquire);
-        if (resets != rt[i].seen_resets && fault != 0) {
+        if (resets != rt[i].cleared_resets && fault == 0) {
+            rt[i].cleared_resets = resets; // nothing of the master's to clear
+        } else if (resets != rt[i].cleared_resets) {
             const bool heartbeatFresh = now - s.heartbeat_ns.load() < heartbeatTimeoutNs;
             // An EMCY's fault: the drive's own reset (the controlword's rising edge) follows.
             const bool emcyOnly = rt[i].emcy_fault && heartbeatFresh;
             if (((fault == master_fault::kHeartbeatLost && heartbeatFresh) || emcyOnly) &&
                 rt[i].phase == StartupPhase::Running) {
+                rt[i].cleared_resets = resets;
                 rt[i].emcy_fault = false;
                 s.master_fault.store(0, std::memory_order_release);
                 std::lock_guard lock(mutex);
@@ -603,6 +607,7 @@ void CanOpenMaster::Impl::onWake() {
             } else if (device && device->state() == QCanBusDevice::ConnectedState &&
                        (rt[i].phase == StartupPhase::Failed ||
                         rt[i].phase == StartupPhase::Running)) {
+                rt[i].cleared_resets = resets;
                 event(cfg.nodes[i].node, false,
                       messageC("fault reset: configuring the node again"));
                 startNode(i, now);
