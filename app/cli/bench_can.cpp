@@ -8,6 +8,7 @@
 #include "devices/canopen/pdo.h"
 #include "devices/canopen/qt_can_frame.h"
 #include "devices/machines/can_cells.h"
+#include "devices/net/loopback_port.h"
 
 #include "qt_app.h"
 #include <QCanBus>
@@ -147,7 +148,7 @@ void benchCan(json::Object& out, bool quick) {
 
     Job job = defaultJob();
     const QString interface =
-        QStringLiteral("tcp://127.0.0.1:%1/can0").arg(40000 + static_cast<int>(getpid() % 20000));
+        QStringLiteral("tcp://127.0.0.1:%1/can0").arg(net::freeLoopbackPort());
     job.devices.can_interface = interface.toStdString();
     // The shortest cycle the bus admits for the default job's drives, rounded up to 0.5 ms.
     BusLoadInput in;

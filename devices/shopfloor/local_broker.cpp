@@ -1,6 +1,9 @@
 #include "devices/shopfloor/local_broker.h"
 
+#include "devices/net/loopback_port.h"
+
 #include <arpa/inet.h>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -20,22 +23,6 @@
 
 namespace cutcell::shopfloor {
 namespace {
-
-// A port on 127.0.0.1 nothing is bound to now, chosen by the kernel (0: none to give).
-int freeLoopbackPort() {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0) return 0;
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof a;
-    int port = 0;
-    if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 &&
-        ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) == 0)
-        port = ntohs(a.sin_port);
-    ::close(fd);
-    return port;
-}
 
 bool portAccepts(int port) {
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
@@ -95,7 +82,7 @@ std::string LocalBroker::start(const std::vector<BrokerUser>& users, int sys_int
     char tmpl[] = "/tmp/cutcell-broker-XXXXXX";
     if (!::mkdtemp(tmpl)) return "cannot make a folder in /tmp";
     dir_ = tmpl;
-    port_ = freeLoopbackPort();
+    port_ = net::freeLoopbackPort();
     if (port_ == 0) return "no loopback port to listen on";
     const std::string ec = " -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes";
     bool made =
@@ -187,9 +174,29 @@ bool LocalBroker::restart() {
 
 void LocalBroker::stop(bool clean) {
     if (pid_ <= 0) return;
+    // Mosquitto 2.0.11 sets its run flag after it installs its SIGTERM handler and opens its
+    // port: a SIGTERM in between is lost (measured: a broker stopped right after start() ran on
+    // and the stop waited for ever). So the SIGTERM is sent again until the broker ends, and a
+    // broker that has not ended after 10 s is killed.
+    const auto began = std::chrono::steady_clock::now();
+    auto last_signal = began;
     ::kill(pid_, clean ? SIGTERM : SIGKILL);
     int status = 0;
-    ::waitpid(pid_, &status, 0);
+    for (;;) {
+        const pid_t ended = ::waitpid(pid_, &status, WNOHANG);
+        if (ended == pid_ || (ended < 0 && errno != EINTR)) break; // gone (or reaped elsewhere)
+        const auto now = std::chrono::steady_clock::now();
+        if (now - began > std::chrono::seconds(10)) {
+            ::kill(pid_, SIGKILL);
+            ::waitpid(pid_, &status, 0);
+            break;
+        }
+        if (now - last_signal > std::chrono::milliseconds(500)) {
+            ::kill(pid_, clean ? SIGTERM : SIGKILL);
+            last_signal = now;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
     pid_ = -1;
 }
 

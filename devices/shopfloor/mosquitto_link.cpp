@@ -262,6 +262,9 @@ void MosquittoLink::onConnect(mosquitto*, void* self, int rc) {
 void MosquittoLink::onDisconnect(mosquitto*, void* self, int) {
     auto* l = static_cast<MosquittoLink*>(self);
     l->withNode([&] { l->node_.disconnected(); });
+    // The status bar says it at once; sessionEnded() adds the reason and the retry.
+    if (!l->stopping_ && l->accepted_) // stop() calls this from its own thread
+        l->setStatus(LinkState::Reconnecting, "connection to " + l->where() + " lost");
 }
 
 void MosquittoLink::onMessage(mosquitto*, void* self, const mosquitto_message* msg) {

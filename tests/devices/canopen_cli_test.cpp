@@ -249,7 +249,7 @@ class CanOpenCliTest : public QObject {
         QByteArray out, err;
         const int code = simulateOverCan(linear, {}, out, err);
         stop(sim);
-        QVERIFY2(code == 0, err.constData());
+        QVERIFY2(code == 0, err.right(900).constData());
         const QJsonObject can = QJsonDocument::fromJson(out).object();
         QCOMPARE(can["devices"].toObject()["kind"].toString(), QString("canopen"));
         compare(inProcess(cli_, linear), can, 1000);
@@ -272,7 +272,7 @@ class CanOpenCliTest : public QObject {
         QByteArray out, err;
         const int code = simulateOverCan(fine, {}, out, err);
         stop(sim);
-        QVERIFY2(code == 0, err.constData());
+        QVERIFY2(code == 0, err.right(900).constData());
         compare(inProcess(cli_, fine), QJsonDocument::fromJson(out).object(), 100000);
     }
 
@@ -319,7 +319,8 @@ class CanOpenCliTest : public QObject {
         QVERIFY(startDriveSim(sim));
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, dir_.filePath("lost-drive"), err), err.constData());
+        QVERIFY2(startRunUntilCut(run, dir_.filePath("lost-drive"), err),
+                 err.right(900).constData()); // the tail: where it stopped
         sim.kill();
         sim.waitForFinished(5000);
         QVERIFY(waitForExit(run, err, 20000));
@@ -422,7 +423,7 @@ class CanOpenCliTest : public QObject {
         QProcess run;
         QByteArray err;
         QVERIFY2(startRunUntilCut(run, dir_.filePath("runs-kill"), err),
-                 err.right(1500).constData());
+                 err.right(900).constData());
         QVERIFY(QTest::qWaitFor([&] { return bus.allEnabled(6); }, 2000));
         ::kill(static_cast<pid_t>(run.processId()), SIGKILL); // no code of the master runs
         const double killedAt = bus.now();
@@ -522,7 +523,7 @@ class CanOpenCliTest : public QObject {
         QProcess run;
         QByteArray err;
         const QString runs = dir_.filePath("runs-term");
-        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(900).constData());
         const size_t from = bus.heard.size();
         run.terminate(); // SIGTERM
         QVERIFY(waitForExit(run, err, 5000));
@@ -577,7 +578,7 @@ class CanOpenCliTest : public QObject {
         second.start(cli_, {"run", job_, "--devices", "canopen", "--can-plugin", "virtualcan",
                             "--can-interface", interface_, "--period-ms", "4", "--quiet"});
         QByteArray err;
-        QVERIFY2(waitForExit(second, err, 20000), err.right(1500).constData());
+        QVERIFY2(waitForExit(second, err, 20000), err.right(900).constData());
         QCOMPARE(second.exitCode(), 1);
         QVERIFY2(err.contains("another CANopen master is active") && err.contains("SYNC (0x080)"),
                  err.constData());
@@ -704,7 +705,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-emcy");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(900).constData());
         ::kill(static_cast<pid_t>(sim.processId()), SIGUSR1); // node 3 faults now
         QVERIFY(waitForExit(run, err, 10000));
         stop(sim);
@@ -720,7 +721,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-heartbeat");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(900).constData());
         ::kill(static_cast<pid_t>(sim.processId()), SIGUSR2); // node 2's heartbeats stop
         QVERIFY(waitForExit(run, err, 10000));
         stop(sim);
@@ -735,7 +736,7 @@ class CanOpenCliTest : public QObject {
         const QString runs = dir_.filePath("runs-bus");
         QProcess run;
         QByteArray err;
-        QVERIFY2(startRunUntilCut(run, runs, err), err.right(1500).constData());
+        QVERIFY2(startRunUntilCut(run, runs, err), err.right(900).constData());
         sim.kill();
         sim.waitForFinished();
         QVERIFY(waitForExit(run, err, 10000));
