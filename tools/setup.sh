@@ -80,11 +80,27 @@ if [ "$mode" = run ]; then
   exit 0
 fi
 
+# ctest, and when a test fails, a digest of its failure lines after the whole run: a CI log
+# shown by head and tail loses the middle of a long test output, where a QtTest FAIL! line is.
+run_ctest() {
+  local dir="$1"
+  shift
+  ctest --test-dir "$dir" "$@" && return 0
+  local status=$?
+  local log="$dir/Testing/Temporary/LastTest.log"
+  echo
+  echo "== failure digest ($dir): the failed tests and their failure lines"
+  cat "$dir/Testing/Temporary/LastTestsFailed.log" 2>/dev/null || true
+  grep -a -n -E -A4 '^FAIL!  :|: Failure$|^\[  FAILED  \]|ERROR: AddressSanitizer|runtime error:|^QFATAL|^QWARN .*try [0-9]+:' \
+    "$log" 2>/dev/null | cut -c1-400 | head -n 120 || true
+  return "$status"
+}
+
 echo "== test suite"
 # The independent CANopen peer's npm packages (pinned by tests/peer/package-lock.json).
 tools/peer_deps.sh tests/peer || echo "(no npm packages: the CANopen peer test reports skipped)"
 export QT_LOGGING_RULES="qt.canbus.plugins.virtualcan.info=false"
-ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+run_ctest "$build" --output-on-failure -j "$jobs" --timeout 600
 
 echo "== test suite under AddressSanitizer + UndefinedBehaviorSanitizer"
 san=build-asan
@@ -112,7 +128,7 @@ cmake --build "$san" -j "$jobs"
 # the other section-steel tests run that code under the sanitisers (the groove-pass speed
 # test, the grooved and mitred plans). The normal build above ran them all.
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir "$san" --output-on-failure -j "$jobs" --timeout 900 -LE realtime_run \
+  run_ctest "$san" --output-on-failure -j "$jobs" --timeout 900 -LE realtime_run \
   -E '^(EndCutPlan\.EveryCatalogueEntryPlans(AtTheEndsOfTheSpeedRange|ASquareAndAGroovedMitredEnd)|SectionTurnover\.EveryCatalogueEntryPlansItsSecondSetup|SectionEndCutSpeed\.EveryCatalogueEntryKeepsTheCuttingSpeedOnEveryMitre|SectionSteelGrooveArm\.TorchIkCountMatchesAMultistart|SectionSteelKerf\.EdgeRecoveredAndHalfKerfAcrossOnRandomCuts)$'
 
 echo "== fuzzing the job parser (libFuzzer, 60 s)"
