@@ -1,5 +1,7 @@
 #include "plots/tracking_plots_widget.h"
 
+#include <QHash>
+
 #include "plots/bounded_series.h"
 
 #include <QAction>
@@ -28,7 +30,8 @@ constexpr int kTickMs = 33; // ~30 Hz
 
 const QColor kTraceColours[TrackingPlotsWidget::kMaxAxes] = {
     QColor(31, 119, 180),  QColor(255, 127, 14), QColor(44, 160, 44),   QColor(214, 39, 40),
-    QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(127, 127, 127)};
+    QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(127, 127, 127),
+    QColor(188, 189, 34),  QColor(23, 190, 207), QColor(0, 0, 0),       QColor(255, 152, 150)};
 const QColor kCartColours[kCartTraces] = {QColor(220, 50, 47), QColor(40, 160, 60),
                                           QColor(38, 110, 210)};
 
@@ -73,8 +76,9 @@ struct TrackingPlotsWidget::Impl {
     TrackingPlotsWidget* self;
     QVBoxLayout* layout = nullptr;
     int axes = 6;
-    QStringList names; // kMaxAxes axis names
-    QStringList units; // kMaxAxes axis units
+    QStringList names;                    // kMaxAxes axis names
+    QStringList units;                    // kMaxAxes axis units
+    QHash<QString, QString> signalTitles; // unit -> title of a plot of signals, not errors
     QStringList tipNames{"x", "y", "z"};
     QString tipTitle; // set in the constructor (translated)
     BoundedSeries ring{6 + kCartTraces, kDefaultCapacity};
@@ -212,7 +216,8 @@ struct TrackingPlotsWidget::Impl {
             if (!unitOrder.contains(units[i])) unitOrder << units[i];
         for (const QString& unit : unitOrder) {
             const int plot = shown;
-            QCustomPlot* p = usePlot(TrackingPlotsWidget::tr("error (%1)").arg(unit));
+            QCustomPlot* p =
+                usePlot(signalTitles.value(unit, TrackingPlotsWidget::tr("error (%1)").arg(unit)));
             for (int i = 0; i < axes; ++i) {
                 if (units[i] != unit) continue;
                 QCPGraph* g = p->addGraph();
@@ -495,6 +500,13 @@ void TrackingPlotsWidget::setAxisNames(const QStringList& names) {
     d->dirty = true;
 }
 
+void TrackingPlotsWidget::setSignalPlot(const QString& unit, const QString& title) {
+    if (title.isEmpty())
+        d->signalTitles.remove(unit);
+    else
+        d->signalTitles.insert(unit, title);
+}
+
 void TrackingPlotsWidget::setAxes(const QStringList& names, const QStringList& units) {
     d->axes = std::clamp(static_cast<int>(names.size()), 1, kMaxAxes);
     for (int i = 0; i < d->axes; ++i) {
@@ -647,7 +659,9 @@ bool TrackingPlotsWidget::exportCsv(const QString& path, QString* error) {
     QByteArray out = "t_s";
     // Each column names its unit: an axis's own (deg or mm), the tip's mm.
     for (int i = 0; i < d->axes; ++i)
-        out += ',' + csvName(d->names[i]).toUtf8() + "_err_" + csvName(d->units[i]).toUtf8();
+        out += ',' + csvName(d->names[i]).toUtf8() +
+               (d->signalTitles.contains(d->units[i]) ? "_" : "_err_") +
+               csvName(d->units[i]).toUtf8();
     for (const QString& c : d->tipNames)
         out += ',' + csvName(c).toUtf8() + "_err_mm";
     out += '\n';

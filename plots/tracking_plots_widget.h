@@ -27,7 +27,7 @@ namespace cutcell::plots {
 class TrackingPlotsWidget : public QWidget {
     Q_OBJECT
   public:
-    static constexpr int kMaxAxes = 8;
+    static constexpr int kMaxAxes = 12;            // traces: up to 8 axes and a process's signals
     static constexpr int kDefaultCapacity = 60000; // samples kept per trace (60 s at 1 kHz)
 
     explicit TrackingPlotsWidget(QWidget* parent = nullptr);
@@ -37,6 +37,10 @@ class TrackingPlotsWidget : public QWidget {
     // appearance. Clears the data.
     void setAxes(const QStringList& names, const QStringList& units);
     QStringList axisUnits() const;
+    // A plot whose traces are not errors (a process's signals: the arc voltage, the torch
+    // height): its title instead of "error (unit)", and its CSV columns without "_err". Kept
+    // across setAxes(); an empty title removes it.
+    void setSignalPlot(const QString& unit, const QString& title);
     // The tip error traces (unit mm) and their plot's title; no names: no tip plot. Default
     // {"x", "y", "z"}, "Cartesian error (mm)". Clears the data.
     void setTipTraces(const QStringList& names, const QString& title);

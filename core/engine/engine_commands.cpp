@@ -189,6 +189,7 @@ void MotionEngine::Impl::endRun(const char* outcome) {
             program && program->axis_linear[static_cast<size_t>(i)];
     stats.fill(r.report);
     cruise.fillCruise(r.report);
+    if (program && program->correction) program->correction->fill(r.report);
     r.report.length_mm = program ? program->length_mm : 0;
     r.report.cut_time_s = program ? program->cut_time_s : 0;
     r.report.simulated_s = samples > 0 ? static_cast<double>(samples - 1) * T : 0;

@@ -105,6 +105,8 @@ void MotionEngine::Impl::runSource() {
     srcOut = SourceOutput{};
     source()->update(in, srcOut);
     sourceRan = true;
+    if (traj == TrajectoryKind::Source && program->correction)
+        program->correction->update(in, torchCommand, srcOut);
     if (traj == TrajectoryKind::Source) {
         runProgress.take(srcOut);
         setpoint = srcOut.position;

@@ -160,6 +160,7 @@ void MotionEngine::Impl::startSource(bool pierced) {
         SourceInput in = sourceInput();
         in.setpoint_velocity = JointVector::Zero();
         source()->start(in);
+        if (program->correction) program->correction->start(in);
         sourceStarted = true;
         sourceAtRest = false;
         cutStartTime = now;

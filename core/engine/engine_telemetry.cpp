@@ -44,6 +44,7 @@ void MotionEngine::Impl::publishTelemetry() {
     if (program) {
         std::snprintf(t.source_state.data(), t.source_state.size(), "%s", source()->stateName());
         t.master_position = srcOut.master_position;
+        if (sourceRan) t.process = srcOut.process;
     }
     t.setpoint = setpoint;
     t.actual = actualPositions();

@@ -3,6 +3,7 @@
 // All are trivially copyable with fixed-size text so the cycle never allocates.
 #include "core/common/types.h"
 #include "core/devices/device_interfaces.h"
+#include "core/engine/motion_source.h"
 
 #include <array>
 #include <cstdint>
@@ -98,6 +99,7 @@ struct TelemetrySample {
     bool torch_on = false;   // the process tool (torch or saw) is on
     bool process_ok = false; // arc established / blade at speed
     bool homed = false;
+    ProcessSignals process; // the program's process control (torch height), if it has one
 };
 
 // Where a run that ended short (emergency stop, fault, abort) stopped on its path: summary.json's

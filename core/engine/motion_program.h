@@ -7,6 +7,7 @@
 #include "core/devices/device_interfaces.h"
 #include "core/engine/motion_source.h"
 #include "core/engine/run_terms.h"
+#include "core/engine/setpoint_correction.h"
 #include "core/kinematics/tip_model.h"
 #include "core/trajectory/joint_spline.h"
 
@@ -43,6 +44,9 @@ struct MotionProgram {
     // MasterAxis: where the axes go before the source starts (the approach); ControlLaw: unused
     // (the law starts from where the axes are).
     JointVector start_position = JointVector::Zero();
+    // A process control on the set-point while the program runs (the torch height control),
+    // after the source each cycle; null for none. Updated by the engine thread only.
+    std::shared_ptr<SetpointCorrection> correction;
     std::uint32_t sensors_used = 0; // bit i: EngineDevices::sensors[i] must be present
     bool uses_tool = true;          // the process tool is lit (and awaited) before the motion
     JointSpline spline;             // JointSpline: t = 0 .. cut_time_s, at rest at both ends

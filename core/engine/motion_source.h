@@ -19,6 +19,19 @@ namespace cutcell {
 
 inline constexpr int kMaxSensors = 4;
 
+// The process signals of this cycle where the program runs a process control on the torch axis
+// (a torch height control: core/engine/setpoint_correction.h); telemetry and the run's figures.
+struct ProcessSignals {
+    bool present = false;       // a process control ran this cycle
+    bool arc_ok = false;        // the arc is established and the voltage reading valid
+    bool thc_enabled = false;   // the control corrects (false: it only measures)
+    std::uint8_t thc_state = 0; // the control's state (its own enum, e.g. ThcState)
+    double arc_voltage_v = 0;   // the (filtered) arc voltage
+    double standoff_mm = 0;     // the torch height above the surface estimated from the voltage
+    double height_error_mm = 0; // standoff - cut height: > 0 too high
+    double correction_mm = 0;   // the control's offset along the torch axis, > 0 down
+};
+
 // What the engine asks of the source this cycle.
 enum class SourceRequest : std::uint8_t {
     Track,          // follow the engine's set-point (hold, home, jog, approach): control laws only
@@ -79,6 +92,7 @@ struct SourceOutput {
     std::uint32_t point_index = 0, point_count = 0;
     // Units of work finished so far (pieces cut, strokes made; MotionProgram::terms).
     std::uint32_t made = 0;
+    ProcessSignals process; // written by the program's set-point correction, if it has one
 };
 
 class MotionSource {

@@ -71,6 +71,38 @@ void checkLead(IssueChecker& c, const LeadSpec& lead, const std::string& key) {
     c.range(key + ".overlap_mm", lead.overlap_mm, 0, 50, "mm");
 }
 
+TorchHeightSpec readTorchHeight(SectionReader& p) {
+    TorchHeightSpec t;
+    t.used = true;
+    SectionReader h = p.child("torch_height");
+    t.thc = h.boolean("thc", true);
+    t.arc_noise_v = h.number("arc_noise_v", "V", 0);
+    if (h.has("simulated_pipe")) {
+        SectionReader s = h.child("simulated_pipe");
+        t.ovality_mm = s.number("ovality_mm", "mm", 0);
+        t.major_axis_deg = s.number("major_axis_deg", "deg", 0);
+        t.runout_mm = s.number("runout_mm", "mm", 0);
+        t.runout_deg = s.number("runout_deg", "deg", 0);
+        t.taper_mm_per_m = s.number("taper_mm_per_m", "mm/m", 0);
+        s.finish();
+    }
+    h.finish();
+    return t;
+}
+
+void writeTorchHeight(const TorchHeightSpec& t, json::Object& p) {
+    if (!t.used) return;
+    p.emplace_back(
+        "torch_height",
+        json::Object{{"thc", t.thc},
+                     {"arc_noise_v", t.arc_noise_v},
+                     {"simulated_pipe", json::Object{{"ovality_mm", t.ovality_mm},
+                                                     {"major_axis_deg", t.major_axis_deg},
+                                                     {"runout_mm", t.runout_mm},
+                                                     {"runout_deg", t.runout_deg},
+                                                     {"taper_mm_per_m", t.taper_mm_per_m}}}});
+}
+
 } // namespace
 
 const char* toString(LeadKind k) {
@@ -131,6 +163,7 @@ void readProcess(SectionReader& section, ProcessSpec& spec) {
     }
     if (p.has("lead_in")) spec.lead_in = readLead(p, "lead_in", false);
     if (p.has("lead_out")) spec.lead_out = readLead(p, "lead_out", true);
+    if (p.has("torch_height")) spec.torch_height = readTorchHeight(p);
     p.finish();
 }
 
@@ -147,6 +180,7 @@ void writeProcess(const ProcessSpec& spec, json::Object& section) {
     if (!o.empty()) p.emplace_back("override", std::move(o));
     writeLead(spec.lead_in, "lead_in", false, p);
     writeLead(spec.lead_out, "lead_out", true, p);
+    writeTorchHeight(spec.torch_height, p);
     section.emplace_back("process", std::move(p));
 }
 
@@ -192,6 +226,8 @@ void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm) 
         }
     checkLead(c, spec.lead_in, "process.lead_in");
     checkLead(c, spec.lead_out, "process.lead_out");
+    if (spec.torch_height.used)
+        c.range("process.torch_height.arc_noise_v", spec.torch_height.arc_noise_v, 0, 10, "V");
     if (c.has("process.thickness_mm")) return;
     const ProcessSettings s = resolveProcess(spec, partWall_mm);
     if (!s.ok()) c.add(s.outcome.key, s.outcome.message);
@@ -223,20 +259,12 @@ std::string leadHeightProblem(const ProcessSpec& spec, const ProcessSettings& s)
                     info.unit, info.lo, info.hi, info.unit);
 }
 
-void checkNoLeads(IssueChecker& c, const ProcessSpec& spec, const char* machine) {
-    for (const auto& [key, lead] :
-         {std::pair{"lead_in", &spec.lead_in}, {"lead_out", &spec.lead_out}}) {
-        if (lead->used())
-            c.add(std::string("process.") + key + ".kind",
-                  messageC("process.%s.kind = \"%s\": the %s does not plan leads yet (the "
-                           "profile cutter does); set \"none\" or remove it",
-                           key, toString(lead->kind), machine));
-        else if (lead->overlap_mm > 0)
-            c.add(std::string("process.") + key + ".overlap_mm",
-                  messageC("process.%s.overlap_mm = %.6g mm: the %s does not plan leads yet (the "
-                           "profile cutter does); remove it",
-                           key, lead->overlap_mm, machine));
-    }
+void checkNoTorchHeight(IssueChecker& c, const ProcessSpec& spec, const char* machine) {
+    if (spec.torch_height.used)
+        c.add("process.torch_height",
+              messageC("process.torch_height: the %s has no torch height control (the pipe "
+                       "robot has); remove it",
+                       machine));
 }
 
 } // namespace cutcell

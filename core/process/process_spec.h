@@ -71,7 +71,7 @@ void checkProcess(IssueChecker& c, const ProcessSpec& spec, double partWall_mm);
 // both or no lead is asked for; else the key to set and one sentence naming it.
 std::string leadHeightKey(const ProcessSpec& spec, const ProcessSettings& s);
 std::string leadHeightProblem(const ProcessSpec& spec, const ProcessSettings& s);
-// For a machine that does not plan leads yet: a lead asked for is an issue (never ignored).
-void checkNoLeads(IssueChecker& c, const ProcessSpec& spec, const char* machine);
+// For a machine without a torch height control: process.torch_height is an issue.
+void checkNoTorchHeight(IssueChecker& c, const ProcessSpec& spec, const char* machine);
 
 } // namespace cutcell

@@ -23,6 +23,23 @@ struct LeadSpec {
 // "none", "line", "arc".
 const char* toString(LeadKind k);
 
+// Torch height control (process.torch_height): whether the THC corrects the height, and the
+// simulated cell's actual pipe (core/process/pipe_surface.h: PipeDefects without the radius,
+// which is the cut pipe's) and arc noise. On a real cell the pipe is what it is and the voltage
+// comes from the torch: the simulated_pipe keys then describe nothing and are refused there.
+//
+//   "torch_height": { "thc": true, "arc_noise_v": 0.5,
+//                     "simulated_pipe": { "ovality_mm": 2, "major_axis_deg": 20,
+//                                         "runout_mm": 0.5, "runout_deg": 20,
+//                                         "taper_mm_per_m": 0 } }
+struct TorchHeightSpec {
+    bool used = false; // the object is in the job
+    bool thc = true;   // false: the height is measured and reported, not corrected
+    double arc_noise_v = 0;
+    double ovality_mm = 0, major_axis_deg = 0, runout_mm = 0, runout_deg = 0, taper_mm_per_m = 0;
+    bool operator==(const TorchHeightSpec&) const = default;
+};
+
 struct ProcessSpec {
     bool used = false; // the section is in the job
     CutProcess process = CutProcess::Plasma;
@@ -32,6 +49,7 @@ struct ProcessSpec {
     CutRow override;                    // the figures set over the chart's (thickness never)
     LeadSpec lead_in;                   // absent: none (the cut starts where it pierces)
     LeadSpec lead_out;                  // absent: none
+    TorchHeightSpec torch_height;       // absent: no torch height control
     bool operator==(const ProcessSpec&) const = default;
 };
 

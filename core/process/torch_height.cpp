@@ -39,6 +39,10 @@ constexpr double kArcVoltageLo = 30, kArcVoltageHi = 400;
 } // namespace
 
 ThcProcess thcProcessFor(const CutChart& chart, const CutRow& row) {
+    return thcProcessFor(row, chart.volts_per_mm);
+}
+
+ThcProcess thcProcessFor(const CutRow& row, std::optional<double> voltsPerMm) {
     ThcProcess p;
     if (const auto h = row.get(CutFigure::CutHeightMm)) {
         p.cut_height_mm = *h;
@@ -49,8 +53,8 @@ ThcProcess thcProcessFor(const CutChart& chart, const CutRow& row) {
         p.arc_voltage_from_chart = true;
     }
     // 0 or absent: the chart has no slope for this consumable set.
-    if (chart.volts_per_mm && *chart.volts_per_mm > 0) {
-        p.volts_per_mm = *chart.volts_per_mm;
+    if (voltsPerMm && *voltsPerMm > 0) {
+        p.volts_per_mm = *voltsPerMm;
         p.volts_per_mm_from_chart = true;
     }
     p.cut_speed_mm_s = row.cutSpeedMmMin() / 60;

@@ -49,6 +49,7 @@
 #include "core/process/cut_chart.h"
 
 #include <cstdint>
+#include <optional>
 #include <random>
 
 namespace cutcell {
@@ -68,6 +69,8 @@ struct ThcProcess {
          volts_per_mm_from_chart = false;
 };
 ThcProcess thcProcessFor(const CutChart& chart, const CutRow& row);
+// The same from a row and its chart's slope (ProcessSettings: effective, volts_per_mm).
+ThcProcess thcProcessFor(const CutRow& row, std::optional<double> voltsPerMm);
 
 // (a) The simulated arc: V = V_cut + k_v (standoff - cut height) [+ noise].
 struct ArcModelSpec {

@@ -120,6 +120,25 @@ json::Value reportToJson(const TrackingReport& r, const std::array<std::string, 
         cruiseDoc.emplace_back("on_pipe_max_abs_error_mm", xyz(r.cruise_on_pipe_max_abs_mm));
     }
     doc.emplace_back("cruise", std::move(cruiseDoc));
+    if (const TorchHeightFigures& h = r.torch_height; h.valid)
+        doc.emplace_back(
+            "torch_height",
+            json::Object{{"about", "standoff error = torch height estimated from the arc voltage "
+                                   "- cut height, while the path moved with the arc on"},
+                         {"thc", h.thc_on ? "on" : "off"},
+                         {"cut_height_mm", h.cut_height_mm},
+                         {"samples", static_cast<double>(h.samples)},
+                         {"min_standoff_error_mm", h.min_error_mm},
+                         {"max_standoff_error_mm", h.max_error_mm},
+                         {"max_abs_standoff_error_mm", h.max_abs_error_mm},
+                         {"rms_standoff_error_mm", h.rms_error_mm},
+                         {"while_thc_active",
+                          json::Object{{"samples", static_cast<double>(h.active_samples)},
+                                       {"max_abs_standoff_error_mm", h.active_max_abs_error_mm},
+                                       {"rms_standoff_error_mm", h.active_rms_error_mm}}},
+                         {"max_abs_correction_mm", h.max_abs_correction_mm},
+                         {"min_arc_voltage_v", h.min_voltage_v},
+                         {"max_arc_voltage_v", h.max_voltage_v}});
     return doc;
 }
 

@@ -19,6 +19,22 @@ struct AxisErrorStats {
     double rms = 0;
 };
 
+// The torch height over a run with a process control on the torch axis (summary.json
+// "torch_height"): the standoff error estimated from the arc voltage while the path moved with
+// the arc on, THC on or off.
+struct TorchHeightFigures {
+    bool valid = false;
+    bool thc_on = false;
+    double cut_height_mm = 0;
+    long samples = 0;
+    double min_error_mm = 0, max_error_mm = 0, max_abs_error_mm = 0, rms_error_mm = 0;
+    // The same while the THC corrected (its Active state): 0 samples with the THC off.
+    long active_samples = 0;
+    double active_max_abs_error_mm = 0, active_rms_error_mm = 0;
+    double max_abs_correction_mm = 0;
+    double min_voltage_v = 0, max_voltage_v = 0;
+};
+
 struct TrackingReport {
     std::string method;
     bool reachable = true;
@@ -43,6 +59,7 @@ struct TrackingReport {
     std::array<AxisErrorStats, kMaxAxes> cruise_joints{};
     Vec3 cruise_cartesian_max_abs_mm = Vec3::Zero();
     Vec3 cruise_on_pipe_max_abs_mm = Vec3::Zero();
+    TorchHeightFigures torch_height;
 
     // Axis i's figures in its own unit: deg on a rotary axis, mm on a linear one.
     bool linear(int i) const { return axis_linear[static_cast<size_t>(i)]; }

@@ -1159,7 +1159,7 @@
         <translation>die Warteschlange von %d Stücken braucht etwa %.0f s Linienzeit (%.3g Zyklen bei %.3g ms), über der Grenze der Simulation von %.0f s: aufteilen (etwa %d Stücke der mittleren Länge dieser Warteschlange passen)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>path not reachable</source>
         <translation>Bahn nicht erreichbar</translation>
     </message>
@@ -1239,7 +1239,7 @@
         <translation>controller[%d].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>the cut has fewer than 3 points</source>
         <translation>der Schnitt hat weniger als 3 Punkte</translation>
     </message>
@@ -1254,12 +1254,17 @@
         <translation>lead_out</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-11"/>
         <source>process.%s.length_mm = %.6g mm is too long for the %s: the %s would reach the part&apos;s edge [it must stay half the kerf, %.6g mm, off it on the scrap side]; the longest that fits is %.3f mm</source>
         <translation>process.%s.length_mm = %.6g mm ist zu lang für %s: %s würde die Kante des Werkstücks erreichen [sie muss die halbe Schnittfuge, %.6g mm, auf der Restseite davon bleiben]; am längsten passen %.3f mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
+        <source>process.lead_out.overlap_mm = %.6g mm: the profile cutter writes the torch height (Z) with it, and the chart &apos;%s&apos; gives no %s; set %s</source>
+        <translation>process.lead_out.overlap_mm = %.6g mm: der Profilschneider schreibt damit die Brennerhöhe (Z), und die Tabelle &apos;%s&apos; gibt kein %s an; %s setzen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>the %s needs X = %.3f mm, outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
         <translation>%s braucht X = %.3f mm, außerhalb des Schlittenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
     </message>
@@ -1334,7 +1339,7 @@
         <translation>die Schnittfuge %.6g mm ist zu breit für die %s-Fase von %s (%s.angle_deg = %.6g deg) bei %s: die Fase nimmt einen Streifen von %.6g mm von der Fläche (längs des Stabs), und die Brennermitte, k/2 quer zur Fasenfläche, liefe %.6g mm hinein - über das Stabende hinaus; die Schnittfuge darf hier höchstens %.6g mm sein (k &lt;= 2 x Streifen x cos der Fasenfläche zum Stab)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>process.override.cut_speed_mm_min = %.6g mm/min is not used by the section-steel cutter: it cuts at motion.speed_mm_s = %.6g mm/s (its process section gives the kerf); set the speed there</source>
         <translation>process.override.cut_speed_mm_min = %.6g mm/min wird von der Profilstahl-Schneidanlage nicht verwendet: sie schneidet mit motion.speed_mm_s = %.6g mm/s (ihr Prozessabschnitt gibt die Schnittfuge); die Geschwindigkeit dort einstellen</translation>
     </message>
@@ -1344,7 +1349,7 @@
         <translation>process.override.%s = %.6g %s wird von der Profilstahl-Schneidanlage nicht verwendet (ihr Prozessabschnitt gibt nur die Schnittfuge); entfernen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
         <source>%s has %zu bytes: at most %d</source>
         <translation>%s hat %zu Bytes: höchstens %d</translation>
     </message>
@@ -1450,22 +1455,17 @@
         <translation>process.%s.kind = &quot;%s&quot; braucht die Höhe %s: die Schneidtabelle &apos;%s&apos; gibt kein %s; %s setzen (%s, [%.6g, %.6g] %s)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>process.%s.kind = &quot;%s&quot;: the %s does not plan leads yet (the profile cutter does); set &quot;none&quot; or remove it</source>
-        <translation>process.%s.kind = &quot;%s&quot;: %s plant noch keine An- und Ausfahrten (der Profilschneider schon); &quot;none&quot; setzen oder entfernen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>process.%s.overlap_mm = %.6g mm: the %s does not plan leads yet (the profile cutter does); remove it</source>
-        <translation>process.%s.overlap_mm = %.6g mm: %s plant noch keine An- und Ausfahrten (der Profilschneider schon); entfernen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%s = %.6g %s is outside (%.6g, %.6g] %s</source>
         <translation>%s = %.6g %s liegt außerhalb (%.6g, %.6g] %s</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>Simulated cell: 6 drives + torch + arc voltage (out-of-round pipe)</source>
+        <translation>Simulierte Zelle: 6 Antriebe + Brenner + Lichtbogenspannung (unrundes Rohr)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>cycle %.3f ms needs %d frames (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + heartbeats %.1f bit = %.1f bit = %.1f %% of %.0f kbit/s; the limit is %.0f %%</source>
         <translation>Zyklus %.3f ms braucht %d Telegramme (%d RPDO x %d bit + %d TPDO x %d bit + SYNC %d bit) + Heartbeats %.1f bit = %.1f bit = %.1f %% von %.0f kbit/s; die Grenze ist %.0f %%</translation>
     </message>
@@ -2000,7 +2000,72 @@
         <translation>%d SYNC (0x080)</translation>
     </message>
     <message>
+        <location line="-248"/>
+        <source>point %zu of the %s (x/y/z = %.2f/%.2f/%.2f mm): %s</source>
+        <translation>Punkt %zu von %s (x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>pierce height %.6g mm is below the cut height %.6g mm: the torch pierces above the cut height, then comes down to it; set process.override.pierce_height_mm to at least %.6g mm</source>
+        <translation>die Einstechhöhe %.6g mm liegt unter der Schneidhöhe %.6g mm: der Brenner sticht über der Schneidhöhe ein und senkt sich dann auf sie ab; process.override.pierce_height_mm auf mindestens %.6g mm setzen</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>process.lead_out.overlap_mm = %.6g mm: the section-steel cutter&apos;s cut is open (it starts and ends at the free edges beside the face on the conveyor): there is no start to overlap; remove it</source>
+        <translation>process.lead_out.overlap_mm = %.6g mm: der Schnitt der Profilstahl-Schneidanlage ist offen (er beginnt und endet an den freien Kanten neben der Fläche auf dem Förderer): es gibt keinen Anfang zum Überlappen; entfernen</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>process.%s.kind = &quot;%s&quot;: setup 2 (end_cut.setup = 2) cuts only bevels, which start and end off the material and take no lead; set &quot;none&quot; or remove it</source>
+        <translation>process.%s.kind = &quot;%s&quot;: Aufspannung 2 (end_cut.setup = 2) schneidet nur Fasen, die außerhalb des Materials beginnen und enden und keinen An- oder Ausschnitt nehmen; &quot;none&quot; setzen oder entfernen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>point %zu of pass %s (the %s at %s): %s</source>
+        <translation>Punkt %zu von Durchgang %s (%s bei %s): %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pierce</source>
+        <translation>Einstich</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lead-in</source>
+        <translation>Anschnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lead-out</source>
+        <translation>Ausschnitt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the point x = %.1f, y = %.1f, z = %.1f mm is off the path arm&apos;s plane (a planar 3R arm in the cut plane)</source>
+        <translation>der Punkt x = %.1f, y = %.1f, z = %.1f mm liegt außerhalb der Ebene des Bahnarms (ein ebener 3R-Arm in der Schnittebene)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the torch body hits the section %.0f mm behind the tip at x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f)</source>
+        <translation>der Brennerkörper trifft das Profil %.0f mm hinter der Spitze bei x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at x = %.1f, y = %.1f, z = %.1f mm: %s</source>
+        <translation>bei x = %.1f, y = %.1f, z = %.1f mm: %s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>process.%s.length_mm = %.6g mm is too long for the section-steel cutter: the %s (%s, off the free edge in the path arm&apos;s plane) cannot be cut %s; the longest that fits is %.3f mm</source>
+        <translation>process.%s.length_mm = %.6g mm ist zu lang für die Profilstahl-Schneidanlage: %s (%s, außerhalb der freien Kante in der Ebene des Bahnarms) kann nicht geschnitten werden %s; am längsten passen %.3f mm</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>process.torch_height: the %s has no torch height control (the pipe robot has); remove it</source>
+        <translation>process.torch_height: %s hat keine Brennerhöhenregelung (der Rohrroboter hat eine); entfernen</translation>
+    </message>
+    <message>
+        <location line="+117"/>
         <source>%d NMT commands (0x000, %s)</source>
         <translation>%d NMT-Befehle (0x000, %s)</translation>
     </message>
@@ -2435,12 +2500,12 @@
         <translation>%s + CiA-406-Geber %d (%s)</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-318"/>
         <source>path not reachable (%s method): %s</source>
         <translation>Bahn nicht erreichbar (Verfahren %s): %s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the cut needs X = %.3f mm (beta = %.2f deg), outside the carriage travel 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</source>
         <translation>der Schnitt braucht X = %.3f mm (beta = %.2f deg), außerhalb des Wagenwegs 0 .. machine.profile_cutter.x_travel_mm = %.3f mm</translation>
     </message>
@@ -2615,7 +2680,7 @@
         <translation>end_cut.setup = 2 (Profil gewendet): nichts mehr zu schneiden - Aufspannung 2 schneidet nur die Fase an der Unterseite des %s (auf dem Förderer in Aufspannung 1), die eine K-Fuge an den Flanschen braucht, und end_cut.flanges.groove = &quot;%s&quot;; Aufspannung 1 planen (end_cut.setup = 1)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>%s.%s = %.6g mm is outside [%.6g, %.6g] mm</source>
         <translation>%s.%s = %.6g mm liegt außerhalb von [%.6g, %.6g] mm</translation>
     </message>
@@ -2660,7 +2725,7 @@
         <translation>%s (alle %zu Lösungszweige)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>point %zu of pass %s (%s, turning at the corner, s = %.1f mm): %s</source>
         <translation>Punkt %zu des Durchgangs %s (%s, Drehung an der Ecke, s = %.1f mm): %s</translation>
     </message>
@@ -2670,17 +2735,17 @@
         <translation>Punkt %zu des Durchgangs %s (%s, s = %.1f mm): %s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>the torch body hits the section %.0f mm behind the tip at x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f, lean %.0f deg of max_lean_deg = %.0f)</source>
         <translation>der Brennerkörper trifft das Profil %.0f mm hinter der Spitze bei x = %.1f, y = %.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f, Neigung %.0f deg von max_lean_deg = %.0f)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-4"/>
         <source>path arm</source>
         <translation>Bahnarm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>path arm changes branch (joint jump %.1f deg)</source>
         <translation>Bahnarm wechselt den Lösungszweig (Gelenksprung %.1f deg)</translation>
     </message>
@@ -2695,12 +2760,12 @@
         <translation>Fugenarm wechselt den Lösungszweig (Gelenksprung %.1f deg)</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-18"/>
         <source>the cut has no path</source>
         <translation>der Schnitt hat keine Bahn</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
         <source>%s.root_face_mm = %.6g mm: a V groove has no root face (use Y)</source>
         <translation>%s.root_face_mm = %.6g mm: eine V-Fuge hat keinen Steg (Y verwenden)</translation>
     </message>
@@ -2725,17 +2790,17 @@
         <translation>drives[%zu].tau_f_s = %.6g s muss &gt;= der halben Regelperiode sein (%.6g s)</translation>
     </message>
     <message>
-        <location line="-99"/>
+        <location line="-111"/>
         <source>point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</source>
         <translation>Punkt %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s</translation>
     </message>
     <message>
-        <location line="-1"/>
+        <location line="-2"/>
         <source>planning cancelled</source>
         <translation>Planung abgebrochen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>joint 0 (chuck) = %.3f deg is past its range [%.1f, %.1f] deg</source>
         <translation>Gelenk 0 (Futter) = %.3f deg liegt außerhalb seines Bereichs [%.1f, %.1f] deg</translation>
     </message>
@@ -2745,7 +2810,7 @@
         <translation>der Brenner müsste sich %.2f deg in die Ebene von Gelenk 1 neigen (5-achsiger Arm), mehr als cut.max_direction_deviation_deg = %.2f deg</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+131"/>
         <source>tool</source>
         <translation>Werkzeug</translation>
     </message>
@@ -2755,7 +2820,7 @@
         <translation>Simulierte fliegende Säge: Liniengeber, Wagen, Drehtisch, 2 Blattvorschübe + Säge</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Simulated cell: 6 drives + torch</source>
         <translation>Simulierte Zelle: 6 Antriebe + Brenner</translation>
     </message>
@@ -3066,7 +3131,7 @@
 <context>
     <name>CutCell::ui::CellViewPanel</name>
     <message>
-        <location filename="../../ui/panels/monitor_views.cpp" line="+30"/>
+        <location filename="../../ui/panels/monitor_views.cpp" line="+32"/>
         <source>3D view not built in this configuration.</source>
         <translation>3D-Ansicht in dieser Konfiguration nicht verfügbar.</translation>
     </message>
@@ -3631,7 +3696,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::CutForm</name>
     <message>
-        <location filename="../../ui/forms/cut_form.cpp" line="+18"/>
+        <location filename="../../ui/forms/cut_form.cpp" line="+20"/>
         <source>Target and bevel</source>
         <translation>Ziel und Fase</translation>
     </message>
@@ -5243,7 +5308,7 @@ entriegeln</translation>
         <translation>Zyklus &amp;&amp; Geräte</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>This machine has no linear axis.</source>
         <translation>Diese Maschine hat keine Linearachse.</translation>
     </message>
@@ -5304,7 +5369,32 @@ entriegeln</translation>
         <translation>Diagramme der Bahnverfolgung sind in dieser Konfiguration nicht enthalten.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+35"/>
+        <source>arc voltage</source>
+        <translation>Lichtbogenspannung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>standoff error</source>
+        <translation>Abstandsfehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>THC correction</source>
+        <translation>THC-Korrektur</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>arc voltage (V)</source>
+        <translation>Lichtbogenspannung (V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torch height (mm)</source>
+        <translation>Brennerhöhe (mm)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Cartesian error (mm)</source>
         <translation>Kartesischer Fehler (mm)</translation>
     </message>
@@ -5319,7 +5409,7 @@ entriegeln</translation>
         <translation>Abweichung (mm)</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+78"/>
         <location line="+10"/>
         <source>plots not built</source>
         <translation>Diagramme nicht enthalten</translation>
@@ -5328,7 +5418,7 @@ entriegeln</translation>
 <context>
     <name>CutCell::ui::ProcessForm</name>
     <message>
-        <location filename="../../ui/forms/process_form.cpp" line="+40"/>
+        <location filename="../../ui/forms/process_form.cpp" line="+42"/>
         <source>Plasma</source>
         <translation>Plasma</translation>
     </message>
@@ -5344,12 +5434,12 @@ entriegeln</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+80"/>
+        <location line="+83"/>
         <source>Thickness</source>
         <translation>Dicke</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-81"/>
         <source>Kerf width</source>
         <translation>Schnittfugenbreite</translation>
     </message>
@@ -5384,7 +5474,7 @@ entriegeln</translation>
         <translation>Vorwärmen</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>Cut chart</source>
         <translation>Schneidtabelle</translation>
     </message>
@@ -5432,7 +5522,7 @@ entriegeln</translation>
         <translation>Wand des Werkstücks</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Thickness from</source>
         <translation>Dicke aus</translation>
     </message>
@@ -5462,12 +5552,12 @@ entriegeln</translation>
         <translation>Verwendet</translation>
     </message>
     <message>
-        <location line="+202"/>
+        <location line="+207"/>
         <source>not in the chart</source>
         <translation>nicht in der Tabelle</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+17"/>
         <source>Override: saved with the job in place of the chart&apos;s figure.</source>
         <translation>Abweichwert: wird mit dem Auftrag statt des Tabellenwerts gespeichert.</translation>
     </message>
@@ -5477,12 +5567,12 @@ entriegeln</translation>
         <translation>Der Tabellenwert; Abweichend ankreuzen, um einen anderen zu setzen.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>No cut chart: the cut runs at the Cut page&apos;s speed, without kerf compensation.</source>
         <translation>Keine Schneidtabelle: der Schnitt läuft mit der Geschwindigkeit der Seite Schnitt, ohne Schnittfugenkorrektur.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Not usable: %1</source>
         <translation>Nicht verwendbar: %1</translation>
     </message>
@@ -6453,7 +6543,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelEndCutForm</name>
     <message>
-        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+243"/>
+        <location filename="../../ui/machines/section_steel/section_steel_form.cpp" line="+273"/>
         <source>The end is cut square or mitred (the cut plane turned about the section&apos;s vertical and horizontal axes), then the faces with a groove are bevelled by the groove arm: V = single bevel through the thickness, Y = single bevel with a root face, K = double bevel from both faces with a root face (ISO 9692-1).</source>
         <translation>Das Ende wird rechtwinklig oder auf Gehrung geschnitten (Schnittebene um die senkrechte und waagrechte Achse des Profils gedreht), dann fast der Fasenarm die Flächen mit Fuge an: V = einseitige Fase über die ganze Dicke, Y = einseitige Fase mit Steg, K = Doppelfase von beiden Seiten mit Steg (ISO 9692-1).</translation>
     </message>
@@ -6551,7 +6641,7 @@ letzte %1 s</translation>
 <context>
     <name>CutCell::ui::SectionSteelSectionForm</name>
     <message>
-        <location line="-293"/>
+        <location line="-321"/>
         <source>L (equal legs)</source>
         <translation>L (gleichschenklig)</translation>
     </message>
@@ -6646,7 +6736,7 @@ letzte %1 s</translation>
         <translation>Teil (aus der Konstruktionssoftware)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Order %1, drawing %2, phase %3, piece mark %4, steel %5, quantity %6 (the job cuts one piece)</source>
         <translation>Auftrag %1, Zeichnung %2, Phase %3, Positionsnummer %4, Stahl %5, Stückzahl %6 (der Auftrag schneidet ein Teil)</translation>
     </message>
@@ -6659,6 +6749,26 @@ letzte %1 s</translation>
         <location line="+2"/>
         <source>%1 from the catalogue (%2 shape): the dimensions are the standard&apos;s; choose &quot;User-defined dimensions&quot; to change them.</source>
         <translation>%1 aus dem Katalog (Form %2): die Maße sind die der Norm; zum Ändern &quot;Benutzerdefinierte Maße&quot; wählen.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The section&apos;s thickest plate: the flange or the web, whichever is thicker.</source>
+        <translation>Das dickste Blech des Profils: Flansch oder Steg, je nachdem, welches dicker ist.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not used: the section-steel cutter takes only the kerf width from the cut chart.</source>
+        <translation>Nicht verwendet: Die Profilstahl-Schneidanlage übernimmt aus der Schneidtabelle nur die Schnittfugenbreite.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Not used: the section-steel cutter cuts at its own speed (Cutting speed along the outline, on the Motion &amp; arms page).</source>
+        <translation>Nicht verwendet: Die Profilstahl-Schneidanlage schneidet mit ihrer eigenen Geschwindigkeit (Schnittgeschw. entlang der Kontur, Seite Bewegung &amp; Arme).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No cut chart: the cut runs without kerf compensation.</source>
+        <translation>Keine Schneidtabelle: der Schnitt läuft ohne Schnittfugenkorrektur.</translation>
     </message>
 </context>
 <context>
@@ -8304,7 +8414,7 @@ letzte %1 s</translation>
 <context>
     <name>cutcell::plots::TrackingPlotsWidget</name>
     <message>
-        <location filename="../../plots/tracking_plots_widget.cpp" line="+215"/>
+        <location filename="../../plots/tracking_plots_widget.cpp" line="+220"/>
         <source>error (%1)</source>
         <translation>Schleppfehler (%1)</translation>
     </message>
@@ -8389,13 +8499,13 @@ letzte %1 s</translation>
         <translation>Kartesischer Fehler (mm)</translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+166"/>
         <source>Cannot write the PNG file &apos;%1&apos;: %2</source>
         <translation>PNG-Datei &apos;%1&apos; kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>Cannot write the CSV file &apos;%1&apos;: %2</source>
         <translation>CSV-Datei &apos;%1&apos; kann nicht geschrieben werden: %2</translation>
     </message>

@@ -208,20 +208,32 @@ TEST(ProcessJob, TheRobotCompensatesTheKerfAndTheHoleKeepsItsSize) {
     EXPECT_NEAR(uncompensated - theoretical, k, 0.005);
 }
 
-// Only the profile cutter plans leads: on the robot a lead asked for is an issue, never ignored.
-TEST(ProcessJob, ARobotJobWithALeadInIsRefusedNotIgnored) {
+// The robot plans leads (robot_lead.h): a lead asked for needs the pierce and the cut height,
+// an issue naming the key until the chart or an override gives them - never ignored.
+TEST(ProcessJob, ARobotJobWithALeadInNeedsItsHeights) {
     Job job = plasmaJob();
     ASSERT_TRUE(validateJob(job).empty());
     job.process.lead_in.kind = LeadKind::Arc;
     job.process.lead_in.length_mm = 5;
-    EXPECT_TRUE(hasIssue(validateJob(job), "process.lead_in.kind",
-                         "the pipe-cutting robot does not plan leads yet"));
+    const bool chartHasIt = resolveProcess(job.process, cutPartWallMm(job))
+                                .effective.get(CutFigure::PierceHeightMm)
+                                .has_value();
+    if (!chartHasIt)
+        EXPECT_TRUE(hasIssue(validateJob(job), "process.override.pierce_height_mm",
+                             "needs the pierce height"));
+    job.process.override.set(CutFigure::PierceHeightMm, 3.8);
+    job.process.override.set(CutFigure::CutHeightMm, 1.5);
+    EXPECT_TRUE(validateJob(job).empty());
+    // Piercing below the cut height is refused with the key and the least that works.
+    job.process.override.set(CutFigure::PierceHeightMm, 1.0);
+    EXPECT_TRUE(hasIssue(validateJob(job), "process.override.pierce_height_mm",
+                         "pierce height 1 mm is below the cut height 1.5 mm"));
     job.process.lead_in.kind = LeadKind::None;
+    job.process.lead_in.length_mm = 0;
     EXPECT_TRUE(validateJob(job).empty());
 }
 
-// A lead's length without a lead is refused (never read and dropped); an overlap alone is a lead
-// the robot does not plan, so it is an issue there too.
+// A lead's length without a lead is refused (never read and dropped); an overlap alone is kept.
 TEST(ProcessJob, ALeadsFiguresWithoutALeadAreNotDropped) {
     const std::string good = textOf(plasmaJob());
     const size_t at = good.find("\"material\"");
@@ -237,15 +249,50 @@ TEST(ProcessJob, ALeadsFiguresWithoutALeadAreNotDropped) {
     }
     text = good;
     text.insert(at, R"("lead_out": {"kind": "none", "overlap_mm": 3}, )");
-    Job job = plasmaJob();
-    job.process.lead_out.overlap_mm = 3;
-    EXPECT_TRUE(
-        hasIssue(validateJob(job), "process.lead_out.overlap_mm", "does not plan leads yet"));
-    try { // the file says the same (a job is validated as it is read)
-        parseJob(text);
-        ADD_FAILURE() << "an overlap on the robot was accepted";
+    // An overlap alone is a lead the robot plans (the cut runs on 3 mm): read, kept, valid.
+    const Job job = parseJob(text);
+    EXPECT_EQ(job.process.lead_out.overlap_mm, 3);
+    EXPECT_TRUE(validateJob(job).empty());
+}
+
+// process.torch_height (the robot's THC): the shipped job round-trips through the file; an
+// unknown key, a noise or a simulated pipe outside its range are refused naming key, value,
+// unit and limit; the machines without a THC refuse the keys with the reason.
+TEST(ProcessJob, TorchHeightKeysRoundTripAndAreChecked) {
+    const std::string path =
+        std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/plasma_thc_job.json";
+    const Job job = loadJobFile(path);
+    ASSERT_TRUE(job.process.torch_height.used);
+    EXPECT_TRUE(job.process.torch_height.thc);
+    EXPECT_EQ(job.process.torch_height.ovality_mm, 2);
+    EXPECT_EQ(job.process.torch_height.runout_mm, 0.5);
+    EXPECT_TRUE(validateJob(job).empty());
+    const Job again = parseJob(textOf(job));
+    EXPECT_TRUE(again.process == job.process);
+
+    const std::string good = textOf(job);
+    auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string t = good;
+        const size_t at = t.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        return t.replace(at, from.size(), to);
+    };
+    try {
+        parseJob(replaced("\"thc\"", "\"volts\": 3, \"thc\""));
+        ADD_FAILURE() << "an unknown key was accepted";
     } catch (const JobError& e) {
-        EXPECT_NE(std::string(e.what()).find("lead_out.overlap_mm = 3 mm"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("process.torch_height.volts"), std::string::npos)
             << e.what();
     }
+    Job noisy = job;
+    noisy.process.torch_height.arc_noise_v = 12;
+    EXPECT_TRUE(hasIssue(validateJob(noisy), "process.torch_height.arc_noise_v", "12 V"));
+    Job oval = job;
+    oval.process.torch_height.ovality_mm = 6; // the DN40 branch: 10 % of 48.3 mm is 4.83 mm
+    EXPECT_TRUE(hasIssue(validateJob(oval), "process.torch_height.simulated_pipe.ovality_mm",
+                         "ovality_mm = 6 mm is outside 0 .. 4.83 mm"));
+    Job eccentric = job;
+    eccentric.process.torch_height.runout_mm = 3;
+    EXPECT_TRUE(hasIssue(validateJob(eccentric), "process.torch_height.simulated_pipe.runout_mm",
+                         "runout_mm = 3 mm is outside 0 .. 2.415 mm"));
 }

@@ -3,6 +3,9 @@
 // stop, reset). Its own executable: replacing operator new is program-wide.
 #include "engine_fixture.h"
 
+#include "core/job/job_io.h"
+#include "core/machine/machine_registry.h"
+#include "devices/machines/sim_rig_registry.h"
 #include "devices/sim/follower_rig.h"
 #include "devices/sim/slider_rig.h"
 
@@ -121,6 +124,41 @@ TEST(EngineCycle, DoesNotAllocateThroughAWholeJob) {
     e.reset();
     allocations += cyclesCounted(cell, 60);
     EXPECT_EQ(e.state(), EngineState::Idle);
+    EXPECT_EQ(allocations, 0);
+}
+
+// A program with a set-point correction (the robot's torch height control) on the simulated
+// cell whose arc voltage follows an out-of-round pipe: the THC, the IK it solves each cycle and
+// the simulated arc run in the cycle, through a feed hold and to the end of the run.
+TEST(EngineCycle, TorchHeightControlDoesNotAllocate) {
+    const Job job =
+        loadJobFile(std::string(CUTCELL_SOURCE_DIR) + "/resources/jobs/plasma_thc_job.json");
+    const MachinePlan plan = findMachine(job.machine)->plan(job, {});
+    ASSERT_TRUE(plan.ok()) << plan.outcome.message;
+    ASSERT_TRUE(plan.program->correction);
+    std::string error;
+    const auto rig = makeSimulatedRig(job, *plan.program, &error);
+    ASSERT_TRUE(rig) << error;
+    EngineConfig c = fastConfig();
+    c.spec = job.engine;
+    c.spec.runs_dir.clear();
+    rig->configure(c);
+    MotionEngine e(rig->devices(), c);
+    e.load(plan.program);
+    long allocations = 0;
+    e.enable();
+    allocations += cyclesCounted(e, 2000);
+    e.home();
+    allocations += cyclesCounted(e, 30000);
+    ASSERT_EQ(e.state(), EngineState::Ready) << g_events;
+    e.start();
+    allocations += cyclesCounted(e, 4000); // approach, ignition, the pierce, cutting
+    e.feedHold();
+    allocations += cyclesCounted(e, 1500);
+    e.resume();
+    for (int k = 0; k < 40 && e.state() != EngineState::Completed; ++k)
+        allocations += cyclesCounted(e, 1500); // the run lasts the job's sim.duration_s
+    EXPECT_EQ(e.state(), EngineState::Completed) << g_events;
     EXPECT_EQ(allocations, 0);
 }
 

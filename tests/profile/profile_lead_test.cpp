@@ -338,6 +338,19 @@ TEST(ProfileLead, RefusalsNameKeyValueUnitAndLimit) {
     job.process.override.figures[static_cast<size_t>(CutFigure::CutHeightMm)].reset();
     EXPECT_EQ(issuesAt(job, "process.override.cut_height_mm").size(), 1u);
 
+    // An overlap alone (no lead) without the heights: refused naming the override (the plan
+    // read an empty figure before).
+    job = leadJob(CutTarget::Main);
+    job.process.lead_in = {};
+    job.process.lead_out = {LeadKind::None, 0, 1.5};
+    job.process.override.figures[static_cast<size_t>(CutFigure::PierceHeightMm)].reset();
+    plan = ProfileCutterModule().plan(job, "", PlanOptions{});
+    EXPECT_EQ(plan.outcome.key, "process.override.pierce_height_mm");
+    EXPECT_NE(plan.outcome.message.find("process.lead_out.overlap_mm = 1.5 mm"), std::string::npos)
+        << plan.outcome.message;
+    job.process.override.set(CutFigure::PierceHeightMm, 3.8);
+    EXPECT_TRUE(ProfileCutterModule().plan(job, "", PlanOptions{}).outcome.ok());
+
     // Lengths out of range.
     job = leadJob(CutTarget::Branch);
     job.process.lead_in.length_mm = 0;

@@ -1,4 +1,6 @@
 #include "ui/forms/cut_form.h"
+
+#include "core/machine/pipe_joint_section.h"
 #include "ui/forms/process_form.h"
 
 #include <QCheckBox>
@@ -71,7 +73,10 @@ CutForm::CutForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
     mainLayout()->addWidget(path);
     // The cut chart (issue 24) first on this page, not a tab of its own: at 1280x720 one more
     // tab pushed "Cycle & devices" off the tab bar.
-    addSubForm(new ProcessForm(editor, this), 0);
+    // The part's wall: the cut pipe's (the main pipe's for a hole, the branch's for its end).
+    ProcessPart part;
+    part.wallMm = [](const Job& j) { return cutcell::cutPartWallMm(j); };
+    addSubForm(new ProcessForm(editor, std::move(part), this), 0);
     mainLayout()->addStretch(1);
 }
 

@@ -95,11 +95,20 @@ bool ParameterTabs::formActive(size_t i) const {
     return owners_[i] == nullptr || owners_[i] == machine_;
 }
 
+int ParameterTabs::formShowing(const std::string& key) const {
+    // The machine's own pages first: a key one of them shows too (the section steel's cut chart
+    // on its Section page) is that page's; the common page's field is hidden or greyed with
+    // the machine's unusedCommonFields.
+    for (const bool own : {true, false})
+        for (size_t i = 0; i < forms_.size(); ++i)
+            if (formActive(i) && (owners_[i] != nullptr) == own && forms_[i]->fieldFor(key))
+                return static_cast<int>(i);
+    return -1;
+}
+
 QWidget* ParameterTabs::fieldFor(const std::string& key) const {
-    for (size_t i = 0; i < forms_.size(); ++i)
-        if (formActive(i))
-            if (auto* w = forms_[i]->fieldFor(key)) return w;
-    return nullptr;
+    const int i = formShowing(key);
+    return i < 0 ? nullptr : forms_[static_cast<size_t>(i)]->fieldFor(key);
 }
 
 void ParameterTabs::showVisibleTab(int n) {
@@ -111,14 +120,10 @@ void ParameterTabs::showVisibleTab(int n) {
 }
 
 void ParameterTabs::revealField(const std::string& key) {
-    for (size_t i = 0; i < forms_.size(); ++i)
-        if (!formActive(i))
-            continue;
-        else if (auto* w = forms_[i]->fieldFor(key)) {
-            tabs_->setCurrentIndex(static_cast<int>(i));
-            w->setFocus(Qt::OtherFocusReason);
-            return;
-        }
+    const int i = formShowing(key);
+    if (i < 0) return;
+    tabs_->setCurrentIndex(i);
+    forms_[static_cast<size_t>(i)]->fieldFor(key)->setFocus(Qt::OtherFocusReason);
 }
 
 bool ParameterTabs::tabShown(const QString& title) const {
@@ -154,13 +159,17 @@ void ParameterTabs::applyMachine() {
     if (!rotary)
         for (const char* key : {"engine.following_error_limit_deg", "engine.home_speed_deg_s"})
             unusedFields.push_back({key, tr("This machine has no rotary axis.")});
+    // Only the common pages' fields: the machine's own pages may show the same key (its cut
+    // chart) and use it.
     for (const auto& [key, reason] : unusedFields) {
         unused.insert(key);
-        if (auto* field = fieldFor(key)) {
-            field->setEnabled(false);
-            field->setToolTip(reason);
-            disabledFields_.push_back(field);
-        }
+        for (size_t i = 0; i < forms_.size(); ++i)
+            if (owners_[i] == nullptr)
+                if (auto* field = forms_[i]->fieldFor(key)) {
+                    field->setEnabled(false);
+                    field->setToolTip(reason);
+                    disabledFields_.push_back(field);
+                }
     }
     // A common page none of whose fields this machine uses is not shown at all (the Pipes and
     // Cut pages of the machines that do not cut a pipe joint); a page with some used fields

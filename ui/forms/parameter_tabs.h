@@ -26,6 +26,7 @@ class ParameterTabs : public QWidget {
   public:
     explicit ParameterTabs(JobEditor* editor, QWidget* parent = nullptr);
 
+    // The field showing the key: on the job machine's own pages before the common ones.
     QWidget* fieldFor(const std::string& key) const;
     // An issue as the operator reads it: named by its field's label when a form shows the key,
     // a range issue in the GUI's language (issueText).
@@ -51,6 +52,8 @@ class ParameterTabs : public QWidget {
     // machine does not use.
     void applyMachine();
     bool formActive(size_t i) const; // a common page or a page of the job's machine
+    // The form whose field shows `key`: the job machine's own page before a common one; -1.
+    int formShowing(const std::string& key) const;
 
     JobEditor* editor_;
     QTabWidget* tabs_;

@@ -1,6 +1,5 @@
 #include "ui/forms/process_form.h"
 
-#include "core/machine/pipe_joint_section.h"
 #include "core/process/cut_chart_library.h"
 #include "core/process/process_spec.h"
 #include "ui/access_control.h"
@@ -18,6 +17,9 @@
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <optional>
+#include <stdexcept>
 
 namespace CutCell::ui {
 
@@ -89,7 +91,9 @@ int decimalsOf(CutFigure f) {
 
 } // namespace
 
-ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, parent) {
+ProcessForm::ProcessForm(JobEditor* editor, ProcessPart part, QWidget* parent)
+    : JobForm(editor, parent), part_(std::move(part)) {
+    if (!part_.wallMm) throw std::logic_error("ProcessForm: no part wall");
     // The user's cut charts, when there are any, once per program (the first window).
     installCutChartsInUse(cutcell::defaultDataHome());
     auto* entry = new QGroupBox(tr("Cut chart"), this);
@@ -126,6 +130,7 @@ ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, p
     addRow(f, tr("Consumable set"), consumable_, {});
     partWall_ = new QCheckBox(tr("the part's wall"), entry);
     partWall_->setObjectName("processPartWall");
+    partWall_->setToolTip(part_.wallNote);
     f->addRow(tr("Thickness from"), partWall_);
     auto* thickness = new DecimalField(entry);
     thickness->setFieldName(QStringLiteral("process.thickness_mm"));
@@ -199,7 +204,7 @@ ProcessForm::ProcessForm(JobEditor* editor, QWidget* parent) : JobForm(editor, p
     connect(partWall_, &QCheckBox::toggled, this, [this](bool fromWall) {
         if (refreshing_ || loading()) return;
         const Job& job = JobForm::editor()->job();
-        const double wall = cutcell::cutPartWallMm(job);
+        const double wall = partWallMm(job);
         const QString old = job.process.thickness_mm ? QString::number(*job.process.thickness_mm)
                                                      : QStringLiteral("part wall");
         commit("process.thickness_mm", old,
@@ -269,6 +274,12 @@ void ProcessForm::buildFigureRows() {
     }
 }
 
+QString ProcessForm::refusal(CutFigure f) const {
+    for (const auto& [figure, why] : part_.refused)
+        if (figure == f) return why;
+    return {};
+}
+
 void ProcessForm::setUsed(bool on) {
     commit("process.used", on ? QStringLiteral("false") : QStringLiteral("true"),
            on ? QStringLiteral("true") : QStringLiteral("false"), [&](Job& j) {
@@ -287,8 +298,7 @@ void ProcessForm::setUsed(bool on) {
 void ProcessForm::setFigureOverridden(int figure, bool on) {
     const auto f = static_cast<CutFigure>(figure);
     const Job& job = JobForm::editor()->job();
-    const cutcell::ProcessSettings s =
-        cutcell::resolveProcess(job.process, cutcell::cutPartWallMm(job));
+    const cutcell::ProcessSettings s = cutcell::resolveProcess(job.process, partWallMm(job));
     // The override starts at the chart's figure (at its lower limit when the chart has none).
     const double start = s.chart_row.get(f).value_or(std::max(0.0, cutcell::cutFigureInfo(f).lo));
     const auto old = job.process.override.get(f);
@@ -331,7 +341,7 @@ void ProcessForm::reloadExtra(const Job& job) {
     };
     fill(material_, charts.materials(p.process), p.material);
     fill(consumable_, charts.consumables(p.process, p.material), p.consumable);
-    const double wall = cutcell::cutPartWallMm(job);
+    const double wall = partWallMm(job);
     partWall_->setChecked(!p.thickness_mm.has_value());
     thickness_->setValue(p.thickness_mm.value_or(wall));
     thickness_->setEnabled(p.used && p.thickness_mm.has_value());
@@ -349,21 +359,32 @@ void ProcessForm::reloadExtra(const Job& job) {
         figures_->item(row, 1)->setToolTip(chartValue ? QString() : tr("not in the chart"));
         const auto over = p.override.get(f);
         overrideBox_[k]->setChecked(over.has_value());
-        const auto used = s.effective.get(f);
-        // A figure neither the chart nor an override gives shows a dash, not a made-up 0.
+        // A figure the machine does not take: read-only with the reason (an override in the
+        // job stays removable; its issue says why).
+        const QString refused = refusal(f);
+        overrideBox_[k]->setEnabled(refused.isEmpty() || over.has_value());
+        overrideBox_[k]->setToolTip(refused);
+        figures_->item(row, 0)->setToolTip(refused);
+        const auto used = refused.isEmpty() ? s.effective.get(f) : std::nullopt;
+        // A figure neither the chart nor an override gives (or one the machine does not use)
+        // shows a dash, not a made-up 0.
         const bool none = !over && !used;
         valueBox_[k]->setSpecialValueText(none ? QStringLiteral("\u2014") : QString());
         valueBox_[k]->setValue(over ? *over : none ? valueBox_[k]->minimum() : *used);
         valueBox_[k]->setEnabled(p.used && over.has_value());
-        valueBox_[k]->setToolTip(over ? tr("Override: saved with the job in place of the chart's "
-                                           "figure.")
-                                      : tr("The chart's figure; tick Override to set another."));
+        valueBox_[k]->setToolTip(!refused.isEmpty() ? refused
+                                 : over ? tr("Override: saved with the job in place of the "
+                                             "chart's figure.")
+                                        : tr("The chart's figure; tick Override to set another."));
     }
     figures_->resizeRowsToContents();
 
     QString text;
     if (!p.used) {
-        text = tr("No cut chart: the cut runs at the Cut page's speed, without kerf compensation.");
+        text = !part_.withoutChart.isEmpty()
+                   ? part_.withoutChart
+                   : tr("No cut chart: the cut runs at the Cut page's speed, without kerf "
+                        "compensation.");
     } else if (!s.ok()) {
         text = tr("Not usable: %1").arg(QString::fromStdString(s.outcome.message));
     } else {

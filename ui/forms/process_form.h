@@ -7,6 +7,9 @@
 #include "ui/forms/job_form.h"
 
 #include <array>
+#include <functional>
+#include <utility>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -17,10 +20,25 @@ class QTableWidget;
 
 namespace CutCell::ui {
 
+// What the machine whose page shows the form makes of the chart; the page says it (the form
+// knows no machine).
+struct ProcessPart {
+    // The part's wall: the thickness the chart's row is read at unless the job gives one (the
+    // cut pipe's wall, a section's thickest plate).
+    std::function<double(const cutcell::Job&)> wallMm;
+    // What "the part's wall" is on this machine (the check box's tooltip); empty: none.
+    QString wallNote;
+    // The figures whose override the machine refuses, each with the reason: shown read-only
+    // with it (an override the job already has can still be removed).
+    std::vector<std::pair<cutcell::CutFigure, QString>> refused;
+    // The note without a chart; empty: the Cut page's ("the cut runs at the Cut page's speed").
+    QString withoutChart;
+};
+
 class ProcessForm : public JobForm {
     Q_OBJECT
   public:
-    explicit ProcessForm(JobEditor* editor, QWidget* parent = nullptr);
+    ProcessForm(JobEditor* editor, ProcessPart part, QWidget* parent = nullptr);
 
     // A process and a figure as the form shows them ("Plasma", "Kerf width [mm]"); the
     // cut-chart editor (ui/panels/cut_charts_dialog.h) names its columns alike.
@@ -38,6 +56,11 @@ class ProcessForm : public JobForm {
     void setUsed(bool on);
     void setFigureOverridden(int figure, bool on);
     void setFigureValue(int figure, double v);
+    double partWallMm(const cutcell::Job& job) const { return part_.wallMm(job); }
+    // The reason the machine refuses the figure's override; empty when it takes it.
+    QString refusal(cutcell::CutFigure f) const;
+
+    ProcessPart part_;
 
     QCheckBox* used_ = nullptr;
     QComboBox* process_ = nullptr;

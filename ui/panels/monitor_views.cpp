@@ -4,6 +4,8 @@
 #include <QPainter>
 #include <QVBoxLayout>
 
+#include <limits>
+
 #ifdef CUTCELL_HAVE_VIEW3D
 #include "ui/view3d/cell_scene.h"
 #include "ui/view3d/cell_view.h"
@@ -131,6 +133,16 @@ void PlotsPanel::setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot ti
     axes_ = axes;
     if (axes_.size() > size_t(cutcell::kMaxAxes)) axes_.resize(size_t(cutcell::kMaxAxes));
     tip_ = tip;
+    applyChannels();
+}
+
+namespace {
+// The torch height traces' unit key: their own plot, apart from axes in mm.
+const QString kTorchHeightUnit = QStringLiteral("mm torch");
+constexpr int kProcessTraces = 3; // arc voltage, standoff error, THC correction
+} // namespace
+
+void PlotsPanel::applyChannels() {
     appended_ = 0;
     lastPlottedS_ = -1;
 #ifdef CUTCELL_HAVE_PLOTS
@@ -138,6 +150,12 @@ void PlotsPanel::setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot ti
     for (const AxisLabel& a : axes_) {
         names << a.name;
         units << a.unit;
+    }
+    if (process_) {
+        names << tr("arc voltage") << tr("standoff error") << tr("THC correction");
+        units << QStringLiteral("V") << kTorchHeightUnit << kTorchHeightUnit;
+        plots_->setSignalPlot(QStringLiteral("V"), tr("arc voltage (V)"));
+        plots_->setSignalPlot(kTorchHeightUnit, tr("torch height (mm)"));
     }
     plots_->setAxes(names, units);
     switch (tip_) {
@@ -164,12 +182,23 @@ void PlotsPanel::append(const std::vector<cutcell::TelemetrySample>& batch) {
         if (lastPlottedS_ >= 0 && s.elapsed_s >= lastPlottedS_ &&
             s.elapsed_s - lastPlottedS_ < kPlotIntervalS - 1e-9)
             continue;
+        // A run with a torch height control shows its signals (a run without: not).
+        if (s.process.present != process_) {
+            process_ = s.process.present;
+            applyChannels();
+        }
         lastPlottedS_ = s.elapsed_s;
 #ifdef CUTCELL_HAVE_PLOTS
-        double err[cutcell::kMaxAxes];
-        const int n = static_cast<int>(axes_.size());
+        double err[cutcell::kMaxAxes + kProcessTraces];
+        int n = static_cast<int>(axes_.size());
         for (int i = 0; i < n; ++i)
             err[i] = axes_[size_t(i)].linear() ? s.error[i] : cutcell::rad2deg(s.error[i]);
+        if (process_) {
+            const double none = std::numeric_limits<double>::quiet_NaN(); // no arc: a gap
+            err[n++] = s.process.arc_ok ? s.process.arc_voltage_v : none;
+            err[n++] = s.process.arc_ok ? s.process.height_error_mm : none;
+            err[n++] = s.process.correction_mm;
+        }
         double tip[3] = {s.cartesian_error_mm.x(), s.cartesian_error_mm.y(),
                          s.cartesian_error_mm.z()};
         if (tip_ == TipErrorPlot::MissOnPipe) tip[0] = s.cartesian_error_mm.norm();

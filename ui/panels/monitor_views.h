@@ -66,8 +66,9 @@ class PlotsPanel : public QWidget {
     explicit PlotsPanel(QWidget* parent = nullptr);
 
     // The machine's channels: one trace per axis with its name, grouped by unit (deg: the
-    // engine's rad converted; mm: as is), and its tip error plot. Clears the data, so only
-    // when the machine differs from the last one set.
+    // engine's rad converted; mm: as is), and its tip error plot; a run with a torch height
+    // control adds its arc voltage and torch height plots (from its first sample). Clears the data,
+    // so only when the machine differs from the last one set.
     void setMachine(const MachineUi& machine);
     void setChannels(const std::vector<AxisLabel>& axes, TipErrorPlot tip);
     const std::vector<AxisLabel>& axes() const { return axes_; }
@@ -90,7 +91,9 @@ class PlotsPanel : public QWidget {
     cutcell::plots::TrackingPlotsWidget* plots() const { return plots_; }
 
   private:
+    void applyChannels(); // the axes, the process's signals (process_) and the tip plot
     cutcell::plots::TrackingPlotsWidget* plots_ = nullptr;
+    bool process_ = false; // the last run's samples carried a torch height control's signals
     std::uint64_t appended_ = 0;
     std::string machine_;
     std::vector<AxisLabel> axes_;

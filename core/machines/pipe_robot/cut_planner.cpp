@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace cutcell {
 
@@ -14,9 +15,71 @@ namespace {
 
 // Why the point cannot be cut, and where it is.
 std::string pointProblem(size_t index, const PlannedPoint& p, const std::string& why) {
+    if (p.part != PathPart::Cut)
+        return messageC("point %zu of the %s (x/y/z = %.2f/%.2f/%.2f mm): %s", index,
+                        toString(p.part), p.cut.p_main.x(), p.cut.p_main.y(), p.cut.p_main.z(),
+                        why.c_str());
     return messageC("point %zu (phi = %.2f deg, s = %.2f mm, x/y/z = %.2f/%.2f/%.2f mm): %s", index,
                     rad2deg(p.cut.phi_rad), p.cut.s_mm, p.cut.p_main.x(), p.cut.p_main.y(),
                     p.cut.p_main.z(), why.c_str());
+}
+
+// The time at which the profile has run `distance` (bisection: distance(t) is monotonic).
+double timeAt(const SpeedProfile& profile, double distance) {
+    double lo = 0, hi = profile.duration();
+    for (int k = 0; k < 60; ++k) {
+        const double mid = (lo + hi) / 2;
+        (profile.distance(mid) < distance ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+// The knots of a cut with leads, at equal time steps: the descent from the pierce height (from
+// rest to rest at the cut speed), then the travel (lead-in, cut, overlap, lead-out) with the cut's
+// ramps at its ends, knots about knot_spacing_mm apart at cutting speed.
+void planLeadKnots(const Job& job, const RobotLeadPath& leads, CutPlan& plan) {
+    const double v = job.cut.speed_mm_s;
+    const SpeedProfile travel(leads.travelMm(), v, job.cut.ramp_s);
+    const int intervals =
+        std::max(16, static_cast<int>(std::ceil(leads.travelMm() / job.cut.knot_spacing_mm)));
+    const double dt = travel.duration() / intervals;
+    int descentIntervals = 0;
+    double stretch = 1;
+    std::optional<SpeedProfile> down;
+    if (leads.descentMm() > 0) {
+        down.emplace(leads.descentMm(), v, job.cut.ramp_s);
+        descentIntervals = std::max(2, static_cast<int>(std::ceil(down->duration() / dt)));
+        stretch = down->duration() / (dt * descentIntervals);
+    }
+    plan.knots.clear();
+    plan.knots.resize(static_cast<size_t>(descentIntervals + intervals) + 1);
+    for (int k = 0; k < descentIntervals; ++k) {
+        PlannedPoint& p = plan.knots[static_cast<size_t>(k)];
+        p.t_s = dt * k;
+        p.part = PathPart::Descent;
+        p.cut = leads.descentAt(down->distance(p.t_s * stretch));
+    }
+    const double t0 = dt * descentIntervals;
+    for (int j = 0; j <= intervals; ++j) {
+        PlannedPoint& p = plan.knots[static_cast<size_t>(descentIntervals + j)];
+        p.t_s = t0 + dt * j;
+        p.cut =
+            leads.travelAt(j == intervals ? leads.travelMm() : travel.distance(dt * j), &p.part);
+    }
+    plan.knot_dt_s = dt;
+    plan.cut_time_s = dt * (descentIntervals + intervals);
+    const double ramp = travel.duration() - leads.travelMm() / v;
+    plan.cruise_from_s = t0 + std::max(ramp, timeAt(travel, leads.leadInMm()));
+    plan.cruise_to_s =
+        t0 + std::min(travel.duration() - ramp, timeAt(travel, leads.leadInMm() + leads.cutMm()));
+    plan.leads = true;
+    plan.descent_mm = leads.descentMm();
+    plan.lead_in_mm = leads.leadInMm();
+    plan.overlap_mm = leads.overlapMm();
+    plan.lead_out_mm = leads.leadOutMm();
+    plan.pierce_height_mm = leads.settings().pierce_height_mm;
+    plan.cut_height_mm = leads.settings().cut_height_mm;
+    plan.pierce_delay_s = leads.settings().pierce_delay_s;
 }
 
 } // namespace
@@ -55,17 +118,48 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
         }
     }
 
+    {
+        const double ramp = profile.duration() - plan.length_mm / job.cut.speed_mm_s;
+        plan.cruise_from_s = ramp;
+        plan.cruise_to_s = plan.cut_time_s - ramp;
+    }
+
+    // Leads: the knots of the whole program replace the cut's (a lead that cannot be made is
+    // refused; the cut is planned without it then, as the view shows it).
+    std::string leadProblem, leadKey;
+    if (kerfProblem.empty() && robotLeadSettings(job).used) {
+        const RobotLeadPath leads(job, geo, plan.kerf_mm > 0 ? kerfSpec : kerfPathSpecFor(job, geo),
+                                  plan.kerf_mm);
+        if (!leads.ok()) {
+            leadProblem = leads.problem();
+            leadKey = leads.problemKey();
+        } else {
+            planLeadKnots(job, leads, plan);
+        }
+    }
+
+    Vec3 pierceSurface = Vec3::Zero(); // the first knot on the surface (leads)
+    for (const PlannedPoint& p : plan.knots)
+        if (p.part != PathPart::Descent) {
+            pierceSurface = p.cut.p_work;
+            break;
+        }
+
     // Pass 1: the cut points and, for the rotating method, the chuck angle that brings each
     // point to the top of the pipe (s0 x + c0 y = r, -c0 x + s0 y = 0), unwrapped.
     double previousChuck = deg2rad(job.cut.static_chuck_deg);
     for (size_t k = 0; k < plan.knots.size(); ++k) {
         PlannedPoint& p = plan.knots[k];
-        p.t_s = plan.knot_dt_s * static_cast<double>(k);
-        p.cut = geo.atArcLength(profile.distance(p.t_s));
-        if (plan.kerf_mm > 0) offsetCutPoint(kerfSpec, p.cut, plan.kerf_mm);
+        if (!plan.leads) {
+            p.t_s = plan.knot_dt_s * static_cast<double>(k);
+            p.cut = geo.atArcLength(profile.distance(p.t_s));
+            if (plan.kerf_mm > 0) offsetCutPoint(kerfSpec, p.cut, plan.kerf_mm);
+        }
         double chuck = deg2rad(job.cut.static_chuck_deg);
         if (spec.method == CutMethod::RotatingPipe) {
-            chuck = std::atan2(p.cut.p_work.x(), p.cut.p_work.y());
+            // The descent keeps the chuck of the pierce point (a pure torch move on its axis).
+            const Vec3& c = p.part == PathPart::Descent ? pierceSurface : p.cut.p_work;
+            chuck = std::atan2(c.x(), c.y());
             if (k > 0) chuck += 2 * kPi * std::round((previousChuck - chuck) / (2 * kPi));
         }
         previousChuck = chuck;
@@ -152,6 +246,11 @@ CutPlan planCut(const Job& job, const PlanOptions& options) {
     if (!kerfProblem.empty()) {
         plan.reachable = false;
         plan.problem = kerfProblem;
+    }
+    if (!leadProblem.empty()) {
+        plan.reachable = false;
+        plan.problem = leadProblem;
+        plan.problem_key = leadKey;
     }
     if (options.progress) options.progress(1.0);
     return plan;

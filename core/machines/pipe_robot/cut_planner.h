@@ -17,6 +17,7 @@
 #include "core/machine/plan_options.h"
 #include "core/machines/pipe_robot/pipe_robot.h"
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
+#include "core/machines/pipe_robot/robot_lead.h"
 #include "core/trajectory/joint_spline.h"
 #include "core/trajectory/speed_profile.h"
 
@@ -35,12 +36,13 @@ struct PlannedPoint {
     double deviation_deg = 0; // angle between the desired and the commanded torch axis
     IkResult ik;
     JointVector q = JointVector::Zero(); // axis 0 = chuck, 1..5 = arm
+    PathPart part = PathPart::Cut;       // with leads: the descent, a lead, the overlap
 };
 
 struct CutPlan {
     CutMethod method = CutMethod::RotatingPipe;
     double length_mm = 0;
-    double cut_time_s = 0; // from start to stop, ramps included
+    double cut_time_s = 0; // from start to stop, ramps included (with leads: the whole program)
     double knot_dt_s = 0;
     std::vector<PlannedPoint> knots;
     JointSpline spline;
@@ -52,6 +54,15 @@ struct CutPlan {
     // Kerf compensation (process section): the torch centre runs kerf_mm / 2 off the theoretical
     // edge toward the scrap side (core/process/kerf_offset.h); 0 = the torch on the edge.
     double kerf_mm = 0;
+    // Path-time window of the cut at constant speed (ramps and leads excluded).
+    double cruise_from_s = 0, cruise_to_s = -1;
+    // Leads (robot_lead.h; process.lead_in / lead_out): the knots run from the pierce at the
+    // pierce height down to the surface, along the lead-in, the cut, the overlap and the
+    // lead-out; the torch is lit at the first knot and pierces for pierce_delay_s there.
+    bool leads = false;
+    double descent_mm = 0, lead_in_mm = 0, overlap_mm = 0, lead_out_mm = 0;
+    double pierce_height_mm = 0, cut_height_mm = 0, pierce_delay_s = 0;
+    std::string problem_key; // the job key the problem is about, where one is
 };
 
 CutPlan planCut(const Job& job, const PlanOptions& options = {});

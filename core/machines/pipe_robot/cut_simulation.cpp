@@ -28,9 +28,7 @@ TrackingReport simulateCut(const Job& job, const CutPlan& plan, const CutSampleO
     const PipeRobotTipModel tipModel(spec.dh);
     TrackingStats stats(&tipModel);
     TrackingStats cruise(&tipModel);
-    const SpeedProfile profile(plan.length_mm, job.cut.speed_mm_s, job.cut.ramp_s);
-    const double ramp = (profile.duration() - plan.length_mm / job.cut.speed_mm_s);
-    const double cruiseFrom = ramp, cruiseTo = plan.cut_time_s - ramp;
+    const double cruiseFrom = plan.cruise_from_s, cruiseTo = plan.cruise_to_s;
     std::array<PidFilter, kAxisCount> pid;
     PipeRobotMechanics plant(job, T);
     plant.setState(plan.spline.evaluate(0).q);

@@ -1,4 +1,5 @@
 #include "core/machines/pipe_robot/pipe_robot_module.h"
+#include "core/machines/pipe_robot/robot_torch_height.h"
 
 #include "core/machine/parameter_level.h"
 
@@ -127,7 +128,12 @@ std::vector<JobIssue> PipeRobotModule::validate(const Job& job) const {
     const PipeRobotSpec& spec = pipeRobotSpec(job);
     IssueChecker c;
     checkPipeJoint(c, job, kCutKeys);
-    checkNoLeads(c, job.process, "pipe-cutting robot");
+    checkRobotLeads(c, job);
+    // The simulated pipe and arc of the torch height control (the chart's issues are the
+    // process section's own).
+    if (const RobotTorchHeightSetup t = robotTorchHeightSetup(job);
+        t.problem_key.starts_with("process.torch_height"))
+        c.add(t.problem_key, t.problem);
     for (int i = 0; i < kAxisCount; ++i) {
         const auto& d = spec.dh[static_cast<size_t>(i)];
         const std::string k = rowKey("robot.dh", static_cast<size_t>(i));
@@ -220,9 +226,17 @@ MachinePlan PipeRobotModule::plan(const Job& job, const std::string& jobText,
     out.summary =
         formatC("%s method, cut %s, %.2f mm at %.2f mm/s (%.2f s)", toString(cut->method),
                 toString(job.cut.target), cut->length_mm, job.cut.speed_mm_s, cut->cut_time_s);
+    if (cut->leads)
+        out.summary +=
+            formatC("; lead-in %s %.2f mm, lead-out %s %.2f mm, overlap %.2f mm; "
+                    "pierce at %.2f mm for %.2f s, cut at %.2f mm",
+                    toString(job.process.lead_in.kind), cut->lead_in_mm,
+                    toString(job.process.lead_out.kind), cut->lead_out_mm, cut->overlap_mm,
+                    cut->pierce_height_mm, cut->pierce_delay_s, cut->cut_height_mm);
     if (!cut->reachable) {
         out.outcome = Outcome::refuse(messageC("path not reachable (%s method): %s",
-                                               toString(cut->method), cut->problem.c_str()));
+                                               toString(cut->method), cut->problem.c_str()),
+                                      cut->problem_key);
         return out;
     }
     auto program = buildPipeRobotProgram(job, *cut, jobText);

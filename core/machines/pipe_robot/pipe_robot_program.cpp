@@ -1,6 +1,8 @@
 #include "core/machines/pipe_robot/pipe_robot_program.h"
+
 #include "core/common/c_format.h"
 #include "core/machines/pipe_robot/pipe_robot_module.h"
+#include "core/machines/pipe_robot/robot_torch_height.h"
 
 #include "core/job/job_io.h"
 #include "core/json/json.h"
@@ -53,12 +55,18 @@ std::shared_ptr<const MotionProgram> buildPipeRobotProgram(const Job& job, const
         }
     }
     p->tip_model = std::make_shared<PipeRobotTipModel>(spec.dh);
+    if (const RobotTorchHeightSetup thc = robotTorchHeightSetup(job); thc.used) {
+        if (!thc.problem.empty()) throw std::invalid_argument(thc.problem);
+        p->correction = std::make_shared<RobotTorchHeight>(PipeRobot(spec.dh), thc);
+        p->sensors_used |= 1u << kArcVoltageSensor; // the arc voltage
+    }
     p->min_run_s = job.sim.duration_s;
-    // The same window as simulateCut(): the cosine ramps at both ends are excluded.
-    const SpeedProfile profile(plan.length_mm, job.cut.speed_mm_s, job.cut.ramp_s);
-    const double ramp = profile.duration() - plan.length_mm / job.cut.speed_mm_s;
-    p->cruise_from_s = ramp;
-    p->cruise_to_s = plan.cut_time_s - ramp;
+    // The same window as simulateCut(): the cosine ramps at both ends (and leads) are excluded.
+    p->cruise_from_s = plan.cruise_from_s;
+    p->cruise_to_s = plan.cruise_to_s;
+    // Leads: the torch is lit at the pierce (the first knot, at the pierce height) and pierces
+    // there before the descent; without leads the chart's delay was never applied (kept so).
+    if (plan.leads) p->pierce_s = plan.pierce_delay_s;
     p->name = job.name;
     p->source_text = jobText.empty() ? json::write(jobToJson(job)) : jobText;
     return p;

@@ -1,4 +1,5 @@
 #include "core/machines/profile_cutter/profile_cutter_module.h"
+#include "core/process/process_spec.h"
 
 #include "core/machine/parameter_level.h"
 
@@ -121,6 +122,7 @@ void ProfileCutterModule::migrateSchema1(json::Object& section) const {
 std::vector<JobIssue> ProfileCutterModule::validate(const Job& job) const {
     IssueChecker c;
     checkPipeJoint(c, job, kCutKeys);
+    checkNoTorchHeight(c, job.process, "profile cutter");
     const double R = job.main_pipe.radius_mm;
     const double a = deg2rad(job.angle_deg);
     const ProfileCutterSpec& p = profileCutterSpec(job);
@@ -215,7 +217,7 @@ MachinePlan ProfileCutterModule::plan(const Job& job, const std::string& jobText
         return out;
     }
     try {
-        out.program = buildProfileCutterProgram(job, jobText);
+        out.program = buildProfileCutterProgram(job, data->leads, jobText);
     } catch (const std::invalid_argument& e) {
         out.outcome = Outcome::refuse(messageC("not feasible: %s", e.what()));
         return out;
@@ -256,7 +258,8 @@ std::string ProfileCutterModule::exportFileWith(const std::string& exportId, con
         return templateSvg(tileTemplate(drawing, *paper, job.name));
     }
     if (!data) throw std::invalid_argument("the plan has no profile cut");
-    if (exportId == "path_csv") return profilePathCsv(data->cut, data->schedule);
+    if (exportId == "path_csv")
+        return profilePathCsv(data->cut, data->schedule, data->leads, job.cut.speed_mm_s);
     if (exportId == "gcode") return profileGcode(job, data->cut, data->leads);
     throw std::invalid_argument("the profile cutter has no export " + json::quote(exportId));
 }

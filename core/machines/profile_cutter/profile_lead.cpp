@@ -3,7 +3,7 @@
 #include "core/common/c_format.h"
 #include "core/machine/pipe_joint_section.h"
 #include "core/machines/profile_cutter/profile_kerf.h"
-#include "core/process/process_spec.h"
+#include "core/process/lead_request.h"
 
 #include <algorithm>
 #include <cmath>
@@ -159,24 +159,33 @@ ProfileLeads computeProfileLeads(const Job& job, const ProfileCut& cut) {
 
 ProfileLeads computeProfileLeads(const Job& job, const ProfileCut& cut, const ProfileCut& edge) {
     ProfileLeads out;
-    if (!job.process.used) return out;
-    out.in = job.process.lead_in;
-    out.out = job.process.lead_out;
-    out.used = out.in.used() || out.out.used() || out.out.overlap_mm > 0; // overlap alone too
+    const LeadRequest r = requestLeads(job.process, cutPartWallMm(job));
+    out.in = r.in;
+    out.out = r.out;
+    out.used = r.used;
     if (!out.used) return out;
-    const ProcessSettings s = resolveProcess(job.process, cutPartWallMm(job));
-    if (!s.ok()) {
-        out.problem = s.outcome.message;
-        out.problem_key = s.outcome.key;
+    if (!r.problem.empty()) {
+        out.problem = r.problem;
+        out.problem_key = r.problem_key;
         return out;
     }
-    if (const std::string p = leadHeightProblem(job.process, s); !p.empty()) {
-        out.problem = p;
-        out.problem_key = leadHeightKey(job.process, s);
+    const ProcessSettings& s = r.settings;
+    // leadHeightProblem asks for the heights only with a lead; an overlap alone needs them too
+    // here: the G-code runs it with the torch height (Z).
+    const auto pierceHeight = s.effective.get(CutFigure::PierceHeightMm);
+    const auto cutHeight = s.effective.get(CutFigure::CutHeightMm);
+    if (!pierceHeight || !cutHeight) {
+        const char* figure = !pierceHeight ? "pierce_height_mm" : "cut_height_mm";
+        out.problem_key = std::string("process.override.") + figure;
+        out.problem =
+            messageC("process.lead_out.overlap_mm = %.6g mm: the profile cutter writes "
+                     "the torch height (Z) with it, and the chart '%s' gives no %s; set "
+                     "%s",
+                     out.out.overlap_mm, s.chart_name.c_str(), figure, out.problem_key.c_str());
         return out;
     }
-    out.pierce_height_mm = *s.effective.get(CutFigure::PierceHeightMm);
-    out.cut_height_mm = *s.effective.get(CutFigure::CutHeightMm);
+    out.pierce_height_mm = *pierceHeight;
+    out.cut_height_mm = *cutHeight;
     out.pierce_delay_s =
         s.effective.get(CutFigure::PierceDelayS).value_or(profileCutterSpec(job).pierce_s);
     if (cut.points.size() < 3) {

@@ -29,6 +29,9 @@ struct TorchTarget {
     double s_mm = 0;      // along the outline
     size_t segment = 0;   // outline segment (face)
     bool turning = false; // torch turning at a sharp corner (tip at rest)
+    // A lead's sample (section_lead.h): 0 the cut itself, 1 the pierce (firing at pierce height
+    // and going down to cut height), 2 the lead-in, 3 the lead-out.
+    int lead = 0;
 };
 
 struct CutPass {

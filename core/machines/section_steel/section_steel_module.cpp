@@ -8,6 +8,7 @@
 #include "core/machines/section_steel/dstv/dstv_import.h"
 #include "core/machines/section_steel/end_cut_path.h"
 #include "core/machines/section_steel/section_kerf.h"
+#include "core/machines/section_steel/section_lead.h"
 #include "core/machines/section_steel/section_steel_planner.h"
 #include "core/machines/section_steel/section_steel_program.h"
 #include "core/machines/section_steel/section_steel_section.h"
@@ -94,7 +95,12 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     const SectionSteelSpec& s = specOf(job);
     checkSteelSpec(c, s, job.sim.period_s);
     checkProcess(c, job.process, steelPartThicknessMm(s));
-    checkNoLeads(c, job.process, "section-steel cutter");
+    checkNoTorchHeight(c, job.process, "section-steel cutter");
+    // Leads (section_lead.h): checkProcess has checked the heights (leadHeightProblem); the
+    // cut's open ends and setup 2 here.
+    if (const SteelLeadRequest leads = steelLeadRequest(job);
+        !leads.problem.empty() && !c.has(leads.problem_key))
+        c.add(leads.problem_key, leads.problem);
     // The cut chart gives this machine its kerf only: any other override would be ignored.
     if (const auto v = job.process.override.get(CutFigure::CutSpeedMmMin); job.process.used && v)
         c.add("process.override.cut_speed_mm_min",
@@ -105,6 +111,9 @@ std::vector<JobIssue> SectionSteelModule::validate(const Job& job) const {
     for (std::size_t i = 0; i < kCutFigureCount && job.process.used; ++i) {
         const auto f = static_cast<CutFigure>(i);
         if (f == CutFigure::KerfMm || f == CutFigure::CutSpeedMmMin) continue;
+        // The heights are the leads' (section_lead.h).
+        const bool leads = job.process.lead_in.used() || job.process.lead_out.used();
+        if (leads && (f == CutFigure::PierceHeightMm || f == CutFigure::CutHeightMm)) continue;
         if (const auto v = job.process.override.get(f)) {
             const CutFigureInfo& info = cutFigureInfo(f);
             c.add(std::string("process.override.") + info.key,
@@ -129,7 +138,9 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
         out.summary = why;
         return out;
     }
-    auto plan = std::make_shared<SteelPlan>(planEndCut(s, steelKerfMm(job)));
+    // Leads asked for where they cannot be (refused below): the cut without them, for the view.
+    const SteelLeadRequest leads = steelLeadRequest(job);
+    auto plan = std::make_shared<SteelPlan>(planEndCut(s, steelKerfMm(job), leads.spec));
     out.data = plan;
     const std::string name = s.section.designation.empty()
                                  ? std::string("user-defined ") + toString(s.section.family)
@@ -159,6 +170,24 @@ MachinePlan SectionSteelModule::plan(const Job& job, const std::string& jobText,
                                "cut surface off the edge; the arms' frame %.3f mm along the bar "
                                "toward the off-cut)",
                                plan->kerf_mm, plan->kerf_mm / 2, plan->frame_shift_mm);
+    if (plan->leads_added) {
+        const SteelLeadSpec& l = leads.spec;
+        out.summary += formatC("; edge start, fired at pierce height %.2f mm, down to cut height "
+                               "%.2f mm",
+                               l.pierce_height_mm, l.cut_height_mm);
+        if (l.in.used())
+            out.summary += formatC("; lead-in %s %.1f mm", toString(l.in.kind), l.in.length_mm);
+        if (l.out.used())
+            out.summary += formatC("; lead-out %s %.1f mm", toString(l.out.kind), l.out.length_mm);
+    }
+    if (!leads.problem.empty()) {
+        out.outcome = Outcome::refuse(leads.problem, leads.problem_key);
+        return out;
+    }
+    if (!plan->lead_problem.empty()) {
+        out.outcome = Outcome::refuse(plan->lead_problem, plan->lead_key);
+        return out;
+    }
     if (!plan->kerf_problem.empty()) {
         out.outcome = Outcome::refuse(plan->kerf_problem, "process.override.kerf_mm");
         return out;

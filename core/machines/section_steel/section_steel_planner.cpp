@@ -163,6 +163,12 @@ void SteelCell::grooveTorch(const Q5& q, Vec3& p, Vec3& t) const {
 std::string pointProblem(const EndCut& cut, const CutPass& pass, size_t k, const std::string& why) {
     const TorchTarget& t = pass.samples[k];
     const char* segment = cut.outline().segments()[t.segment].name.c_str();
+    if (t.lead != kLeadNone)
+        return messageC("point %zu of pass %s (the %s at %s): %s", k, pass.name.c_str(),
+                        t.lead == kLeadPierce ? messageC("pierce").c_str()
+                        : t.lead == kLeadIn   ? messageC("lead-in").c_str()
+                                              : messageC("lead-out").c_str(),
+                        segment, why.c_str());
     if (t.turning)
         return messageC("point %zu of pass %s (%s, turning at the corner, s = %.1f mm): %s", k,
                         pass.name.c_str(), segment, t.s_mm, why.c_str());
@@ -174,7 +180,88 @@ SteelPlan planEndCut(const SectionSteelSpec& spec) {
     return planEndCut(spec, 0.0);
 }
 
+std::string steelPathPointProblem(const SteelCell& cell, const SectionSteelSpec& spec,
+                                  const EndCut& cut, const TorchTarget& tt) {
+    PlanarPose pose;
+    if (!cell.pathPlanar(tt.p, tt.t, pose))
+        return messageC("the point x = %.1f, y = %.1f, z = %.1f mm is off the path arm's plane "
+                        "(a planar 3R arm in the cut plane)",
+                        tt.p.x(), tt.p.y(), tt.p.z());
+    std::vector<std::array<double, 3>> sols;
+    for (const auto& s : cell.path.inverse(pose))
+        sols.push_back(s.q);
+    std::array<double, 3> q{};
+    const std::array<double, 3> ref{deg2rad(spec.park_deg[0]), deg2rad(spec.park_deg[1]),
+                                    deg2rad(spec.park_deg[2])};
+    if (const Outcome o = pick(sols, ref, spec.path_limits, kPathJointNames,
+                               messageC("path arm").c_str(), q, false);
+        !o.ok())
+        return o.message;
+    if (const auto hit = torchHit(cut, cut.torchBody(), tt.p, tt.t, true))
+        return messageC("the torch body hits the section %.0f mm behind the tip at x = %.1f, y = "
+                        "%.1f, z = %.1f mm (torch_length_mm = %.0f, torch_radius_mm = %.0f)",
+                        hit->behind_mm, hit->at.x(), hit->at.y(), hit->at.z(), spec.torch_length_mm,
+                        spec.torch_radius_mm);
+    return {};
+}
+
+namespace {
+
+// The first lead sample (of the lead-in and pierce: before, or the lead-out: after) the path arm
+// cannot cut, and why; "" when all fit.
+std::string leadSamplesProblem(const SteelCell& cell, const SectionSteelSpec& spec,
+                               const EndCut& cut, const std::vector<TorchTarget>& samples) {
+    for (const TorchTarget& t : samples)
+        if (std::string why = steelPathPointProblem(cell, spec, cut, t); !why.empty())
+            return messageC("at x = %.1f, y = %.1f, z = %.1f mm: %s", t.p.x(), t.p.y(), t.p.z(),
+                            why.c_str());
+    return {};
+}
+
+// The leads of the square pass, checked point by point; a lead that does not fit is refused
+// with the longest length that does (bisection: a shorter lead stays nearer the cut's end).
+void addLeads(SteelPlan& plan, const SteelCell& cell, const SectionSteelSpec& spec,
+              const EndCut& cut, const SteelLeadSpec& leads) {
+    if (!leads.used() || plan.passes.empty() || plan.passes.front().name != "square") return;
+    CutPass& square = plan.passes.front();
+    for (const bool in : {true, false}) {
+        const LeadSpec& lead = in ? leads.in : leads.out;
+        if (!lead.used()) continue;
+        auto problemAt = [&](double L) {
+            SteelLeadSpec one = leads;
+            (in ? one.in : one.out).length_mm = L;
+            const SteelLeadSamples s = steelLeadSamples(spec, square, one, plan.dt);
+            return leadSamplesProblem(cell, spec, cut, in ? s.before : s.after);
+        };
+        const std::string why = problemAt(lead.length_mm);
+        if (why.empty()) continue;
+        double lo = 0, hi = lead.length_mm;
+        for (int k = 0; k < 30; ++k) {
+            const double mid = (lo + hi) / 2;
+            (problemAt(mid).empty() ? lo : hi) = mid;
+        }
+        const char* key = in ? "lead_in" : "lead_out";
+        plan.lead_key = std::string("process.") + key + ".length_mm";
+        plan.lead_problem = messageC(
+            "process.%s.length_mm = %.6g mm is too long for the section-steel cutter: the %s "
+            "(%s, off the free edge in the path arm's plane) cannot be cut %s; the longest that "
+            "fits is %.3f mm",
+            key, lead.length_mm, (in ? messageC("lead-in") : messageC("lead-out")).c_str(),
+            toString(lead.kind), why.c_str(), std::floor(lo * 1000) / 1000);
+        return;
+    }
+    plan.leads = steelLeadSamples(spec, square, leads, plan.dt);
+    addSteelLeads(square, plan.leads);
+    plan.leads_added = true;
+}
+
+} // namespace
+
 SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm) {
+    return planEndCut(spec, kerf_mm, SteelLeadSpec{});
+}
+
+SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm, const SteelLeadSpec& leads) {
     SteelPlan plan;
     const EndCut cut(spec);
     plan.dt = spec.knot_spacing_mm / spec.speed_mm_s;
@@ -189,7 +276,8 @@ SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm) {
     }
     const SteelCell cell(spec, plan.kerf_mm);
     plan.frame_shift_mm = cell.frame_shift_mm;
-    plan.problem = plan.kerf_problem; // the first problem: later points add to failed_points
+    if (plan.kerf_problem.empty()) addLeads(plan, cell, spec, cut, leads);
+    plan.problem = plan.kerf_problem.empty() ? plan.lead_problem : plan.kerf_problem;
     JointVector park = JointVector::Zero();
     for (int i = 0; i < kSteelAxes; ++i)
         park[i] = deg2rad(spec.park_deg[static_cast<size_t>(i)]);
@@ -303,7 +391,8 @@ SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm) {
         if (!knots.empty()) cur = knots.back();
         plan.length_mm += pass.length_mm;
     }
-    plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2 && plan.kerf_problem.empty();
+    plan.ok = plan.failed_points == 0 && plan.knots.size() >= 2 && plan.kerf_problem.empty() &&
+              plan.lead_problem.empty();
     if (plan.knots.size() < 2 && plan.problem.empty()) {
         plan.problem = setupTwoProblem(spec);
         if (plan.problem.empty()) plan.problem = messageC("the cut has no path");

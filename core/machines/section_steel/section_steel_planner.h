@@ -5,6 +5,7 @@
 #include "core/machines/section_steel/end_cut_path.h"
 #include "core/machines/section_steel/groove_arm.h"
 #include "core/machines/section_steel/path_arm.h"
+#include "core/machines/section_steel/section_lead.h"
 #include "core/trajectory/joint_spline.h"
 
 #include <string>
@@ -60,11 +61,25 @@ struct SteelPlan {
     // Why the kerf could not be compensated ("" when it was, or k = 0): the plan is then made on
     // the theoretical edge (kerf_mm = 0) for the view, and refused (ok false, problem = this).
     std::string kerf_problem;
+    // Leads (section_lead.h): the square pass's samples then begin with the pierce and the
+    // lead-in and end with the lead-out (TorchTarget::lead). lead_problem: a lead too long for the
+    // cell (key lead_key, with the longest that fits); the plan is then made without the leads
+    // (for the view) and refused.
+    bool leads_added = false;
+    SteelLeadSamples leads;
+    std::string lead_problem, lead_key;
 };
 
 SteelPlan planEndCut(const SectionSteelSpec& spec);
 // With the kerf `kerf_mm` compensated (0: as planEndCut(spec), bit for bit).
 SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm);
+// With the leads `leads` too (none: as planEndCut(spec, kerf_mm), bit for bit).
+SteelPlan planEndCut(const SectionSteelSpec& spec, double kerf_mm, const SteelLeadSpec& leads);
+
+// Why the path arm cannot cut at the target tt of the square pass ("" when it can): out of its
+// plane, no IK solution inside the limits, the torch body hitting the section.
+std::string steelPathPointProblem(const SteelCell& cell, const SectionSteelSpec& spec,
+                                  const EndCut& cut, const TorchTarget& tt);
 
 // A description of the point for messages: "point 37 of pass groove (top flange, upper face,
 // s = 120.0 mm)".

@@ -58,7 +58,7 @@ std::shared_ptr<const MotionProgram> buildSectionSteelProgram(const Job& job,
     }
     p->tip_model = std::make_shared<SteelTipModel>(spec, park, plan.kerf_mm);
     p->min_run_s = job.sim.duration_s;
-    p->cruise_from_s = spec.ramp_s;
+    p->cruise_from_s = spec.ramp_s + (plan.leads_added ? plan.leads.before_s : 0.0);
     p->cruise_to_s = plan.cut_time_s - spec.ramp_s;
     p->name = job.name;
     p->source_text = jobText.empty() ? json::write(jobToJson(job)) : jobText;
@@ -83,6 +83,11 @@ std::string steelPathCsv(const SectionSteelSpec& spec, const SteelPlan& plan) {
         const TorchTarget& t = pass.samples[info.sample];
         // Names hold commas ("top flange, upper face"): ';' in the CSV's text columns.
         std::string face = cut.outline().segments()[t.segment].name, passName = pass.name;
+        if (t.lead != kLeadNone)
+            face = std::string(t.lead == kLeadPierce ? "pierce"
+                               : t.lead == kLeadIn   ? "lead-in"
+                                                     : "lead-out") +
+                   " (" + face + ")";
         for (std::string* text : {&face, &passName})
             for (char& c : *text)
                 if (c == ',') c = ';';

@@ -2,6 +2,7 @@
 // mechanics (pipe_robot_shared_mechanics.h: the plant simulateCut() runs), and a simulated torch.
 #include "core/machines/pipe_robot/pipe_robot_spec.h"
 #include "devices/machines/pipe_robot/pipe_robot_shared_mechanics.h"
+#include "devices/machines/pipe_robot/simulated_arc_voltage.h"
 #include "devices/machines/sim_rigs.h"
 #include "devices/sim/simulated_drive.h"
 #include "devices/sim/simulated_torch.h"
@@ -27,24 +28,38 @@ class PipeRobotSimRig : public MachineSimRig {
             dc.axis = static_cast<int>(i);
             drives_[i] = std::make_unique<SimulatedDrive>(dc);
         }
+        // The torch height control reads the arc voltage: the simulated arc over the job's
+        // actual pipe (process.torch_height.simulated_pipe).
+        if (const RobotTorchHeightSetup thc = robotTorchHeightSetup(job);
+            thc.used && thc.problem.empty()) {
+            std::array<const SimulatedDrive*, kAxisCount> d{};
+            for (size_t i = 0; i < drives_.size(); ++i)
+                d[i] = drives_[i].get();
+            arc_ = std::make_unique<SimulatedArcVoltage>(PipeRobot(spec.dh), thc, d, torch_);
+        }
     }
     EngineDevices devices() override {
         EngineDevices d;
         for (size_t i = 0; i < drives_.size(); ++i)
             d.axes[i] = drives_[i].get();
         d.torch = &torch_;
+        d.sensors[static_cast<size_t>(kArcVoltageSensor)] = arc_.get();
         return d;
     }
     void configure(EngineConfig& config) const override {
         config.period_s = job_.sim.period_s;
         config.in_position_window = pipeRobotInPositionWindow(job_, config.in_position_window);
     }
-    std::string description() const override { return "Simulated cell: 6 drives + torch"; }
+    std::string description() const override {
+        return arc_ ? "Simulated cell: 6 drives + torch + arc voltage (out-of-round pipe)"
+                    : "Simulated cell: 6 drives + torch";
+    }
 
   private:
     Job job_;
     std::array<std::unique_ptr<SimulatedDrive>, kAxisCount> drives_;
     SimulatedTorch torch_;
+    std::unique_ptr<SimulatedArcVoltage> arc_;
 };
 
 } // namespace

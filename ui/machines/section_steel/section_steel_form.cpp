@@ -1,9 +1,11 @@
 #include "ui/machines/section_steel/section_steel_form.h"
 
 #include "core/machines/section_steel/section_catalogue.h"
+#include "core/machines/section_steel/section_kerf.h"
 #include "core/machines/section_steel/section_steel_section.h"
 #include "core/machines/section_steel/section_steel_spec.h"
 #include "ui/forms/edited_spec.h"
+#include "ui/forms/process_form.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -166,6 +168,10 @@ SectionSteelSectionForm::SectionSteelSectionForm(JobEditor* editor, QWidget* par
     piece_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     fp->addWidget(piece_);
     mainLayout()->addWidget(pieceBox_);
+    // The process the section is cut with (the machine section's "process", after the section
+    // and its piece): the cut chart gives this machine its kerf only (section_kerf.h); the row
+    // is read at the section's thickest plate unless the job gives a thickness.
+    addSubForm(new ProcessForm(editor, processPart(), this));
     mainLayout()->addStretch(1);
 
     // A new series or designation changes the dimensions shown (bound fields reload only when
@@ -235,6 +241,30 @@ void SectionSteelSectionForm::refresh(const Job& job) {
                                 .arg(QString::fromStdString(s->section.designation),
                                      QString::fromUtf8(toString(s->section.family))));
     refreshing_ = false;
+}
+
+ProcessPart SectionSteelSectionForm::processPart() {
+    ProcessPart part;
+    part.wallMm = [](const Job& j) {
+        const SectionSteelSpec* s = specOf(j);
+        return s ? cutcell::section_steel::steelPartThicknessMm(*s) : 0.0;
+    };
+    part.wallNote = tr("The section's thickest plate: the flange or the web, whichever is "
+                       "thicker.");
+    // As validate() refuses them (core/machines/section_steel/section_steel_module.cpp).
+    const QString otherFigures = tr("Not used: the section-steel cutter takes only the kerf "
+                                    "width from the cut chart.");
+    for (std::size_t k = 1; k < cutcell::kCutFigureCount; ++k) {
+        const auto f = static_cast<cutcell::CutFigure>(k);
+        if (f == cutcell::CutFigure::KerfMm) continue;
+        part.refused.push_back(
+            {f, f == cutcell::CutFigure::CutSpeedMmMin
+                    ? tr("Not used: the section-steel cutter cuts at its own speed (Cutting "
+                         "speed along the outline, on the Motion & arms page).")
+                    : otherFigures});
+    }
+    part.withoutChart = tr("No cut chart: the cut runs without kerf compensation.");
+    return part;
 }
 
 SectionSteelEndCutForm::SectionSteelEndCutForm(JobEditor* editor, QWidget* parent)

@@ -12,9 +12,12 @@ class QLabel;
 
 namespace CutCell::ui {
 
+struct ProcessPart;
+
 // The section: a catalogue series (IPE, HEA, HEB, UPN, UPE, equal and unequal angles) and its
 // designation, or user-defined dimensions (shape, h, b, tw, tf, r); the bar's length; the
-// piece's marks (order, drawing, phase, piece mark, steel grade, quantity), shown read-only.
+// piece's marks (order, drawing, phase, piece mark, steel grade, quantity), shown read-only;
+// the process it is cut with (ProcessForm: the cut chart, its kerf).
 class SectionSteelSectionForm : public JobForm {
     Q_OBJECT
   public:
@@ -26,6 +29,10 @@ class SectionSteelSectionForm : public JobForm {
     static QStringList designationsOf(int series);
     QComboBox* seriesBox() const { return series_; }
     QComboBox* designationBox() const { return designation_; }
+
+    // The cut chart as this machine takes it: the part's wall is the section's thickest plate
+    // (steelPartThicknessMm), only the kerf's override is used (the speed is motion.speed_mm_s).
+    static ProcessPart processPart();
 
   protected:
     void reloadExtra(const cutcell::Job& job) override;
