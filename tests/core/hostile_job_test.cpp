@@ -155,8 +155,8 @@ TEST(HostileJobs, EveryMachinesSectionIsRefusedByKeyOrReadAsValid) {
         collect(doc, p, paths, keys);
         for (const Path& path : paths) {
             json::Value probe = json::parse(base);
-            const std::vector<Mutation> ms = mutationsFor(*at(probe, path), path.empty());
-            for (const Mutation& mutation : ms) {
+            const std::vector<Mutation> mutations = mutationsFor(*at(probe, path), path.empty());
+            for (const Mutation& mutation : mutations) {
                 json::Value d = json::parse(base); // a deep copy: values share their members
                 json::Value* member = at(d, path);
                 json::Value* parent = nullptr;
@@ -172,7 +172,9 @@ TEST(HostileJobs, EveryMachinesSectionIsRefusedByKeyOrReadAsValid) {
                     // Valid after all (a default, a value inside its range): it plans or says
                     // why, within the commands' work bounds.
                     const MachinePlan plan = machineFor(job).plan(job);
-                    if (!plan.ok()) EXPECT_FALSE(plan.outcome.message.empty()) << label;
+                    if (!plan.ok()) {
+                        EXPECT_FALSE(plan.outcome.message.empty()) << label;
+                    }
                     ++planned;
                 } catch (const JobError& e) {
                     ++refused;

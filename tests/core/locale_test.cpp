@@ -68,7 +68,8 @@ TEST_F(GermanLocale, EveryMachineWritesPointsNotCommas) {
             }
         }
         std::string report, table;
-        if (!m->offlineReport(job, plan, &report, &table).refused())
+        if (!m->offlineReport(job, plan, &report, &table).refused()) {
             EXPECT_FALSE(std::regex_search(report, std::regex("[0-9],[0-9]"))) << report;
+        }
     }
 }

@@ -158,8 +158,8 @@ TEST(Machines, NumbersHavePhysicalRanges) {
         EXPECT_NE(why.find(c.key), std::string::npos) << why;
     }
     Job j = defaultJob();
-    auto firstIssue = [](const Job& job) {
-        const auto issues = validateJob(job);
+    auto firstIssue = [](const Job& checked) {
+        const auto issues = validateJob(checked);
         return issues.empty() ? std::string() : issues.front().message;
     };
     j.cut.speed_mm_s = 0.001;

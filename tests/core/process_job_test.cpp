@@ -218,9 +218,10 @@ TEST(ProcessJob, ARobotJobWithALeadInNeedsItsHeights) {
     const bool chartHasIt = resolveProcess(job.process, cutPartWallMm(job))
                                 .effective.get(CutFigure::PierceHeightMm)
                                 .has_value();
-    if (!chartHasIt)
+    if (!chartHasIt) {
         EXPECT_TRUE(hasIssue(validateJob(job), "process.override.pierce_height_mm",
                              "needs the pierce height"));
+    }
     job.process.override.set(CutFigure::PierceHeightMm, 3.8);
     job.process.override.set(CutFigure::CutHeightMm, 1.5);
     EXPECT_TRUE(validateJob(job).empty());

@@ -195,7 +195,9 @@ TEST(RobotLead, LeadPointsOnTheSurfaceOnTheScrapSide) {
                 worstClearance = std::min(worstClearance, d - k / 2);
                 EXPECT_GE(d, k / 2 - 0.01) << "case " << c << " part " << part << " i " << i;
                 // In the scrap (a point within 0.01 mm of the edge may round either way).
-                if (d > 0.01) EXPECT_TRUE(inScrap(job, p.p_main)) << "case " << c << " i " << i;
+                if (d > 0.01) {
+                    EXPECT_TRUE(inScrap(job, p.p_main)) << "case " << c << " i " << i;
+                }
             }
     }
     std::printf("%d cases (%d refused first, then made at the offered length): largest distance "

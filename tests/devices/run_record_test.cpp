@@ -178,7 +178,7 @@ TEST(RunRecord, APasswordInAConnectionStringIsNeverShown) {
     EXPECT_TRUE(isPostgresConnection("sslmode=require host=db"));
     EXPECT_FALSE(isPostgresConnection("/home/op/production.db"));
     EXPECT_FALSE(isPostgresConnection("cell=3.db")); // no libpq keyword: a file's name
-    for (const std::string where :
+    for (const std::string& where :
          {std::string("password=s3cret-word host=127.0.0.1 port=1 dbname=x connect_timeout=2"),
           std::string("postgresql://u:s3cret-word@127.0.0.1:1/x?connect_timeout=2"),
           std::string("postgresql://u:s3cret-word%zz@[::1/x")}) {

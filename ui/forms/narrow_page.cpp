@@ -23,7 +23,7 @@ constexpr int kLongLabelPx = 150;
 // "Path arm (3R in the cut plane, ...)" -> {"Path arm", "3R in the cut plane, ..."}; a text
 // without a final parenthesis stays whole.
 bool splitAtParenthesis(const QString& text, QString* head, QString* detail) {
-    const int open = text.indexOf(QStringLiteral(" ("));
+    const qsizetype open = text.indexOf(QStringLiteral(" ("));
     if (open <= 0 || !text.endsWith(QLatin1Char(')'))) return false;
     *head = text.left(open);
     *detail = text.mid(open + 2, text.size() - open - 3);

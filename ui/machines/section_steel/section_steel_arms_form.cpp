@@ -60,21 +60,21 @@ SectionSteelArmsForm::SectionSteelArmsForm(JobEditor* editor, QWidget* parent)
         grid->addWidget(new QLabel(tr("park (deg)"), box), 0, 3);
         for (size_t i = 0; i < joints; ++i) {
             const std::string k = indexed(arm + ".limits_deg", i);
-            const int row = static_cast<int>(i) + 1;
-            grid->addWidget(new QLabel(QStringLiteral("θ%1").arg(i + 1), box), row, 0);
+            const int gridRow = static_cast<int>(i) + 1;
+            grid->addWidget(new QLabel(QStringLiteral("θ%1").arg(i + 1), box), gridRow, 0);
             grid->addWidget(
                 bindDouble(k + ".min_deg", 1,
                            [limit, i](Job& j) -> double& { return limit(spec(j), i).min_deg; }),
-                row, 1);
+                gridRow, 1);
             grid->addWidget(
                 bindDouble(k + ".max_deg", 1,
                            [limit, i](Job& j) -> double& { return limit(spec(j), i).max_deg; }),
-                row, 2);
+                gridRow, 2);
             const size_t axis = firstAxis + i;
             grid->addWidget(
                 bindDouble(indexed("park_deg", axis), 1,
                            [axis](Job& j) -> double& { return spec(j).park_deg[axis]; }),
-                row, 3);
+                gridRow, 3);
         }
         return grid;
     };

@@ -424,22 +424,22 @@ ImportResult importDstv(const std::string& text) {
     // The header's texts as UTF-8 (a job file is): older writers use a code page; a byte that
     // is no UTF-8 is read as Latin-1, a control character as '?', and the report says so.
     Header& h = part.header;
-    for (const auto& [text, field] : {std::pair<std::string*, int>{&h.order, 1},
-                                      {&h.drawing, 2},
-                                      {&h.phase, 3},
-                                      {&h.piece, 4},
-                                      {&h.steel_grade, 5},
-                                      {&h.profile, 7}}) {
+    for (const auto& [headerText, field] : {std::pair<std::string*, int>{&h.order, 1},
+                                            {&h.drawing, 2},
+                                            {&h.phase, 3},
+                                            {&h.piece, 4},
+                                            {&h.steel_grade, 5},
+                                            {&h.profile, 7}}) {
         bool latin1 = false;
-        *text = utf8Text(*text, &latin1);
+        *headerText = utf8Text(*headerText, &latin1);
         if (latin1)
             report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "text " +
-                             json::quote(*text) + " is not UTF-8: read as Latin-1");
+                             json::quote(*headerText) + " is not UTF-8: read as Latin-1");
     }
     SectionSteelSpec spec = defaultSectionSteelSpec();
     spec.section = sectionOf(h, &spec.user_defined, report);
     // The end cut at x = length; the cutter mitres +-45 deg about each axis.
-    const auto mitre = [&](double deg, int field, const char* key) {
+    const auto checkedMitre = [&](double deg, int field, const char* key) {
         if (std::abs(deg) > 45)
             throw refuse(h.field_line[static_cast<size_t>(field - 1)],
                          std::string(field == 18 ? "web end cut" : "flange end cut") +
@@ -452,9 +452,9 @@ ImportResult importDstv(const std::string& text) {
     // mitred file here draws its AK), the cell's positive mitre about y lengthens it (cut plane
     // x = (z - h/2) tan, the kept bar at x < 0). The flange angle keeps its sign (unverified:
     // no file here shows a flange mitre's direction against the cell's y).
-    const double web = mitre(h.web_end_deg, 18, "end_cut.mitre_horizontal_deg");
+    const double web = checkedMitre(h.web_end_deg, 18, "end_cut.mitre_horizontal_deg");
     spec.cut.mitre_horizontal_deg = web == 0 ? 0.0 : -web;
-    spec.cut.mitre_vertical_deg = mitre(h.flange_end_deg, 20, "end_cut.mitre_vertical_deg");
+    spec.cut.mitre_vertical_deg = checkedMitre(h.flange_end_deg, 20, "end_cut.mitre_vertical_deg");
     report.push_back(lineOf(h.field_line[16]) + "start end (x = 0: web cut " + n(h.web_start_deg) +
                      " deg, flange cut " + n(h.flange_start_deg) +
                      " deg): not cut by this job (it cuts the end at x = " + n(h.length_mm) +
@@ -469,17 +469,17 @@ ImportResult importDstv(const std::string& text) {
                                           "(section.length_mm)");
     spec.length_mm = h.length_mm;
     const auto mark = [&](const std::string& v, int field) {
-        std::string out = v;
-        if (out.size() > 64) {
-            out.resize(64);
-            while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80)
-                out.pop_back(); // a continuation byte: the character it ends is cut whole
-            if (!out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+        std::string kept = v;
+        if (kept.size() > 64) {
+            kept.resize(64);
+            while (!kept.empty() && (static_cast<unsigned char>(kept.back()) & 0xC0) == 0x80)
+                kept.pop_back(); // a continuation byte: the character it ends is cut whole
+            if (!kept.empty() && static_cast<unsigned char>(kept.back()) >= 0xC0) kept.pop_back();
             report.push_back(lineOf(h.field_line[static_cast<size_t>(field - 1)]) + "mark " +
-                             json::quote(v) + " cut to " + std::to_string(out.size()) +
+                             json::quote(v) + " cut to " + std::to_string(kept.size()) +
                              " bytes (piece marks hold at most 64)");
         }
-        return out;
+        return kept;
     };
     spec.piece.order = mark(h.order, 1);
     spec.piece.drawing = mark(h.drawing, 2);
